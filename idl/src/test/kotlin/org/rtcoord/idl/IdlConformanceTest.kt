@@ -1,0 +1,90 @@
+package org.rtcoord.idl
+
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
+import java.util.concurrent.TimeUnit
+import kotlin.streams.asSequence
+
+/**
+ * Our IDL declares every type exactly as the reference IDL shipped with rtctree-aist does: repository
+ * ids, enumerators, members, inheritance and operation signatures. Both are parsed by omniidl and
+ * printed by our `canon` back end, then compared declaration by declaration.
+ */
+class IdlConformanceTest {
+    private val root: Path = Paths.get(System.getProperty("rtcoord.root") ?: "..").toAbsolutePath().normalize()
+    private val work: Path = Files.createDirectories(Paths.get("target", "idl-conformance").toAbsolutePath())
+
+    /** The OpenRTM flavour of the observer is real (stock components accept it) but not in rtctree's IDL. */
+    private val openRtmObserver = setOf("OpenRTM::ComponentObserver", "OpenRTM::StatusKind")
+
+    @Test
+    fun `our declarations match the reference IDL`() {
+        val ours = listing(Paths.get("src/main/idl"))
+        val reference = listing(referenceIdl())
+
+        val differences = ours.differencesFrom(reference, extras = openRtmObserver)
+        assertTrue(differences.isEmpty(), "IDL differs from the reference:\n" + differences.joinToString("\n"))
+        assertTrue(ours.declarations.size >= 119, "only ${ours.declarations.size} declarations compared")
+    }
+
+    @Test
+    fun `the OpenRTM observer is declared as stock components expect it`() {
+        val observer = listing(Paths.get("src/main/idl")).declarations
+        assertEquals("IDL:OpenRTM/ComponentObserver:1.0", observer.getValue("OpenRTM::ComponentObserver")["repository id"])
+        assertEquals("SDOPackage::SDOService", observer.getValue("OpenRTM::ComponentObserver")["inherits"])
+        assertEquals(
+            "oneway void(in OpenRTM::StatusKind, in string)",
+            observer.getValue("OpenRTM::ComponentObserver")["operation update_status"],
+        )
+        assertEquals(
+            "COMPONENT_PROFILE, RTC_STATUS, EC_STATUS, PORT_PROFILE, CONFIGURATION, HEARTBEAT, STATUS_KIND_NUM",
+            observer.getValue("OpenRTM::StatusKind")["enumerators"],
+        )
+    }
+
+    /** rtctree-aist's IDL, installed into a throw-away virtual environment under target/. */
+    private fun referenceIdl(): Path {
+        val venv = work.resolve("reference-venv")
+        if (!Files.exists(venv.resolve("bin/pip"))) run(Peers.tool("python").toString(), "-m", "venv", venv.toString())
+        val pinned = Files.readAllLines(root.resolve("scripts/peers-requirements.txt")).single { it.startsWith("rtctree-aist==") }
+        run(venv.resolve("bin/pip").toString(), "install", "--quiet", "--disable-pip-version-check", "--no-deps", pinned)
+        return Files.walk(venv).use { paths ->
+            paths.asSequence().single { it.endsWith("rtctree/data/idl") && Files.isDirectory(it) }
+        }
+    }
+
+    private fun listing(idlDirectory: Path): IdlListing {
+        val includes = stubIncludes()
+        val files = Files.list(idlDirectory).use { paths -> paths.asSequence().filter { it.toString().endsWith(".idl") }.sorted().toList() }
+        assertTrue(files.isNotEmpty(), "no IDL in $idlDirectory")
+        val lines = files.flatMap { file ->
+            run(Peers.tool("omniidl").toString(), "-p", Paths.get("src/test/omniidl").toAbsolutePath().toString(), "-b", "canon",
+                "-I$includes", "-I$idlDirectory", file.toString())
+        }
+        return IdlListing.parse(lines.distinct().filterNot { it.startsWith("CosNotifyComm::") })
+    }
+
+    /** The reference SDO IDL includes two OMG files that are not shipped with it; its types need neither. */
+    private fun stubIncludes(): Path {
+        val includes = Files.createDirectories(work.resolve("includes"))
+        Files.writeString(includes.resolve("orb.idl"), "")
+        Files.writeString(
+            includes.resolve("CosNotifyComm.idl"),
+            "module CosNotifyComm { interface StructuredPushConsumer {}; interface StructuredPushSupplier {}; };\n",
+        )
+        return includes
+    }
+
+    private fun run(vararg command: String): List<String> {
+        val process = ProcessBuilder(*command).redirectError(ProcessBuilder.Redirect.PIPE).start()
+        val output = process.inputStream.bufferedReader().readLines()
+        val errors = process.errorStream.bufferedReader().readText()
+        check(process.waitFor(120, TimeUnit.SECONDS)) { "${command.first()} did not finish" }
+        check(process.exitValue() == 0) { "${command.joinToString(" ")} failed (${process.exitValue()}): $errors" }
+        return output
+    }
+}
