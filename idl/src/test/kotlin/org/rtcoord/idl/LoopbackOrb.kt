@@ -14,6 +14,7 @@ internal class LoopbackOrb : AutoCloseable {
             setProperty("org.omg.CORBA.ORBSingletonClass", "org.jacorb.orb.ORBSingleton")
             setProperty("OAIAddr", "127.0.0.1")
             setProperty("jacorb.retries", "0")
+            setProperty("jacorb.iiop.enable_loopback", "off")
         },
     )
     val poa: POA = POAHelper.narrow(orb.resolve_initial_references("RootPOA")).also { it.the_POAManager().activate() }
