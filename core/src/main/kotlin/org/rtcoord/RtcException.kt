@@ -1,0 +1,57 @@
+package org.rtcoord
+
+/**
+ * Every failure the library reports: a one-line message naming the object ([subject], usually its
+ * path) and the reason. Nothing is ignored: each `ReturnCode_t` other than `RTC_OK` and each CORBA or
+ * SDO exception becomes one of these.
+ */
+public sealed class RtcException(
+    /** The object concerned: a path, an address or a name. */
+    public val subject: String,
+    /** Why, in a few words. */
+    public val reason: String,
+    cause: Throwable? = null,
+) : Exception("$subject: $reason", cause)
+
+/** A path that does not follow the grammar; [position] is the index of the offending segment. */
+public class BadPathException(path: String, public val position: Int, reason: String) :
+    RtcException(path, "bad path: $reason (segment ${position + 1})")
+
+/** Nothing exists at the path or under the name. */
+public class NotFoundException(subject: String, reason: String = "not found") : RtcException(subject, reason)
+
+/** The object exists but is not of the kind the operation needs. */
+public class WrongKindException(subject: String, public val expected: String, public val actual: String) :
+    RtcException(subject, "is a $actual, not a $expected")
+
+/** The object (or the name server holding it) did not answer: dead, refused or unreachable. */
+public class UnreachableException(subject: String, cause: Throwable) :
+    RtcException(subject, "unreachable (${cause.corbaName()})", cause)
+
+/** The object did not answer within the deadline. */
+public class TimedOutException(subject: String, public val operation: String, public val deadlineMillis: Long) :
+    RtcException(subject, "$operation timed out after $deadlineMillis ms")
+
+/** The object refused because it is not in a state that allows the operation (`PRECONDITION_NOT_MET`). */
+public class PreconditionNotMetException(subject: String, public val operation: String, detail: String) :
+    RtcException(subject, "$operation refused: $detail")
+
+/** The object rejected an argument (`BAD_PARAMETER`, `InvalidParameter`). */
+public class BadParameterException(subject: String, public val operation: String, detail: String) :
+    RtcException(subject, "$operation rejected: $detail")
+
+/** The object does not support the operation (`UNSUPPORTED`, `InterfaceNotImplemented`). */
+public class OperationUnsupportedException(subject: String, public val operation: String) :
+    RtcException(subject, "$operation is not supported")
+
+/**
+ * The object answered with a failure code ([returnCode], e.g. `RTC_ERROR`, `OUT_OF_RESOURCES`) or an
+ * SDO `InternalError`/`NotAvailable`, or the end state after the operation was not the expected one.
+ */
+public class OperationFailedException(subject: String, public val operation: String, public val returnCode: String, detail: String? = null) :
+    RtcException(subject, "$operation failed: $returnCode" + (detail?.let { " ($it)" } ?: ""))
+
+private fun Throwable.corbaName(): String = when (this) {
+    is org.omg.CORBA.SystemException -> javaClass.simpleName + (message?.takeIf { it.isNotBlank() }?.let { ": $it" } ?: "")
+    else -> toString()
+}
