@@ -1,0 +1,185 @@
+package org.rtcoord
+
+import RTC.ExecutionContext
+import RTC.ReturnCode_t
+import _SDOPackage.ConfigurationSet
+import _SDOPackage.NameValue
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.StateFlow
+import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.name
+import org.rtcoord.internal.orFail
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
+
+/**
+ * An RT Component. Its [snapshots] hold what was last read; operations act on the live component,
+ * wait for the effect where there is one to wait for (a lifecycle operation returns once the state is
+ * reached), and fail with an [RtcException] naming this path and the reason.
+ */
+public class ComponentNode internal constructor(
+    path: RtcPath,
+    core: TreeCore,
+    internal val component: ComponentObject,
+) : Node(path, core) {
+    private val subject: String get() = path.toString()
+
+    init {
+        component.knownAt(path)
+    }
+
+    override val kind: NodeKind get() = NodeKind.COMPONENT
+
+    /** The latest snapshot, null before the first read. Never waits. */
+    public val snapshots: StateFlow<ComponentSnapshot?> get() = component.snapshot
+
+    /** The latest snapshot, read now if there is none yet. */
+    public suspend fun snapshot(): ComponentSnapshot = component.loaded(subject)
+
+    override suspend fun refresh(depth: Int) {
+        component.refresh(subject)
+    }
+
+    /** Whether this and [other] are the same component, reached by different paths or not. */
+    public fun isSameComponent(other: ComponentNode): Boolean = component === other.component
+
+    /** The component's state in [context], read now. */
+    public suspend fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle {
+        val (_, ec) = resolve(context)
+        return LifeCycle.of(core.remote.call(subject, "get_component_state") { ec.get_component_state(component.ref) })
+    }
+
+    /** Activates the component in [context] and waits until it is ACTIVE. */
+    public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+        transition("activate", context, LifeCycle.INACTIVE, LifeCycle.ACTIVE, deadline) { it.activate_component(component.ref) }
+
+    /** Deactivates the component in [context] and waits until it is INACTIVE. */
+    public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+        transition("deactivate", context, LifeCycle.ACTIVE, LifeCycle.INACTIVE, deadline) { it.deactivate_component(component.ref) }
+
+    /** Resets the component from ERROR in [context] and waits until it is INACTIVE. */
+    public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+        transition("reset", context, LifeCycle.ERROR, LifeCycle.INACTIVE, deadline) { it.reset_component(component.ref) }
+
+    /** Asks the component to exit: it finalises, leaves its contexts and unbinds itself. */
+    public suspend fun exit() {
+        core.remote.check(subject, "exit") { component.ref.exit() }
+    }
+
+    /** The port named [name] (without the instance prefix). */
+    public suspend fun port(name: String): Port {
+        if (snapshot().port(name) == null) refresh()
+        val snapshot = snapshot()
+        if (snapshot.port(name) == null) {
+            throw NotFoundException("$subject:$name", "no such port (ports: ${snapshot.ports.joinToString { it.name }.ifEmpty { "none" }})")
+        }
+        return Port(this, name)
+    }
+
+    /** Disconnects every connection of every port. */
+    public suspend fun disconnectAll() {
+        snapshot().ports.forEach { port(it.name).disconnectAll() }
+    }
+
+    /** The execution context [context] of this component. */
+    public suspend fun executionContext(context: ContextSelector = ContextSelector.DEFAULT): ExecutionContextView {
+        val (handle, ec) = resolve(context)
+        return ExecutionContextView(this, handle, ec)
+    }
+
+    /**
+     * Sets [parameter] to [value] in configuration set [set] (the active one by default). The component
+     * rejects values it cannot use with a [BadParameterException].
+     */
+    public suspend fun setParameter(parameter: String, value: String, set: String? = null) {
+        val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
+        val target = set ?: core.remote.call(subject, "get_active_configuration_set") { configuration.get_active_configuration_set().id }
+        val current = core.remote.call(subject, "get_configuration_set") { configuration.get_configuration_set(target) }
+        if (current.configuration_data.none { it.name == parameter }) {
+            throw NotFoundException("$subject", "no parameter '$parameter' in configuration set '$target'")
+        }
+        val values = current.configuration_data.map { if (it.name == parameter) stringValue(parameter, value) else it }
+        val accepted = core.remote.call(subject, "set_configuration_set_values") {
+            configuration.set_configuration_set_values(ConfigurationSet(target, current.description, values.toTypedArray()))
+        }
+        if (!accepted) throw BadParameterException(subject, "set $parameter", "'$value' refused in set '$target'")
+        refresh()
+    }
+
+    /** Makes configuration set [id] the active one. */
+    public suspend fun activateConfigurationSet(id: String) {
+        configurationCall("activate configuration set '$id'") { it.activate_configuration_set(id) }
+    }
+
+    /** Adds configuration set [id] holding [values]. */
+    public suspend fun addConfigurationSet(id: String, values: Map<String, String>) {
+        configurationCall("add configuration set '$id'") { configuration ->
+            configuration.add_configuration_set(ConfigurationSet(id, "", values.map { (k, v) -> stringValue(k, v) }.toTypedArray()))
+        }
+    }
+
+    /** Removes configuration set [id]. */
+    public suspend fun removeConfigurationSet(id: String) {
+        configurationCall("remove configuration set '$id'") { it.remove_configuration_set(id) }
+    }
+
+    private suspend fun configurationCall(operation: String, call: (_SDOPackage.Configuration) -> Boolean) {
+        val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
+        if (!core.remote.call(subject, operation) { call(configuration) }) throw OperationFailedException(subject, operation, "false")
+        refresh()
+    }
+
+    private fun stringValue(name: String, value: String) = NameValue(name, core.orb.orb.create_any().apply { insert_string(value) })
+
+    internal suspend fun resolve(selector: ContextSelector): Pair<Int, ExecutionContext> {
+        val snapshot = snapshot()
+        val handle = when (selector) {
+            is ContextSelector.Handle -> selector.handle
+            is ContextSelector.Index -> {
+                val ordered = snapshot.contexts.filter { it.owned } + snapshot.contexts.filter { !it.owned }
+                ordered.getOrNull(selector.index)?.handle
+                    ?: throw NotFoundException(subject, "no execution context at index ${selector.index} (it has ${ordered.size})")
+            }
+        }
+        val context = component.contexts[handle]
+            ?: throw NotFoundException(subject, "no execution context with handle $handle (handles: ${component.contexts.keys.sorted().joinToString()})")
+        return handle to context
+    }
+
+    private suspend fun transition(
+        operation: String,
+        selector: ContextSelector,
+        from: LifeCycle,
+        to: LifeCycle,
+        deadline: Duration?,
+        call: (ExecutionContext) -> ReturnCode_t,
+    ) {
+        val (handle, ec) = resolve(selector)
+        val code = core.remote.call(subject, operation, deadline) { call(ec) }
+        if (code == ReturnCode_t.PRECONDITION_NOT_MET) {
+            val now = runCatching { state(ContextSelector.Handle(handle)) }.getOrDefault(LifeCycle.UNKNOWN)
+            code.orFail(subject, operation, "the component is $now in context $handle, not $from")
+        }
+        code.orFail(subject, operation, "in context $handle")
+        val reached = awaitState(operation, ec, handle, to, deadline ?: core.remote.defaultDeadline)
+        component.snapshot.value?.let { snapshot ->
+            component.publish(snapshot.copy(contexts = snapshot.contexts.map { if (it.handle == handle) it.copy(state = reached) else it }))
+        }
+    }
+
+    /** Polls the state until it is [target], fails at once if the component fell into ERROR instead. */
+    private suspend fun awaitState(operation: String, ec: ExecutionContext, handle: Int, target: LifeCycle, limit: Duration): LifeCycle {
+        val deadline = TimeSource.Monotonic.markNow() + limit
+        var pause = 1.milliseconds
+        while (true) {
+            val state = LifeCycle.of(core.remote.call(subject, "get_component_state") { ec.get_component_state(component.ref) })
+            if (state == target) return state
+            if (state == LifeCycle.ERROR) throw OperationFailedException(subject, operation, ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
+            if (deadline.hasPassedNow()) throw TimedOutException(subject, "$operation (waiting for $target, still $state)", limit.inWholeMilliseconds)
+            delay(pause)
+            pause = (pause * 2).coerceAtMost(20.milliseconds)
+        }
+    }
+}

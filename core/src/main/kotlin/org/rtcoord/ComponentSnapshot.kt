@@ -1,0 +1,76 @@
+package org.rtcoord
+
+/**
+ * Everything read from a component at one moment: profile, ports with their connectors, execution
+ * contexts with the component's state in each, and configuration. Immutable; a refresh publishes a new one.
+ */
+public data class ComponentSnapshot(
+    val instanceName: String,
+    val typeName: String,
+    val description: String,
+    val version: String,
+    val vendor: String,
+    val category: String,
+    val properties: Map<String, String>,
+    val ports: List<PortSnapshot>,
+    val contexts: List<ContextSnapshot>,
+    val configuration: ConfigurationSnapshot,
+) {
+    /** The state in the execution context with handle 0 (the first owned one), as tools show it. */
+    val state: LifeCycle get() = context(0)?.state ?: contexts.firstOrNull()?.state ?: LifeCycle.UNKNOWN
+
+    /** The execution context with [handle], or null. */
+    public fun context(handle: Int): ContextSnapshot? = contexts.firstOrNull { it.handle == handle }
+
+    /** The port named [name] (without the instance prefix), or null. */
+    public fun port(name: String): PortSnapshot? = ports.firstOrNull { it.name == name }
+}
+
+/** The kind of a port, from its `port.port_type` property. */
+public enum class PortKind { DATA_IN, DATA_OUT, SERVICE, OTHER }
+
+/**
+ * A port: its short [name], OpenRTM's [fullName] (`instance.port`), kind, data type for data ports,
+ * advertised properties and current connectors.
+ */
+public data class PortSnapshot(
+    val name: String,
+    val fullName: String,
+    val kind: PortKind,
+    val dataType: String?,
+    val properties: Map<String, String>,
+    val connectors: List<ConnectorSnapshot>,
+)
+
+/** A connection as one of its ports records it. */
+public data class ConnectorSnapshot(
+    val id: String,
+    val name: String,
+    /** OpenRTM's names (`instance.port`) of the connected ports, in profile order, where known. */
+    val portNames: List<String>,
+    val properties: Map<String, String>,
+)
+
+/** An execution context as seen from one component. */
+public data class ContextSnapshot(
+    /** The component's handle for it: owned contexts 0.., participating ones from 1000. */
+    val handle: Int,
+    val owned: Boolean,
+    val kind: String,
+    val rate: Double,
+    val running: Boolean,
+    /** The component's state in this context. */
+    val state: LifeCycle,
+    /** How many components take part in it. */
+    val participants: Int,
+)
+
+/** Configuration sets by id (hidden `__name__` sets included) and which one is active. */
+public data class ConfigurationSnapshot(val sets: Map<String, Map<String, String>>, val activeSet: String) {
+    /** The value of [parameter] in the active set, or null. */
+    public fun value(parameter: String): String? = sets[activeSet]?.get(parameter)
+
+    internal companion object {
+        val NONE = ConfigurationSnapshot(emptyMap(), "")
+    }
+}

@@ -1,0 +1,20 @@
+package org.rtcoord
+
+import org.omg.CosNaming.NamingContext
+import org.omg.CosNaming.NamingContextHelper
+import org.rtcoord.internal.TreeCore
+
+/** A name server: its root naming context, at `corbaloc:iiop:host:port/NameService`. */
+public class NameServerNode internal constructor(path: RtcPath, core: TreeCore) : NamingDirectory(path, core) {
+    override val kind: NodeKind get() = NodeKind.NAME_SERVER
+
+    /** `host:port`. */
+    public val address: String get() = path.nameServer!!
+
+    /** The root context's `corbaloc:` address. */
+    public val corbaloc: String get() = "corbaloc:iiop:$address/NameService"
+
+    private val root: NamingContext by lazy { NamingContextHelper.unchecked_narrow(core.orb.orb.string_to_object(corbaloc)) }
+
+    override suspend fun context(): NamingContext = root
+}

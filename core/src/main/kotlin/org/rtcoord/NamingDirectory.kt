@@ -1,0 +1,98 @@
+package org.rtcoord
+
+import OpenRTM.DataFlowComponentHelper
+import RTM.ManagerHelper
+import kotlinx.coroutines.async
+import kotlinx.coroutines.awaitAll
+import kotlinx.coroutines.coroutineScope
+import org.omg.CosNaming.Binding
+import org.omg.CosNaming.BindingIteratorHolder
+import org.omg.CosNaming.BindingListHolder
+import org.omg.CosNaming.BindingType
+import org.omg.CosNaming.NameComponent
+import org.omg.CosNaming.NamingContext
+import org.rtcoord.internal.TreeCore
+
+/** A naming context in the tree: a name server's root context or a context below it. */
+public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNode(path, core) {
+
+    internal abstract suspend fun context(): NamingContext
+
+    /** Removes the binding [name] (`id.kind`) from this context, whatever it is bound to. */
+    public suspend fun unbind(name: String) {
+        val context = context()
+        core.remote.call(path.child(name).toString(), "unbind") { context.unbind(nameComponents(name)) }
+        relist()
+    }
+
+    override suspend fun readChildren(previous: List<Node>): List<Node> {
+        val context = context()
+        val bindings = listAll(context)
+        return coroutineScope { bindings.map { binding -> async { childFor(context, binding, previous) } }.awaitAll() }
+    }
+
+    /** Every binding, fetching past the first batch through the iterator (rtctree stops at 200). */
+    private suspend fun listAll(context: NamingContext): List<Binding> {
+        val subject = path.toString()
+        val first = BindingListHolder()
+        val rest = BindingIteratorHolder()
+        core.remote.call(subject, "list") { context.list(BATCH, first, rest) }
+        val bindings = first.value.toMutableList()
+        val iterator = rest.value ?: return bindings
+        try {
+            while (true) {
+                val batch = BindingListHolder()
+                val more = core.remote.call(subject, "next_n") { iterator.next_n(BATCH, batch) }
+                bindings += batch.value
+                if (!more || batch.value.isEmpty()) break
+            }
+        } finally {
+            runCatching { core.remote.call(subject, "destroy iterator") { iterator.destroy() } }
+        }
+        return bindings
+    }
+
+    private suspend fun childFor(context: NamingContext, binding: Binding, previous: List<Node>): Node {
+        val name = binding.binding_name.last().let { if (it.kind.isEmpty()) it.id else "${it.id}.${it.kind}" }
+        val childPath = path.child(name)
+        val old = previous.firstOrNull { it.name == name }
+        if (binding.binding_type == BindingType.ncontext) {
+            return old as? ContextNode ?: ContextNode(childPath, core, this, binding.binding_name)
+        }
+        val target = core.remote.call(childPath.toString(), "resolve") { context.resolve(binding.binding_name) }
+        return when (childPath.kind) {
+            "rtc" -> {
+                val component = core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target))
+                (old as? ComponentNode)?.takeIf { it.component === component } ?: ComponentNode(childPath, core, component)
+            }
+            "mgr" -> (old as? ManagerNode)?.takeIf { it.ref._is_equivalent(target) } ?: ManagerNode(childPath, core, ManagerHelper.unchecked_narrow(target), this)
+            else -> UnknownNode(childPath, core, target)
+        }
+    }
+
+    internal companion object {
+        const val BATCH = 100
+
+        /** `id.kind` as a CosNaming name; the kind follows the last dot. */
+        fun nameComponents(name: String): Array<NameComponent> {
+            val dot = name.lastIndexOf('.')
+            return arrayOf(if (dot < 0) NameComponent(name, "") else NameComponent(name.substring(0, dot), name.substring(dot + 1)))
+        }
+    }
+}
+
+/** A naming context below a name server's root. */
+public class ContextNode internal constructor(
+    path: RtcPath,
+    core: TreeCore,
+    private val parent: NamingDirectory,
+    private val binding: Array<NameComponent>,
+) : NamingDirectory(path, core) {
+    override val kind: NodeKind get() = NodeKind.CONTEXT
+
+    /** Resolved on every use: a restarted name server may serve the context under a new reference. */
+    override suspend fun context(): NamingContext {
+        val within = parent.context()
+        return org.omg.CosNaming.NamingContextHelper.unchecked_narrow(core.remote.call(path.toString(), "resolve") { within.resolve(binding) })
+    }
+}

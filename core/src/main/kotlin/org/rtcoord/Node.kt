@@ -1,0 +1,34 @@
+package org.rtcoord
+
+import org.rtcoord.internal.TreeCore
+
+/** What a node of the tree stands for. */
+public enum class NodeKind { ROOT, NAME_SERVER, CONTEXT, COMPONENT, MANAGER, ZOMBIE, UNKNOWN }
+
+/**
+ * A node of an [RtcTree]: the root, a name server, a naming context, a component, a manager, a dead
+ * registration ([ZombieNode]) or an object of another type ([UnknownNode]).
+ *
+ * Nodes keep what they last read (snapshots readable at any time without waiting) and re-read it on
+ * [refresh]. A node is the same object across refreshes for as long as its binding exists.
+ */
+public sealed class Node(
+    /** Where the node is: `/host:port/ctx/name.rtc`. */
+    public val path: RtcPath,
+    internal val core: TreeCore,
+) {
+    /** The last segment of [path]. */
+    public val name: String get() = path.name
+
+    /** What this node stands for. */
+    public abstract val kind: NodeKind
+
+    /**
+     * Reads the node again from the live system, and its descendants down to [depth] levels below it
+     * (0: this node only; [Int.MAX_VALUE]: the whole subtree), concurrently. Descendants that turn out
+     * dead or hung become [ZombieNode]s; a failure of this node itself is thrown.
+     */
+    public abstract suspend fun refresh(depth: Int = 0)
+
+    override fun toString(): String = "${kind.name.lowercase()} $path"
+}

@@ -1,0 +1,154 @@
+package org.rtcoord
+
+import RTC.ConnectorProfile
+import RTC.ConnectorProfileHolder
+import RTC.PortService
+import _SDOPackage.NameValue
+import kotlinx.coroutines.async
+import kotlinx.coroutines.awaitAll
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.launch
+import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.orFail
+import org.rtcoord.internal.toMap
+
+/** A port of a component, addressed as `component.rtc:name`. */
+public class Port internal constructor(
+    /** The component the port belongs to. */
+    public val component: ComponentNode,
+    /** The port's name without the instance prefix. */
+    public val name: String,
+) {
+    /** `/host:port/ctx/component.rtc:name`. */
+    public val path: RtcPath get() = component.path.withPort(name)
+
+    private val subject: String get() = path.toString()
+    private val core get() = component.core
+
+    /** The port as last read. */
+    public suspend fun snapshot(): PortSnapshot =
+        component.snapshot().port(name) ?: throw NotFoundException(subject, "the port is gone")
+
+    /**
+     * Connects this port to [others] and returns the new connector. [properties] override OpenRTM's
+     * usual data port defaults (push, corba_cdr, flush, this port's data type). Incompatible ports or
+     * properties are refused before anything changes.
+     */
+    public suspend fun connect(
+        others: List<Port>,
+        properties: Map<String, String> = emptyMap(),
+        name: String? = null,
+        id: String = "",
+    ): ConnectorSnapshot {
+        require(others.isNotEmpty()) { "connect needs at least one other port" }
+        val ports = listOf(this) + others
+        val snapshots = ports.map { it.snapshot() }
+        val merged = defaults(snapshots.first()) + properties
+        checkCompatible(ports, snapshots, merged)
+        val references = ports.map { it.reference() }
+        val holder = ConnectorProfileHolder(
+            ConnectorProfile(
+                name ?: ports.joinToString("_") { "${it.component.name.substringBeforeLast('.')}.${it.name}" },
+                id,
+                references.toTypedArray(),
+                merged.map { (key, value) -> NameValue(key, core.orb.orb.create_any().apply { insert_string(value) }) }.toTypedArray(),
+            ),
+        )
+        core.remote.call(subject, "connect") { references.first().connect(holder) }
+            .orFail(subject, "connect", "to ${others.joinToString { it.path.toString() }}")
+        refreshAll(ports)
+        val made = holder.value
+        return ConnectorSnapshot(made.connector_id, made.name, snapshots.map { it.fullName }, made.properties.toMap())
+    }
+
+    /** Removes the connection [connectorId] from this port and its peers. */
+    public suspend fun disconnect(connectorId: String) {
+        val port = reference()
+        val profile = core.remote.call(subject, "get_connector_profile") { port.get_connector_profile(connectorId) }
+        val peers = coroutineScope { profile.ports.map { async { owner(it) } }.awaitAll() }.filterNotNull()
+        core.remote.call(subject, "disconnect") { port.disconnect(connectorId) }
+            .orFail(subject, "disconnect", "connector '$connectorId'")
+        coroutineScope {
+            (peers + component.component).distinct().forEach { peer -> launch { runCatching { peer.refresh(subject) } } }
+        }
+    }
+
+    /** Removes every connection of this port. */
+    public suspend fun disconnectAll() {
+        snapshot().connectors.forEach { disconnect(it.id) }
+    }
+
+    /** This port's connections, each with its ports resolved to tree paths where the tree knows them. */
+    public suspend fun connections(): List<Connection> = coroutineScope {
+        val port = reference()
+        val profiles = core.remote.call(subject, "get_connector_profiles") { port.get_connector_profiles() }
+        profiles.map { profile ->
+            async {
+                Connection(profile.connector_id, profile.name, profile.properties.toMap(), profile.ports.map { peer -> async { describe(peer) } }.awaitAll())
+            }
+        }.awaitAll()
+    }
+
+    private suspend fun describe(peer: PortService): Connection.End {
+        val profile = runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
+            ?: return Connection.End("?", null)
+        val owner = profile.owner?.let { core.components.objectFor(it) }
+        val instance = profile.name.substringBefore('.')
+        val path = owner?.knownPaths?.firstOrNull()?.withPort(profile.name.removePrefix("$instance."))
+        return Connection.End(profile.name, path)
+    }
+
+    /** The component owning [peer], if it answers. */
+    private suspend fun owner(peer: PortService): ComponentObject? =
+        runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
+            ?.owner?.let { core.components.objectFor(it) }
+
+    internal suspend fun reference(): PortService {
+        component.component.ports[name]?.let { return it }
+        component.refresh()
+        return component.component.ports[name] ?: throw NotFoundException(subject, "no such port")
+    }
+
+    private fun defaults(first: PortSnapshot): Map<String, String> = buildMap {
+        if (first.kind == PortKind.DATA_IN || first.kind == PortKind.DATA_OUT) {
+            put("dataport.dataflow_type", "push")
+            put("dataport.interface_type", "corba_cdr")
+            put("dataport.subscription_type", "flush")
+            first.dataType?.let { put("dataport.data_type", it) }
+        }
+    }
+
+    private fun checkCompatible(ports: List<Port>, snapshots: List<PortSnapshot>, properties: Map<String, String>) {
+        val data = snapshots.map { it.kind == PortKind.DATA_IN || it.kind == PortKind.DATA_OUT }
+        if (data.distinct().size > 1) throw BadParameterException(subject, "connect", "cannot connect a data port to a service port")
+        if (!data.first()) return
+        val types = snapshots.mapNotNull { it.dataType }.distinct()
+        if (types.size > 1) {
+            throw BadParameterException(subject, "connect", "incompatible data types: " + ports.zip(snapshots).joinToString { (port, s) -> "${port.path} carries ${s.dataType}" })
+        }
+        if (snapshots.none { it.kind == PortKind.DATA_OUT } || snapshots.none { it.kind == PortKind.DATA_IN }) {
+            throw BadParameterException(subject, "connect", "a data connection needs an out-port and an in-port")
+        }
+        for (key in listOf("dataport.dataflow_type", "dataport.interface_type", "dataport.subscription_type")) {
+            val wanted = properties[key] ?: continue
+            ports.zip(snapshots).forEach { (port, s) ->
+                val offered = s.properties[key]?.split(',')?.map { it.trim() } ?: return@forEach
+                if (wanted !in offered && offered.none { it.equals("any", ignoreCase = true) }) {
+                    throw BadParameterException(subject, "connect", "${port.path} does not offer $key=$wanted (offers ${offered.joinToString(",")})")
+                }
+            }
+        }
+    }
+
+    private suspend fun refreshAll(ports: List<Port>) = coroutineScope {
+        ports.map { it.component }.distinctBy { it.component }.map { async { it.refresh() } }.awaitAll()
+    }
+
+    override fun toString(): String = "port $path"
+}
+
+/** A connection as read from one of its ports. */
+public data class Connection(val id: String, val name: String, val properties: Map<String, String>, val ports: List<End>) {
+    /** One connected port: OpenRTM's name for it and, where the tree knows its component, its path. */
+    public data class End(val fullName: String, val path: RtcPath?)
+}

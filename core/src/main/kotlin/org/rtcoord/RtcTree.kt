@@ -1,0 +1,149 @@
+package org.rtcoord
+
+import RTM.ManagerHelper
+import OpenRTM.DataFlowComponentHelper
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.flow
+import kotlinx.coroutines.future.future
+import org.rtcoord.internal.TreeCore
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.CopyOnWriteArrayList
+
+/**
+ * A live tree of an RT system, as rtctree-erl built it for the paper: the root, name servers, naming
+ * contexts, managers and components, each node caching what it last read and re-reading on refresh.
+ *
+ * Discovery is concurrent and bounded by [TreeConfig.concurrency]; every remote call has a deadline;
+ * a dead, hung or unreachable object becomes a [ZombieNode] without holding up the rest. Close the tree
+ * to release its ORB (unless the host application supplied it).
+ */
+public class RtcTree private constructor(public val config: TreeConfig) : AutoCloseable {
+    internal val core = TreeCore(config)
+    private val servers = CopyOnWriteArrayList<NameServerNode>()
+
+    /** The root node; its children are the name servers. */
+    public val root: RootNode = RootNode(core) { servers.toList() }
+
+    init {
+        config.nameServers.forEach(::addNameServer)
+    }
+
+    /** The name servers, in the order they were added. */
+    public val nameServers: List<NameServerNode> get() = servers.toList()
+
+    /** Adds a name server (`host`, `host:port` or `corbaloc:`), or returns it if the tree has it already. */
+    public fun addNameServer(address: String): NameServerNode {
+        val path = RtcPath.nameServer(address)
+        synchronized(servers) {
+            servers.firstOrNull { it.path == path }?.let { return it }
+            return NameServerNode(path, core).also { servers += it }
+        }
+    }
+
+    /** Removes the name server at [address]; returns whether the tree had it. */
+    public fun removeNameServer(address: String): Boolean {
+        val path = RtcPath.nameServer(address)
+        return servers.removeIf { it.path == path }
+    }
+
+    /**
+     * The node at [path] (absolute, or relative to [workingDirectory]). A name server named in an
+     * absolute path is added if the tree does not have it yet. Reads only what the path needs.
+     */
+    public suspend fun node(path: String, workingDirectory: RtcPath? = null): Node = node(RtcPath.parse(path, workingDirectory))
+
+    /** The node at [path]; a port suffix is ignored (see [port]). */
+    public suspend fun node(path: RtcPath): Node {
+        path.objectReference?.let { return objectNode(path, it) }
+        if (path.isRoot) return root
+        var node: Node = addNameServer(path.nameServer!!)
+        for (name in path.names) {
+            val directory = node as? DirectoryNode ?: throw WrongKindException(node.path.toString(), "directory", node.kind.label())
+            node = directory.child(name) ?: throw NotFoundException(directory.path.child(name).toString())
+        }
+        return node
+    }
+
+    /** The component at [path]; fails if something else (or a dead registration) is there. */
+    public suspend fun component(path: String, workingDirectory: RtcPath? = null): ComponentNode =
+        when (val node = node(path, workingDirectory)) {
+            is ComponentNode -> node
+            is ZombieNode -> throw node.cause
+            else -> throw WrongKindException(node.path.toString(), "component", node.kind.label())
+        }
+
+    /** The manager at [path]. */
+    public suspend fun manager(path: String, workingDirectory: RtcPath? = null): ManagerNode =
+        when (val node = node(path, workingDirectory)) {
+            is ManagerNode -> node
+            is ZombieNode -> throw node.cause
+            else -> throw WrongKindException(node.path.toString(), "manager", node.kind.label())
+        }
+
+    /** The port at `component.rtc:port`. */
+    public suspend fun port(path: String, workingDirectory: RtcPath? = null): Port {
+        val parsed = RtcPath.parse(path, workingDirectory)
+        val port = parsed.port ?: throw BadPathException(path, parsed.names.size, "no port given (component.rtc:port)")
+        return component(parsed.withPort(null).toString()).port(port)
+    }
+
+    /** Connects the ports at [from] and [to] (see [Port.connect]). */
+    public suspend fun connect(
+        from: String,
+        to: String,
+        properties: Map<String, String> = emptyMap(),
+        name: String? = null,
+        workingDirectory: RtcPath? = null,
+    ): ConnectorSnapshot = port(from, workingDirectory).connect(listOf(port(to, workingDirectory)), properties, name)
+
+    /** Reads the subtree at [path] again, [depth] levels deep (the whole of it by default), concurrently. */
+    public suspend fun refresh(path: RtcPath = RtcPath.ROOT, depth: Int = Int.MAX_VALUE) {
+        node(path).refresh(depth)
+    }
+
+    /**
+     * Every node below [from] (included) for which [predicate] holds, in depth-first order, listing
+     * directories as the walk reaches them. Unreachable branches are skipped.
+     */
+    public fun find(from: RtcPath = RtcPath.ROOT, predicate: suspend (Node) -> Boolean = { true }): Flow<Node> = flow {
+        suspend fun walk(node: Node) {
+            if (predicate(node)) emit(node)
+            if (node is DirectoryNode) {
+                val children = try { node.children() } catch (e: RtcException) { emptyList() }
+                children.forEach { walk(it) }
+            }
+        }
+        walk(node(from))
+    }
+
+    /** [node] for Java callers. */
+    public fun nodeAsync(path: String): CompletableFuture<Node> = core.scope.future { node(path) }
+
+    /** [refresh] for Java callers. */
+    public fun refreshAsync(path: String): CompletableFuture<Unit> = core.scope.future { refresh(RtcPath.parse(path)) }
+
+    /** Stops the tree's work and releases its ORB, unless the host application supplied the ORB. */
+    override fun close() {
+        core.close()
+    }
+
+    private suspend fun objectNode(path: RtcPath, corbaloc: String): Node {
+        val target = core.orb.orb.string_to_object(corbaloc)
+        return when {
+            core.remote.call(corbaloc, "_is_a") { target._is_a("IDL:omg.org/RTC/RTObject:1.0") } ->
+                ComponentNode(path, core, core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target)))
+            core.remote.call(corbaloc, "_is_a") { target._is_a("IDL:RTM/Manager:1.0") } ->
+                ManagerNode(path, core, ManagerHelper.unchecked_narrow(target), null)
+            else -> UnknownNode(path, core, target)
+        }
+    }
+
+    public companion object {
+        /** A tree configured by [config]. */
+        @JvmStatic
+        @JvmOverloads
+        public fun create(config: TreeConfig = TreeConfig()): RtcTree = RtcTree(config)
+    }
+}
+
+internal fun NodeKind.label(): String = name.lowercase().replace('_', ' ')

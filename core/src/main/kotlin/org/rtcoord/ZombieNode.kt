@@ -1,0 +1,27 @@
+package org.rtcoord
+
+import org.rtcoord.internal.TreeCore
+
+/**
+ * A registration whose object is dead, unreachable or hung: it is still bound in naming (rtshell marks
+ * it with `*`). [cause] says what happened when it was last tried.
+ */
+public class ZombieNode internal constructor(
+    path: RtcPath,
+    core: TreeCore,
+    /** Why the object is taken for dead. */
+    public val cause: RtcException,
+    private val parent: DirectoryNode,
+) : Node(path, core) {
+    override val kind: NodeKind get() = NodeKind.ZOMBIE
+
+    override suspend fun refresh(depth: Int) {
+        parent.refresh(0)
+    }
+
+    /** Removes the dead binding from its naming context, as `rtdel` does. */
+    public suspend fun unbind() {
+        val context = parent as? NamingDirectory ?: throw WrongKindException(path.toString(), "binding in a naming context", "object below a manager")
+        context.unbind(name)
+    }
+}

@@ -1,0 +1,108 @@
+package org.rtcoord.internal
+
+import RTC.ExecutionContext
+import RTC.ExecutionContextServiceHelper
+import RTC.PortService
+import RTC.RTObject
+import _SDOPackage.NameValue
+import kotlinx.coroutines.async
+import kotlinx.coroutines.awaitAll
+import kotlinx.coroutines.coroutineScope
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ConfigurationSnapshot
+import org.rtcoord.ConnectorSnapshot
+import org.rtcoord.ContextSnapshot
+import org.rtcoord.LifeCycle
+import org.rtcoord.OperationUnsupportedException
+import org.rtcoord.PortKind
+import org.rtcoord.PortSnapshot
+
+/** Reads a full [ComponentSnapshot], issuing the independent remote calls concurrently. */
+internal class ComponentReader(private val remote: Remote, private val subject: String, private val ref: RTObject) {
+
+    /** A snapshot and the references behind it. */
+    class Reading(val snapshot: ComponentSnapshot, val contexts: Map<Int, ExecutionContext>, val ports: Map<String, PortService>)
+
+    suspend fun read(): Reading = coroutineScope {
+        val profile = async { remote.call(subject, "get_component_profile") { ref.get_component_profile() } }
+        val contexts = async { readContexts() }
+        val configuration = async { readConfiguration() }
+        val p = profile.await()
+        val (contextSnapshots, contextRefs) = contexts.await()
+        val snapshot = ComponentSnapshot(
+            instanceName = p.instance_name,
+            typeName = p.type_name,
+            description = p.description,
+            version = p.version,
+            vendor = p.vendor,
+            category = p.category,
+            properties = p.properties.toMap(),
+            ports = p.port_profiles.map { port ->
+                val properties = port.properties.toMap()
+                PortSnapshot(
+                    name = port.name.removePrefix("${p.instance_name}."),
+                    fullName = port.name,
+                    kind = when (properties["port.port_type"]) {
+                        "DataInPort" -> PortKind.DATA_IN
+                        "DataOutPort" -> PortKind.DATA_OUT
+                        "CorbaPort" -> PortKind.SERVICE
+                        else -> PortKind.OTHER
+                    },
+                    dataType = properties["dataport.data_type"],
+                    properties = properties,
+                    connectors = port.connector_profiles.map { connector ->
+                        ConnectorSnapshot(connector.connector_id, connector.name, emptyList(), connector.properties.toMap())
+                    },
+                )
+            },
+            contexts = contextSnapshots,
+            configuration = configuration.await(),
+        )
+        Reading(snapshot, contextRefs, p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref })
+    }
+
+    private suspend fun readContexts(): Pair<List<ContextSnapshot>, Map<Int, ExecutionContext>> = coroutineScope {
+        val owned = async { remote.call(subject, "get_owned_contexts") { ref.get_owned_contexts() } }
+        val participating = async { remote.call(subject, "get_participating_contexts") { ref.get_participating_contexts() } }
+        val all = owned.await().map { it to true } + participating.await().map { it to false }
+        val read = all.map { (context, isOwned) -> async { readContext(context, isOwned) } }.awaitAll()
+        read.map { it.first } to read.associate { it.first.handle to it.second }
+    }
+
+    private suspend fun readContext(context: ExecutionContext, owned: Boolean): Pair<ContextSnapshot, ExecutionContext> = coroutineScope {
+        val handle = async { remote.call(subject, "get_context_handle") { ref.get_context_handle(context) } }
+        val state = async { remote.call(subject, "get_component_state") { context.get_component_state(ref) } }
+        val running = async { remote.call(subject, "is_running") { context.is_running() } }
+        val profile = async {
+            // Plain ExecutionContexts have no profile: fall back to what every context answers.
+            try {
+                remote.call(subject, "get_profile") { ExecutionContextServiceHelper.unchecked_narrow(context).get_profile() }
+                    .let { Triple(it.kind.label(), it.rate, it.participants.size) }
+            } catch (e: OperationUnsupportedException) {
+                Triple(remote.call(subject, "get_kind") { context.get_kind() }.label(), remote.call(subject, "get_rate") { context.get_rate() }, 0)
+            }
+        }
+        val (kind, rate, participants) = profile.await()
+        ContextSnapshot(handle.await(), owned, kind, rate, running.await(), LifeCycle.of(state.await()), participants) to context
+    }
+
+    private suspend fun readConfiguration(): ConfigurationSnapshot {
+        val configuration = try {
+            remote.call(subject, "get_configuration") { ref.get_configuration() }
+        } catch (e: OperationUnsupportedException) {
+            return ConfigurationSnapshot.NONE
+        }
+        return coroutineScope {
+            val sets = async { remote.call(subject, "get_configuration_sets") { configuration.get_configuration_sets() } }
+            val active = async { remote.call(subject, "get_active_configuration_set") { configuration.get_active_configuration_set().id } }
+            ConfigurationSnapshot(sets.await().associate { it.id to it.configuration_data.toMap() }, active.await())
+        }
+    }
+}
+
+/** A name-value list as strings; values that are not strings are shown as CORBA prints them. */
+internal fun Array<NameValue>.toMap(): Map<String, String> = associate { entry ->
+    entry.name to (runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString())
+}
+
+private fun RTC.ExecutionKind.label(): String = listOf("PERIODIC", "EVENT_DRIVEN", "OTHER").getOrElse(value()) { "UNKNOWN" }

@@ -1,0 +1,78 @@
+package org.rtcoord.internal
+
+import RTC.ReturnCode_t
+import kotlinx.coroutines.CoroutineDispatcher
+import kotlinx.coroutines.runInterruptible
+import kotlinx.coroutines.withTimeoutOrNull
+import org.rtcoord.BadParameterException
+import org.rtcoord.OperationFailedException
+import org.rtcoord.OperationUnsupportedException
+import org.rtcoord.PreconditionNotMetException
+import org.rtcoord.RtcException
+import org.rtcoord.TimedOutException
+import org.rtcoord.UnreachableException
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+
+/**
+ * Runs blocking CORBA calls on a bounded dispatcher, turning every failure into an [RtcException] about
+ * the call's subject. The tree's own ORB times every call out at the tree's deadline; a coroutine
+ * backstop also ends the wait at a call's own (shorter) deadline, and is the only guard on an ORB a
+ * host application supplied. One hung object holds at most the threads of the calls made to it.
+ */
+internal class Remote(private val dispatcher: CoroutineDispatcher, val defaultDeadline: Duration) {
+
+    suspend fun <T> call(subject: String, operation: String, deadline: Duration? = null, block: () -> T): T {
+        val limit = deadline ?: defaultDeadline
+        val outcome = withTimeoutOrNull(limit + BACKSTOP) {
+            runInterruptible(dispatcher) {
+                try {
+                    Result.success(block())
+                } catch (e: Exception) {
+                    Result.failure(translate(e, subject, operation, limit))
+                }
+            }
+        } ?: throw TimedOutException(subject, operation, limit.inWholeMilliseconds)
+        return outcome.getOrThrow()
+    }
+
+    /** Calls [block] and fails unless the component answered `RTC_OK`. */
+    suspend fun check(subject: String, operation: String, deadline: Duration? = null, block: () -> ReturnCode_t) {
+        call(subject, operation, deadline, block).orFail(subject, operation)
+    }
+
+    private companion object {
+        val BACKSTOP = 200.milliseconds
+    }
+}
+
+/** Throws the error a `ReturnCode_t` other than `RTC_OK` stands for. */
+internal fun ReturnCode_t.orFail(subject: String, operation: String, detail: String? = null) {
+    when (this) {
+        ReturnCode_t.RTC_OK -> Unit
+        ReturnCode_t.PRECONDITION_NOT_MET -> throw PreconditionNotMetException(subject, operation, detail ?: "PRECONDITION_NOT_MET")
+        ReturnCode_t.BAD_PARAMETER -> throw BadParameterException(subject, operation, detail ?: "BAD_PARAMETER")
+        ReturnCode_t.UNSUPPORTED -> throw OperationUnsupportedException(subject, operation)
+        else -> throw OperationFailedException(subject, operation, name(), detail)
+    }
+}
+
+/** The IDL name of a return code (`RTC_ERROR`, ...). */
+internal fun ReturnCode_t.name(): String =
+    listOf("RTC_OK", "RTC_ERROR", "BAD_PARAMETER", "UNSUPPORTED", "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET").getOrElse(value()) { "code ${value()}" }
+
+private fun translate(e: Exception, subject: String, operation: String, limit: Duration): Exception = when (e) {
+    is RtcException -> e
+    is org.omg.CORBA.TIMEOUT -> TimedOutException(subject, operation, limit.inWholeMilliseconds)
+    is org.omg.CORBA.TRANSIENT, is org.omg.CORBA.COMM_FAILURE, is org.omg.CORBA.OBJECT_NOT_EXIST,
+    is org.omg.CORBA.NO_RESPONSE, is org.omg.CORBA.INV_OBJREF -> UnreachableException(subject, e)
+    is org.omg.CORBA.BAD_OPERATION, is org.omg.CORBA.NO_IMPLEMENT -> OperationUnsupportedException(subject, operation)
+    is _SDOPackage.InvalidParameter -> BadParameterException(subject, operation, e.description)
+    is _SDOPackage.InterfaceNotImplemented -> OperationUnsupportedException(subject, operation)
+    is _SDOPackage.NotAvailable -> OperationFailedException(subject, operation, "NotAvailable", e.description)
+    is _SDOPackage.InternalError -> OperationFailedException(subject, operation, "InternalError", e.description)
+    is org.omg.CORBA.SystemException -> OperationFailedException(subject, operation, e.javaClass.simpleName, e.message)
+    is org.omg.CORBA.UserException -> OperationFailedException(subject, operation, e.javaClass.simpleName)
+    is InterruptedException -> TimedOutException(subject, operation, limit.inWholeMilliseconds)
+    else -> e
+}

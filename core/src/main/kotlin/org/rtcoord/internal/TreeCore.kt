@@ -1,0 +1,27 @@
+package org.rtcoord.internal
+
+import kotlinx.coroutines.CoroutineExceptionHandler
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import org.rtcoord.TreeConfig
+import org.slf4j.LoggerFactory
+
+/** What every node of one tree shares: the ORB, the remote-call runner, the scope and the registry. */
+internal class TreeCore(val config: TreeConfig) : AutoCloseable {
+    private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
+
+    val orb = OrbHolder(config.orb, config.listenAddress, config.callTimeout)
+    val remote = Remote(Dispatchers.IO.limitedParallelism(config.concurrency), config.callTimeout)
+    val scope = CoroutineScope(
+        SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
+    )
+    val components = ComponentRegistry(this)
+
+    override fun close() {
+        scope.cancel()
+        orb.close()
+    }
+}

@@ -1,0 +1,109 @@
+package org.rtcoord
+
+import kotlinx.coroutines.flow.toList
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.runPeer
+
+class TreeDiscoveryTest {
+    private val localisation = LocalisationSystem()
+    private val tree = localisation.tree
+
+    @AfterEach
+    fun stop() = localisation.close()
+
+    @Test
+    fun `the tree holds what rtls -R lists`() = runBlocking {
+        tree.refresh()
+        val ours = tree.find().toList().filter { it !is RootNode && it !is NameServerNode }
+            .map { node -> node.path.names.joinToString("/") + if (node is DirectoryNode) "/" else "" }.toSet()
+
+        val listing = runPeer("rtls", "-R", "/${localisation.naming.address}/").ok().output
+        assertEquals(rtlsPaths(listing), ours)
+    }
+
+    @Test
+    fun `components carry their profile, ports, contexts and configuration`() = runBlocking {
+        val localiser = tree.component(localisation.path("laser_localise0.rtc")).snapshot()
+        assertEquals("laser_localise", localiser.typeName)
+        assertEquals(listOf("laser", "odo", "pose"), localiser.ports.map { it.name })
+        assertEquals(PortKind.DATA_IN, localiser.port("laser")!!.kind)
+        assertEquals("IDL:RTC/TimedDoubleSeq:1.0", localiser.port("pose")!!.dataType)
+        assertEquals(1, localiser.port("laser")!!.connectors.size)
+        assertEquals(LifeCycle.ACTIVE, localiser.state)
+        val context = localiser.context(0)!!
+        assertTrue(context.owned && context.running)
+        assertEquals("PERIODIC", context.kind)
+        assertEquals("default", localiser.configuration.activeSet)
+        assertEquals("1.0", localiser.configuration.value("gain"))
+        assertTrue("__constraints__" in localiser.configuration.sets)
+    }
+
+    @Test
+    fun `a component below its manager is the same live component as in its naming context`() = runBlocking {
+        tree.refresh()
+        val named = tree.component(localisation.path("laser0.rtc"))
+        val managed = tree.component(localisation.path("manager.mgr/manager_slave/laser0.rtc"))
+        assertTrue(named.isSameComponent(managed))
+        named.deactivate()
+        assertEquals(LifeCycle.INACTIVE, managed.snapshots.value!!.state)
+    }
+
+    @Test
+    fun `refresh shows new bindings and drops vanished ones, keeping the nodes that stay`() = runBlocking {
+        val context = tree.node(localisation.host) as ContextNode
+        val before = context.children()
+        val gyro = before.first { it.name == "gyro0.rtc" }
+
+        localisation.system.runtime.create(Scenarios.relay, "newcomer0")
+        localisation.system.component("odometry0").ref.exit()
+        org.rtcoord.fixtures.await("odometry0 to unbind itself") {
+            runBlocking { context.refresh() }
+            context.listed.value!!.none { it.name == "odometry0.rtc" }
+        }
+
+        val after = context.children().map { it.name }
+        assertTrue("newcomer0.rtc" in after, after.toString())
+        assertTrue("odometry0.rtc" !in after, after.toString())
+        assertTrue(context.children().first { it.name == "gyro0.rtc" } === gyro)
+    }
+
+    @Test
+    fun `paths name servers with or without a trailing slash, and relative paths resolve`() = runBlocking {
+        val server = tree.node("/${localisation.naming.address}")
+        assertTrue(server is NameServerNode)
+        assertTrue(tree.node("/${localisation.naming.address}/") === server)
+        val working = RtcPath.parse(localisation.host + "/")
+        assertEquals("gyro0.rtc", tree.node("gyro0.rtc", working).name)
+        assertEquals(NodeKind.CONTEXT, tree.node("..", RtcPath.parse(localisation.host + "/manager.mgr")).kind)
+    }
+
+    @Test
+    fun `find filters nodes across the tree`() = runBlocking {
+        tree.refresh()
+        val active = tree.find { it is ComponentNode && it.snapshot().state == LifeCycle.ACTIVE }.toList()
+            .filter { it.path.names.size == 2 }.map { it.name }.toSet()
+        assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"), active)
+        val withPose = tree.find { it is ComponentNode && it.snapshot().port("pose") != null }.toList().map { it.name }.toSet()
+        assertEquals(setOf("laser_localise0.rtc"), withPose)
+    }
+
+    /** Every path rtls -R prints, relative to the name server, directories with a trailing slash. */
+    private fun rtlsPaths(listing: String): Set<String> {
+        val paths = mutableSetOf<String>()
+        var directory = ""
+        for (line in listing.lines().map { it.trim() }.filter { it.isNotEmpty() }) {
+            if (line.endsWith(":")) {
+                directory = line.removeSuffix(":").removePrefix(".").removePrefix("/")
+                continue
+            }
+            line.split(Regex("\\s+")).forEach { entry -> paths += if (directory.isEmpty()) entry else "$directory/$entry" }
+        }
+        return paths
+    }
+}
