@@ -42,12 +42,10 @@ public data class PortSnapshot(
     val connectors: List<ConnectorSnapshot>,
 )
 
-/** A connection as one of its ports records it. */
+/** A connection as one of its ports records it; [Port.connections] resolves its ends to tree paths. */
 public data class ConnectorSnapshot(
     val id: String,
     val name: String,
-    /** OpenRTM's names (`instance.port`) of the connected ports, in profile order, where known. */
-    val portNames: List<String>,
     val properties: Map<String, String>,
 )
 

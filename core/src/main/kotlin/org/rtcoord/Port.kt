@@ -58,7 +58,7 @@ public class Port internal constructor(
             .orFail(subject, "connect", "to ${others.joinToString { it.path.toString() }}")
         refreshAll(ports)
         val made = holder.value
-        return ConnectorSnapshot(made.connector_id, made.name, snapshots.map { it.fullName }, made.properties.toMap())
+        return ConnectorSnapshot(made.connector_id, made.name, made.properties.toMap())
     }
 
     /** Removes the connection [connectorId] from this port and its peers. */

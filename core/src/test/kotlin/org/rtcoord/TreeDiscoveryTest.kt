@@ -18,7 +18,7 @@ class TreeDiscoveryTest {
     fun stop() = localisation.close()
 
     @Test
-    fun `the tree holds what rtls -R lists`() = runBlocking {
+    fun `the tree holds what rtls -R lists`(): Unit = runBlocking {
         tree.refresh()
         val ours = tree.find().toList().filter { it !is RootNode && it !is NameServerNode }
             .map { node -> node.path.names.joinToString("/") + if (node is DirectoryNode) "/" else "" }.toSet()
@@ -28,7 +28,7 @@ class TreeDiscoveryTest {
     }
 
     @Test
-    fun `components carry their profile, ports, contexts and configuration`() = runBlocking {
+    fun `components carry their profile, ports, contexts and configuration`(): Unit = runBlocking {
         val localiser = tree.component(localisation.path("laser_localise0.rtc")).snapshot()
         assertEquals("laser_localise", localiser.typeName)
         assertEquals(listOf("laser", "odo", "pose"), localiser.ports.map { it.name })
@@ -45,7 +45,7 @@ class TreeDiscoveryTest {
     }
 
     @Test
-    fun `a component below its manager is the same live component as in its naming context`() = runBlocking {
+    fun `a component below its manager is the same live component as in its naming context`(): Unit = runBlocking {
         tree.refresh()
         val named = tree.component(localisation.path("laser0.rtc"))
         val managed = tree.component(localisation.path("manager.mgr/manager_slave/laser0.rtc"))
@@ -55,7 +55,7 @@ class TreeDiscoveryTest {
     }
 
     @Test
-    fun `refresh shows new bindings and drops vanished ones, keeping the nodes that stay`() = runBlocking {
+    fun `refresh shows new bindings and drops vanished ones, keeping the nodes that stay`(): Unit = runBlocking {
         val context = tree.node(localisation.host) as ContextNode
         val before = context.children()
         val gyro = before.first { it.name == "gyro0.rtc" }
@@ -74,7 +74,7 @@ class TreeDiscoveryTest {
     }
 
     @Test
-    fun `paths name servers with or without a trailing slash, and relative paths resolve`() = runBlocking {
+    fun `paths name servers with or without a trailing slash, and relative paths resolve`(): Unit = runBlocking {
         val server = tree.node("/${localisation.naming.address}")
         assertTrue(server is NameServerNode)
         assertTrue(tree.node("/${localisation.naming.address}/") === server)
@@ -84,7 +84,7 @@ class TreeDiscoveryTest {
     }
 
     @Test
-    fun `find filters nodes across the tree`() = runBlocking {
+    fun `find filters nodes across the tree`(): Unit = runBlocking {
         tree.refresh()
         val active = tree.find { it is ComponentNode && it.snapshot().state == LifeCycle.ACTIVE }.toList()
             .filter { it.path.names.size == 2 }.map { it.name }.toSet()

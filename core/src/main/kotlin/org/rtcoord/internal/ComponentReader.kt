@@ -51,7 +51,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
                     dataType = properties["dataport.data_type"],
                     properties = properties,
                     connectors = port.connector_profiles.map { connector ->
-                        ConnectorSnapshot(connector.connector_id, connector.name, emptyList(), connector.properties.toMap())
+                        ConnectorSnapshot(connector.connector_id, connector.name, connector.properties.toMap())
                     },
                 )
             },

@@ -1,0 +1,188 @@
+package org.rtcoord
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertFalse
+import org.junit.jupiter.api.Assertions.assertThrows
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.FixtureProcess
+import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.awaitValue
+import org.rtcoord.fixtures.runPeer
+
+/** Every operation, checked by reading the result back through rtshell or a second tree. */
+class TreeOperationsTest {
+    private val localisation = LocalisationSystem()
+    private val tree = localisation.tree
+    private val witness = RtcTree.create(TreeConfig(nameServers = listOf(localisation.naming.address)))
+
+    @AfterEach
+    fun stop() {
+        witness.close()
+        localisation.close()
+    }
+
+    private fun path(name: String) = localisation.path(name)
+
+    private fun rtcatState(name: String) = runPeer("rtcat", path(name)).ok().output.lines().first()
+
+    private suspend fun seen(name: String): ComponentSnapshot = witness.component(path(name)).also { it.refresh() }.snapshot()
+
+    @Test
+    fun `activate, deactivate and reset wait for the state, as rtcat reads it`(): Unit = runBlocking {
+        val laser = tree.component(path("laser0.rtc"))
+        laser.deactivate()
+        assertEquals("laser0.rtc  Inactive", rtcatState("laser0.rtc"))
+        laser.activate()
+        assertEquals("laser0.rtc  Active", rtcatState("laser0.rtc"))
+
+        localisation.system.component("laser0").fail()
+        await("laser0 in ERROR") { runBlocking { laser.state() } == LifeCycle.ERROR }
+        laser.reset()
+        assertEquals("laser0.rtc  Inactive", rtcatState("laser0.rtc"))
+        assertEquals(LifeCycle.INACTIVE, laser.snapshots.value!!.state)
+    }
+
+    @Test
+    fun `a refused transition says which state the component is in`(): Unit = runBlocking {
+        val gyro = tree.component(path("gyro0.rtc"))
+        val refused = assertThrows(PreconditionNotMetException::class.java) { runBlocking { gyro.activate() } }
+        assertEquals("${path("gyro0.rtc")}: activate refused: the component is ACTIVE in context 0, not INACTIVE", refused.message)
+        assertThrows(NotFoundException::class.java) { runBlocking { gyro.activate(ContextSelector.Handle(7)) } }
+        assertThrows(NotFoundException::class.java) { runBlocking { gyro.activate(ContextSelector.Index(3)) } }
+    }
+
+    @Test
+    fun `exit removes the component from the system`(): Unit = runBlocking {
+        tree.component(path("odometry0.rtc")).exit()
+        await("odometry0 to leave naming") { runBlocking { witness.refresh() }; runBlocking { (witness.node(localisation.host) as ContextNode).children() }.none { it.name == "odometry0.rtc" } }
+        assertFalse(runPeer("rtls", localisation.host + "/").ok().output.contains("odometry0.rtc"))
+    }
+
+    @Test
+    fun `connect by paths makes data flow and disconnect by id stops it`(): Unit = runBlocking {
+        val master = tree.manager(path("manager.mgr"))
+        val localiser = master.create("odo_localise")
+        assertEquals(path("odo_localise0.rtc"), localiser.path.toString())
+        val odo = tree.connect(path("odometry0.rtc:odo"), path("odo_localise0.rtc:odo"))
+        tree.connect(path("gyro0.rtc:gyro"), path("odo_localise0.rtc:gyro"))
+        assertTrue(odo.id.isNotEmpty())
+
+        val seenPorts = seen("odo_localise0.rtc").ports.associate { it.name to it.connectors.size }
+        assertEquals(mapOf("odo" to 1, "gyro" to 1, "pose" to 0), seenPorts)
+        val fixture = localisation.system.component("odo_localise0")
+        awaitValue("odometry flowing into odo_localise0") { fixture.latest("odo") }
+
+        val connections = tree.port(path("odo_localise0.rtc:odo")).connections()
+        assertEquals(listOf(path("odometry0.rtc:odo"), path("odo_localise0.rtc:odo")), connections.single().ports.map { it.path.toString() })
+
+        tree.port(path("odo_localise0.rtc:odo")).disconnect(odo.id)
+        assertEquals(0, seen("odo_localise0.rtc").port("odo")!!.connectors.size)
+        assertEquals(1, seen("odometry0.rtc").port("odo")!!.connectors.size - 0, "odometry0 still feeds laser_localise0")
+
+        tree.component(path("odo_localise0.rtc")).disconnectAll()
+        assertTrue(seen("odo_localise0.rtc").ports.all { it.connectors.isEmpty() })
+    }
+
+    @Test
+    fun `incompatible ports are refused before anything changes`(): Unit = runBlocking {
+        val refused = assertThrows(BadParameterException::class.java) {
+            runBlocking { tree.connect(path("gyro0.rtc:gyro"), path("laser_localise0.rtc:laser")) }
+        }
+        assertTrue(refused.message!!.contains("incompatible data types"), refused.message)
+        assertThrows(BadParameterException::class.java) {
+            runBlocking { tree.connect(path("laser0.rtc:laser"), path("laser_localise0.rtc:laser"), mapOf("dataport.dataflow_type" to "pull")) }
+        }
+        val missing = assertThrows(NotFoundException::class.java) { runBlocking { tree.port(path("gyro0.rtc:nope")) } }
+        assertEquals("${path("gyro0.rtc")}:nope: no such port (ports: gyro)", missing.message)
+        assertEquals(1, seen("laser_localise0.rtc").port("laser")!!.connectors.size)
+        assertEquals(0, seen("gyro0.rtc").port("gyro")!!.connectors.size)
+    }
+
+    @Test
+    fun `configuration parameters and sets change as rtconf reads them`(): Unit = runBlocking {
+        val localiser = tree.component(path("laser_localise0.rtc"))
+        localiser.setParameter("gain", "2.5")
+        assertEquals("2.5", runPeer("rtconf", path("laser_localise0.rtc"), "get", "gain").ok().output.trim())
+        assertThrows(BadParameterException::class.java) { runBlocking { localiser.setParameter("gain", "fast") } }
+        assertThrows(NotFoundException::class.java) { runBlocking { localiser.setParameter("speed", "1") } }
+
+        localiser.activateConfigurationSet("precise")
+        assertEquals("+default\n+precise*", runPeer("rtconf", path("laser_localise0.rtc"), "list").ok().output.trim())
+        localiser.addConfigurationSet("night", mapOf("gain" to "3.0", "fail" to "0"))
+        assertEquals("3.0", seen("laser_localise0.rtc").configuration.sets.getValue("night")["gain"])
+        assertThrows(BadParameterException::class.java) { runBlocking { localiser.removeConfigurationSet("precise") } }
+        localiser.removeConfigurationSet("night")
+        assertFalse("night" in seen("laser_localise0.rtc").configuration.sets)
+        assertThrows(BadParameterException::class.java) { runBlocking { localiser.activateConfigurationSet("missing") } }
+    }
+
+    @Test
+    fun `execution context rate and participants change`(): Unit = runBlocking {
+        val gyro = tree.component(path("gyro0.rtc"))
+        val context = gyro.executionContext()
+        context.setRate(50.0)
+        assertEquals(50.0, seen("gyro0.rtc").context(0)!!.rate)
+        assertThrows(BadParameterException::class.java) { runBlocking { context.setRate(-1.0) } }
+
+        val laser = tree.component(path("laser0.rtc"))
+        context.add(laser)
+        assertEquals(listOf(0, 1000), seen("laser0.rtc").contexts.map { it.handle })
+        assertEquals(LifeCycle.INACTIVE, laser.state(ContextSelector.Handle(1000)))
+        assertEquals(LifeCycle.INACTIVE, laser.state(ContextSelector.Index(1)))
+        context.remove(laser)
+        assertEquals(listOf(0), seen("laser0.rtc").contexts.map { it.handle })
+    }
+
+    @Test
+    fun `the manager creates, deletes, loads and unloads`(): Unit = runBlocking {
+        val master = tree.manager(path("manager.mgr"))
+        assertTrue(master.isMaster())
+        assertEquals("odo_localise0", master.create("odo_localise").snapshot().instanceName)
+        assertEquals("odo_localise1", master.create("odo_localise").snapshot().instanceName)
+        assertEquals("custom", master.create("odo_localise", instanceName = "custom").snapshot().instanceName)
+        val unknown = assertThrows(NotFoundException::class.java) { runBlocking { master.create("sonar") } }
+        assertTrue(unknown.message!!.contains("no factory for component type 'sonar'"), unknown.message)
+
+        master.delete("odo_localise0")
+        val names = (witness.node(localisation.host) as ContextNode).children().map { it.name }
+        assertTrue("odo_localise0.rtc" !in names && "odo_localise1.rtc" in names, names.toString())
+        assertThrows(NotFoundException::class.java) { runBlocking { master.delete("odo_localise0") } }
+
+        val slave = master.children().filterIsInstance<ManagerNode>().single()
+        slave.unloadModule("localisers.so")
+        assertFalse(slave.factories().any { it["implementation_id"] == "odo_localise" })
+        assertEquals(listOf("sensors.so"), slave.loadedModules().map { it["file_path"] })
+        slave.loadModule("localisers.so")
+        assertTrue(slave.factories().any { it["implementation_id"] == "odo_localise" })
+        assertThrows(BadParameterException::class.java) { runBlocking { slave.loadModule("missing.so") } }
+        assertEquals(setOf("sensors.so", "localisers.so"), slave.loadableModules().map { it["module_file_name"] }.toSet())
+    }
+
+    @Test
+    fun `a dead registration becomes a zombie that can be unbound`(): Unit = runBlocking {
+        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:doomed0").use { process ->
+            assertEquals("doomed0", tree.component(path("doomed0.rtc")).snapshot().instanceName)
+            process.kill()
+        }
+        tree.refresh()
+        val zombie = (tree.node(localisation.host) as ContextNode).children().single { it.name == "doomed0.rtc" }
+        assertTrue(zombie is ZombieNode, zombie.toString())
+        assertTrue((zombie as ZombieNode).cause is UnreachableException, zombie.cause.toString())
+        assertTrue(runPeer("rtls", localisation.host + "/").ok().output.contains("*doomed0.rtc"))
+
+        zombie.unbind()
+        assertFalse(runPeer("rtls", localisation.host + "/").ok().output.contains("doomed0.rtc"))
+    }
+
+    @Test
+    fun `bad paths and wrong kinds are precise errors`(): Unit = runBlocking {
+        assertThrows(BadPathException::class.java) { runBlocking { tree.node("/${localisation.naming.address}//x") } }
+        assertThrows(NotFoundException::class.java) { runBlocking { tree.node(path("sonar0.rtc")) } }
+        val wrong = assertThrows(WrongKindException::class.java) { runBlocking { tree.component(path("manager.mgr")) } }
+        assertEquals("${path("manager.mgr")}: is a manager, not a component", wrong.message)
+        assertThrows(WrongKindException::class.java) { runBlocking { tree.node(path("gyro0.rtc") + "/deeper") } }
+    }
+}
