@@ -42,6 +42,9 @@ public class ComponentNode internal constructor(
         component.refresh(subject)
     }
 
+    /** The configuration sets, read now if they never were (later refreshes keep them up to date). */
+    public suspend fun configuration(): ConfigurationSnapshot = snapshot().configuration ?: component.loadConfiguration(subject)
+
     /** Whether this and [other] are the same component, reached by different paths or not. */
     public fun isSameComponent(other: ComponentNode): Boolean = component === other.component
 

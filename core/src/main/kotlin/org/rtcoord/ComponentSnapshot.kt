@@ -1,8 +1,9 @@
 package org.rtcoord
 
 /**
- * Everything read from a component at one moment: profile, ports with their connectors, execution
- * contexts with the component's state in each, and configuration. Immutable; a refresh publishes a new one.
+ * What was read from a component at one moment: profile, ports with their connectors, execution
+ * contexts with the component's state in each, and configuration once it was asked for
+ * ([ComponentNode.configuration]). Immutable; a refresh publishes a new one.
  */
 public data class ComponentSnapshot(
     val instanceName: String,
@@ -14,7 +15,8 @@ public data class ComponentSnapshot(
     val properties: Map<String, String>,
     val ports: List<PortSnapshot>,
     val contexts: List<ContextSnapshot>,
-    val configuration: ConfigurationSnapshot,
+    /** Null until the configuration was first read; kept up to date by every refresh after that. */
+    val configuration: ConfigurationSnapshot?,
 ) {
     /** The state in the execution context with handle 0 (the first owned one), as tools show it. */
     val state: LifeCycle get() = context(0)?.state ?: contexts.firstOrNull()?.state ?: LifeCycle.UNKNOWN

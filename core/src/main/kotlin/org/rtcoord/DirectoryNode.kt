@@ -35,6 +35,11 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     /** Lists the children from the live system, reusing [previous] nodes that still stand. */
     internal abstract suspend fun readChildren(previous: List<Node>): List<Node>
 
+    /** Shows [children] without reading them: the tree already knows them. */
+    internal fun show(children: List<Node>) {
+        listing.value = children
+    }
+
     internal suspend fun relist(): List<Node> = listingLock.withLock {
         readChildren(listing.value.orEmpty()).also { listing.value = it }
     }

@@ -36,14 +36,19 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         val path = RtcPath.nameServer(address)
         synchronized(servers) {
             servers.firstOrNull { it.path == path }?.let { return it }
-            return NameServerNode(path, core).also { servers += it }
+            return NameServerNode(path, core).also {
+                servers += it
+                root.show(servers.toList())
+            }
         }
     }
 
     /** Removes the name server at [address]; returns whether the tree had it. */
     public fun removeNameServer(address: String): Boolean {
         val path = RtcPath.nameServer(address)
-        return servers.removeIf { it.path == path }
+        synchronized(servers) {
+            return servers.removeIf { it.path == path }.also { root.show(servers.toList()) }
+        }
     }
 
     /**

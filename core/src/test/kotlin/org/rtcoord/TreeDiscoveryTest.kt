@@ -29,7 +29,8 @@ class TreeDiscoveryTest {
 
     @Test
     fun `components carry their profile, ports, contexts and configuration`(): Unit = runBlocking {
-        val localiser = tree.component(localisation.path("laser_localise0.rtc")).snapshot()
+        val node = tree.component(localisation.path("laser_localise0.rtc"))
+        val localiser = node.snapshot()
         assertEquals("laser_localise", localiser.typeName)
         assertEquals(listOf("laser", "odo", "pose"), localiser.ports.map { it.name })
         assertEquals(PortKind.DATA_IN, localiser.port("laser")!!.kind)
@@ -39,9 +40,12 @@ class TreeDiscoveryTest {
         val context = localiser.context(0)!!
         assertTrue(context.owned && context.running)
         assertEquals("PERIODIC", context.kind)
-        assertEquals("default", localiser.configuration.activeSet)
-        assertEquals("1.0", localiser.configuration.value("gain"))
-        assertTrue("__constraints__" in localiser.configuration.sets)
+        assertEquals(null, localiser.configuration, "configuration is read on demand")
+        val configuration = node.configuration()
+        assertEquals("default", configuration.activeSet)
+        assertEquals("1.0", configuration.value("gain"))
+        assertTrue("__constraints__" in configuration.sets)
+        assertEquals(configuration, node.snapshot().configuration)
     }
 
     @Test
@@ -91,6 +95,14 @@ class TreeDiscoveryTest {
         assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"), active)
         val withPose = tree.find { it is ComponentNode && it.snapshot().port("pose") != null }.toList().map { it.name }.toSet()
         assertEquals(setOf("laser_localise0.rtc"), withPose)
+
+        with(NodeFilters) {
+            val named = tree.find(predicate = name("g?ro*.rtc") and under(RtcPath.parse(localisation.host))).toList().map { it.path.toString() }
+            assertEquals(setOf(localisation.path("gyro0.rtc"), localisation.path("manager.mgr/manager_slave/gyro0.rtc")), named.toSet())
+            val laserFed = tree.find(predicate = hasPort("laser", "TimedDoubleSeq") and kind(NodeKind.COMPONENT)).toList()
+            assertEquals(setOf("laser0.rtc", "laser_localise0.rtc"), laserFed.map { it.name }.toSet())
+            assertEquals(8, tree.find(predicate = state(LifeCycle.ACTIVE)).toList().size, "4 in naming, 4 below the manager")
+        }
     }
 
     /** Every path rtls -R prints, relative to the name server, directories with a trailing slash. */

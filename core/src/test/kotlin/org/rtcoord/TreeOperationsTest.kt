@@ -30,6 +30,9 @@ class TreeOperationsTest {
 
     private suspend fun seen(name: String): ComponentSnapshot = witness.component(path(name)).also { it.refresh() }.snapshot()
 
+    private suspend fun seenConfiguration(name: String): ConfigurationSnapshot =
+        witness.component(path(name)).also { it.refresh() }.configuration()
+
     @Test
     fun `activate, deactivate and reset wait for the state, as rtcat reads it`(): Unit = runBlocking {
         val laser = tree.component(path("laser0.rtc"))
@@ -112,10 +115,10 @@ class TreeOperationsTest {
         localiser.activateConfigurationSet("precise")
         assertEquals("+default\n+precise*", runPeer("rtconf", path("laser_localise0.rtc"), "list").ok().output.trim())
         localiser.addConfigurationSet("night", mapOf("gain" to "3.0", "fail" to "0"))
-        assertEquals("3.0", seen("laser_localise0.rtc").configuration.sets.getValue("night")["gain"])
+        assertEquals("3.0", seenConfiguration("laser_localise0.rtc").sets.getValue("night")["gain"])
         assertThrows(BadParameterException::class.java) { runBlocking { localiser.removeConfigurationSet("precise") } }
         localiser.removeConfigurationSet("night")
-        assertFalse("night" in seen("laser_localise0.rtc").configuration.sets)
+        assertFalse("night" in seenConfiguration("laser_localise0.rtc").sets)
         assertThrows(BadParameterException::class.java) { runBlocking { localiser.activateConfigurationSet("missing") } }
     }
 

@@ -3,11 +3,15 @@ package org.rtcoord.internal
 import RTC.ExecutionContext
 import RTC.PortService
 import RTC.RTObject
+import _SDOPackage.Configuration
+import kotlinx.coroutines.async
+import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.RtcPath
 import java.util.concurrent.CopyOnWriteArraySet
 
@@ -42,18 +46,38 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     /** The snapshot, read now if none was read yet. */
     suspend fun loaded(subject: String): ComponentSnapshot = current.value ?: refresh(subject)
 
-    /** Reads the component again and publishes the result. */
+    /** The component's configuration object, once known. */
+    @Volatile private var configuration: Configuration? = null
+
+    /** Reads the component again (its configuration too, once that was read) and publishes the result. */
     suspend fun refresh(subject: String): ComponentSnapshot {
         val before = current.value
         return refreshing.withLock {
             // Someone refreshed while this caller waited: that read is as fresh as ours would be.
-            current.value.takeIf { it !== before && it != null } ?: ComponentReader(core.remote, subject, ref).read().let { reading ->
+            current.value.takeIf { it !== before && it != null } ?: coroutineScope {
+                val reader = ComponentReader(core.remote, subject, ref)
+                val withConfiguration = before?.configuration != null
+                val settings = async { if (withConfiguration) readConfiguration(reader) else null }
+                val reading = reader.read()
                 contexts = reading.contexts
                 ports = reading.ports
-                current.value = reading.snapshot
-                reading.snapshot
+                reading.snapshot.copy(configuration = settings.await()).also { current.value = it }
             }
         }
+    }
+
+    /** Reads the configuration sets and publishes them with the rest of the latest snapshot. */
+    suspend fun loadConfiguration(subject: String): ConfigurationSnapshot {
+        val snapshot = loaded(subject)
+        val settings = readConfiguration(ComponentReader(core.remote, subject, ref))
+        refreshing.withLock { current.value = (current.value ?: snapshot).copy(configuration = settings) }
+        return settings
+    }
+
+    private suspend fun readConfiguration(reader: ComponentReader): ConfigurationSnapshot {
+        val (settings, target) = reader.readConfiguration(configuration)
+        configuration = target
+        return settings
     }
 
     /** Publishes [snapshot] as the latest, after an operation whose effect is known. */

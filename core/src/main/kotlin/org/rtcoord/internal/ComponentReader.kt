@@ -4,6 +4,7 @@ import RTC.ExecutionContext
 import RTC.ExecutionContextServiceHelper
 import RTC.PortService
 import RTC.RTObject
+import _SDOPackage.Configuration
 import _SDOPackage.NameValue
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
@@ -17,7 +18,11 @@ import org.rtcoord.OperationUnsupportedException
 import org.rtcoord.PortKind
 import org.rtcoord.PortSnapshot
 
-/** Reads a full [ComponentSnapshot], issuing the independent remote calls concurrently. */
+/**
+ * Reads a component, issuing the independent remote calls concurrently: profile, ports and execution
+ * contexts together ([read]), configuration apart ([readConfiguration]), since listing a system does not
+ * need it and every call counts at a thousand components.
+ */
 internal class ComponentReader(private val remote: Remote, private val subject: String, private val ref: RTObject) {
 
     /** A snapshot and the references behind it. */
@@ -26,7 +31,6 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     suspend fun read(): Reading = coroutineScope {
         val profile = async { remote.call(subject, "get_component_profile") { ref.get_component_profile() } }
         val contexts = async { readContexts() }
-        val configuration = async { readConfiguration() }
         val p = profile.await()
         val (contextSnapshots, contextRefs) = contexts.await()
         val snapshot = ComponentSnapshot(
@@ -56,7 +60,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
                 )
             },
             contexts = contextSnapshots,
-            configuration = configuration.await(),
+            configuration = null,
         )
         Reading(snapshot, contextRefs, p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref })
     }
@@ -64,13 +68,14 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     private suspend fun readContexts(): Pair<List<ContextSnapshot>, Map<Int, ExecutionContext>> = coroutineScope {
         val owned = async { remote.call(subject, "get_owned_contexts") { ref.get_owned_contexts() } }
         val participating = async { remote.call(subject, "get_participating_contexts") { ref.get_participating_contexts() } }
-        val all = owned.await().map { it to true } + participating.await().map { it to false }
-        val read = all.map { (context, isOwned) -> async { readContext(context, isOwned) } }.awaitAll()
+        // OpenRTM numbers owned contexts 0.. and participating ones 1000.. in list order.
+        val all = owned.await().mapIndexed { index, context -> Triple(context, true, index) } +
+            participating.await().mapIndexed { index, context -> Triple(context, false, PARTICIPATING_BASE + index) }
+        val read = all.map { (context, isOwned, handle) -> async { readContext(context, isOwned, handle) } }.awaitAll()
         read.map { it.first } to read.associate { it.first.handle to it.second }
     }
 
-    private suspend fun readContext(context: ExecutionContext, owned: Boolean): Pair<ContextSnapshot, ExecutionContext> = coroutineScope {
-        val handle = async { remote.call(subject, "get_context_handle") { ref.get_context_handle(context) } }
+    private suspend fun readContext(context: ExecutionContext, owned: Boolean, handle: Int): Pair<ContextSnapshot, ExecutionContext> = coroutineScope {
         val state = async { remote.call(subject, "get_component_state") { context.get_component_state(ref) } }
         val running = async { remote.call(subject, "is_running") { context.is_running() } }
         val profile = async {
@@ -83,15 +88,20 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
             }
         }
         val (kind, rate, participants) = profile.await()
-        ContextSnapshot(handle.await(), owned, kind, rate, running.await(), LifeCycle.of(state.await()), participants) to context
+        ContextSnapshot(handle, owned, kind, rate, running.await(), LifeCycle.of(state.await()), participants) to context
     }
 
-    private suspend fun readConfiguration(): ConfigurationSnapshot {
-        val configuration = try {
+    /** The configuration sets, through [configuration] (the component's, fetched when null). */
+    suspend fun readConfiguration(configuration: Configuration?): Pair<ConfigurationSnapshot, Configuration?> {
+        val target = configuration ?: try {
             remote.call(subject, "get_configuration") { ref.get_configuration() }
         } catch (e: OperationUnsupportedException) {
-            return ConfigurationSnapshot.NONE
+            return ConfigurationSnapshot.NONE to null
         }
+        return readSets(target) to target
+    }
+
+    private suspend fun readSets(configuration: Configuration): ConfigurationSnapshot {
         return coroutineScope {
             val sets = async { remote.call(subject, "get_configuration_sets") { configuration.get_configuration_sets() } }
             val active = async { remote.call(subject, "get_active_configuration_set") { configuration.get_active_configuration_set().id } }
@@ -104,5 +114,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
 internal fun Array<NameValue>.toMap(): Map<String, String> = associate { entry ->
     entry.name to (runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString())
 }
+
+private const val PARTICIPATING_BASE = 1000
 
 private fun RTC.ExecutionKind.label(): String = listOf("PERIODIC", "EVENT_DRIVEN", "OTHER").getOrElse(value()) { "UNKNOWN" }

@@ -1,8 +1,10 @@
 package org.rtcoord.internal
 
 import RTC.ReturnCode_t
-import kotlinx.coroutines.CoroutineDispatcher
+import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.runInterruptible
+import kotlinx.coroutines.sync.Semaphore
+import kotlinx.coroutines.sync.withPermit
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.BadParameterException
 import org.rtcoord.OperationFailedException
@@ -20,16 +22,23 @@ import kotlin.time.Duration.Companion.milliseconds
  * backstop also ends the wait at a call's own (shorter) deadline, and is the only guard on an ORB a
  * host application supplied. One hung object holds at most the threads of the calls made to it.
  */
-internal class Remote(private val dispatcher: CoroutineDispatcher, val defaultDeadline: Duration) {
+internal class Remote(concurrency: Int, val defaultDeadline: Duration) {
+    private val slots = Semaphore(concurrency)
 
+    /**
+     * Runs [block] once one of the tree's call slots is free; the deadline counts from then, so calls
+     * queued behind a large discovery do not expire before they are sent.
+     */
     suspend fun <T> call(subject: String, operation: String, deadline: Duration? = null, block: () -> T): T {
         val limit = deadline ?: defaultDeadline
-        val outcome = withTimeoutOrNull(limit + BACKSTOP) {
-            runInterruptible(dispatcher) {
-                try {
-                    Result.success(block())
-                } catch (e: Exception) {
-                    Result.failure(translate(e, subject, operation, limit))
+        val outcome = slots.withPermit {
+            withTimeoutOrNull(limit + BACKSTOP) {
+                runInterruptible(Dispatchers.IO) {
+                    try {
+                        Result.success(block())
+                    } catch (e: Exception) {
+                        Result.failure(translate(e, subject, operation, limit))
+                    }
                 }
             }
         } ?: throw TimedOutException(subject, operation, limit.inWholeMilliseconds)

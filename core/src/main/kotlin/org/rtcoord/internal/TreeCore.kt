@@ -3,7 +3,6 @@ package org.rtcoord.internal
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import org.rtcoord.TreeConfig
@@ -14,7 +13,7 @@ internal class TreeCore(val config: TreeConfig) : AutoCloseable {
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
 
     val orb = OrbHolder(config.orb, config.listenAddress, config.callTimeout)
-    val remote = Remote(Dispatchers.IO.limitedParallelism(config.concurrency), config.callTimeout)
+    val remote = Remote(config.concurrency, config.callTimeout)
     val scope = CoroutineScope(
         SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
     )
