@@ -3,6 +3,8 @@ package org.rtcoord
 import RTM.ManagerHelper
 import OpenRTM.DataFlowComponentHelper
 import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.channels.awaitClose
+import kotlinx.coroutines.flow.callbackFlow
 import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.future.future
 import org.rtcoord.internal.TreeCore
@@ -121,13 +123,44 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         walk(node(from))
     }
 
+    /**
+     * Calls [handler] with every event of [type] from the node at [path]: a component's own events, or
+     * for a naming context or manager its listing's events and those of every component below it,
+     * including components that appear later. Handlers run in the tree's scope, never on the source
+     * node's update path, so they may operate on the node that triggered them; a handler that throws is
+     * logged and keeps receiving events. Cancel the returned [Subscription] to stop.
+     */
+    public suspend fun <E : RtcEvent> on(path: String, type: Class<E>, options: EventOptions = EventOptions(), handler: suspend (E) -> Unit): Subscription =
+        on(node(path), type, options, handler)
+
+    /** [on] for a node already at hand. */
+    public suspend fun <E : RtcEvent> on(node: Node, type: Class<E>, options: EventOptions = EventOptions(), handler: suspend (E) -> Unit): Subscription =
+        core.watcher.watch(node, setOf(type), options) { event -> handler(type.cast(event)) }
+
+    /** [on] with the event type as a type argument: `tree.on<StateChanged>(path) { ... }`. */
+    public suspend inline fun <reified E : RtcEvent> on(path: String, options: EventOptions = EventOptions(), noinline handler: suspend (E) -> Unit): Subscription =
+        on(path, E::class.java, options, handler)
+
+    /** Every event from the node at [path] (see [on]) while the flow is collected. */
+    public fun events(path: String, options: EventOptions = EventOptions()): Flow<RtcEvent> = callbackFlow {
+        val subscription = on(path, RtcEvent::class.java, options) { send(it) }
+        awaitClose { subscription.cancel() }
+    }
+
+    /** [on] for Java callers: [listener] runs on the tree's threads. */
+    public fun <E : RtcEvent> subscribe(path: String, type: Class<E>, options: EventOptions, listener: EventListener<E>): CompletableFuture<Subscription> =
+        core.scope.future { on(path, type, options) { listener.onEvent(it) } }
+
     /** [node] for Java callers. */
     public fun nodeAsync(path: String): CompletableFuture<Node> = core.scope.future { node(path) }
 
     /** [refresh] for Java callers. */
     public fun refreshAsync(path: String): CompletableFuture<Unit> = core.scope.future { refresh(RtcPath.parse(path)) }
 
-    /** Stops the tree's work and releases its ORB, unless the host application supplied the ORB. */
+    /**
+     * Detaches every observer the tree attached, stops its work and releases its ORB (unless the host
+     * application supplied the ORB). Blocks while observers are detached, each within the call deadline.
+     */
     override fun close() {
         core.close()
     }

@@ -6,6 +6,7 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import org.rtcoord.TreeConfig
+import org.rtcoord.internal.events.Watcher
 import org.slf4j.LoggerFactory
 
 /** What every node of one tree shares: the ORB, the remote-call runner, the scope and the registry. */
@@ -18,8 +19,10 @@ internal class TreeCore(val config: TreeConfig) : AutoCloseable {
         SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
     )
     val components = ComponentRegistry(this)
+    val watcher = Watcher(this)
 
     override fun close() {
+        watcher.close()
         scope.cancel()
         orb.close()
     }

@@ -1,0 +1,328 @@
+package org.rtcoord.internal.events
+
+import _SDOPackage.NameValue
+import _SDOPackage.SDOServiceHelper
+import _SDOPackage.ServiceProfile
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.isActive
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
+import org.rtcoord.BecameZombie
+import org.rtcoord.ComponentFinalized
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.EventOptions
+import org.rtcoord.HeartbeatLost
+import org.rtcoord.Recovered
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import org.rtcoord.StateChanged
+import org.rtcoord.UnreachableException
+import org.rtcoord.WatchMode
+import org.rtcoord.internal.TreeCore
+import org.slf4j.LoggerFactory
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration
+import kotlin.time.TimeSource
+
+/**
+ * Watches one component for every registration interested in it, with one pipeline whatever the
+ * source: an observer hint, a poll tick or a liveness check only asks the monitor to read the component
+ * again; events are the differences between consecutive reads, lifecycle states reconciled with the
+ * hints by a [StateTracker] per execution context. One coroutine does all of it, in order, so the
+ * component's events come out in the order they happened; delivery to handlers is the sinks' job.
+ */
+internal class ComponentMonitor(
+    private val core: TreeCore,
+    private val host: ObserverHost,
+    val node: ComponentNode,
+    private val ended: (ComponentMonitor) -> Unit,
+) {
+    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean)
+
+    private sealed interface Work
+    private class Received(val hint: Hint) : Work
+    private object Read : Work
+    private object Liveness : Work
+    /** Registrations changed; [done] completes once the monitor watches as they ask. */
+    private class Reconfigure(val done: CompletableDeferred<Unit>? = null) : Work
+
+    private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
+    private val subject = node.path.toString()
+    private val registrations = CopyOnWriteArrayList<Registration>()
+    private val work = Channel<Work>(Channel.UNLIMITED)
+    @Volatile private var lastSign = TimeSource.Monotonic.markNow()
+
+    // Owned by the worker coroutine.
+    private var last: ComponentSnapshot? = null
+    private val trackers = HashMap<Int, StateTracker>()
+    @Volatile private var observer: ObserverHost.Observer? = null
+    private var poller: Job? = null
+    private var pollPeriod: Duration? = null
+    private var watchdog: Job? = null
+    private var suspect = false
+    private var dead = false
+    private var finalizing = false
+    private var finished = false
+
+    init {
+        core.scope.launch { run() }
+    }
+
+    /** Adds [registration] and returns once the component was read and, if asked for, observed. */
+    suspend fun add(registration: Registration) {
+        registrations += registration
+        val ready = CompletableDeferred<Unit>()
+        if (work.trySend(Reconfigure(ready)).isSuccess) ready.await()
+    }
+
+    /** Removes [registration]; returns whether none is left (the caller then [stop]s the monitor). */
+    fun remove(registration: Registration): Boolean {
+        registrations -= registration
+        work.trySend(Reconfigure())
+        return registrations.isEmpty()
+    }
+
+    /** Stops watching: polling ends and the observer is detached, soon, by the monitor's coroutine. */
+    fun stop() {
+        work.close()
+    }
+
+    /** Stops watching and detaches the observer now, on the calling thread: the tree is closing. */
+    fun stopNow() {
+        work.close()
+        val attached = observer ?: return
+        observer = null
+        try {
+            node.component.ref.get_configuration().remove_service_profile(attached.profileId)
+        } catch (e: Exception) {
+            log.debug("{}: could not detach observer: {}", subject, e.toString())
+        } finally {
+            attached.close()
+        }
+    }
+
+    private suspend fun run() {
+        try {
+            for (first in work) {
+                val batch = mutableListOf(first)
+                while (true) batch += work.tryReceive().getOrNull() ?: break
+                handle(batch)
+            }
+        } finally {
+            withContext(NonCancellable) {
+                poller?.cancel()
+                watchdog?.cancel()
+                detach()
+                ended(this@ComponentMonitor)
+            }
+        }
+    }
+
+    private suspend fun handle(batch: List<Work>) {
+        var read = false
+        val reconfigurations = batch.filterIsInstance<Reconfigure>()
+        for (item in batch) {
+            when (item) {
+                is Received -> read = take(item.hint) || read
+                Read -> read = true
+                Liveness -> read = checkLiveness() || read
+                is Reconfigure -> Unit
+            }
+        }
+        try {
+            if (finished) return
+            if (reconfigurations.isNotEmpty()) reconfigure() else if (read) readAndPublish()
+        } finally {
+            reconfigurations.forEach { it.done?.complete(Unit) }
+        }
+    }
+
+    /** Takes a hint in; returns whether the component must be read again. */
+    private fun take(hint: Hint): Boolean {
+        lastSign = TimeSource.Monotonic.markNow()
+        when {
+            hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT -> return false
+            hint.isFinalize -> finalizing = true
+            hint.kind == HintKind.RTC_STATUS -> hint.lifeCycle()?.let { (state, handle) -> trackers[handle]?.hint(state, now()) }
+            hint.kind == HintKind.OTHER -> return false
+        }
+        return true
+    }
+
+    /** Whether the component has been silent too long; announces it, and asks for a read to decide. */
+    private fun checkLiveness(): Boolean {
+        if (dead) return true
+        val push = pushRegistration() ?: return false
+        val silent = lastSign.elapsedNow()
+        if (observer == null || suspect || silent <= push.options.heartbeat * push.options.missedBeats) return false
+        suspect = true
+        publish(listOf(HeartbeatLost(node, silent.inWholeMilliseconds)))
+        return true
+    }
+
+    private suspend fun reconfigure() {
+        if (registrations.isEmpty()) {
+            poller?.cancel().also { poller = null; pollPeriod = null }
+            watchdog?.cancel().also { watchdog = null }
+            detach()
+            return
+        }
+        readAndPublish()
+        if (finished) return
+        if (pushRegistration() != null && observer == null && !dead) attach()
+        val polled = registrations.filter { it.options.mode == WatchMode.POLL || (it.options.mode == WatchMode.AUTO && observer == null) }
+        schedulePolling(polled.minOfOrNull { it.options.pollPeriod })
+        val push = pushRegistration()
+        watchdog?.cancel()
+        watchdog = push?.let { registration ->
+            core.scope.launch {
+                while (isActive) {
+                    delay(registration.options.heartbeat / 2)
+                    work.trySend(Liveness)
+                }
+            }
+        }
+    }
+
+    private fun schedulePolling(period: Duration?) {
+        if (period == pollPeriod) return
+        poller?.cancel()
+        pollPeriod = period
+        poller = period?.let {
+            core.scope.launch {
+                while (isActive) {
+                    delay(it)
+                    work.trySend(Read)
+                }
+            }
+        }
+    }
+
+    private fun pushRegistration(): Registration? =
+        registrations.filter { it.options.mode != WatchMode.POLL }.minByOrNull { it.options.heartbeat }
+
+    private suspend fun readAndPublish() {
+        val snapshot = try {
+            node.component.refresh(subject)
+            if (registrations.any { it.configuration } && node.component.snapshot.value?.configuration == null) {
+                node.component.loadConfiguration(subject)
+            }
+            node.component.snapshot.value!!
+        } catch (e: RtcException) {
+            failed(e)
+            return
+        }
+        lastSign = TimeSource.Monotonic.markNow()
+        val events = mutableListOf<RtcEvent>()
+        if (dead || suspect) {
+            events += Recovered(node)
+            dead = false
+            suspect = false
+            // The component may have dropped an observer it could not reach, or restarted without it.
+            detach()
+            if (pushRegistration() != null) work.trySend(Reconfigure())
+        }
+        val previous = last
+        for (context in snapshot.contexts) {
+            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
+            tracker.reconcile(context.state, now(), GRACE_MILLIS).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
+        }
+        trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
+        if (previous != null) events += differences(node, previous, snapshot)
+        last = snapshot
+        if (trackers.values.any { it.awaitingConfirmation }) {
+            core.scope.launch {
+                delay(GRACE_MILLIS)
+                work.trySend(Read)
+            }
+        }
+        publish(events)
+    }
+
+    private fun failed(e: RtcException) {
+        val gone = e is UnreachableException && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST
+        if (gone || (finalizing && e is UnreachableException)) {
+            finished = true
+            poller?.cancel()
+            watchdog?.cancel()
+            observer?.close()
+            observer = null
+            publish(listOf(ComponentFinalized(node)))
+            return
+        }
+        if (dead) return
+        dead = true
+        val events = mutableListOf<RtcEvent>()
+        if (!suspect) events += HeartbeatLost(node, lastSign.elapsedNow().inWholeMilliseconds)
+        events += BecameZombie(node, e)
+        publish(events)
+        // Keep probing while dead, even when only the observer watched it.
+        if (poller == null) schedulePolling(pushRegistration()?.options?.heartbeat)
+    }
+
+    private suspend fun attach() {
+        val push = pushRegistration() ?: return
+        val advertised = last?.properties?.get("sdo.service.consumer.available_services")
+            ?.split(',')?.map { it.trim() }?.filter { it.isNotEmpty() }
+        val flavours = ObserverFlavour.values().filter { advertised == null || it.repositoryId in advertised }
+        if (flavours.isEmpty()) return
+        val configuration = try {
+            core.remote.call(subject, "get_configuration") { node.component.ref.get_configuration() }
+        } catch (e: RtcException) {
+            return
+        }
+        val seconds = (push.options.heartbeat.inWholeMilliseconds / 1000.0).toString()
+        for (flavour in flavours) {
+            val candidate = host.observer(flavour) { hint -> work.trySend(Received(hint)) }
+            val properties = mapOf(
+                "observed_status" to "ALL",
+                "heartbeat.enable" to "YES", "heartbeat.interval" to seconds,
+                "rtc_heartbeat.enable" to "YES", "rtc_heartbeat.interval" to seconds,
+            ).map { (name, value) -> NameValue(name, core.orb.orb.create_any().apply { insert_string(value) }) }
+            val profile = ServiceProfile(candidate.profileId, flavour.repositoryId, properties.toTypedArray(), SDOServiceHelper.unchecked_narrow(candidate.reference))
+            val accepted = try {
+                core.remote.call(subject, "add_service_profile") { configuration.add_service_profile(profile) }
+            } catch (e: RtcException) {
+                false
+            }
+            if (accepted) {
+                observer = candidate
+                lastSign = TimeSource.Monotonic.markNow()
+                log.debug("{}: observing through the {} observer", subject, flavour)
+                return
+            }
+            candidate.close()
+        }
+        log.debug("{}: accepts no observer, polling", subject)
+    }
+
+    private suspend fun detach() {
+        val attached = observer ?: return
+        observer = null
+        try {
+            val configuration = core.remote.call(subject, "get_configuration") { node.component.ref.get_configuration() }
+            core.remote.call(subject, "remove_service_profile") { configuration.remove_service_profile(attached.profileId) }
+        } catch (e: RtcException) {
+            log.debug("{}: could not detach observer: {}", subject, e.message)
+        } finally {
+            attached.close()
+        }
+    }
+
+    private fun publish(events: List<RtcEvent>) {
+        if (events.isEmpty()) return
+        for (registration in registrations) events.forEach(registration.sink::offer)
+    }
+
+    private companion object {
+        /** How long hinted states may wait for a read that confirms them. */
+        const val GRACE_MILLIS = 250L
+
+        fun now(): Long = System.nanoTime() / 1_000_000
+    }
+}

@@ -1,0 +1,46 @@
+package org.rtcoord.internal.events
+
+import org.rtcoord.LifeCycle
+
+/** What a ComponentObserver hint is about, whichever flavour sent it. */
+internal enum class HintKind { PROFILE, RTC_STATUS, EC_STATUS, PORT_PROFILE, CONFIGURATION, HEARTBEAT, EC_HEARTBEAT, OTHER }
+
+/** One `update_status` call as received. */
+internal class Hint(val kind: HintKind, val text: String) {
+    /** For RTC_STATUS: the state and execution context handle it names, or null if it names none. */
+    fun lifeCycle(): Pair<LifeCycle, Int>? {
+        val (word, handle) = parts() ?: return null
+        val state = when (word) {
+            "ACTIVE" -> LifeCycle.ACTIVE
+            "INACTIVE" -> LifeCycle.INACTIVE
+            "ERROR" -> LifeCycle.ERROR
+            "CREATED" -> LifeCycle.CREATED
+            else -> return null
+        }
+        return state to handle
+    }
+
+    /** Whether it is OpenRTM's `FINALIZE:0`, sent when the component exits. */
+    val isFinalize: Boolean get() = kind == HintKind.RTC_STATUS && parts()?.first == "FINALIZE"
+
+    /** `WORD:handle`, leniently: spaces trimmed, case ignored. Null when malformed. */
+    private fun parts(): Pair<String, Int>? {
+        val fields = text.split(':')
+        if (fields.size != 2) return null
+        val handle = fields[1].trim().toIntOrNull() ?: return null
+        return fields[0].trim().uppercase() to handle
+    }
+
+    override fun toString(): String = "$kind '$text'"
+
+    companion object {
+        private val OPENRTM = listOf(HintKind.PROFILE, HintKind.RTC_STATUS, HintKind.EC_STATUS, HintKind.PORT_PROFILE, HintKind.CONFIGURATION, HintKind.HEARTBEAT)
+        private val OMG = listOf(
+            HintKind.PROFILE, HintKind.RTC_STATUS, HintKind.EC_STATUS, HintKind.PORT_PROFILE, HintKind.CONFIGURATION,
+            HintKind.HEARTBEAT, HintKind.EC_HEARTBEAT,
+        )
+
+        fun openRtm(kind: OpenRTM.StatusKind, text: String?) = Hint(OPENRTM.getOrElse(kind.value()) { HintKind.OTHER }, text.orEmpty())
+        fun omg(kind: RTC.StatusKind, text: String?) = Hint(OMG.getOrElse(kind.value()) { HintKind.OTHER }, text.orEmpty())
+    }
+}

@@ -1,0 +1,84 @@
+package org.rtcoord.internal.events
+
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.isActive
+import kotlinx.coroutines.launch
+import org.rtcoord.ComponentNode
+import org.rtcoord.DirectoryNode
+import org.rtcoord.ManagerComponentChanged
+import org.rtcoord.ManagerNode
+import org.rtcoord.Node
+import org.rtcoord.NodeAppeared
+import org.rtcoord.NodeVanished
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import org.rtcoord.internal.TreeCore
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration
+
+/**
+ * Watches a directory's children by listing them again at the shortest period its registrations ask
+ * for (naming services and managers push nothing): a naming context reports nodes appearing and
+ * vanishing, a manager reports components it created and deleted.
+ */
+internal class ListingMonitor(private val core: TreeCore, private val directory: DirectoryNode) {
+    class Registration(val sink: EventSink, val period: Duration, val appeared: suspend (Node) -> Unit)
+
+    private val registrations = CopyOnWriteArrayList<Registration>()
+    private var poller: Job? = null
+    private var period: Duration? = null
+
+    @Synchronized
+    fun add(registration: Registration) {
+        registrations += registration
+        reschedule()
+    }
+
+    /** Removes [registration]; returns whether none is left. */
+    @Synchronized
+    fun remove(registration: Registration): Boolean {
+        registrations -= registration
+        reschedule()
+        return registrations.isEmpty()
+    }
+
+    private fun reschedule() {
+        val shortest = registrations.minOfOrNull { it.period }
+        if (shortest == period) return
+        poller?.cancel()
+        period = shortest
+        poller = shortest?.let { every ->
+            core.scope.launch {
+                var before = directory.listed.value
+                while (isActive) {
+                    delay(every)
+                    val after = try { directory.relist() } catch (e: RtcException) { continue }
+                    if (before != null) announce(before, after)
+                    before = after
+                }
+            }
+        }
+    }
+
+    private suspend fun announce(before: List<Node>, after: List<Node>) {
+        val old = before.associateBy { it.name }
+        val new = after.associateBy { it.name }
+        val appeared = (new.keys - old.keys).map(new::getValue)
+        val vanished = (old.keys - new.keys).map(old::getValue)
+        val events: List<RtcEvent> = if (directory is ManagerNode) {
+            appeared.filterIsInstance<ComponentNode>().map { ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = true) } +
+                vanished.filterIsInstance<ComponentNode>().map { ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = false) }
+        } else {
+            appeared.map { NodeAppeared(directory, it) } + vanished.map { NodeVanished(directory, it.path) }
+        }
+        for (registration in registrations) {
+            events.forEach(registration.sink::offer)
+            appeared.forEach { registration.appeared(it) }
+        }
+    }
+
+    fun stop() {
+        poller?.cancel()
+    }
+}

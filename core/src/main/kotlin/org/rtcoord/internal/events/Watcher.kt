@@ -1,0 +1,99 @@
+package org.rtcoord.internal.events
+
+import kotlinx.coroutines.launch
+import org.rtcoord.ComponentNode
+import org.rtcoord.ConfigurationSetActivated
+import org.rtcoord.ConfigurationSetAdded
+import org.rtcoord.ConfigurationSetRemoved
+import org.rtcoord.DirectoryNode
+import org.rtcoord.EventOptions
+import org.rtcoord.Node
+import org.rtcoord.ParameterChanged
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import org.rtcoord.Subscription
+import org.rtcoord.WrongKindException
+import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.TreeCore
+import org.rtcoord.label
+
+/**
+ * The tree's registrations: one [ComponentMonitor] per component and one [ListingMonitor] per directory,
+ * shared by every registration that needs them and stopped with the last one.
+ */
+internal class Watcher(private val core: TreeCore) {
+    private val host by lazy { ObserverHost(core.orb.orb) }
+    private val components = HashMap<ComponentObject, ComponentMonitor>()
+    private val live = java.util.concurrent.ConcurrentHashMap.newKeySet<ComponentMonitor>()
+    private val listings = HashMap<DirectoryNode, ListingMonitor>()
+
+    /**
+     * Delivers the events of [types] (all when null) from [target] to [handler]: a component's own
+     * events, or for a directory its listing's events and those of every component below it, including
+     * components that appear later.
+     */
+    suspend fun watch(target: Node, types: Set<Class<out RtcEvent>>?, options: EventOptions, handler: suspend (RtcEvent) -> Unit): Subscription {
+        val sink = EventSink(core.scope, { event -> types == null || types.any { it.isInstance(event) } }, options.overlap, handler)
+        val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
+        val releases = mutableListOf<() -> Unit>()
+        val watched = HashSet<Any>()
+
+        suspend fun include(node: Node) {
+            when (node) {
+                is ComponentNode -> synchronized(watched) { watched.add(node.component) }.takeIf { it }?.let {
+                    val registration = ComponentMonitor.Registration(sink, options, configuration)
+                    val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node) { live.remove(it) }.also { live += it } } }
+                    monitor.add(registration)
+                    synchronized(releases) { releases += { release(node.component, monitor, registration) } }
+                }
+                is DirectoryNode -> synchronized(watched) { watched.add(node) }.takeIf { it }?.let {
+                    val children = try { node.children() } catch (e: RtcException) { emptyList() }
+                    val registration = ListingMonitor.Registration(sink, options.pollPeriod) { child -> core.scope.launch { include(child) } }
+                    val monitor = synchronized(listings) { listings.getOrPut(node) { ListingMonitor(core, node) } }
+                    monitor.add(registration)
+                    synchronized(releases) { releases += { release(node, monitor, registration) } }
+                    children.forEach { include(it) }
+                }
+                else -> if (node === target) throw WrongKindException(node.path.toString(), "component or directory", node.kind.label())
+            }
+        }
+
+        include(target)
+        return Subscription {
+            sink.close()
+            synchronized(releases) { releases.toList().also { releases.clear() } }.forEach { it() }
+        }
+    }
+
+    private fun release(component: ComponentObject, monitor: ComponentMonitor, registration: ComponentMonitor.Registration) {
+        synchronized(components) {
+            if (monitor.remove(registration)) {
+                components.remove(component)
+                monitor.stop()
+            }
+        }
+    }
+
+    private fun release(directory: DirectoryNode, monitor: ListingMonitor, registration: ListingMonitor.Registration) {
+        synchronized(listings) {
+            if (monitor.remove(registration)) {
+                listings.remove(directory)
+                monitor.stop()
+            }
+        }
+    }
+
+    /** Stops every monitor, including those still stopping, and detaches their observers before returning. */
+    fun close() {
+        synchronized(components) { components.clear() }
+        live.toList().forEach(ComponentMonitor::stopNow)
+        synchronized(listings) { listings.values.forEach(ListingMonitor::stop); listings.clear() }
+    }
+
+    private companion object {
+        val CONFIGURATION_EVENTS = setOf(
+            ParameterChanged::class.java, ConfigurationSetActivated::class.java,
+            ConfigurationSetAdded::class.java, ConfigurationSetRemoved::class.java, RtcEvent::class.java,
+        )
+    }
+}

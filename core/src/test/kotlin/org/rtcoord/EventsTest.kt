@@ -1,0 +1,117 @@
+package org.rtcoord
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.params.ParameterizedTest
+import org.junit.jupiter.params.provider.EnumSource
+import org.rtcoord.fixtures.Scenarios
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * Every event type fires with the right values, whether the component pushes (observer), is polled,
+ * or accepts no observer at all so the automatic choice falls back to polling.
+ */
+class EventsTest {
+    enum class Source(val options: EventOptions, val observerAccepted: Boolean) {
+        PUSH(EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds), true),
+        POLL(EventOptions(WatchMode.POLL, pollPeriod = 50.milliseconds), true),
+        FALLBACK(EventOptions(WatchMode.AUTO, pollPeriod = 50.milliseconds), false),
+    }
+
+    private val localisation = LocalisationSystem()
+    private val tree = localisation.tree
+    private fun path(name: String) = localisation.path(name)
+
+    @AfterEach
+    fun stop() = localisation.close()
+
+    /** A relay component that accepts an observer or not, watched through [source]. */
+    private suspend fun watched(source: Source, recorder: EventRecorder): ComponentNode {
+        val type = if (source.observerAccepted) Scenarios.relay else Scenarios.relay.acceptingObservers()
+        localisation.system.runtime.create(type, "subject0").activate()
+        val node = tree.component(path("subject0.rtc"))
+        tree.on(node, RtcEvent::class.java, source.options, recorder.handler)
+        return node
+    }
+
+    @ParameterizedTest
+    @EnumSource(Source::class)
+    fun `state changes carry old and new states`(source: Source): Unit = runBlocking {
+        val recorder = EventRecorder()
+        val node = watched(source, recorder)
+        assertEquals(if (source == Source.PUSH) 1 else 0, localisation.system.component("subject0").observerIds.size)
+
+        node.deactivate()
+        assertEquals(StateChanged(node, 0, LifeCycle.ACTIVE, LifeCycle.INACTIVE), recorder.next<StateChanged>())
+        node.activate()
+        assertEquals(StateChanged(node, 0, LifeCycle.INACTIVE, LifeCycle.ACTIVE), recorder.next<StateChanged>())
+        localisation.system.component("subject0").fail()
+        assertEquals(StateChanged(node, 0, LifeCycle.ACTIVE, LifeCycle.ERROR), recorder.next<StateChanged>())
+        node.reset()
+        assertEquals(StateChanged(node, 0, LifeCycle.ERROR, LifeCycle.INACTIVE), recorder.next<StateChanged>())
+    }
+
+    @ParameterizedTest
+    @EnumSource(Source::class)
+    fun `connections, configuration and execution contexts`(source: Source): Unit = runBlocking {
+        val recorder = EventRecorder()
+        val node = watched(source, recorder)
+        tree.component(path("laser0.rtc"))
+
+        val connector = tree.connect(path("subject0.rtc:out"), path("subject0.rtc:in"))
+        val connected = recorder.next<PortConnected>()
+        assertEquals(connector.id, connected.connector.id)
+        assertEquals(setOf("in", "out"), setOf(connected.port, recorder.next<PortConnected>().port))
+        node.port("out").disconnect(connector.id)
+        assertEquals(connector.id, recorder.next<PortDisconnected>().connector.id)
+
+        // Each step waits for its event: polling sees only the differences between two reads.
+        node.addConfigurationSet("spare", mapOf("fail" to "7"))
+        assertEquals(ConfigurationSetAdded(node, "spare"), recorder.next<ConfigurationSetAdded>())
+        node.activateConfigurationSet("spare")
+        assertEquals(ConfigurationSetActivated(node, "default", "spare"), recorder.next<ConfigurationSetActivated>())
+        node.setParameter("fail", "3")
+        assertEquals(ParameterChanged(node, "spare", "fail", "7", "3"), recorder.next<ParameterChanged>())
+        node.activateConfigurationSet("default")
+        node.removeConfigurationSet("spare")
+        assertEquals(ConfigurationSetRemoved(node, "spare"), recorder.next<ConfigurationSetRemoved>())
+
+        node.executionContext().setRate(5.0)
+        assertEquals(ContextRateChanged(node, 0, 1.0, 5.0), recorder.next<ContextRateChanged>())
+        val gyroContext = tree.component(path("gyro0.rtc")).executionContext()
+        gyroContext.add(node)
+        assertEquals(ContextAttachmentChanged(node, 1000, attached = true), recorder.next<ContextAttachmentChanged>())
+        gyroContext.remove(node)
+        assertEquals(ContextAttachmentChanged(node, 1000, attached = false), recorder.next<ContextAttachmentChanged>())
+    }
+
+    @ParameterizedTest
+    @EnumSource(Source::class)
+    fun `a component that exits is reported finalized`(source: Source): Unit = runBlocking {
+        val recorder = EventRecorder()
+        val node = watched(source, recorder)
+        node.exit()
+        assertEquals(ComponentFinalized(node), recorder.next<ComponentFinalized>())
+    }
+
+    @ParameterizedTest
+    @EnumSource(Source::class)
+    fun `a hung component is lost, becomes a zombie and recovers`(source: Source): Unit = runBlocking {
+        val recorder = EventRecorder()
+        val node = watched(source, recorder)
+        val fixture = localisation.system.component("subject0")
+        fixture.hang()
+        try {
+            recorder.next<HeartbeatLost>(timeout = 10.seconds)
+            assertTrue(recorder.next<BecameZombie>(timeout = 10.seconds).cause is TimedOutException)
+        } finally {
+            fixture.release()
+        }
+        recorder.next<Recovered>(timeout = 10.seconds)
+        node.deactivate()
+        assertEquals(StateChanged(node, 0, LifeCycle.ACTIVE, LifeCycle.INACTIVE), recorder.next<StateChanged>())
+    }
+}
