@@ -160,6 +160,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     /**
      * Detaches every observer the tree attached, stops its work and releases its ORB (unless the host
      * application supplied the ORB). Blocks while observers are detached, each within the call deadline.
+     * Idempotent.
      */
     override fun close() {
         core.close()

@@ -14,11 +14,13 @@ class EventRecorder {
     /** The next event of type [E], skipping others, within [timeout]. */
     inline fun <reified E : RtcEvent> next(timeout: Duration = 5.seconds, where: (E) -> Boolean = { true }): E {
         val deadline = System.nanoTime() + timeout.inWholeNanoseconds
+        val skipped = mutableListOf<RtcEvent>()
         while (true) {
             val remaining = deadline - System.nanoTime()
             val event = events.poll(remaining.coerceAtLeast(0), TimeUnit.NANOSECONDS)
-                ?: throw AssertionError("no ${E::class.simpleName} within $timeout")
+                ?: throw AssertionError("no ${E::class.simpleName} within $timeout; skipped $skipped")
             if (event is E && where(event)) return event
+            skipped += event
         }
     }
 

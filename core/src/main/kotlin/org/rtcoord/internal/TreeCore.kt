@@ -8,6 +8,7 @@ import kotlinx.coroutines.cancel
 import org.rtcoord.TreeConfig
 import org.rtcoord.internal.events.Watcher
 import org.slf4j.LoggerFactory
+import java.util.concurrent.atomic.AtomicBoolean
 
 /** What every node of one tree shares: the ORB, the remote-call runner, the scope and the registry. */
 internal class TreeCore(val config: TreeConfig) : AutoCloseable {
@@ -20,8 +21,10 @@ internal class TreeCore(val config: TreeConfig) : AutoCloseable {
     )
     val components = ComponentRegistry(this)
     val watcher = Watcher(this)
+    private val closed = AtomicBoolean()
 
     override fun close() {
+        if (!closed.compareAndSet(false, true)) return
         watcher.close()
         scope.cancel()
         orb.close()

@@ -6,7 +6,9 @@ import _SDOPackage.ServiceProfile
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
+import kotlinx.coroutines.async
 import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
@@ -17,6 +19,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.LifeCycle
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
@@ -42,11 +45,16 @@ internal class ComponentMonitor(
     val node: ComponentNode,
     private val ended: (ComponentMonitor) -> Unit,
 ) {
-    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean)
+    /**
+     * One registration's needs: [configuration] when it wants configuration events, [statesOnly] when it
+     * wants nothing but lifecycle and liveness events (then a poll tick reads only the states).
+     */
+    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean, val statesOnly: Boolean)
 
     private sealed interface Work
     private class Received(val hint: Hint) : Work
     private object Read : Work
+    private object Tick : Work
     private object Liveness : Work
     /** Registrations changed; [done] completes once the monitor watches as they ask. */
     private class Reconfigure(val done: CompletableDeferred<Unit>? = null) : Work
@@ -125,33 +133,87 @@ internal class ComponentMonitor(
 
     private suspend fun handle(batch: List<Work>) {
         var read = false
+        val hintedStates = HashSet<Int>()
         val reconfigurations = batch.filterIsInstance<Reconfigure>()
         for (item in batch) {
             when (item) {
-                is Received -> read = take(item.hint) || read
+                is Received -> read = take(item.hint, hintedStates) || read
                 Read -> read = true
+                Tick -> if (registrations.all { it.statesOnly } && !dead) hintedStates += node.component.contexts.keys else read = true
                 Liveness -> read = checkLiveness() || read
                 is Reconfigure -> Unit
             }
         }
         try {
-            if (finished) return
-            if (reconfigurations.isNotEmpty()) reconfigure() else if (read) readAndPublish()
+            when {
+                finished -> return
+                reconfigurations.isNotEmpty() -> reconfigure()
+                read -> readAndPublish()
+                hintedStates.isNotEmpty() -> readStates(hintedStates)
+            }
         } finally {
             reconfigurations.forEach { it.done?.complete(Unit) }
         }
     }
 
-    /** Takes a hint in; returns whether the component must be read again. */
-    private fun take(hint: Hint): Boolean {
+    /**
+     * Takes a hint in. A lifecycle hint adds its context's handle to [hintedStates] (reading that state
+     * is enough); returns whether anything else calls for reading the whole component.
+     */
+    private fun take(hint: Hint, hintedStates: MutableSet<Int>): Boolean {
         lastSign = TimeSource.Monotonic.markNow()
         when {
-            hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT -> return false
+            hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT || hint.kind == HintKind.OTHER -> return false
             hint.isFinalize -> finalizing = true
-            hint.kind == HintKind.RTC_STATUS -> hint.lifeCycle()?.let { (state, handle) -> trackers[handle]?.hint(state, now()) }
-            hint.kind == HintKind.OTHER -> return false
+            hint.kind == HintKind.RTC_STATUS -> {
+                val (state, handle) = hint.lifeCycle() ?: return false
+                val tracker = trackers[handle] ?: return true
+                tracker.hint(state, now())
+                hintedStates += handle
+                return false
+            }
         }
         return true
+    }
+
+    /** Reads only the states of the contexts [handles] and reconciles them with the hints. */
+    private suspend fun readStates(handles: Set<Int>) {
+        val previous = last ?: return readAndPublish()
+        val contexts = node.component.contexts
+        if (handles.any { it !in contexts }) return readAndPublish()
+        val states = try {
+            coroutineScope {
+                handles.associateWith { handle ->
+                    async { LifeCycle.of(core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) }) }
+                }.mapValues { it.value.await() }
+            }
+        } catch (e: RtcException) {
+            failed(e)
+            return
+        }
+        lastSign = TimeSource.Monotonic.markNow()
+        val snapshot = previous.copy(contexts = previous.contexts.map { context -> states[context.handle]?.let { context.copy(state = it) } ?: context })
+        node.component.publish(snapshot)
+        last = snapshot
+        publish(stateEvents(snapshot))
+    }
+
+    /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read for unconfirmed hints. */
+    private fun stateEvents(snapshot: ComponentSnapshot): List<RtcEvent> {
+        val previous = last
+        val events = mutableListOf<RtcEvent>()
+        for (context in snapshot.contexts) {
+            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
+            tracker.reconcile(context.state, now(), GRACE_MILLIS).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
+        }
+        trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
+        if (trackers.values.any { it.awaitingConfirmation }) {
+            core.scope.launch {
+                delay(GRACE_MILLIS)
+                work.trySend(Read)
+            }
+        }
+        return events
     }
 
     /** Whether the component has been silent too long; announces it, and asks for a read to decide. */
@@ -174,7 +236,11 @@ internal class ComponentMonitor(
         }
         readAndPublish()
         if (finished) return
-        if (pushRegistration() != null && observer == null && !dead) attach()
+        if (pushRegistration() != null && observer == null && !dead) {
+            attach()
+            // A change between that read and the attachment sent its hint to nobody: read once more.
+            if (observer != null) readAndPublish()
+        }
         val polled = registrations.filter { it.options.mode == WatchMode.POLL || (it.options.mode == WatchMode.AUTO && observer == null) }
         schedulePolling(polled.minOfOrNull { it.options.pollPeriod })
         val push = pushRegistration()
@@ -195,9 +261,13 @@ internal class ComponentMonitor(
         pollPeriod = period
         poller = period?.let {
             core.scope.launch {
+                // Ticks at a fixed rate: a slow read does not push the next tick back.
+                val start = TimeSource.Monotonic.markNow()
+                var tick = 1L
                 while (isActive) {
-                    delay(it)
-                    work.trySend(Read)
+                    delay(it * tick.toDouble() - start.elapsedNow())
+                    tick++
+                    work.trySend(Tick)
                 }
             }
         }
@@ -228,19 +298,9 @@ internal class ComponentMonitor(
             if (pushRegistration() != null) work.trySend(Reconfigure())
         }
         val previous = last
-        for (context in snapshot.contexts) {
-            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
-            tracker.reconcile(context.state, now(), GRACE_MILLIS).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
-        }
-        trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
+        events += stateEvents(snapshot)
         if (previous != null) events += differences(node, previous, snapshot)
         last = snapshot
-        if (trackers.values.any { it.awaitingConfirmation }) {
-            core.scope.launch {
-                delay(GRACE_MILLIS)
-                work.trySend(Read)
-            }
-        }
         publish(events)
     }
 

@@ -1,16 +1,21 @@
 package org.rtcoord.internal.events
 
 import kotlinx.coroutines.launch
+import org.rtcoord.BecameZombie
+import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
 import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.ConfigurationSetAdded
 import org.rtcoord.ConfigurationSetRemoved
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventOptions
+import org.rtcoord.HeartbeatLost
 import org.rtcoord.Node
 import org.rtcoord.ParameterChanged
+import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
+import org.rtcoord.StateChanged
 import org.rtcoord.Subscription
 import org.rtcoord.WrongKindException
 import org.rtcoord.internal.ComponentObject
@@ -35,13 +40,14 @@ internal class Watcher(private val core: TreeCore) {
     suspend fun watch(target: Node, types: Set<Class<out RtcEvent>>?, options: EventOptions, handler: suspend (RtcEvent) -> Unit): Subscription {
         val sink = EventSink(core.scope, { event -> types == null || types.any { it.isInstance(event) } }, options.overlap, handler)
         val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
+        val statesOnly = types != null && types.all { it in STATE_EVENTS }
         val releases = mutableListOf<() -> Unit>()
         val watched = HashSet<Any>()
 
         suspend fun include(node: Node) {
             when (node) {
                 is ComponentNode -> synchronized(watched) { watched.add(node.component) }.takeIf { it }?.let {
-                    val registration = ComponentMonitor.Registration(sink, options, configuration)
+                    val registration = ComponentMonitor.Registration(sink, options, configuration, statesOnly)
                     val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node) { live.remove(it) }.also { live += it } } }
                     monitor.add(registration)
                     synchronized(releases) { releases += { release(node.component, monitor, registration) } }
@@ -91,6 +97,12 @@ internal class Watcher(private val core: TreeCore) {
     }
 
     private companion object {
+        /** Events a read of the lifecycle states alone can produce. */
+        val STATE_EVENTS = setOf(
+            StateChanged::class.java, HeartbeatLost::class.java, BecameZombie::class.java,
+            Recovered::class.java, ComponentFinalized::class.java,
+        )
+
         val CONFIGURATION_EVENTS = setOf(
             ParameterChanged::class.java, ConfigurationSetActivated::class.java,
             ConfigurationSetAdded::class.java, ConfigurationSetRemoved::class.java, RtcEvent::class.java,

@@ -1,0 +1,66 @@
+package org.rtcoord
+
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Test
+import org.rtcoord.LifeCycle.ACTIVE
+import org.rtcoord.LifeCycle.ERROR
+import org.rtcoord.LifeCycle.INACTIVE
+import org.rtcoord.internal.events.Hint
+import org.rtcoord.internal.events.HintKind
+import org.rtcoord.internal.events.StateTracker
+
+/** Hints are untrusted: the reconciliation never emits a phantom and always ends in the real state. */
+class StateTrackerTest {
+    private val grace = 250L
+
+    @Test
+    fun `hinted transitions confirmed by a read are all published`() {
+        val tracker = StateTracker(ACTIVE)
+        listOf(INACTIVE, ACTIVE, INACTIVE).forEach { tracker.hint(it, 0) }
+        assertEquals(listOf(ACTIVE to INACTIVE, INACTIVE to ACTIVE, ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1, grace))
+    }
+
+    @Test
+    fun `an abort announced as INACTIVE then ERROR is one transition`() {
+        val tracker = StateTracker(ACTIVE)
+        tracker.hint(INACTIVE, 0)
+        tracker.hint(ERROR, 0)
+        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 1, grace))
+    }
+
+    @Test
+    fun `a hint no read confirms is dropped after the grace period`() {
+        val tracker = StateTracker(INACTIVE)
+        tracker.hint(ACTIVE, 0)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10, grace), "waits for later hints")
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10 + grace, grace), "a spoofed ACTIVE leaves no phantom")
+        assertEquals(INACTIVE, tracker.confirmed)
+    }
+
+    @Test
+    fun `duplicates and impossible transitions are ignored, and the read wins`() {
+        val tracker = StateTracker(INACTIVE)
+        tracker.hint(INACTIVE, 0)
+        tracker.hint(ACTIVE, 0)
+        tracker.hint(ACTIVE, 0)
+        assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 1, grace))
+        val erroneous = StateTracker(ERROR)
+        erroneous.hint(ACTIVE, 0)
+        assertEquals(listOf(ERROR to INACTIVE), erroneous.reconcile(INACTIVE, 1, grace), "ERROR to ACTIVE is impossible: the read decides")
+    }
+
+    @Test
+    fun `without hints a read that differs is a transition`() {
+        val tracker = StateTracker(ACTIVE)
+        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 0, grace))
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 0, grace))
+    }
+
+    @Test
+    fun `hints are parsed leniently and malformed ones name nothing`() {
+        assertEquals(ACTIVE to 0, Hint(HintKind.RTC_STATUS, " active : 0 ").lifeCycle())
+        assertEquals(ERROR to 1000, Hint(HintKind.RTC_STATUS, "ERROR:1000").lifeCycle())
+        listOf("", "ACTIVE", "ACTIVE:x", "RUNNING:0", "ACTIVE:0:1").forEach { assertEquals(null, Hint(HintKind.RTC_STATUS, it).lifeCycle(), it) }
+        assertEquals(true, Hint(HintKind.RTC_STATUS, "FINALIZE:0").isFinalize)
+    }
+}
