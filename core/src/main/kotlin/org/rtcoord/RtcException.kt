@@ -20,6 +20,10 @@ public class BadPathException(path: String, public val position: Int, reason: St
 /** Nothing exists at the path or under the name. */
 public class NotFoundException(subject: String, reason: String = "not found") : RtcException(subject, reason)
 
+/** A name matches several different objects; [candidates] are their paths. */
+public class AmbiguousNameException(name: String, public val candidates: List<String>) :
+    RtcException(name, "ambiguous: matches ${candidates.joinToString(", ")}")
+
 /** The object exists but is not of the kind the operation needs. */
 public class WrongKindException(subject: String, public val expected: String, public val actual: String) :
     RtcException(subject, "is a $actual, not a $expected")

@@ -6,6 +6,7 @@ import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.channels.awaitClose
 import kotlinx.coroutines.flow.callbackFlow
 import kotlinx.coroutines.flow.flow
+import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.future.future
 import org.rtcoord.internal.TreeCore
 import java.util.concurrent.CompletableFuture
@@ -78,6 +79,24 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
             is ZombieNode -> throw node.cause
             else -> throw WrongKindException(node.path.toString(), "component", node.kind.label())
         }
+
+    /**
+     * The component named [name] (`laser0.rtc`, or `laser0`), wherever it is registered on the tree's
+     * name servers. One component reachable by several paths (its naming context, below its manager) is
+     * one component; several different ones are an [AmbiguousNameException] listing them.
+     */
+    public suspend fun componentNamed(name: String): ComponentNode {
+        val wanted = if ('.' in name) name else "$name.rtc"
+        suspend fun search() = find { it is ComponentNode && it.name == wanted }.toList().map { it as ComponentNode }
+        // Naming-context paths first: that is where users look for a component, not below its manager.
+        val found = search().ifEmpty { refresh(depth = Int.MAX_VALUE); search() }.sortedBy { node -> node.path.names.any { it.endsWith(".mgr") } }
+        val distinct = found.fold(emptyList<ComponentNode>()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+        return when (distinct.size) {
+            0 -> throw NotFoundException(name, "no such component on ${nameServers.joinToString { it.address }.ifEmpty { "any name server (none configured)" }}")
+            1 -> distinct.single()
+            else -> throw AmbiguousNameException(name, distinct.map { it.path.toString() })
+        }
+    }
 
     /** The manager at [path]. */
     public suspend fun manager(path: String, workingDirectory: RtcPath? = null): ManagerNode =

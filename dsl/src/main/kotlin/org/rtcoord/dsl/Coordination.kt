@@ -1,0 +1,69 @@
+package org.rtcoord.dsl
+
+import org.rtcoord.EventOptions
+import org.rtcoord.TreeConfig
+import kotlin.time.Duration
+
+/**
+ * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), name servers and how
+ * to watch. Evaluating a script only builds this model; a [Coordinator] runs it.
+ *
+ * @property args the arguments the script was started with.
+ * @property host the tree configuration the host application runs the coordinator with.
+ */
+@RtcDsl
+public open class Coordination(public val args: List<String>, public val host: TreeConfig) {
+    internal val engine = Engine()
+    internal val rules = mutableListOf<Rule<*>>()
+    internal val timers = mutableListOf<Timer>()
+    internal val nameServers = mutableListOf<String>()
+
+    /** How rules watch (push, poll, period, overlap), unless the host overrides it. */
+    public var watching: EventOptions = EventOptions()
+
+    /** Name servers to use besides the host's: `host`, `host:port` or `corbaloc:` addresses. */
+    public fun nameServers(vararg addresses: String) {
+        nameServers += addresses
+    }
+
+    /** A component: a full path, a name found on any name server, or (for rules) a glob pattern. */
+    public fun component(name: String): ComponentRef = engine.componentRef(name)
+
+    /** A port, as `component:port`. */
+    public fun port(path: String): PortRef = engine.portRef(path)
+
+    /** A manager, by name (found on any name server) or path. */
+    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name, engine)
+
+    /** A naming context, by path. */
+    public fun context(path: String): ContextRef = ContextRef(path)
+
+    /** Rules on a component's events. */
+    public fun on(target: ComponentRef): ComponentTriggers = ComponentTriggers(this, target, emptyList())
+
+    /** Rules on a port's events. */
+    public fun on(target: PortRef): PortTriggers = PortTriggers(this, target, emptyList())
+
+    /** Rules on a manager's events. */
+    public fun on(target: ManagerRef): ManagerTriggers = ManagerTriggers(this, target, emptyList())
+
+    /** Rules on a naming context's events. */
+    public fun on(target: ContextRef): ContextTriggers = ContextTriggers(this, target, emptyList())
+
+    /** Runs [action] every [period], the first time one period after the start. */
+    public fun every(period: Duration, action: suspend Reaction.() -> Unit) {
+        timers += Timer("every $period", period, period, action)
+    }
+
+    /** Runs [action] once, [delay] after the start. */
+    public fun after(delay: Duration, action: suspend Reaction.() -> Unit) {
+        timers += Timer("after $delay", delay, null, action)
+    }
+
+    /** What the script declared, one line per rule and timer: what `check` shows and tools can draw. */
+    public val description: List<String> get() = rules.map { "on ${it.description}" } + timers.map { it.description }
+
+    internal fun add(rule: Rule<*>) {
+        rules += rule
+    }
+}

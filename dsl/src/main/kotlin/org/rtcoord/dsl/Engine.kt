@@ -1,0 +1,103 @@
+package org.rtcoord.dsl
+
+import kotlinx.coroutines.flow.toList
+import org.rtcoord.AmbiguousNameException
+import org.rtcoord.ComponentNode
+import org.rtcoord.ManagerNode
+import org.rtcoord.NodeFilters
+import org.rtcoord.NodeFilters.and
+import org.rtcoord.NodeKind
+import org.rtcoord.NotFoundException
+import org.rtcoord.RtcTree
+import org.rtcoord.UnreachableException
+import java.util.concurrent.ConcurrentHashMap
+
+/**
+ * Resolves a script's references against the live tree and performs their actions, logging each. A
+ * component found once is remembered; when it stops answering (re-created, moved), it is looked up again.
+ */
+internal class Engine {
+    lateinit var tree: RtcTree
+    var log: (String) -> Unit = {}
+    private val resolved = ConcurrentHashMap<String, ComponentNode>()
+
+    fun componentRef(name: String) = ComponentRef(name, this)
+
+    fun portRef(path: String): PortRef {
+        val split = path.lastIndexOf(':')
+        require(split > 0 && split < path.length - 1) { "not a port: '$path' (write component:port)" }
+        return PortRef(componentRef(path.substring(0, split)), path.substring(split + 1), this)
+    }
+
+    fun reference(node: ComponentNode): ComponentRef = ComponentRef(node.path.toString(), this).also { resolved[node.path.toString()] = node }
+
+    fun portOf(port: Any): PortRef = when (port) {
+        is PortRef -> port
+        is String -> portRef(port)
+        else -> throw IllegalArgumentException("not a port: $port (a port(...) or \"component:port\")")
+    }
+
+    /** The one component [selector] names. */
+    suspend fun component(selector: String): ComponentNode {
+        resolved[selector]?.let { return it }
+        val node = when {
+            selector.startsWith("/") || selector.startsWith("corbaloc:") -> tree.component(selector)
+            selector.any { it == '*' || it == '?' } -> components(selector).singleOrNull()
+                ?: throw AmbiguousNameException(selector, components(selector).map { it.path.toString() })
+            else -> tree.componentNamed(selector)
+        }
+        return node.also { resolved[selector] = it }
+    }
+
+    /** Every component [selector] names: one for a name or path, any number for a pattern. */
+    suspend fun components(selector: String): List<ComponentNode> {
+        if (selector.none { it == '*' || it == '?' }) return listOf(component(selector))
+        val pattern = if ('.' in selector) selector else "$selector.rtc"
+        return tree.find(predicate = NodeFilters.kind(NodeKind.COMPONENT) and NodeFilters.name(pattern)).toList()
+            .map { it as ComponentNode }
+            .fold(emptyList()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+    }
+
+    suspend fun manager(ref: ManagerRef): ManagerNode {
+        if (ref.selector.startsWith("/")) return tree.manager(ref.selector)
+        val found = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER) and NodeFilters.name(ref.selector)).toList()
+        return when (found.size) {
+            1 -> found.single() as ManagerNode
+            0 -> throw NotFoundException(ref.selector, "no such manager on ${tree.nameServers.joinToString { it.address }}")
+            else -> throw AmbiguousNameException(ref.selector, found.map { it.path.toString() })
+        }
+    }
+
+    /**
+     * Runs [action] on [ref]'s component, logged as [what] (followed by the component's path, unless
+     * [what] names its objects itself); once more after a fresh lookup if the component stopped answering.
+     */
+    suspend fun act(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Unit) {
+        val node = component(ref.selector)
+        log(if (namesItself) what else "$what ${node.path}")
+        try {
+            action(node)
+        } catch (e: UnreachableException) {
+            resolved.remove(ref.selector)
+            node.path.parent?.let { tree.refresh(it, depth = 0) }
+            val again = component(ref.selector).takeUnless { it.isSameComponent(node) } ?: throw e
+            log("${if (namesItself) what else "$what ${again.path}"} (looked up again)")
+            action(again)
+        }
+    }
+
+    suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {
+        val manager = manager(ref)
+        log("create $type${name?.let { " as $it" } ?: ""} through ${manager.path}")
+        val created = manager.create(type, name)
+        log("created ${created.path}")
+        return reference(created)
+    }
+
+    suspend fun delete(ref: ManagerRef, instanceName: String) {
+        val manager = manager(ref)
+        log("delete $instanceName through ${manager.path}")
+        manager.delete(instanceName)
+        resolved.keys.removeIf { it == instanceName || it.endsWith("/$instanceName.rtc") || it == "$instanceName.rtc" }
+    }
+}

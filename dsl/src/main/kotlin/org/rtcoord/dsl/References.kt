@@ -1,0 +1,111 @@
+package org.rtcoord.dsl
+
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.LifeCycle
+import org.rtcoord.Port
+import org.rtcoord.RtcPath
+
+/**
+ * A component named in a script: a full path, a name searched on every name server, or a glob pattern
+ * (`*_localise?.rtc`, rules only). Resolved when used, and again after the component is re-created, so
+ * it never pins one CORBA reference for life. Its actions wait for their effect and log what they do.
+ */
+@RtcDsl
+public class ComponentRef internal constructor(
+    /** What the script wrote. */
+    public val selector: String,
+    private val engine: Engine,
+) {
+    /** Whether the selector is a pattern that may match several components. */
+    public val isPattern: Boolean get() = selector.any { it == '*' || it == '?' }
+
+    internal suspend fun node(): ComponentNode = engine.component(selector)
+
+    /** The component's path, as resolved now. */
+    public suspend fun path(): RtcPath = node().path
+
+    /** Its state in its default execution context, read now. */
+    public suspend fun state(): LifeCycle = node().state()
+
+    /** What was last read of it. */
+    public suspend fun snapshot(): ComponentSnapshot = node().snapshot()
+
+    /** Activates it and waits until it is ACTIVE. */
+    public suspend fun activate(): Unit = engine.act("activate", this) { it.activate() }
+
+    /** Deactivates it and waits until it is INACTIVE. */
+    public suspend fun deactivate(): Unit = engine.act("deactivate", this) { it.deactivate() }
+
+    /** Resets it from ERROR and waits until it is INACTIVE. */
+    public suspend fun reset(): Unit = engine.act("reset", this) { it.reset() }
+
+    /** Makes it exit. */
+    public suspend fun exit(): Unit = engine.act("exit", this) { it.exit() }
+
+    /** Disconnects every connection of every port. */
+    public suspend fun disconnectAll(): Unit = engine.act("disconnect all", this) { it.disconnectAll() }
+
+    /** Sets parameters of its active configuration set (or of `set(...)`'s set): `configure { set("gain", "2.0") }`. */
+    public suspend fun configure(changes: ConfigurationChanges.() -> Unit) {
+        val requested = ConfigurationChanges().apply(changes)
+        engine.act("configure ${requested.describe()}", this) { node -> requested.values.forEach { (name, value) -> node.setParameter(name, value, requested.set) } }
+    }
+
+    /** Makes configuration set [id] the active one. */
+    public suspend fun activateConfigSet(id: String): Unit = engine.act("activate configuration set $id", this) { it.activateConfigurationSet(id) }
+
+    /** Its port [name]. */
+    public fun port(name: String): PortRef = PortRef(this, name, engine)
+
+    override fun toString(): String = selector
+}
+
+/** A port of a component: `component("gyro0.rtc").port("gyro")`, or `port("gyro0.rtc:gyro")`. */
+@RtcDsl
+public class PortRef internal constructor(public val component: ComponentRef, public val name: String, private val engine: Engine) {
+    internal suspend fun port(): Port = component.node().port(name)
+
+    /** Disconnects every connection of this port. */
+    public suspend fun disconnectAll(): Unit = engine.act("disconnect all of $this", component) { it.port(name).disconnectAll() }
+
+    override fun toString(): String = "${component.selector}:$name"
+}
+
+/** A manager named in a script (`manager.mgr` by default, searched like a component name or a full path). */
+@RtcDsl
+public class ManagerRef internal constructor(public val selector: String, private val engine: Engine) {
+    /** Creates a component of [type] (named [name], or as the manager names it) and returns it. */
+    public suspend fun create(type: String, name: String? = null): ComponentRef = engine.create(this, type, name)
+
+    /** Deletes component [instanceName] through the manager that hosts it. */
+    public suspend fun delete(instanceName: String): Unit = engine.delete(this, instanceName)
+
+    override fun toString(): String = selector
+}
+
+/** A naming context watched for bindings appearing and vanishing. */
+@RtcDsl
+public class ContextRef internal constructor(public val path: String) {
+    override fun toString(): String = path
+}
+
+/** The parameter changes of [ComponentRef.configure]. */
+@RtcDsl
+public class ConfigurationChanges internal constructor() {
+    internal val values = linkedMapOf<String, String>()
+    internal var set: String? = null
+        private set
+
+    /** Sets parameter [name] to [value]. */
+    public fun set(name: String, value: String) {
+        values[name] = value
+    }
+
+    /** Changes configuration set [id] instead of the active one. */
+    public fun inSet(id: String) {
+        set = id
+    }
+
+    internal fun describe(): String = values.entries.joinToString { "${it.key}=${it.value}" } + (set?.let { " in $it" } ?: "")
+}

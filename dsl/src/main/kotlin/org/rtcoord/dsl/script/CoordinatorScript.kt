@@ -1,0 +1,43 @@
+package org.rtcoord.dsl.script
+
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordination
+import kotlin.script.experimental.annotations.KotlinScript
+import kotlin.script.experimental.api.ScriptAcceptedLocation
+import kotlin.script.experimental.api.ScriptCompilationConfiguration
+import kotlin.script.experimental.api.acceptedLocations
+import kotlin.script.experimental.api.defaultImports
+import kotlin.script.experimental.api.ide
+import kotlin.script.experimental.jvm.dependenciesFromCurrentContext
+import kotlin.script.experimental.jvm.jvm
+
+/**
+ * The script definition of `*.coord.kts` coordinators: the script body is a [Coordination], with the
+ * core API, the DSL, lifecycle states (`ERROR`, `ACTIVE`, ...) and duration units imported.
+ */
+@KotlinScript(
+    displayName = "rtcoord coordinator",
+    fileExtension = "coord.kts",
+    compilationConfiguration = CoordinatorScriptCompilation::class,
+)
+public abstract class CoordinatorScript(args: Array<String>, host: TreeConfig) : Coordination(args.toList(), host)
+
+/** How coordinator scripts compile: default imports, and the host's class path as the script's. */
+public object CoordinatorScriptCompilation : ScriptCompilationConfiguration({
+    defaultImports(
+        "org.rtcoord.*",
+        "org.rtcoord.dsl.*",
+        "org.rtcoord.LifeCycle.*",
+        "kotlin.time.Duration.Companion.milliseconds",
+        "kotlin.time.Duration.Companion.seconds",
+        "kotlin.time.Duration.Companion.minutes",
+    )
+    jvm {
+        dependenciesFromCurrentContext(wholeClasspath = true)
+    }
+    ide {
+        acceptedLocations(ScriptAcceptedLocation.Everywhere)
+    }
+}) {
+    private fun readResolve(): Any = CoordinatorScriptCompilation
+}

@@ -1,0 +1,109 @@
+package org.rtcoord.dsl.script
+
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordination
+import java.io.File
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
+import java.security.MessageDigest
+import kotlin.script.experimental.api.CompiledScript
+import kotlin.script.experimental.api.ResultValue
+import kotlin.script.experimental.api.ResultWithDiagnostics
+import kotlin.script.experimental.api.ScriptDiagnostic
+import kotlin.script.experimental.api.ScriptEvaluationConfiguration
+import kotlin.script.experimental.api.SourceCode
+import kotlin.script.experimental.api.constructorArgs
+import kotlin.script.experimental.host.toScriptSource
+import kotlin.script.experimental.host.ScriptingHostConfiguration
+import kotlin.script.experimental.jvm.BasicJvmScriptEvaluator
+import kotlin.script.experimental.jvm.compilationCache
+import kotlin.script.experimental.jvm.baseClassLoader
+import kotlin.script.experimental.jvm.defaultJvmScriptingHostConfiguration
+import kotlin.script.experimental.jvm.jvm
+import kotlin.script.experimental.jvmhost.CompiledScriptJarsCache
+import kotlin.script.experimental.jvmhost.JvmScriptCompiler
+import kotlin.script.experimental.jvmhost.createJvmCompilationConfigurationFromTemplate
+
+/**
+ * Compiles and evaluates `*.coord.kts` coordinators with the embedded Kotlin compiler. Compiled scripts
+ * are kept in [cacheDirectory] by a hash of their text and of the compiler and DSL they were built with,
+ * so an unchanged script starts without compiling. Problems come back as `file:line:col: message` lines.
+ */
+public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirectory()) {
+    private val compilation = createJvmCompilationConfigurationFromTemplate<CoordinatorScript>()
+    private val compiler = JvmScriptCompiler(
+        ScriptingHostConfiguration(defaultJvmScriptingHostConfiguration) {
+            cacheDirectory?.let { directory ->
+                jvm { compilationCache(CompiledScriptJarsCache { source, _ -> cacheFile(directory, source) }) }
+            }
+        },
+    )
+    private val evaluator = BasicJvmScriptEvaluator()
+
+    /** Compiles [script]; returns its errors (none when it compiles). */
+    public suspend fun check(script: Path): List<String> = when (val result = compile(script)) {
+        is ResultWithDiagnostics.Success -> emptyList()
+        is ResultWithDiagnostics.Failure -> errors(script, result.reports)
+    }
+
+    /**
+     * Compiles (or takes from the cache) and evaluates [script] with [args], the host running it on
+     * [host]: returns what it declared. Throws [ScriptFailure] when it does not compile or its body throws.
+     */
+    public suspend fun load(script: Path, args: List<String> = emptyList(), host: TreeConfig = TreeConfig()): Coordination {
+        val compiled = when (val result = compile(script)) {
+            is ResultWithDiagnostics.Success -> result.value
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+        }
+        val evaluation = ScriptEvaluationConfiguration {
+            constructorArgs(args.toTypedArray(), host)
+            jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
+        }
+        return when (val result = evaluator(compiled, evaluation)) {
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+            is ResultWithDiagnostics.Success -> when (val value = result.value.returnValue) {
+                is ResultValue.Error -> throw ScriptFailure(listOf(thrown(script, value.error)))
+                else -> value.scriptInstance as? Coordination ?: throw ScriptFailure(listOf("${script.fileName}:1:1: the script did not produce a coordinator"))
+            }
+        }
+    }
+
+    private suspend fun compile(script: Path): ResultWithDiagnostics<CompiledScript> {
+        if (!Files.isRegularFile(script)) return ResultWithDiagnostics.Failure(ScriptDiagnostic(ScriptDiagnostic.unspecifiedError, "no such file", sourcePath = script.toString()))
+        return compiler(script.toFile().toScriptSource(), compilation)
+    }
+
+    private fun errors(script: Path, reports: List<ScriptDiagnostic>): List<String> =
+        reports.filter { it.severity >= ScriptDiagnostic.Severity.ERROR }.map { report ->
+            val start = report.location?.start
+            "${report.sourcePath ?: script}:${start?.line ?: 1}:${start?.col ?: 1}: ${report.exception?.let { thrownMessage(it) } ?: report.message}"
+        }.ifEmpty { listOf("$script:1:1: compilation failed") }
+
+    private fun thrown(script: Path, error: Throwable): String {
+        val frame = generateSequence(error) { it.cause }.flatMap { it.stackTrace.asSequence() }.firstOrNull { it.fileName == script.fileName.toString() }
+        return "$script:${frame?.lineNumber ?: 1}:1: ${thrownMessage(error)}"
+    }
+
+    private fun thrownMessage(error: Throwable): String = "${error.javaClass.simpleName}: ${error.message ?: "(no message)"}"
+
+    public companion object {
+        /** `$XDG_CACHE_HOME/rtcoord/scripts`, or `~/.cache/rtcoord/scripts`. */
+        public fun defaultCacheDirectory(): Path =
+            Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord", "scripts")
+
+        private fun cacheFile(directory: Path, source: SourceCode): File {
+            val digest = MessageDigest.getInstance("SHA-256")
+            digest.update(source.text.toByteArray())
+            digest.update(KotlinVersion.CURRENT.toString().toByteArray())
+            // The DSL's own build: a rebuilt DSL invalidates scripts compiled against the old one.
+            val dsl = File(CoordinatorScript::class.java.protectionDomain.codeSource.location.toURI())
+            digest.update("${dsl.lastModified()}:${dsl.length()}".toByteArray())
+            Files.createDirectories(directory)
+            return directory.resolve(digest.digest().joinToString("") { "%02x".format(it) } + ".jar").toFile()
+        }
+    }
+}
+
+/** A script that does not compile or fails while it runs; [problems] are `file:line:col: message` lines. */
+public class ScriptFailure(public val problems: List<String>) : Exception(problems.joinToString("\n"))

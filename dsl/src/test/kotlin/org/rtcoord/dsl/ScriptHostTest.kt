@@ -1,0 +1,83 @@
+package org.rtcoord.dsl
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertThrows
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.script.ScriptFailure
+import org.rtcoord.dsl.script.ScriptHost
+import java.nio.file.Files
+import java.nio.file.Path
+
+class ScriptHostTest {
+    @TempDir
+    lateinit var directory: Path
+
+    private val host by lazy { ScriptHost(directory.resolve("cache")) }
+
+    private fun script(name: String, text: String): Path = directory.resolve(name).also { Files.writeString(it, text.trimIndent()) }
+
+    @Test
+    fun `a script declares rules and timers, reading its arguments and the host's configuration`(): Unit = runBlocking {
+        val file = script(
+            "model.coord.kts",
+            """
+            nameServers("127.0.0.1:2809")
+            val target = args.firstOrNull() ?: "laser0.rtc"
+            on(component(target)).state(ERROR) { reset() }
+            on(port("gyro0.rtc:gyro")).disconnected { log("gyro cut") }
+            on(component("laser_localise0.rtc")).where { event -> event is StateChanged }.configParam("gain") { old, new -> log("${'$'}old -> ${'$'}new") }
+            every(host.callTimeout) { }
+            """,
+        )
+        val coordination = host.load(file, listOf("gyro0.rtc"), TreeConfig(callTimeout = kotlin.time.Duration.parse("2s")))
+        assertEquals(
+            listOf("on gyro0.rtc enters ERROR", "on gyro0.rtc:gyro disconnects", "on laser_localise0.rtc parameter gain changes", "every 2s"),
+            coordination.description,
+        )
+        assertEquals(listOf("gyro0.rtc"), coordination.args)
+    }
+
+    @Test
+    fun `compile errors come as file, line, column and message`(): Unit = runBlocking {
+        val file = script("broken.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) {\n    resett()\n}\n")
+        val errors = host.check(file)
+        assertEquals(1, errors.size, errors.toString())
+        assertTrue(errors.single().startsWith("$file:2:5: "), errors.single())
+        assertTrue(errors.single().contains("resett"), errors.single())
+        assertEquals(errors, assertThrows(ScriptFailure::class.java) { runBlocking { host.load(file) } }.problems)
+    }
+
+    @Test
+    fun `a script that throws while it starts names its line`(): Unit = runBlocking {
+        val file = script("throws.coord.kts", "val limit = 3\nval bad = args[limit]\n")
+        val failure = assertThrows(ScriptFailure::class.java) { runBlocking { host.load(file) } }
+        assertTrue(failure.problems.single().startsWith("$file:2:1: ArrayIndexOutOfBoundsException") ||
+            failure.problems.single().startsWith("$file:2:1: IndexOutOfBoundsException"), failure.problems.single())
+    }
+
+    @Test
+    fun `an unchanged script is not compiled again, even by a new host`(): Unit = runBlocking {
+        val file = script("cached.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }")
+        host.load(file)
+        val cached = Files.list(directory.resolve("cache")).use { it.toList() }.single()
+        val compiledAt = Files.getLastModifiedTime(cached)
+
+        ScriptHost(directory.resolve("cache")).load(file)
+        assertEquals(listOf(cached), Files.list(directory.resolve("cache")).use { it.toList() })
+        assertEquals(compiledAt, Files.getLastModifiedTime(cached), "the cached jar was not rewritten")
+
+        Files.writeString(file, "on(component(\"gyro0.rtc\")).state(ERROR) { activate() }")
+        host.load(file)
+        assertEquals(2, Files.list(directory.resolve("cache")).use { it.count() }, "a changed script compiles anew")
+    }
+
+    @Test
+    fun `a missing file is one clear line`(): Unit = runBlocking {
+        val missing = directory.resolve("absent.coord.kts")
+        assertEquals(listOf("$missing:1:1: no such file"), host.check(missing))
+    }
+}

@@ -1,0 +1,73 @@
+package org.rtcoord.examples
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.params.ParameterizedTest
+import org.junit.jupiter.params.provider.EnumSource
+import org.rtcoord.EventOptions
+import org.rtcoord.LifeCycle
+import org.rtcoord.WatchMode
+import org.rtcoord.fixtures.await
+import kotlin.time.Duration.Companion.milliseconds
+
+class ExamplesTest {
+    enum class Mode(val options: EventOptions) {
+        PUSH(EventOptions(WatchMode.PUSH)),
+        POLL(EventOptions(WatchMode.POLL, pollPeriod = 100.milliseconds)),
+    }
+
+    @ParameterizedTest
+    @EnumSource(Mode::class)
+    fun `localisation - the laser fails and the odometry-gyro localiser takes over`(mode: Mode): Unit = runBlocking {
+        ExampleSystem("localisation.coord.kts", mode.options).use { example ->
+            example.coordinator.start()
+            example.system.component("laser0").fail()
+
+            await("odo_localise0 to be ACTIVE") {
+                runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
+            }
+            val created = example.witness.component(example.path("odo_localise0.rtc")).also { it.refresh() }.snapshot()
+            assertEquals(mapOf("odo" to 1, "gyro" to 1, "pose" to 0), created.ports.associate { it.name to it.connectors.size })
+            val connections = example.witness.port(example.path("odo_localise0.rtc:odo")).connections() +
+                example.witness.port(example.path("odo_localise0.rtc:gyro")).connections()
+            assertEquals(
+                setOf(example.path("odometry0.rtc:odo"), example.path("gyro0.rtc:gyro")),
+                connections.map { it.ports.first().path.toString() }.toSet(),
+            )
+            val old = example.witness.component(example.path("laser_localise0.rtc")).also { it.refresh() }.snapshot()
+            assertEquals(LifeCycle.INACTIVE, old.state)
+            assertTrue(old.ports.all { it.connectors.isEmpty() })
+            assertEquals(LifeCycle.INACTIVE, example.witness.component(example.path("laser0.rtc")).state())
+            assertEquals(0, example.coordinator.failures)
+        }
+    }
+
+    @Test
+    fun `bounded restart - restarts the gyro three times, then leaves it in ERROR`(): Unit = runBlocking {
+        ExampleSystem("bounded-restart.coord.kts", Mode.PUSH.options, args = listOf("3")).use { example ->
+            example.coordinator.start()
+            val gyro = example.system.component("gyro0")
+            repeat(3) { restart ->
+                gyro.fail()
+                await("restart ${restart + 1}") { example.log.any { it.contains("restart ${restart + 1} of 3") } && gyro.state == RTC.LifeCycleState.ACTIVE_STATE }
+            }
+            gyro.fail()
+            await("the coordinator to give up") { example.log.any { it.contains("failed 4 times") } }
+            assertEquals(RTC.LifeCycleState.ERROR_STATE, gyro.state)
+        }
+    }
+
+    @Test
+    fun `gain schedule - a gain above 2 switches to the precise set`(): Unit = runBlocking {
+        ExampleSystem("gain-schedule.coord.kts", Mode.PUSH.options).use { example ->
+            example.coordinator.start()
+            val localiser = example.witness.component(example.path("laser_localise0.rtc"))
+            localiser.setParameter("gain", "3.0")
+            await("the precise set to be active") { example.system.component("laser_localise0").activeConfigurationSet == "precise" }
+            localiser.setParameter("gain", "1.5", set = "precise")
+            await("the default set to be active again") { example.system.component("laser_localise0").activeConfigurationSet == "default" }
+        }
+    }
+}
