@@ -1,0 +1,114 @@
+package org.rtcoord.dsl
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertThrows
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.rtcoord.AmbiguousNameException
+import org.rtcoord.EventOptions
+import org.rtcoord.LifeCycle.ERROR
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
+import org.rtcoord.WatchMode
+import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.naming.NamingService
+import java.util.Collections
+import kotlin.time.Duration.Companion.milliseconds
+
+/** The engine behind the DSL, driven by coordinations written directly in Kotlin. */
+class CoordinatorTest {
+    private val naming = NamingService.start()
+    private val system = Scenarios.localisation(naming.corbaloc)
+    private val config = TreeConfig(nameServers = listOf(naming.address))
+    private val tree = RtcTree.create(config)
+    private val log = Collections.synchronizedList(mutableListOf<String>())
+
+    @AfterEach
+    fun stop() {
+        tree.close()
+        system.close()
+        naming.close()
+    }
+
+    private fun coordinator(declare: Coordination.() -> Unit): Coordinator =
+        Coordinator(tree, Coordination(emptyList(), config).apply(declare), EventOptions(WatchMode.PUSH)) { log += it }
+
+    @Test
+    fun `a failing handler is reported and the coordinator keeps reacting`(): Unit = runBlocking {
+        var calls = 0
+        coordinator {
+            on(component("gyro0")).state(ERROR) {
+                calls++
+                reset()
+                if (calls == 1) error("first reaction fails after the reset")
+                activate()
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            system.component("gyro0").fail()
+            await("the failure to be counted") { coordinator.failures == 1 }
+            assertTrue(log.any { it.contains("failed: first reaction fails after the reset") }, log.toString())
+            system.component("gyro0").activate()
+            system.component("gyro0").fail()
+            await("the second reaction to reactivate gyro0") { calls == 2 && system.component("gyro0").state == RTC.LifeCycleState.ACTIVE_STATE }
+        }
+    }
+
+    @Test
+    fun `guards narrow a rule`(): Unit = runBlocking {
+        val fired = Collections.synchronizedList(mutableListOf<String>())
+        coordinator {
+            on(component("laser0")).where { (component("laser_localise0").state() == org.rtcoord.LifeCycle.INACTIVE) }.state(ERROR) { fired += "guarded" }
+            on(component("laser0")).state(ERROR) { fired += "plain" }
+        }.use { coordinator ->
+            coordinator.start()
+            system.component("laser0").fail()
+            await("the plain rule") { "plain" in fired }
+            tree.component("/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}/laser0.rtc").reset()
+            tree.componentNamed("laser_localise0").deactivate()
+            tree.componentNamed("laser0").activate()
+            system.component("laser0").fail()
+            await("both rules") { "guarded" in fired && fired.count { it == "plain" } == 2 }
+            assertEquals(1, fired.count { it == "guarded" }, "the guard held only the second time")
+        }
+    }
+
+    @Test
+    fun `a name found twice is an error listing both, and a pattern watches every match`(): Unit = runBlocking {
+        system.runtime.create(Scenarios.relay, "twin0", contexts = listOf("left.host_cxt"))
+        system.runtime.create(Scenarios.relay, "twin0x", contexts = listOf("right.host_cxt"))
+        org.rtcoord.fixtures.FixtureRuntime.start(naming.corbaloc, listOf("right.host_cxt")).use { other ->
+            other.create(Scenarios.relay, "twin0")
+            val ambiguous = coordinator { on(component("twin0")).state(ERROR) {} }
+            val failure = assertThrows(AmbiguousNameException::class.java) { runBlocking { ambiguous.start() } }
+            assertEquals(setOf("/${naming.address}/left.host_cxt/twin0.rtc", "/${naming.address}/right.host_cxt/twin0.rtc"), failure.candidates.toSet())
+
+            val seen = Collections.synchronizedSet(mutableSetOf<String>())
+            coordinator { on(component("twin*")).stateChanged { event -> seen += event.source.name } }.use { coordinator ->
+                coordinator.start()
+                listOf(system.component("twin0x"), other.component("twin0")).forEach { it.activate() }
+                await("both matches to report") { seen == setOf("twin0x.rtc", "twin0.rtc") }
+            }
+        }
+    }
+
+    @Test
+    fun `timers run, and closing the coordinator stops them and detaches its observers`(): Unit = runBlocking {
+        var ticks = 0
+        val coordinator = coordinator {
+            every(30.milliseconds) { ticks++ }
+            on(component("gyro0")).state(ERROR) {}
+        }
+        coordinator.start()
+        await("three ticks") { ticks >= 3 }
+        assertEquals(1, system.component("gyro0").observerIds.size)
+        coordinator.close()
+        await("the observer to be detached") { system.component("gyro0").observerIds.isEmpty() }
+        val after = ticks
+        Thread.sleep(100)
+        assertEquals(after, ticks, "no tick after close")
+    }
+}
