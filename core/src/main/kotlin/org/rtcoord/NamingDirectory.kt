@@ -28,7 +28,7 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
     override suspend fun readChildren(previous: List<Node>): List<Node> {
         val context = context()
         val bindings = listAll(context)
-        return coroutineScope { bindings.map { binding -> async { childFor(context, binding, previous) } }.awaitAll() }
+        return coroutineScope { bindings.map { binding -> async { childFor(context, binding, previous) } }.awaitAll() }.filterNotNull()
     }
 
     /** Every binding, fetching past the first batch through the iterator (rtctree stops at 200). */
@@ -52,14 +52,19 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
         return bindings
     }
 
-    private suspend fun childFor(context: NamingContext, binding: Binding, previous: List<Node>): Node {
+    /** The node for [binding], or null if it was unbound since the listing. */
+    private suspend fun childFor(context: NamingContext, binding: Binding, previous: List<Node>): Node? {
         val name = binding.binding_name.last().let { if (it.kind.isEmpty()) it.id else "${it.id}.${it.kind}" }
         val childPath = path.child(name)
         val old = previous.firstOrNull { it.name == name }
         if (binding.binding_type == BindingType.ncontext) {
             return old as? ContextNode ?: ContextNode(childPath, core, this, binding.binding_name)
         }
-        val target = core.remote.call(childPath.toString(), "resolve") { context.resolve(binding.binding_name) }
+        val target = try {
+            core.remote.call(childPath.toString(), "resolve") { context.resolve(binding.binding_name) }
+        } catch (e: NotFoundException) {
+            return null
+        }
         return when (childPath.kind) {
             "rtc" -> {
                 val component = core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target))

@@ -7,6 +7,7 @@ import kotlinx.coroutines.sync.Semaphore
 import kotlinx.coroutines.sync.withPermit
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.BadParameterException
+import org.rtcoord.NotFoundException
 import org.rtcoord.OperationFailedException
 import org.rtcoord.OperationUnsupportedException
 import org.rtcoord.PreconditionNotMetException
@@ -76,6 +77,7 @@ private fun translate(e: Exception, subject: String, operation: String, limit: D
     is org.omg.CORBA.TRANSIENT, is org.omg.CORBA.COMM_FAILURE, is org.omg.CORBA.OBJECT_NOT_EXIST,
     is org.omg.CORBA.NO_RESPONSE, is org.omg.CORBA.INV_OBJREF -> UnreachableException(subject, e)
     is org.omg.CORBA.BAD_OPERATION, is org.omg.CORBA.NO_IMPLEMENT -> OperationUnsupportedException(subject, operation)
+    is org.omg.CosNaming.NamingContextPackage.NotFound -> NotFoundException(subject, "not bound")
     is _SDOPackage.InvalidParameter -> BadParameterException(subject, operation, e.description)
     is _SDOPackage.InterfaceNotImplemented -> OperationUnsupportedException(subject, operation)
     is _SDOPackage.NotAvailable -> OperationFailedException(subject, operation, "NotAvailable", e.description)
