@@ -4,14 +4,13 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.options.option
-import kotlinx.coroutines.flow.collect
-import kotlinx.coroutines.flow.merge
-import kotlinx.coroutines.flow.onEach
 import kotlinx.coroutines.awaitCancellation
+import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
+import org.rtcoord.RtcEvent
 import org.rtcoord.WatchMode
 
 /** `rtcoord watch`: rtwatch that starts, for every kind of event, pushed where components allow it. */
@@ -40,12 +39,14 @@ class WatchCommand : TreeCommand("watch") {
         val detach = Thread(tree::close, "rtcoord-detach")
         Runtime.getRuntime().addShutdownHook(detach)
         try {
-            // Every path is resolved before the first event is printed: a wrong one fails at once.
-            val sources = paths.map { node(it).path.toString() }
-            val events = merge(*sources.map { tree.events(it, options) }.toTypedArray())
-                .onEach { event -> if (session.json) echo(toJson(event.toJson(), pretty = false)) else echo(event.line()) }
+            // Subscribed one by one, each returning once its components are read and observed: a wrong
+            // path fails before anything is printed, and --for counts from when every event is caught.
+            val events = Channel<RtcEvent>(Channel.UNLIMITED)
+            paths.forEach { path -> tree.on(node(path), RtcEvent::class.java, options) { events.send(it) } }
             coroutineScope {
-                val printing = launch { events.collect() }
+                val printing = launch {
+                    for (event in events) if (session.json) echo(toJson(event.toJson(), pretty = false)) else echo(event.line())
+                }
                 duration?.let { delay(it) } ?: awaitCancellation()
                 // Closing the tree while still subscribed detaches every observer before it returns;
                 // ending the subscriptions first would leave that to background work the exit cuts short.
