@@ -1,0 +1,105 @@
+package org.rtcoord.cli
+
+import kotlinx.coroutines.async
+import kotlinx.coroutines.awaitAll
+import kotlinx.coroutines.coroutineScope
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ConfigurationSnapshot
+import org.rtcoord.RtcPath
+
+/**
+ * What `cat` shows of a component: profile, execution contexts, ports with their connections and,
+ * when asked for, configuration. Read in one go, printed afterwards.
+ */
+internal class ComponentReport private constructor(
+    private val path: RtcPath,
+    private val snapshot: ComponentSnapshot,
+    private val ports: List<PortReport>,
+    private val configuration: ConfigurationSnapshot?,
+) {
+    /** The report as text; [long] adds properties, connector details and configuration sets. */
+    fun lines(long: Boolean): List<String> = buildList {
+        add("${path.name}  ${stateLabel(snapshot.overallState)}")
+        addAll(
+            aligned(
+                listOf(
+                    listOf("Instance name", snapshot.instanceName),
+                    listOf("Type name", snapshot.typeName),
+                    listOf("Version", snapshot.version),
+                    listOf("Vendor", snapshot.vendor),
+                    listOf("Category", snapshot.category),
+                    listOf("Description", snapshot.description),
+                ),
+                "  ",
+            ),
+        )
+        if (long && snapshot.properties.isNotEmpty()) {
+            add("  Properties")
+            addAll(aligned(sorted(snapshot.properties), "    "))
+        }
+        add("  Execution contexts")
+        addAll(
+            aligned(
+                snapshot.contexts.map { context ->
+                    listOf(
+                        context.handle.toString(),
+                        context.kind,
+                        "${context.rate} Hz",
+                        if (context.running) "running" else "stopped",
+                        stateLabel(context.state),
+                        if (context.owned) "owned" else "participating",
+                    )
+                },
+                "    ",
+            ),
+        )
+        add("  Ports")
+        ports.forEach { addAll(it.lines(long, "    ")) }
+        configuration?.let { configuration ->
+            add("  Configuration")
+            addAll(configuration.lines(configuration.shownSets(showHidden = false), "    "))
+        }
+    }
+
+    /** The report for `--json`. */
+    fun toJson(): Map<String, Any?> = buildMap {
+        put("path", path.toString())
+        put("kind", "component")
+        put("instanceName", snapshot.instanceName)
+        put("typeName", snapshot.typeName)
+        put("version", snapshot.version)
+        put("vendor", snapshot.vendor)
+        put("category", snapshot.category)
+        put("description", snapshot.description)
+        put("state", snapshot.overallState.name)
+        put("properties", snapshot.properties.toSortedMap())
+        put(
+            "contexts",
+            snapshot.contexts.map { context ->
+                mapOf(
+                    "handle" to context.handle,
+                    "owned" to context.owned,
+                    "kind" to context.kind,
+                    "rate" to context.rate,
+                    "running" to context.running,
+                    "state" to context.state.name,
+                    "participants" to context.participants,
+                )
+            },
+        )
+        put("ports", ports.map { it.toJson() })
+        configuration?.let { put("configuration", it.toJson(it.shownSets(showHidden = false))) }
+    }
+
+    companion object {
+        /** Reads [component] now; its configuration too when [withConfiguration]. */
+        suspend fun read(component: ComponentNode, withConfiguration: Boolean): ComponentReport = coroutineScope {
+            component.refresh()
+            val snapshot = component.snapshot()
+            val configuration = if (withConfiguration) async { component.configuration() } else null
+            val ports = snapshot.ports.map { port -> async { PortReport.read(component.port(port.name)) } }
+            ComponentReport(component.path, snapshot, ports.awaitAll(), configuration?.await())
+        }
+    }
+}

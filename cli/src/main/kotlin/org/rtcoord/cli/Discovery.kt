@@ -1,0 +1,43 @@
+package org.rtcoord.cli
+
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
+import org.rtcoord.ComponentNode
+import org.rtcoord.DirectoryNode
+import org.rtcoord.Node
+import kotlin.time.Duration.Companion.milliseconds
+
+/**
+ * Reads [from] and everything below it again, concurrently (dead and hung objects become zombies).
+ * When that takes more than half a second, [progress] (if any) shows how far it got.
+ */
+internal suspend fun discover(from: Node, progress: StatusLine?): Unit = coroutineScope {
+    val ticker = progress?.let { line ->
+        launch {
+            delay(PROGRESS_AFTER)
+            while (true) {
+                val (components, directories) = countKnown(from)
+                line.show("rtcoord: discovering: $components components in $directories directories so far")
+                delay(PROGRESS_EVERY)
+            }
+        }
+    }
+    try {
+        from.refresh(Int.MAX_VALUE)
+    } finally {
+        ticker?.cancel()
+        progress?.clear()
+    }
+}
+
+/** Components read and directories listed below [node] so far, from what the tree holds (no calls). */
+private fun countKnown(node: Node): Pair<Int, Int> = when (node) {
+    is ComponentNode -> (if (node.snapshots.value != null) 1 else 0) to 0
+    is DirectoryNode -> node.listed.value.orEmpty().map(::countKnown)
+        .fold(0 to 1) { (components, directories), (c, d) -> components + c to directories + d }
+    else -> 0 to 0
+}
+
+private val PROGRESS_AFTER = 500.milliseconds
+private val PROGRESS_EVERY = 250.milliseconds

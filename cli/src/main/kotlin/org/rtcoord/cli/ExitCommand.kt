@@ -1,0 +1,23 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.arguments.multiple
+
+/** `rtcoord exit`: rtexit, checking every path before any component is asked to go. */
+class ExitCommand : TreeCommand("exit") {
+    override fun help(context: Context): String =
+        "Ask components to exit: each finalises, leaves its execution contexts and unbinds itself. Every PATH is " +
+            "checked first (a live component): if one is not, no component is asked."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord exit /localhost/host.host_cxt/laser_localise0.rtc" to "stop the laser localiser for good",
+    )
+
+    private val paths by argument("PATH", help = "Components (name.rtc).").multiple(required = true)
+
+    override suspend fun execute() {
+        val components = paths.map { text -> component(text).also { it.refresh() } }
+        components.forEach { it.exit() }
+    }
+}

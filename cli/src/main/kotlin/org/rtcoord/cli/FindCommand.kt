@@ -1,0 +1,49 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.choice
+import kotlinx.coroutines.flow.toList
+import org.rtcoord.LifeCycle
+import org.rtcoord.Node
+import org.rtcoord.NodeFilters
+import org.rtcoord.NodeFilters.and
+import org.rtcoord.NodeKind
+
+/** `rtcoord find`: rtfind, over a tree read concurrently. */
+class FindCommand : TreeCommand("find") {
+    override fun help(context: Context): String =
+        "Print the paths of the objects below PATH (PATH included) that match every filter given."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord find /localhost --type component --state error" to "components in ERROR",
+        "rtcoord find /localhost --name 'laser*'" to "everything whose name starts with laser",
+        "rtcoord find / --type zombie" to "dead registrations on every name server the run knows",
+        "rtcoord find /localhost --port pose" to "components with a port named pose",
+    )
+
+    private val path by argument("PATH", help = "Where to start.")
+
+    private val type by option("--type", help = "Only objects of this kind.")
+        .choice("component" to NodeKind.COMPONENT, "manager" to NodeKind.MANAGER, "context" to NodeKind.CONTEXT, "zombie" to NodeKind.ZOMBIE)
+
+    private val name by option("--name", metavar = "GLOB", help = "Only names matching GLOB ('*' any run of characters, '?' one).")
+
+    private val state by option("--state", help = "Only components in this state in their first execution context.")
+        .choice("active" to LifeCycle.ACTIVE, "inactive" to LifeCycle.INACTIVE, "error" to LifeCycle.ERROR)
+
+    private val port by option("--port", metavar = "NAME", help = "Only components with a port named NAME.")
+
+    override suspend fun execute() {
+        val start = node(path)
+        discover(start, progressLine())
+        val filters = listOfNotNull(type?.let(NodeFilters::kind), name?.let(NodeFilters::name), state?.let(NodeFilters::state), port?.let { NodeFilters.hasPort(it) })
+        val found = tree.find(start.path, filters.reduceOrNull { all, next -> all and next } ?: { _: Node -> true }).toList()
+        if (session.json) {
+            echoJson(found.map { mapOf("path" to it.path.toString(), "kind" to it.kind.name.lowercase()) })
+        } else {
+            found.forEach { echo(it.path.toString()) }
+        }
+    }
+}

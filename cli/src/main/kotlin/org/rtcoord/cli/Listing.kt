@@ -1,0 +1,101 @@
+package org.rtcoord.cli
+
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.DirectoryNode
+import org.rtcoord.LifeCycle
+import org.rtcoord.Node
+import org.rtcoord.PortKind
+import org.rtcoord.ZombieNode
+
+/**
+ * One node as a listing shows it. [snapshot] is what was read of a component; a component that could
+ * not be read is [dead] and shows like a zombie.
+ */
+internal class Entry(val node: Node, val snapshot: ComponentSnapshot?) {
+    val dead: Boolean get() = node is ZombieNode || (node is ComponentNode && snapshot == null)
+
+    /** The short form: directories end in `/`, dead registrations start with `*`, as in rtls. */
+    val shortName: String
+        get() = when {
+            dead -> "*${node.name}"
+            node is DirectoryNode -> "${node.name}/"
+            else -> node.name
+        }
+
+    /** The columns before the name in the long form: state and four port counts, or `-` where they mean nothing. */
+    val columns: List<String>
+        get() {
+            val snapshot = snapshot?.takeUnless { dead } ?: return List(5) { "-" }
+            val ports = snapshot.ports
+            fun count(kind: PortKind?) = ports.filter { kind == null || it.kind == kind }
+                .let { "${it.size}/${it.count { port -> port.connectors.isNotEmpty() }}" }
+            return listOf(stateLabel(snapshot.overallState), count(null), count(PortKind.DATA_IN), count(PortKind.DATA_OUT), count(PortKind.SERVICE))
+        }
+
+    /** The entry for `--json`. */
+    fun toJson(): Map<String, Any?> = buildMap {
+        put("path", node.path.toString())
+        put("name", node.name)
+        put("kind", if (dead) "zombie" else node.kind.name.lowercase())
+        (node as? ZombieNode)?.let { put("error", it.cause.message) }
+        snapshot?.takeUnless { dead }?.let { snapshot ->
+            put("state", snapshot.overallState.name)
+            put("ports", portCounts(snapshot))
+        }
+    }
+
+    private fun portCounts(snapshot: ComponentSnapshot): Map<String, Map<String, Int>> =
+        listOf("all" to null, "in" to PortKind.DATA_IN, "out" to PortKind.DATA_OUT, "service" to PortKind.SERVICE).associate { (label, kind) ->
+            val ports = snapshot.ports.filter { kind == null || it.kind == kind }
+            label to mapOf("total" to ports.size, "connected" to ports.count { it.connectors.isNotEmpty() })
+        }
+}
+
+/** The entry for [node] as its last reading left it. */
+internal fun entryOf(node: Node): Entry = Entry(node, (node as? ComponentNode)?.snapshots?.value)
+
+/**
+ * Lines in rtls's long format: each column as wide as its widest cell plus two spaces, then the name
+ * (dead ones with `*`).
+ */
+internal fun longLines(entries: List<Entry>): List<String> {
+    val cells = entries.map { it.columns }
+    val widths = (0 until 5).map { column -> cells.maxOf { it[column].length } + 2 }
+    return entries.zip(cells).map { (entry, row) ->
+        row.zip(widths).joinToString("") { (cell, width) -> cell.padEnd(width) } + if (entry.dead) "*${entry.node.name}" else entry.node.name
+    }
+}
+
+/**
+ * Names side by side in columns that fit [width], filled row by row as rtls does on a terminal;
+ * one per line when the output is not a terminal ([width] null), for scripts.
+ */
+internal fun shortLines(entries: List<Entry>, width: Int?): List<String> {
+    val names = entries.map { it.shortName }
+    if (width == null || names.isEmpty()) return names
+    val gap = 2
+    val columns = (names.size downTo 1).first { count ->
+        names.chunked(count).let { rows -> (0 until count).sumOf { c -> rows.maxOf { it.getOrNull(c)?.length ?: 0 } + gap } - gap <= width }
+    }
+    val rows = names.chunked(columns)
+    val widths = (0 until columns).map { c -> rows.maxOf { it.getOrNull(c)?.length ?: 0 } }
+    return rows.map { row -> row.mapIndexed { c, name -> name.padEnd(widths[c]) }.joinToString(" ".repeat(gap)).trimEnd() }
+}
+
+/**
+ * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over
+ * ACTIVE over INACTIVE, else CREATED; UNKNOWN only without any context.
+ */
+internal val ComponentSnapshot.overallState: LifeCycle
+    get() {
+        val states = contexts.map { it.state }
+        if (states.isEmpty()) return LifeCycle.UNKNOWN
+        return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states } ?: LifeCycle.CREATED
+    }
+
+/** A state as rtshell prints it: `Active`, `Inactive`, `Error`, `Created`, `Unknown`. */
+internal fun stateLabel(state: LifeCycle): String = state.name.lowercase().replaceFirstChar { it.uppercase() }
+
+/** What the node is, in words for messages: `component`, `name server`, `zombie`... */
+internal val Node.kindLabel: String get() = kind.name.lowercase().replace('_', ' ')

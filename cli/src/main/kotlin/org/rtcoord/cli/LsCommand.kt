@@ -1,0 +1,102 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.terminal
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.option
+import org.rtcoord.ComponentNode
+import org.rtcoord.DirectoryNode
+import org.rtcoord.Node
+import org.rtcoord.TimedOutException
+import org.rtcoord.UnreachableException
+import org.rtcoord.WrongKindException
+
+/** `rtcoord ls`: rtls, without its hangs, its 200-entry limit or its all-or-nothing failures. */
+class LsCommand : TreeCommand("ls") {
+    override fun help(context: Context): String =
+        "List name servers, naming contexts, managers and components, as rtls does. Directories end in '/', " +
+            "dead registrations (zombies) start with '*'. With no PATH, list the name servers given by -n or the environment."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord -n localhost ls" to "the name server's root context",
+        "rtcoord ls -l /localhost/host.host_cxt" to "state and ports of every component in a context",
+        "rtcoord ls -R /localhost:2809" to "everything below a name server, directory by directory",
+        "rtcoord --json ls /localhost/host.host_cxt" to "the same entries as JSON",
+    )
+
+    private val long by option("-l", help = "Long format: state, then all/in/out/service ports as total/connected, then the name.").flag()
+
+    private val recursive by option("-R", "--recursive", help = "List every directory below, each under a 'path:' header.").flag()
+
+    private val paths by argument("PATH", help = "What to list; '/' is every name server the run knows.").multiple()
+
+    override suspend fun execute() {
+        val targets = paths.ifEmpty {
+            if (session.nameServers.isEmpty()) usage("no PATH and no name server: give a PATH, -n HOST[:PORT] or RTCOORD_NAMESERVERS")
+            listOf("/")
+        }
+        val blocks = targets.flatMap { listing(it, headed = targets.size > 1) }
+        if (session.json) {
+            echoJson(blocks.flatMap { block -> block.entries.map { it.toJson() } })
+            return
+        }
+        val width = terminal.size.width.takeIf { terminal.terminalInfo.outputInteractive }
+        blocks.forEachIndexed { index, block ->
+            if (index > 0 && !recursive) echo()
+            block.header?.let { echo("$it:") }
+            (if (long) longLines(block.entries) else shortLines(block.entries, width)).forEach { echo(it) }
+            if (recursive) echo()
+        }
+    }
+
+    /** What one PATH argument lists: the node itself, its children, or with -R every directory below it. */
+    private suspend fun listing(text: String, headed: Boolean): List<Block> {
+        val path = pathOf(text)
+        val node = node(text)
+        if (node !is DirectoryNode) {
+            if (path.isDirectory) throw WrongKindException(path.toString(), "directory", node.kindLabel)
+            return listOf(Block(null, listOf(readNow(node))))
+        }
+        if (!recursive) {
+            node.refresh(1)
+            return listOf(Block(text.takeIf { headed }, node.children().map(::entryOf)))
+        }
+        discover(node, progressLine())
+        return directoriesBelow(node).map { directory ->
+            val header = when {
+                directory === node -> if (headed) text else "."
+                else -> (if (headed) text.trimEnd('/') else ".") + relativePath(node, directory)
+            }
+            Block(header, directory.listed.value.orEmpty().map(::entryOf))
+        }
+    }
+
+    /** [below]'s path from [top], `/a/b`; below the root it starts with the name server. */
+    private fun relativePath(top: Node, below: Node): String {
+        val names = below.path.names.drop(top.path.names.size)
+        val start = if (top.path.isRoot) listOf(below.path.nameServer!!) else emptyList()
+        return (start + names).joinToString("") { "/$it" }
+    }
+
+    /** A single component (or zombie, or unknown object): read now, dead if it does not answer. */
+    private suspend fun readNow(node: Node): Entry {
+        if (node !is ComponentNode) return entryOf(node)
+        return try {
+            node.refresh()
+            entryOf(node)
+        } catch (e: UnreachableException) {
+            Entry(node, null)
+        } catch (e: TimedOutException) {
+            Entry(node, null)
+        }
+    }
+
+    /** [directory] and every directory below it, depth first, each before its children, as rtls -R lists them. */
+    private fun directoriesBelow(directory: DirectoryNode): List<DirectoryNode> =
+        listOf(directory) + directory.listed.value.orEmpty().filterIsInstance<DirectoryNode>().flatMap(::directoriesBelow)
+
+    /** A listing under an optional `header:` line. */
+    private class Block(val header: String?, val entries: List<Entry>)
+}

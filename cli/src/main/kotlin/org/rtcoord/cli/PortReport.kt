@@ -1,0 +1,68 @@
+package org.rtcoord.cli
+
+import org.rtcoord.Connection
+import org.rtcoord.Port
+import org.rtcoord.PortKind
+import org.rtcoord.PortSnapshot
+
+/** What `cat` shows of a port: kind, data type and its connections with the far ends as tree paths. */
+internal class PortReport(val snapshot: PortSnapshot, val connections: List<Connection>) {
+    /**
+     * A heading line `name  kind  type`, then one line per connection; [long] adds the port's properties
+     * below the heading and each connector's below its line.
+     */
+    fun lines(long: Boolean, indent: String): List<String> = buildList {
+        add(indent + listOfNotNull(snapshot.name, kindLabel(snapshot.kind), snapshot.dataType).joinToString("  "))
+        if (long) addAll(aligned(sorted(snapshot.properties), "$indent    "))
+        val arrow = when (snapshot.kind) {
+            PortKind.DATA_OUT -> "->"
+            PortKind.DATA_IN -> "<-"
+            else -> "--"
+        }
+        connections.forEach { connection ->
+            add("$indent  $arrow ${farEnds(connection).joinToString(", ")}")
+            if (long) {
+                addAll(aligned(listOf(listOf("connector", connection.name), listOf("id", connection.id)) + sorted(connection.properties), "$indent      "))
+            }
+        }
+    }
+
+    /** The port for `--json`. */
+    fun toJson(): Map<String, Any?> = mapOf(
+        "name" to snapshot.name,
+        "kind" to kindLabel(snapshot.kind),
+        "dataType" to snapshot.dataType,
+        "properties" to snapshot.properties.toSortedMap(),
+        "connections" to connections.map { connection ->
+            mapOf(
+                "id" to connection.id,
+                "name" to connection.name,
+                "ports" to connection.ports.map { mapOf("name" to it.fullName, "path" to it.path?.toString()) },
+                "properties" to connection.properties.toSortedMap(),
+            )
+        },
+    )
+
+    /** The connection's other ports: their tree paths, or OpenRTM's names for ports the tree does not know. */
+    private fun farEnds(connection: Connection): List<String> =
+        connection.ports.filter { it.fullName != snapshot.fullName }.map { it.path?.toString() ?: "${it.fullName} (outside the tree)" }
+
+    companion object {
+        /** Reads [port] with its connections resolved to paths. */
+        suspend fun read(port: Port): PortReport {
+            val snapshot = port.snapshot()
+            return PortReport(snapshot, if (snapshot.connectors.isEmpty()) emptyList() else port.connections())
+        }
+
+        /** The port types OpenRTM writes in `port.port_type`. */
+        fun kindLabel(kind: PortKind): String = when (kind) {
+            PortKind.DATA_IN -> "DataInPort"
+            PortKind.DATA_OUT -> "DataOutPort"
+            PortKind.SERVICE -> "CorbaPort"
+            PortKind.OTHER -> "Port"
+        }
+    }
+}
+
+/** [properties] as key-value rows, by key. */
+internal fun sorted(properties: Map<String, String>): List<List<String>> = properties.toSortedMap().map { (key, value) -> listOf(key, value) }

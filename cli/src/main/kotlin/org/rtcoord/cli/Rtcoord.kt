@@ -1,0 +1,109 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.CliktCommand
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.UsageError
+import com.github.ajalt.clikt.core.context
+import com.github.ajalt.clikt.core.registerCloseable
+import com.github.ajalt.clikt.core.terminal
+import com.github.ajalt.clikt.parameters.options.convert
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.multiple
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.options.versionOption
+import com.github.ajalt.mordant.terminal.Terminal
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
+import java.util.Properties
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * The root command: global options that say where the system is and how to talk about it. Its
+ * [run] turns them into the [Session] every subcommand uses, and registers the session with the
+ * context so the tree is closed when the command ends, however it ends.
+ */
+class Rtcoord : CliktCommand(name = "rtcoord") {
+    init {
+        versionOption(version(), message = { "rtcoord $it" })
+        context {
+            helpFormatter = ::HelpFormatter
+            terminal = Terminal(terminalInterface = PlainTerminal)
+        }
+    }
+
+    override fun help(context: Context): String =
+        "Browse and operate an OpenRTM-aist RT system: name servers, naming contexts, managers and components, " +
+            "addressed by rtshell's paths (/host:port/context/name.rtc:port)."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord -n localhost ls -l" to "state and ports of everything the name server on localhost:2809 knows",
+        "rtcoord ls -R /localhost:2809" to "everything below a name server",
+        "rtcoord act /localhost/host.host_cxt/laser0.rtc" to "activate a component and wait until it is Active",
+        "RTCOORD_NAMESERVERS='a;b:2810' rtcoord find / --state error" to "components in ERROR on two name servers",
+    ) + "\n\nRelative paths start from RTCOORD_CWD (or rtshell's RTCSH_CWD) when it is set."
+
+    private val nameServers by option(
+        "-n", "--nameserver",
+        metavar = "ADDRESS",
+        help = "A name server to use, HOST or HOST:PORT (repeatable). Without it: RTCOORD_NAMESERVERS, else rtshell's " +
+            "RTCTREE_NAMESERVERS, both separated by ';'. Name servers named in a path are always used.",
+    ).convert { address -> nameServer(address) { fail(it) } }.multiple()
+
+    private val timeout by option(
+        "--timeout",
+        metavar = "DURATION",
+        help = "How long any one call to the system may take, e.g. 3s or 500ms.",
+    ).duration().default(3.seconds)
+
+    private val json by option("--json", help = "Machine-readable output (JSON) from every listing command.").flag()
+
+    private val verbose by option("-v", "--verbose", help = "Turn JacORB's logging on and show the stack trace of an error.").flag()
+
+    private val quiet by option("-q", "--quiet", help = "Print no confirmations or progress; listings and errors still print.").flag()
+
+    override fun run() {
+        if (verbose) CliLogging.verbose()
+        val session = Session(
+            nameServers = nameServers.ifEmpty { nameServersFromEnvironment() },
+            timeout = timeout,
+            json = json,
+            verbose = verbose,
+            quiet = quiet,
+            workingDirectory = workingDirectoryFromEnvironment(),
+        )
+        currentContext.findOrSetObject { currentContext.registerCloseable(session) }
+    }
+
+    private fun nameServersFromEnvironment(): List<String> {
+        val variable = NAME_SERVER_VARIABLES.firstOrNull { !currentContext.readEnvvar(it).isNullOrBlank() } ?: return emptyList()
+        return currentContext.readEnvvar(variable)!!.split(';').map { it.trim() }.filter { it.isNotEmpty() }
+            .map { address -> nameServer(address) { throw UsageError("$variable: $it") } }
+    }
+
+    private fun workingDirectoryFromEnvironment(): RtcPath? {
+        val variable = CWD_VARIABLES.firstOrNull { !currentContext.readEnvvar(it).isNullOrBlank() } ?: return null
+        val text = currentContext.readEnvvar(variable)!!
+        return try {
+            RtcPath.parse(text)
+        } catch (e: RtcException) {
+            throw UsageError("$variable: ${e.message}")
+        }
+    }
+
+    private companion object {
+        val NAME_SERVER_VARIABLES = listOf("RTCOORD_NAMESERVERS", "RTCTREE_NAMESERVERS")
+        val CWD_VARIABLES = listOf("RTCOORD_CWD", "RTCSH_CWD")
+
+        /** [address] if it is `host`, `host:port` or a name server's `corbaloc:`; else [invalid] with why. */
+        inline fun nameServer(address: String, invalid: (String) -> Nothing): String = try {
+            RtcPath.nameServer(address)
+            address
+        } catch (e: RtcException) {
+            invalid(e.message ?: "'$address' is not HOST[:PORT]")
+        }
+
+        fun version(): String = Rtcoord::class.java.getResourceAsStream("version.properties")
+            ?.use { Properties().apply { load(it) }.getProperty("version") } ?: "unknown"
+    }
+}

@@ -1,0 +1,35 @@
+package org.rtcoord.cli
+
+import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
+import kotlin.time.Duration
+
+/**
+ * What the global options decided, shared by the commands of one run. The tree is made on first use,
+ * so a command that fails on its arguments never starts an ORB, and closed with the session.
+ */
+class Session(
+    /** Name servers from `-n` or the environment. */
+    val nameServers: List<String>,
+    /** The deadline of every remote call. */
+    val timeout: Duration,
+    /** Whether listings print JSON. */
+    val json: Boolean,
+    /** Whether errors carry their stack trace. */
+    val verbose: Boolean,
+    /** Whether confirmations and progress are left out. */
+    val quiet: Boolean,
+    /** Where relative paths start, or null when they are not allowed. */
+    val workingDirectory: RtcPath?,
+) : AutoCloseable {
+    private val lazyTree = lazy { RtcTree.create(TreeConfig(nameServers = nameServers, callTimeout = timeout)) }
+
+    /** The tree over the system, created on first use. */
+    val tree: RtcTree by lazyTree
+
+    /** Closes the tree if one was made. */
+    override fun close() {
+        if (lazyTree.isInitialized()) tree.close()
+    }
+}

@@ -1,0 +1,61 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.options.option
+import kotlinx.coroutines.awaitCancellation
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
+import org.rtcoord.EventOptions
+import org.rtcoord.RtcEvent
+import org.rtcoord.WatchMode
+
+/** `rtcoord watch`: rtwatch that starts, for every kind of event, pushed where components allow it. */
+class WatchCommand : TreeCommand("watch") {
+    override fun help(context: Context): String =
+        "Print events as they happen, one line each: when the tree noticed it, the path, what happened. Components push " +
+            "them through their ComponentObserver when they accept one, else they are polled. A context or manager " +
+            "watches everything below it, including components that appear later. Runs until Ctrl-C or --for has passed."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord watch /localhost/host.host_cxt/laser0.rtc" to "the laser's state, ports, configuration and contexts",
+        "rtcoord watch /localhost/host.host_cxt --poll 200ms --for 1m" to "a whole context, polled five times a second, for a minute",
+        "rtcoord --json watch /localhost/host.host_cxt | jq .event" to "one JSON object per line",
+    )
+
+    private val paths by argument("PATH", help = "Components, naming contexts or managers.").multiple(required = true)
+
+    private val poll by option("--poll", metavar = "PERIOD", help = "Poll every PERIOD instead of taking pushed events.").duration()
+
+    private val duration by option("--for", metavar = "DURATION", help = "Stop after DURATION.").duration()
+
+    override suspend fun execute() {
+        val options = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
+        // Ctrl-C ends the JVM through its shutdown hooks: closing the tree there detaches the observers
+        // this command attached, instead of leaving them on the components.
+        val detach = Thread(tree::close, "rtcoord-detach")
+        Runtime.getRuntime().addShutdownHook(detach)
+        try {
+            // Subscribed one by one, each returning once its components are read and observed: a wrong
+            // path fails before anything is printed, and --for counts from when every event is caught.
+            val events = Channel<RtcEvent>(Channel.UNLIMITED)
+            paths.forEach { path -> tree.on(node(path), RtcEvent::class.java, options) { events.send(it) } }
+            coroutineScope {
+                val printing = launch {
+                    for (event in events) if (session.json) echo(toJson(event.toJson(), pretty = false)) else echo(event.line())
+                }
+                duration?.let { delay(it) } ?: awaitCancellation()
+                // Closing the tree while still subscribed detaches every observer before it returns;
+                // ending the subscriptions first would leave that to background work the exit cuts short.
+                tree.close()
+                printing.cancel()
+            }
+        } finally {
+            // Refused while the JVM is already shutting down, which is when the hook is doing its work.
+            runCatching { Runtime.getRuntime().removeShutdownHook(detach) }
+        }
+    }
+}

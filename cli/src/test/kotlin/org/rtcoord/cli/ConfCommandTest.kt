@@ -1,0 +1,59 @@
+package org.rtcoord.cli
+
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Test
+
+/** `conf`: list, get, set and act, read back from the component itself. */
+class ConfCommandTest {
+    private val localisation = Localisation()
+    private val localiser = localisation.path("laser_localise0.rtc")
+    private val fixture = localisation.system.component("laser_localise0")
+
+    @AfterEach
+    fun stop() = localisation.close()
+
+    @Test
+    fun `lists the sets, the active one marked, hidden ones only with --all`() {
+        val sets = "* default\n    fail  0\n    gain  1.0\n  precise\n    fail  0\n    gain  0.5\n"
+        assertEquals(sets, runRtcoord("conf", localiser).ok())
+        assertEquals(sets, runRtcoord("conf", localiser, "list").ok())
+        assertEquals("  __constraints__\n    fail  0\n    gain  0<x<10\n$sets", runRtcoord("conf", localiser, "list", "--all").ok())
+        assertEquals("  precise\n    fail  0\n    gain  0.5\n", runRtcoord("conf", localiser, "list", "--set", "precise").ok())
+        assertEquals(
+            "{\n  \"active\": \"default\",\n  \"sets\": {\n    \"precise\": {\n      \"fail\": \"0\",\n      \"gain\": \"0.5\"\n    }\n  }\n}\n",
+            runRtcoord("--json", "conf", localiser, "list", "--set", "precise").ok(),
+        )
+    }
+
+    @Test
+    fun `gets and sets a value in the active set or another`() {
+        assertEquals("1.0\n", runRtcoord("conf", localiser, "get", "gain").ok())
+        runRtcoord("conf", localiser, "set", "gain", "2.5").ok()
+        assertEquals("2.5", fixture.parameter("gain"))
+        runRtcoord("conf", localiser, "set", "gain", "0.25", "--set", "precise").ok()
+        assertEquals("0.25\n", runRtcoord("conf", localiser, "get", "gain", "--set", "precise").ok())
+        assertEquals("2.5", fixture.parameter("gain"))
+    }
+
+    @Test
+    fun `activates a set`() {
+        runRtcoord("conf", localiser, "act", "precise").ok()
+        assertEquals("precise", fixture.activeConfigurationSet)
+        assertEquals("0.5", fixture.parameter("gain"))
+    }
+
+    @Test
+    fun `an invalid value is refused and the old one kept`() {
+        val line = runRtcoord("conf", localiser, "set", "gain", "fast").failure()
+        assertEquals("rtcoord: $localiser: set_configuration_set_values rejected: 'fast' is not a valid value for gain", line)
+        assertEquals("1.0", fixture.parameter("gain"))
+    }
+
+    @Test
+    fun `unknown parameters, sets and actions are named`() {
+        assertEquals("rtcoord: $localiser: no parameter 'speed' in configuration set 'default' (parameters: fail, gain)", runRtcoord("conf", localiser, "get", "speed").failure())
+        assertEquals("rtcoord: $localiser: no configuration set 'fast' (sets: __constraints__, default, precise)", runRtcoord("conf", localiser, "act", "fast").failure())
+        runRtcoord("conf", localiser, "toggle").usageError()
+    }
+}

@@ -1,0 +1,91 @@
+package org.rtcoord.cli
+
+import RTC.LifeCycleState
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.Behaviour
+import org.rtcoord.fixtures.ComponentContext
+import org.rtcoord.fixtures.ComponentType
+import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.rtSystem
+
+/** `act`, `deact` and `reset`: they wait for the state, check everything first and report return codes. */
+class LifecycleCommandTest {
+    private val localisation = Localisation()
+
+    @AfterEach
+    fun stop() = localisation.close()
+
+    private fun state(instance: String): LifeCycleState = localisation.system.component(instance).state
+
+    @Test
+    fun `deact and act wait until the state is reached`() {
+        runRtcoord("deact", localisation.path("laser0.rtc"), localisation.path("gyro0.rtc")).ok()
+        assertEquals(LifeCycleState.INACTIVE_STATE, state("laser0"))
+        assertEquals(LifeCycleState.INACTIVE_STATE, state("gyro0"))
+        runRtcoord("act", localisation.path("laser0.rtc"), localisation.path("gyro0.rtc")).ok()
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("gyro0"))
+    }
+
+    @Test
+    fun `a component already in the target state is left as it is`() {
+        assertEquals("", runRtcoord("act", localisation.path("laser0.rtc")).ok())
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
+    }
+
+    @Test
+    fun `reset brings a component out of ERROR`() {
+        localisation.system.component("gyro0").fail()
+        await("gyro0 in ERROR") { state("gyro0") == LifeCycleState.ERROR_STATE }
+        runRtcoord("reset", localisation.path("gyro0.rtc")).ok()
+        assertEquals(LifeCycleState.INACTIVE_STATE, state("gyro0"))
+    }
+
+    @Test
+    fun `one bad path among good ones changes nothing`() {
+        val line = runRtcoord("deact", localisation.path("laser0.rtc"), localisation.path("sonar0.rtc"), localisation.path("gyro0.rtc")).failure()
+        assertEquals("rtcoord: ${localisation.path("sonar0.rtc")}: not found", line)
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("gyro0"))
+    }
+
+    @Test
+    fun `one component in the wrong state among good ones changes nothing and names the return code`() {
+        localisation.system.component("gyro0").fail()
+        await("gyro0 in ERROR") { state("gyro0") == LifeCycleState.ERROR_STATE }
+        val line = runRtcoord("deact", localisation.path("laser0.rtc"), localisation.path("gyro0.rtc")).failure()
+        assertEquals(
+            "rtcoord: ${localisation.path("gyro0.rtc")}: deactivate refused: the component is ERROR in context 0, not ACTIVE (PRECONDITION_NOT_MET)",
+            line,
+        )
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
+    }
+
+    @Test
+    fun `a component that refuses to activate fails the command with its return code`() {
+        val stubborn = ComponentType("stubborn", behaviour = { Refusing })
+        rtSystem(localisation.naming.corbaloc) { component(stubborn) }.use {
+            val line = runRtcoord("act", localisation.path("stubborn0.rtc")).failure()
+            assertEquals("rtcoord: ${localisation.path("stubborn0.rtc")}: activate failed: RTC_ERROR (in context 0)", line)
+        }
+    }
+
+    @Test
+    fun `the execution context is chosen by handle or by index, not both`() {
+        runRtcoord("deact", "--index", "0", localisation.path("laser0.rtc")).ok()
+        assertEquals(LifeCycleState.INACTIVE_STATE, state("laser0"))
+        runRtcoord("act", "--context", "0", localisation.path("laser0.rtc")).ok()
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
+        val line = runRtcoord("deact", "--context", "1000", localisation.path("laser0.rtc")).failure()
+        assertEquals("rtcoord: ${localisation.path("laser0.rtc")}: no execution context with handle 1000 (handles: 0)", line)
+        runRtcoord("act", "--context", "0", "--index", "0", localisation.path("laser0.rtc")).usageError()
+        runRtcoord("act").usageError()
+    }
+
+    /** A behaviour whose activation always fails, as a component that cannot open its device does. */
+    private object Refusing : Behaviour {
+        override fun onActivated(rtc: ComponentContext): Boolean = false
+    }
+}

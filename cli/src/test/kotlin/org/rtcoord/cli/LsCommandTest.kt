@@ -1,0 +1,128 @@
+package org.rtcoord.cli
+
+import org.junit.jupiter.api.AfterAll
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.TestInstance
+import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.runPeer
+
+/** `ls` against the localisation system, checked against rtshell's rtls where both can list it. */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class LsCommandTest {
+    private val localisation = Localisation()
+    private val host = localisation.host
+    private val address = localisation.naming.address
+
+    @AfterAll
+    fun stop() = localisation.close()
+
+    @Test
+    fun `the short form lists names, directories with a slash`() {
+        val listed = runRtcoord("ls", host).ok()
+        assertEquals("manager.mgr/\nlaser0.rtc\ngyro0.rtc\nodometry0.rtc\nlaser_localise0.rtc\n", listed)
+    }
+
+    @Test
+    fun `the long form is rtls -l's, column for column`() {
+        val ours = runRtcoord("ls", "-l", host).ok()
+        assertEquals(
+            """
+            -       -    -    -    -    manager.mgr
+            Active  1/1  0/0  1/1  0/0  laser0.rtc
+            Active  1/0  0/0  1/0  0/0  gyro0.rtc
+            Active  1/1  0/0  1/1  0/0  odometry0.rtc
+            Active  3/2  2/2  1/0  0/0  laser_localise0.rtc
+            
+            """.trimIndent(),
+            ours,
+        )
+        assertEquals(runPeer("rtls", "-l", host).ok().output, ours)
+    }
+
+    @Test
+    fun `-l -R is rtls -l -R, headers and all`() {
+        val ours = runRtcoord("ls", "-l", "-R", "/$address/").ok()
+        assertTrue(ours.startsWith(".:\n-  -  -  -  -  ${FixtureRuntime.hostContext}\n\n./${FixtureRuntime.hostContext}:\n"), ours)
+        assertEquals(runPeer("rtls", "-l", "-R", "/$address/").ok().output, ours)
+    }
+
+    @Test
+    fun `a name server without a trailing slash is listed, where rtls reads a port`() {
+        assertEquals("${FixtureRuntime.hostContext}/\n", runRtcoord("ls", "/$address").ok())
+        assertEquals(1, runPeer("rtls", "/$address").exitCode)
+    }
+
+    @Test
+    fun `with no path the name servers from -n or the environment are listed`() {
+        assertEquals("$address/\n", runRtcoord("-n", address, "ls").ok())
+        assertEquals("$address/\n", runRtcoord("ls", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok())
+        assertEquals("$address/\n", runRtcoord("ls", environment = mapOf("RTCTREE_NAMESERVERS" to " $address ;")).ok())
+        assertTrue(runRtcoord("ls").usageError().contains("no PATH and no name server"))
+    }
+
+    @Test
+    fun `a dead name server among live ones is one zombie line, not a failure`() {
+        val dead = deadNameServer()
+        val listed = runRtcoord("-n", address, "-n", dead, "ls", "-l").ok()
+        assertEquals("-  -  -  -  -  $address\n-  -  -  -  -  *$dead\n", listed)
+    }
+
+    @Test
+    fun `a component path lists that component`() {
+        assertEquals("Active  1/0  0/0  1/0  0/0  gyro0.rtc\n", runRtcoord("ls", "-l", localisation.path("gyro0.rtc")).ok())
+        assertEquals("gyro0.rtc\n", runRtcoord("ls", localisation.path("gyro0.rtc")).ok())
+    }
+
+    @Test
+    fun `several paths are listed under their own headers`() {
+        val listed = runRtcoord("ls", localisation.path("manager.mgr"), localisation.path("manager.mgr/manager_slave")).ok()
+        assertEquals(
+            "${localisation.path("manager.mgr")}:\nmanager_slave/\n\n" +
+                "${localisation.path("manager.mgr/manager_slave")}:\nlaser0.rtc\ngyro0.rtc\nodometry0.rtc\nlaser_localise0.rtc\n",
+            listed,
+        )
+    }
+
+    @Test
+    fun `--json gives every entry with its state and port counts`() {
+        val json = runRtcoord("--json", "ls", localisation.path("gyro0.rtc")).ok()
+        val expected = """
+            [
+              {
+                "path": "${localisation.path("gyro0.rtc")}",
+                "name": "gyro0.rtc",
+                "kind": "component",
+                "state": "ACTIVE",
+                "ports": {
+                  "all": {
+                    "total": 1,
+                    "connected": 0
+                  },
+                  "in": {
+                    "total": 0,
+                    "connected": 0
+                  },
+                  "out": {
+                    "total": 1,
+                    "connected": 0
+                  },
+                  "service": {
+                    "total": 0,
+                    "connected": 0
+                  }
+                }
+              }
+            ]
+            
+        """.trimIndent()
+        assertEquals(expected, json)
+    }
+
+    @Test
+    fun `relative paths start from RTCOORD_CWD or rtshell's RTCSH_CWD`() {
+        assertEquals("gyro0.rtc\n", runRtcoord("ls", "gyro0.rtc", environment = mapOf("RTCOORD_CWD" to host)).ok())
+        assertEquals("gyro0.rtc\n", runRtcoord("ls", "../${FixtureRuntime.hostContext}/gyro0.rtc", environment = mapOf("RTCSH_CWD" to "$host/")).ok())
+    }
+}

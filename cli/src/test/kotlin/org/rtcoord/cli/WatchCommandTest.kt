@@ -1,0 +1,57 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.testing.CliktCommandTestResult
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import java.util.concurrent.CompletableFuture
+
+/** `watch`: one line per event while it runs, observers gone when it stops. */
+class WatchCommandTest {
+    private val localisation = Localisation()
+    private val gyro = localisation.path("gyro0.rtc")
+
+    @AfterEach
+    fun stop() = localisation.close()
+
+    /** Runs `watch` for [seconds] while gyro0 is deactivated and activated again and again. */
+    private fun watchWhileToggling(seconds: Int, vararg arguments: String): CliktCommandTestResult {
+        val watching = CompletableFuture.supplyAsync { runRtcoord(*arguments, "--for", "${seconds}s") }
+        while (!watching.isDone) {
+            Thread.sleep(400)
+            runRtcoord("deact", gyro).ok()
+            Thread.sleep(400)
+            runRtcoord("act", gyro).ok()
+        }
+        return watching.get()
+    }
+
+    @Test
+    fun `prints a timestamped line per event until --for has passed`() {
+        val started = System.nanoTime()
+        val lines = watchWhileToggling(3, "watch", localisation.host).ok().lines().filter { it.isNotEmpty() }
+        assertTrue((System.nanoTime() - started) / 1_000_000 in 3_000..8_000)
+        val line = Regex("""\d{4}-\d\d-\d\d \d\d:\d\d:\d\d\.\d{3} /\S+/gyro0\.rtc state in context 0: (ACTIVE -> INACTIVE|INACTIVE -> ACTIVE)""")
+        assertTrue(lines.isNotEmpty() && lines.all { line.matches(it) }, lines.joinToString("\n"))
+    }
+
+    @Test
+    fun `polls with --poll and prints JSON lines with --json`() {
+        val lines = watchWhileToggling(3, "--json", "watch", gyro, "--poll", "100ms").ok().lines().filter { it.isNotEmpty() }
+        val line = Regex("""\{"time":"[^"]+","path":"\Q$gyro\E","event":"StateChanged","handle":0,"old":"(ACTIVE|INACTIVE)","new":"(ACTIVE|INACTIVE)"}""")
+        assertTrue(lines.isNotEmpty() && lines.all { line.matches(it) }, lines.joinToString("\n"))
+    }
+
+    @Test
+    fun `the observers it attached are detached when it stops`() {
+        runRtcoord("watch", gyro, "--for", "1s").ok()
+        assertEquals(emptySet<String>(), localisation.system.component("gyro0").observerIds)
+    }
+
+    @Test
+    fun `durations must be positive and well formed`() {
+        runRtcoord("watch", gyro, "--for", "soon").usageError()
+        runRtcoord("watch", gyro, "--poll", "0s").usageError()
+    }
+}
