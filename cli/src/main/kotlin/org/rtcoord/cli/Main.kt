@@ -24,11 +24,11 @@ fun main(args: Array<String>) {
     exitProcess(status)
 }
 
-/**
- * The `rtcoord` command with every subcommand. The script commands (`run`, `check`, `demo`) join this
- * list once the script engine exists; they get the same [Session] through [TreeCommand].
- */
+/** The `rtcoord` command with every subcommand. */
 fun rtcoord(): Rtcoord = Rtcoord().subcommands(
+    DemoCommand(),
+    RunCommand(),
+    CheckCommand(),
     LsCommand(),
     CatCommand(),
     FindCommand(),

@@ -28,7 +28,10 @@ import org.rtcoord.UnreachableException
 import org.rtcoord.WatchMode
 import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
+import java.util.concurrent.CompletableFuture
 import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
 import kotlin.time.TimeSource
 
@@ -68,7 +71,7 @@ internal class ComponentMonitor(
     // Owned by the worker coroutine.
     private var last: ComponentSnapshot? = null
     private val trackers = HashMap<Int, StateTracker>()
-    @Volatile private var observer: ObserverHost.Observer? = null
+    private var observer: ObserverHost.Observer? = null
     private var poller: Job? = null
     private var pollPeriod: Duration? = null
     private var watchdog: Job? = null
@@ -100,17 +103,17 @@ internal class ComponentMonitor(
         work.close()
     }
 
-    /** Stops watching and detaches the observer now, on the calling thread: the tree is closing. */
-    fun stopNow() {
-        work.close()
-        val attached = observer ?: return
-        observer = null
+    private val stopped = CompletableFuture<Unit>()
+
+    /**
+     * Waits, at most [timeout], until the monitor's coroutine has finished (its observer detached), on
+     * the calling thread: the tree is closing. Call [stop] first.
+     */
+    fun awaitStopped(timeout: Duration) {
         try {
-            node.component.ref.get_configuration().remove_service_profile(attached.profileId)
-        } catch (e: Exception) {
-            log.debug("{}: could not detach observer: {}", subject, e.toString())
-        } finally {
-            attached.close()
+            stopped.get(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS)
+        } catch (e: TimeoutException) {
+            log.warn("{}: observer not detached within {}", subject, timeout)
         }
     }
 
@@ -127,6 +130,7 @@ internal class ComponentMonitor(
                 watchdog?.cancel()
                 detach()
                 ended(this@ComponentMonitor)
+                stopped.complete(Unit)
             }
         }
     }

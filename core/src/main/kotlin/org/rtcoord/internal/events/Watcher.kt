@@ -10,6 +10,7 @@ import org.rtcoord.ConfigurationSetRemoved
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.ParameterChanged
 import org.rtcoord.Recovered
@@ -21,6 +22,7 @@ import org.rtcoord.WrongKindException
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.label
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * The tree's registrations: one [ComponentMonitor] per component and one [ListingMonitor] per directory,
@@ -58,7 +60,8 @@ internal class Watcher(private val core: TreeCore) {
                     val monitor = synchronized(listings) { listings.getOrPut(node) { ListingMonitor(core, node) } }
                     monitor.add(registration)
                     synchronized(releases) { releases += { release(node, monitor, registration) } }
-                    children.forEach { include(it) }
+                    // Components in naming contexts first, so a monitor's paths are the ones users know.
+                    children.sortedBy { it is ManagerNode }.forEach { include(it) }
                 }
                 else -> if (node === target) throw WrongKindException(node.path.toString(), "component or directory", node.kind.label())
             }
@@ -89,10 +92,16 @@ internal class Watcher(private val core: TreeCore) {
         }
     }
 
-    /** Stops every monitor, including those still stopping, and detaches their observers before returning. */
+    /**
+     * Stops every monitor, including those already stopping, and returns once each has detached its
+     * observer (or a call deadline and a second have passed for the slowest): the tree's scope and ORB
+     * must outlive the detaching.
+     */
     fun close() {
         synchronized(components) { components.clear() }
-        live.toList().forEach(ComponentMonitor::stopNow)
+        val stopping = live.toList()
+        stopping.forEach(ComponentMonitor::stop)
+        stopping.forEach { it.awaitStopped(core.config.callTimeout + 1.seconds) }
         synchronized(listings) { listings.values.forEach(ListingMonitor::stop); listings.clear() }
     }
 

@@ -1,0 +1,114 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.withTimeoutOrNull
+import org.rtcoord.ComponentNode
+import org.rtcoord.EventOptions
+import org.rtcoord.LifeCycle
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.script.ScriptHost
+import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.RtSystem
+import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.naming.NamingService
+import java.nio.file.Files
+import java.nio.file.Path
+import java.time.LocalTime
+import java.time.format.DateTimeFormatter
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
+
+/**
+ * The newcomer's first command: the paper's localisation system, in this process on an embedded naming
+ * service, coordinated by `examples/localisation.coord.kts`; the laser fails and the coordinator
+ * switches to odometry and gyro. Succeeds when the system ends as the coordinator intends.
+ */
+class DemoCommand : TreeCommand("demo") {
+    override fun help(context: Context): String =
+        "Run the paper's example: a localisation system whose laser fails, and the coordinator that recovers it."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord demo" to "start the system, make the laser fail after 3 s, show the coordinator reacting",
+    )
+
+    override suspend fun execute() {
+        echo("Starting an embedded naming service and the paper's localisation system...")
+        NamingService.start().use { naming ->
+            Scenarios.localisation(naming.corbaloc).use { system ->
+                RtcTree.create(TreeConfig(listOf(naming.address), session.timeout)).use { tree ->
+                    demonstrate(naming, system, tree)
+                }
+            }
+        }
+    }
+
+    private suspend fun demonstrate(naming: NamingService, system: RtSystem, tree: RtcTree) {
+        val host = "/${naming.address}/${FixtureRuntime.hostContext}"
+        echo("The system, at $host:")
+        showNetwork(tree, host)
+
+        val script = script()
+        echo("\nCompiling examples/localisation.coord.kts (cached after the first run)...")
+        val coordination = ScriptHost().load(script, host = TreeConfig(listOf(naming.address), session.timeout))
+        Coordinator(tree, coordination, EventOptions()) { echo("${now()}   coordinator: $it") }.use { coordinator ->
+            coordinator.start()
+            echo("${now()} coordinator running: ${coordination.description.joinToString("; ")}")
+            echo("${now()} the laser will fail in 3 seconds")
+            delay(3.seconds)
+            echo("${now()} laser0 fails (its on_execute returns an error)")
+            val failed = TimeSource.Monotonic.markNow()
+            system.component("laser0").fail()
+            val recovered = withTimeoutOrNull(30.seconds) {
+                while (runCatching { tree.component("$host/odo_localise0.rtc").state() }.getOrNull() != LifeCycle.ACTIVE) delay(20.milliseconds)
+                failed.elapsedNow()
+            }
+            echo("\nThe system after the coordinator's reaction:")
+            tree.refresh()
+            showNetwork(tree, host)
+            val problems = expectedStateProblems(tree, host)
+            if (recovered == null || problems.isNotEmpty()) fail("the system did not end as expected: ${problems.joinToString("; ").ifEmpty { "odo_localise0 never became ACTIVE" }}")
+            echo("\nRecovered ${recovered.inWholeMilliseconds} ms after the laser failed: odo_localise0 is ACTIVE on odometry and gyro.")
+        }
+    }
+
+    private suspend fun showNetwork(tree: RtcTree, host: String) {
+        val components = (tree.node(host) as org.rtcoord.ContextNode).also { it.refresh(1) }.children().filterIsInstance<ComponentNode>()
+        for (component in components.sortedBy { it.name }) {
+            val snapshot = component.snapshot()
+            val links = snapshot.ports.filter { it.connectors.isNotEmpty() }.flatMap { port ->
+                component.port(port.name).connections().map { connection ->
+                    val peer = connection.ports.firstOrNull { it.path != component.path.withPort(port.name) }
+                    "${port.name} <-> ${peer?.path?.let { "${it.names.last()}:${it.port}" } ?: peer?.fullName}"
+                }
+            }
+            echo("  %-22s %-9s %s".format(component.name, snapshot.state, links.joinToString(", ")))
+        }
+    }
+
+    private suspend fun expectedStateProblems(tree: RtcTree, host: String): List<String> = buildList {
+        val created = runCatching { tree.component("$host/odo_localise0.rtc").snapshot() }.getOrNull()
+        if (created == null) add("odo_localise0 was not created") else {
+            if (created.state != LifeCycle.ACTIVE) add("odo_localise0 is ${created.state}")
+            if (created.port("odo")?.connectors?.size != 1 || created.port("gyro")?.connectors?.size != 1) add("odo_localise0 is not fed by odometry and gyro")
+        }
+        val old = tree.component("$host/laser_localise0.rtc").snapshot()
+        if (old.state != LifeCycle.INACTIVE) add("laser_localise0 is ${old.state}")
+        if (old.ports.any { it.connectors.isNotEmpty() }) add("laser_localise0 is still connected")
+    }
+
+    /** The coordinator shipped in this jar, as a file the script host can compile. */
+    private fun script(): Path {
+        val directory = Files.createTempDirectory("rtcoord-demo")
+        val file = directory.resolve("localisation.coord.kts")
+        DemoCommand::class.java.getResourceAsStream("/demo/localisation.coord.kts")!!.use { Files.copy(it, file) }
+        file.toFile().deleteOnExit()
+        directory.toFile().deleteOnExit()
+        return file
+    }
+
+    private fun now(): String = LocalTime.now().format(DateTimeFormatter.ofPattern("HH:mm:ss.SSS"))
+}

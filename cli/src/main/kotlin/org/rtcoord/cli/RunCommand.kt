@@ -1,0 +1,66 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.ProgramResult
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.path
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.withTimeoutOrNull
+import org.rtcoord.EventOptions
+import org.rtcoord.TreeConfig
+import org.rtcoord.WatchMode
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.script.ScriptFailure
+import org.rtcoord.dsl.script.ScriptHost
+import java.time.LocalTime
+import java.time.format.DateTimeFormatter
+
+/**
+ * Runs a coordinator script against the live system until SIGINT/SIGTERM or `--for` elapses, logging
+ * each rule firing and action. On the way out the coordinator's observers are detached.
+ */
+class RunCommand : TreeCommand("run") {
+    override fun help(context: Context): String = "Run a coordinator (SCRIPT.coord.kts) until interrupted."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord -n localhost run examples/localisation.coord.kts" to "the paper's coordinator, until Ctrl-C",
+        "rtcoord run --for 5m --poll 100ms restart.coord.kts 3" to "for five minutes, polling, with argument 3",
+    )
+
+    private val script by argument("SCRIPT", help = "The coordinator script.").path()
+    private val arguments by argument("ARGS", help = "Arguments the script reads as args.").multiple()
+    private val duration by option("--for", metavar = "DURATION", help = "Stop after this long, e.g. 30s or 5m.").duration()
+    private val poll by option("--poll", metavar = "PERIOD", help = "Poll components at this period instead of observing them.").duration()
+
+    override suspend fun execute() {
+        val coordination = try {
+            ScriptHost().load(script, arguments, TreeConfig(session.nameServers, session.timeout))
+        } catch (e: ScriptFailure) {
+            e.problems.forEach { echo(it, err = true) }
+            throw ProgramResult(1)
+        }
+        val options = poll?.let { EventOptions(WatchMode.POLL, pollPeriod = it) }
+        val coordinator = Coordinator(tree, coordination, options) { echo("${LocalTime.now().format(TIME)} $it") }
+        coordinator.start()
+        confirm("${LocalTime.now().format(TIME)} coordinating with ${coordination.description.size} rules and timers: ${coordination.description.joinToString("; ")}")
+
+        val stopped = CompletableDeferred<Unit>()
+        // On SIGINT/SIGTERM the JVM runs this before exiting: detach observers while the ORB still works.
+        val hook = Thread {
+            stopped.complete(Unit)
+            coordinator.close()
+            session.close()
+        }
+        Runtime.getRuntime().addShutdownHook(hook)
+        withTimeoutOrNull(duration ?: kotlin.time.Duration.INFINITE) { stopped.await() }
+        Runtime.getRuntime().removeShutdownHook(hook)
+        coordinator.close()
+        confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures")
+    }
+
+    private companion object {
+        val TIME: DateTimeFormatter = DateTimeFormatter.ofPattern("HH:mm:ss.SSS")
+    }
+}
