@@ -117,7 +117,8 @@ class CliJarIT {
         val tree = Files.createDirectories(directory.resolve("project"))
         Files.copy(root.resolve("rtcoord"), tree.resolve("rtcoord"))
         Files.writeString(tree.resolve("pom.xml"), "")
-        listOf("idl", "core").forEach { Files.createDirectories(tree.resolve(it)) }
+        listOf("idl", "src-test-fixtures", "core", "dsl", "examples").forEach { Files.createDirectories(tree.resolve(it)) }
+        Files.writeString(tree.resolve("examples/localisation.coord.kts"), "")
         val target = Files.createDirectories(tree.resolve("cli/target"))
         Files.createSymbolicLink(target.resolve("lib"), jar.resolveSibling("lib"))
         Files.copy(jar, target.resolve(jar.fileName))
