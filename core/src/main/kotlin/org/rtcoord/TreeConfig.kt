@@ -25,7 +25,4 @@ public class TreeConfig(
         require(callTimeout.isPositive()) { "callTimeout must be positive, was $callTimeout" }
         require(concurrency > 0) { "concurrency must be positive, was $concurrency" }
     }
-
-    /** A copy with other name servers. */
-    public fun withNameServers(vararg addresses: String): TreeConfig = TreeConfig(addresses.toList(), callTimeout, concurrency, orb, listenAddress)
 }
