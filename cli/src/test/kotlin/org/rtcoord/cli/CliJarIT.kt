@@ -97,7 +97,7 @@ class CliJarIT {
         val version = run(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory))
         assertEquals(0, version.status, version.stderr)
         assertEquals("rtcoord: building (first run)...\n", version.stderr)
-        assertEquals("-B -ntp -q install -DskipTests -pl cli -am\n", Files.readString(directory.resolve("maven-called")))
+        assertEquals("-B -ntp -q -Dstyle.color=never install -DskipTests -pl cli -am\n", Files.readString(directory.resolve("maven-called")))
     }
 
     @Test
