@@ -49,19 +49,25 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     /** The component's configuration object, once known. */
     @Volatile private var configuration: Configuration? = null
 
+    /** How many reads completed; an operation's [publish] does not count, it knows only what it changed. */
+    @Volatile private var reads = 0L
+
     /** Reads the component again (its configuration too, once that was read) and publishes the result. */
     suspend fun refresh(subject: String): ComponentSnapshot {
-        val before = current.value
+        val readsBefore = reads
         return refreshing.withLock {
-            // Someone refreshed while this caller waited: that read is as fresh as ours would be.
-            current.value.takeIf { it !== before && it != null } ?: coroutineScope {
+            // A read that finished while this caller waited is as fresh as its own would be.
+            current.value.takeIf { reads != readsBefore } ?: coroutineScope {
                 val reader = ComponentReader(core.remote, subject, ref)
-                val withConfiguration = before?.configuration != null
+                val withConfiguration = current.value?.configuration != null
                 val settings = async { if (withConfiguration) readConfiguration(reader) else null }
                 val reading = reader.read()
                 contexts = reading.contexts
                 ports = reading.ports
-                reading.snapshot.copy(configuration = settings.await()).also { current.value = it }
+                reading.snapshot.copy(configuration = settings.await()).also {
+                    current.value = it
+                    reads++
+                }
             }
         }
     }
