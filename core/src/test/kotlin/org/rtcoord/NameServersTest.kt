@@ -53,4 +53,31 @@ class NameServersTest {
             }
         }
     }
+
+    @Test
+    fun `a name server restarted empty is read again, and components that register again are found`(): Unit = runBlocking {
+        var naming = NamingService.start()
+        try {
+            Scenarios.localisation(naming.corbaloc).use { system ->
+                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                    tree.refresh()
+                    assertEquals(8, tree.find { it is ComponentNode }.toList().size)
+
+                    val port = naming.port
+                    naming.close()
+                    naming = NamingService.start(port)
+                    tree.refresh()
+                    assertEquals(emptyList<Node>(), tree.find { it is ComponentNode }.toList())
+
+                    system.runtime.rebindAll()
+                    tree.refresh()
+                    val found = tree.find { it is ComponentNode }.toList().map { it.name }.toSet()
+                    assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"), found)
+                    assertEquals(LifeCycle.ACTIVE, tree.componentNamed("laser0").state())
+                }
+            }
+        } finally {
+            naming.close()
+        }
+    }
 }
