@@ -68,7 +68,7 @@ public class ComponentNode internal constructor(
 
     /** Asks the component to exit: it finalises, leaves its contexts and unbinds itself. */
     public suspend fun exit() {
-        core.remote.check(subject, "exit") { component.ref.exit() }
+        core.remote.call(subject, "exit") { component.ref.exit() }.orFail(subject, "exit")
     }
 
     /** The port named [name] (without the instance prefix). */

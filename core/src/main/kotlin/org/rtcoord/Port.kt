@@ -63,19 +63,12 @@ public class Port internal constructor(
 
     /** Removes the connection [connectorId] from this port and its peers. */
     public suspend fun disconnect(connectorId: String) {
-        val port = reference()
-        val profile = core.remote.call(subject, "get_connector_profile") { port.get_connector_profile(connectorId) }
-        val peers = coroutineScope { profile.ports.map { async { owner(it) } }.awaitAll() }.filterNotNull()
-        core.remote.call(subject, "disconnect") { port.disconnect(connectorId) }
-            .orFail(subject, "disconnect", "connector '$connectorId'")
-        coroutineScope {
-            (peers + component.component).distinct().forEach { peer -> launch { runCatching { peer.refresh(subject) } } }
-        }
+        refreshAfter(disconnectFromPeers(connectorId))
     }
 
-    /** Removes every connection of this port. */
+    /** Removes every connection of this port, then reads each component involved once. */
     public suspend fun disconnectAll() {
-        snapshot().connectors.forEach { disconnect(it.id) }
+        refreshAfter(snapshot().connectors.flatMap { disconnectFromPeers(it.id) })
     }
 
     /** This port's connections, each with its ports resolved to tree paths where the tree knows them. */
@@ -96,6 +89,21 @@ public class Port internal constructor(
         val instance = profile.name.substringBefore('.')
         val path = owner?.knownPaths?.firstOrNull()?.withPort(profile.name.removePrefix("$instance."))
         return Connection.End(profile.name, path)
+    }
+
+    /** Removes connection [connectorId]; returns the components at its other ends (those that answer). */
+    private suspend fun disconnectFromPeers(connectorId: String): List<ComponentObject> {
+        val port = reference()
+        val profile = core.remote.call(subject, "get_connector_profile") { port.get_connector_profile(connectorId) }
+        val peers = coroutineScope { profile.ports.map { async { owner(it) } }.awaitAll() }.filterNotNull()
+        core.remote.call(subject, "disconnect") { port.disconnect(connectorId) }
+            .orFail(subject, "disconnect", "connector '$connectorId'")
+        return peers
+    }
+
+    /** Reads this component and [peers] again, each once. */
+    private suspend fun refreshAfter(peers: List<ComponentObject>) = coroutineScope {
+        (peers + component.component).distinct().forEach { peer -> launch { runCatching { peer.refresh(subject) } } }
     }
 
     /** The component owning [peer], if it answers. */

@@ -46,11 +46,6 @@ internal class Remote(concurrency: Int, val defaultDeadline: Duration) {
         return outcome.getOrThrow()
     }
 
-    /** Calls [block] and fails unless the component answered `RTC_OK`. */
-    suspend fun check(subject: String, operation: String, deadline: Duration? = null, block: () -> ReturnCode_t) {
-        call(subject, operation, deadline, block).orFail(subject, operation)
-    }
-
     private companion object {
         val BACKSTOP = 200.milliseconds
     }
