@@ -5,8 +5,8 @@ import org.rtcoord.TreeConfig
 import kotlin.time.Duration
 
 /**
- * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), name servers and how
- * to watch. Evaluating a script only builds this model; a [Coordinator] runs it.
+ * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), mode machines
+ * (`modes(...)`), name servers and how to watch. Evaluating a script only builds this model; a [Coordinator] runs it.
  *
  * @property args the arguments the script was started with.
  * @property host the tree configuration the host application runs the coordinator with.
@@ -17,6 +17,10 @@ public open class Coordination(public val args: List<String>, public val host: T
     internal val rules = mutableListOf<Rule<*>>()
     internal val timers = mutableListOf<Timer>()
     internal val nameServers = mutableListOf<String>()
+    private val machineList = mutableListOf<ModeMachine>()
+
+    /** The mode machines declared so far. */
+    public val machines: List<ModeMachine> get() = machineList
 
     /** How rules watch (push, poll, period, overlap), unless the host overrides it. */
     public var watching: EventOptions = EventOptions()
@@ -60,8 +64,21 @@ public open class Coordination(public val args: List<String>, public val host: T
         timers += Timer("after $delay", delay, null, action)
     }
 
-    /** What the script declared, one line per rule and timer: what `check` shows and tools can draw. */
-    public val description: List<String> get() = rules.map { "on ${it.description}" } + timers.map { it.description }
+    /**
+     * Declares the modes of the whole system, a hierarchical state machine named [name] (see
+     * [ModeBuilder]): `modes("system") { initial("nominal"); mode("nominal") { ... } }`. The declaration
+     * is checked as a whole when [declare] returns and rejected with an [InvalidMachineException] naming
+     * every problem, so a machine that cannot run never reaches a coordinator.
+     */
+    public fun modes(name: String, declare: ModeBuilder.() -> Unit): ModeMachine =
+        assemble(ModeBuilder(name, engine).apply(declare), machineList.map { it.name }).also { machineList += it }
+
+    /**
+     * What the script declared, one line per rule and timer, then each machine's modes, indented by
+     * nesting: what `check` shows and tools can draw.
+     */
+    public val description: List<String>
+        get() = rules.map { "on ${it.description}" } + timers.map { it.description } + machineList.flatMap { it.description }
 
     internal fun add(rule: Rule<*>) {
         rules += rule

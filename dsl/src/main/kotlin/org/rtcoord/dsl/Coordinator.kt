@@ -19,12 +19,12 @@ import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 
 /**
- * Runs a [Coordination] against a live system: subscribes its rules, starts its timers, and runs their
- * handlers, one structured-concurrency scope for all of it. A failing handler is logged and counted and
+ * Runs a [Coordination] against a live system: subscribes its rules, starts its timers and mode
+ * machines, and runs their handlers, one structured-concurrency scope for all of it. A failing handler is logged and counted and
  * the coordinator keeps running; [close] cancels running handlers and detaches every observer.
  *
  * @param options how rules watch, overriding the script's own choice when given.
- * @param log receives one line per rule firing, action and failure.
+ * @param log receives one line per rule firing, action, mode transition and failure.
  */
 public class Coordinator(
     private val tree: RtcTree,
@@ -38,8 +38,19 @@ public class Coordinator(
     private val subscriptions = CopyOnWriteArrayList<Subscription>()
     private val failureCount = AtomicInteger()
 
+    private val interpreters = coordination.machines.map { machine ->
+        MachineInterpreter(machine, scope, coordination.engine, Configurator(coordination.engine), log, ::failed)
+    }
+
     /** How many handler runs failed so far. */
     public val failures: Int get() = failureCount.get()
+
+    /** The coordination's mode machines as they run, in declaration order. */
+    public val machines: List<RunningMachine> = interpreters.map { it.running }
+
+    /** The running machine named [name]. */
+    public fun machine(name: String): RunningMachine = machines.firstOrNull { it.name == name }
+        ?: throw IllegalArgumentException("no machine named '$name' (machines: ${machines.joinToString { it.name }.ifEmpty { "none" }})")
 
     /**
      * Resolves every rule's target and subscribes it; fails (with nothing left running) when a target
@@ -51,6 +62,7 @@ public class Coordinator(
         coordination.nameServers.forEach(tree::addNameServer)
         try {
             coordination.rules.forEach { subscribe(it) }
+            interpreters.forEach { watch(it) }
         } catch (e: Exception) {
             close()
             throw e
@@ -64,6 +76,17 @@ public class Coordinator(
                 }
             }
         }
+        interpreters.forEach(MachineInterpreter::start)
+    }
+
+    /** Subscribes once per node and event type, however many of [machine]'s transitions watch for it. */
+    private suspend fun watch(machine: MachineInterpreter) {
+        val watching = options ?: coordination.watching
+        val groups = linkedMapOf<Pair<String, Class<*>>, Pair<Node, MutableList<EventPattern<*>>>>()
+        for (pattern in machine.machine.eventPatterns) {
+            for (node in targets(pattern.target)) groups.getOrPut(node.path.toString() to pattern.type) { node to mutableListOf() }.second += pattern
+        }
+        for ((node, patterns) in groups.values) subscriptions += patterns.first().watch(tree, node, watching) { machine.offer(it, patterns) }
     }
 
     private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>) {

@@ -73,16 +73,30 @@ internal class Engine {
      * [what] names its objects itself); once more after a fresh lookup if the component stopped answering.
      */
     suspend fun act(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Unit) {
-        val node = component(ref.selector)
-        log(if (namesItself) what else "$what ${node.path}")
-        try {
+        fun line(node: ComponentNode) = if (namesItself) what else "$what ${node.path}"
+        withComponent(ref.selector, { log(line(it)) }, { log("${line(it)} (looked up again)") }, action)
+    }
+
+    /**
+     * Runs [action] on [selector]'s component, after [before]; when the component stopped answering
+     * (re-created, moved), looks it up again and, if that finds another one, runs [action] on it after [again].
+     */
+    suspend fun <T> withComponent(
+        selector: String,
+        before: (ComponentNode) -> Unit = {},
+        again: (ComponentNode) -> Unit = {},
+        action: suspend (ComponentNode) -> T,
+    ): T {
+        val node = component(selector)
+        before(node)
+        return try {
             action(node)
         } catch (e: UnreachableException) {
-            resolved.remove(ref.selector)
+            resolved.remove(selector)
             node.path.parent?.let { tree.refresh(it, depth = 0) }
-            val again = component(ref.selector).takeUnless { it.isSameComponent(node) } ?: throw e
-            log("${if (namesItself) what else "$what ${again.path}"} (looked up again)")
-            action(again)
+            val other = component(selector).takeUnless { it.isSameComponent(node) } ?: throw e
+            again(other)
+            action(other)
         }
     }
 

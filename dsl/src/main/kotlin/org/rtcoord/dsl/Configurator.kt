@@ -1,0 +1,77 @@
+package org.rtcoord.dsl
+
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.TimeoutCancellationException
+import kotlinx.coroutines.withTimeout
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * Brings the live system to a [Network]: reads what the network names, [plan]s the difference, applies
+ * the steps one by one, each within the network's step deadline, and reads the result back. The
+ * configurator of the Coordinator-Configurator split: a mode machine decides where the system should
+ * be, this gets it there and says whether it did. It leaves what the network does not name alone.
+ */
+internal class Configurator(private val engine: Engine) {
+    /** How a reconfiguration ended. */
+    sealed class Outcome {
+        /** The live system matches; [steps] were needed to get there. */
+        class Done(val steps: List<Step>) : Outcome()
+
+        /** It could not be brought there: [reason] names the step and object, then what went wrong. */
+        class Failed(val reason: String) : Outcome()
+    }
+
+    /** Applies [network], stopping at the first step that fails. */
+    suspend fun apply(network: Network): Outcome {
+        val deadline = network.stepDeadline ?: DEFAULT_STEP_DEADLINE
+        return try {
+            val steps = plan(network, read(network, deadline))
+            steps.forEach { step -> within(step.description, deadline) { step.apply(engine) } }
+            val remaining = plan(network, read(network, deadline))
+            if (remaining.isEmpty()) Outcome.Done(steps) else Outcome.Failed("read back: still to do: ${remaining.joinToString()}")
+        } catch (e: StepFailed) {
+            Outcome.Failed(e.message)
+        }
+    }
+
+    private suspend fun read(network: Network, deadline: Duration): LiveNetwork = LiveNetwork(
+        network.components.keys.associateWith { component ->
+            within("read the state of $component", deadline) { engine.withComponent(component) { it.state() } }
+        },
+        network.configurationSets.keys.associateWith { component ->
+            within("read the configuration of $component", deadline) {
+                engine.withComponent(component) { node ->
+                    node.refresh()
+                    node.configuration().activeSet
+                }
+            }
+        },
+        network.connections.keys.associateWith { link -> within("read the connections of ${link.from}", deadline) { exists(link) } },
+    )
+
+    /** Whether a connection joins the link's ports, recognised by path or by OpenRTM's `instance.port` name. */
+    private suspend fun exists(link: Link): Boolean {
+        val (from, to) = engine.portRef(link.from) to engine.portRef(link.to)
+        val (path, fullName) = engine.withComponent(to.component.selector) { node -> node.port(to.name).path to "${node.snapshot().instanceName}.${to.name}" }
+        val connections = engine.withComponent(from.component.selector) { it.port(from.name).connections() }
+        return connections.any { connection -> connection.ports.any { it.path == path || it.fullName == fullName } }
+    }
+
+    private suspend fun <T> within(what: String, deadline: Duration, block: suspend () -> T): T = try {
+        withTimeout(deadline) { block() }
+    } catch (e: TimeoutCancellationException) {
+        throw StepFailed("$what: did not finish within $deadline")
+    } catch (e: CancellationException) {
+        throw e
+    } catch (e: Exception) {
+        throw StepFailed("$what: ${e.message ?: e}")
+    }
+
+    private class StepFailed(override val message: String) : Exception(message)
+
+    companion object {
+        /** How long a step may take when the network does not say. */
+        val DEFAULT_STEP_DEADLINE: Duration = 10.seconds
+    }
+}

@@ -1,0 +1,78 @@
+package org.rtcoord.dsl
+
+import org.rtcoord.BecameZombie
+import org.rtcoord.ComponentFinalized
+import org.rtcoord.ContextRateChanged
+import org.rtcoord.EventOptions
+import org.rtcoord.HeartbeatLost
+import org.rtcoord.LifeCycle
+import org.rtcoord.ManagerComponentChanged
+import org.rtcoord.Node
+import org.rtcoord.NodeAppeared
+import org.rtcoord.NodeVanished
+import org.rtcoord.ParameterChanged
+import org.rtcoord.PortConnected
+import org.rtcoord.PortDisconnected
+import org.rtcoord.Recovered
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
+import org.rtcoord.StateChanged
+import org.rtcoord.Subscription
+
+/**
+ * One kind of event of one target (a component entering ERROR, a port losing a connection): what rules
+ * and mode transitions are triggered by. [description] is how scripts, logs and `check` name it.
+ */
+internal class EventPattern<E : RtcEvent>(val description: String, val target: Target, val type: Class<E>, val matches: (E) -> Boolean) {
+    /** A rule running [handler] on these events when every guard holds. */
+    fun rule(guards: List<Guard>, handler: suspend Reaction.(E) -> Unit): Rule<E> = Rule(description, target, type, matches, guards, handler)
+
+    /** Whether [event] is one of these. */
+    fun accepts(event: RtcEvent): Boolean = type.isInstance(event) && matches(type.cast(event))
+
+    /** Hands every event of this pattern's type from [node] to [deliver]. */
+    suspend fun watch(tree: RtcTree, node: Node, options: EventOptions, deliver: suspend (RtcEvent) -> Unit): Subscription =
+        tree.on(node, type, options) { deliver(it) }
+}
+
+/** The event kinds of each target, shared by rules and transitions so that both name and match them alike. */
+internal object EventPatterns {
+    fun state(target: ComponentRef, state: LifeCycle) =
+        EventPattern("$target enters $state", Target.Component(target), StateChanged::class.java) { it.new == state }
+
+    fun stateChanged(target: ComponentRef) = EventPattern("$target changes state", Target.Component(target), StateChanged::class.java) { true }
+
+    fun configParam(target: ComponentRef, name: String) =
+        EventPattern("$target parameter $name changes", Target.Component(target), ParameterChanged::class.java) { it.name == name }
+
+    fun rateChanged(target: ComponentRef) = EventPattern("$target rate changes", Target.Component(target), ContextRateChanged::class.java) { true }
+
+    fun connected(target: ComponentRef) = EventPattern("$target connects", Target.Component(target), PortConnected::class.java) { true }
+
+    fun disconnected(target: ComponentRef) = EventPattern("$target disconnects", Target.Component(target), PortDisconnected::class.java) { true }
+
+    fun lost(target: ComponentRef) = EventPattern("$target is lost", Target.Component(target), HeartbeatLost::class.java) { true }
+
+    fun zombie(target: ComponentRef) = EventPattern("$target becomes a zombie", Target.Component(target), BecameZombie::class.java) { true }
+
+    fun recovered(target: ComponentRef) = EventPattern("$target recovers", Target.Component(target), Recovered::class.java) { true }
+
+    fun finalized(target: ComponentRef) = EventPattern("$target exits", Target.Component(target), ComponentFinalized::class.java) { true }
+
+    fun connected(target: PortRef) = EventPattern("$target connects", Target.Port(target), PortConnected::class.java) { it.port == target.name }
+
+    fun disconnected(target: PortRef) = EventPattern("$target disconnects", Target.Port(target), PortDisconnected::class.java) { it.port == target.name }
+
+    fun created(target: ManagerRef) =
+        EventPattern("$target creates a component", Target.Manager(target), ManagerComponentChanged::class.java) { it.created }
+
+    fun deleted(target: ManagerRef) =
+        EventPattern("$target deletes a component", Target.Manager(target), ManagerComponentChanged::class.java) { !it.created }
+
+    fun appeared(target: ContextRef) =
+        EventPattern("$target gains a binding", Target.Context(target), NodeAppeared::class.java) { it.source.path.toString() == RtcPath.parse(target.path).toString() }
+
+    fun vanished(target: ContextRef) =
+        EventPattern("$target loses a binding", Target.Context(target), NodeVanished::class.java) { it.source.path.toString() == RtcPath.parse(target.path).toString() }
+}

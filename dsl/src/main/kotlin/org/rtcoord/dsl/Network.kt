@@ -1,0 +1,124 @@
+package org.rtcoord.dsl
+
+import kotlin.time.Duration
+
+/** A data connection from out-port [from] to in-port [to], each `component:port` (plain names get `.rtc`). */
+public data class Link(val from: String, val to: String) {
+    override fun toString(): String = "$from -> $to"
+}
+
+/**
+ * The network a mode declares (see [NetworkBuilder]), or that of the active modes merged, inner modes
+ * overriding outer ones. It names only what it constrains: components, connections and configuration
+ * sets it does not mention are left as they are.
+ *
+ * @property components whether each component must be ACTIVE (true) or must not be (false).
+ * @property connections whether each connection must exist (true) or must not (false).
+ * @property configurationSets the configuration set each component must have active.
+ * @property stepDeadline how long each step of bringing the system here may take; null: the default.
+ */
+public class Network internal constructor(
+    public val components: Map<String, Boolean>,
+    public val connections: Map<Link, Boolean>,
+    public val configurationSets: Map<String, String>,
+    public val stepDeadline: Duration?,
+    internal val properties: Map<Link, Map<String, String>>,
+) {
+    /** One line per kind of constraint, as `check` lists them. */
+    public val description: List<String>
+        get() = listOfNotNull(
+            components.filterValues { it }.keys.takeIf { it.isNotEmpty() }?.let { "active ${it.joinToString()}" },
+            components.filterValues { !it }.keys.takeIf { it.isNotEmpty() }?.let { "inactive ${it.joinToString()}" },
+            connections.filterValues { it }.keys.takeIf { it.isNotEmpty() }?.let { "connected ${it.joinToString()}" },
+            connections.filterValues { !it }.keys.takeIf { it.isNotEmpty() }?.let { "not connected ${it.joinToString()}" },
+            configurationSets.takeIf { it.isNotEmpty() }?.let { sets -> "configuration sets ${sets.entries.joinToString { "${it.key}=${it.value}" }}" },
+            stepDeadline?.let { "each step within $it" },
+        )
+
+    /** This network with [inner]'s constraints taking precedence where both say something. */
+    internal fun overriddenBy(inner: Network): Network = Network(
+        components + inner.components,
+        connections + inner.connections,
+        configurationSets + inner.configurationSets,
+        inner.stepDeadline ?: stepDeadline,
+        properties + inner.properties,
+    )
+}
+
+/**
+ * Declares the network a mode needs: `network { active("laser0.rtc"); connected("laser0.rtc:laser",
+ * "laser_localise0.rtc:laser"); configSet("laser_localise0.rtc", "default") }`. Components are named
+ * as in `component(...)` (a name or a full path, not a pattern); ports as `component:port`.
+ */
+@RtcDsl
+public class NetworkBuilder internal constructor() {
+    private val components = linkedMapOf<String, Boolean>()
+    private val connections = linkedMapOf<Link, Boolean>()
+    private val configurationSets = linkedMapOf<String, String>()
+    private val properties = linkedMapOf<Link, Map<String, String>>()
+    internal val problems = mutableListOf<String>()
+
+    /** How long each step (activate, connect, ...) may take before the mode's network counts as failed. */
+    public var stepDeadline: Duration? = null
+
+    /** These components must be ACTIVE. */
+    public fun active(vararg components: String) {
+        components.forEach { require(component(it), true) }
+    }
+
+    /** These components must not be ACTIVE (INACTIVE, or left in ERROR for whoever recovers them). */
+    public fun inactive(vararg components: String) {
+        components.forEach { require(component(it), false) }
+    }
+
+    /** Out-port [from] must be connected to in-port [to]; a new connection gets connector [properties]. */
+    public fun connected(from: String, to: String, properties: Map<String, String> = emptyMap()) {
+        val link = Link(port(from), port(to))
+        require(link, true)
+        if (properties.isNotEmpty()) this.properties[link] = properties
+    }
+
+    /** No connection may join port [from] and port [to]. */
+    public fun disconnected(from: String, to: String) {
+        require(Link(port(from), port(to)), false)
+    }
+
+    /** [component] must have configuration set [id] active. */
+    public fun configSet(component: String, id: String) {
+        val name = component(component)
+        configurationSets[name]?.takeIf { it != id }?.let { problems += "$name is given two configuration sets ($it, $id)" }
+        configurationSets[name] = id
+    }
+
+    internal fun build(): Network = Network(components.toMap(), connections.toMap(), configurationSets.toMap(), stepDeadline, properties.toMap())
+
+    private fun require(component: String, active: Boolean) {
+        if (components[component] == !active) problems += "$component is declared both active and inactive"
+        components[component] = active
+    }
+
+    private fun require(link: Link, present: Boolean) {
+        if (connections[link] == !present) problems += "$link is declared both connected and not connected"
+        connections[link] = present
+    }
+
+    private fun component(selector: String): String {
+        if (selector.any { it == '*' || it == '?' }) problems += "'$selector' is a pattern; a network names single components"
+        return normalized(selector)
+    }
+
+    private fun port(path: String): String {
+        val split = path.lastIndexOf(':')
+        if (split <= 0 || split == path.length - 1 || '/' in path.substring(split)) {
+            problems += "not a port: '$path' (write component:port)"
+            return path
+        }
+        return "${component(path.substring(0, split))}:${path.substring(split + 1)}"
+    }
+
+    private companion object {
+        /** A plain name gets `.rtc`, as `component(...)` finds it, so that `laser0` and `laser0.rtc` are one component. */
+        fun normalized(selector: String): String =
+            if (selector.startsWith("/") || selector.startsWith("corbaloc:") || '.' in selector) selector else "$selector.rtc"
+    }
+}

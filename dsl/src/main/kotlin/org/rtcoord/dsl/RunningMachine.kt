@@ -1,0 +1,57 @@
+package org.rtcoord.dsl
+
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.update
+import java.time.Instant
+import java.util.concurrent.atomic.AtomicInteger
+
+/** A move of a machine: [from] (null for the start) to [to], both paths like `system/nominal/tracking`, on [trigger], at [at]. */
+public data class ModeTransition(val from: String?, val to: String, val trigger: String, val at: Instant)
+
+/**
+ * A [ModeMachine] as a [Coordinator] runs it: where it is, how it got there, and how many events it
+ * left unconsumed. Every value is safe to read from any thread.
+ */
+public class RunningMachine internal constructor(
+    /** What the script declared. */
+    public val model: ModeMachine,
+) {
+    private val current = MutableStateFlow<String?>(null)
+    private val moves = MutableStateFlow<List<ModeTransition>>(emptyList())
+    private val unconsumedCount = AtomicInteger()
+
+    /** The machine's name. */
+    public val name: String get() = model.name
+
+    /** The path of the innermost active mode, `system/nominal/tracking`; null until the machine has started. */
+    public val mode: StateFlow<String?> = current.asStateFlow()
+
+    /**
+     * The transitions so far, oldest first, starting with the start itself (the last [HISTORY_LIMIT]
+     * of them). Each change is a new list, so a collector that is slow sees the latest complete history.
+     */
+    public val history: StateFlow<List<ModeTransition>> = moves.asStateFlow()
+
+    /**
+     * How many events no transition consumed: events the machine watches that came while no active
+     * mode had a transition for them (or none whose guards held), `done`/`failed` nobody waited for,
+     * and timeouts or outcomes that came after their mode was left. Each is also logged at debug level.
+     */
+    public val unconsumed: Int get() = unconsumedCount.get()
+
+    internal fun moved(transition: ModeTransition) {
+        moves.update { (it + transition).takeLast(HISTORY_LIMIT) }
+        current.value = transition.to
+    }
+
+    internal fun notConsumed() {
+        unconsumedCount.incrementAndGet()
+    }
+
+    public companion object {
+        /** How many transitions [history] keeps. */
+        public const val HISTORY_LIMIT: Int = 1000
+    }
+}

@@ -1,0 +1,225 @@
+package org.rtcoord.dsl
+
+import RTC.LifeCycleState
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.rtcoord.EventOptions
+import org.rtcoord.LifeCycle.ACTIVE
+import org.rtcoord.LifeCycle.ERROR
+import org.rtcoord.RtcTree
+import org.rtcoord.StateChanged
+import org.rtcoord.TreeConfig
+import org.rtcoord.WatchMode
+import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.naming.NamingService
+import java.util.Collections
+
+/** Mode machines driving the localisation system over IIOP; results are read back through the fixtures and a second tree. */
+class ModesTest {
+    private val naming = NamingService.start()
+    private val system = Scenarios.localisation(naming.corbaloc)
+    private val config = TreeConfig(nameServers = listOf(naming.address))
+    private val tree = RtcTree.create(config)
+    private val witness = RtcTree.create(config)
+    private val log = Collections.synchronizedList(mutableListOf<String>())
+    private val trace = Collections.synchronizedList(mutableListOf<String>())
+
+    @AfterEach
+    fun stop() {
+        tree.close()
+        witness.close()
+        system.close()
+        naming.close()
+    }
+
+    private fun coordinator(declare: Coordination.() -> Unit): Coordinator =
+        Coordinator(tree, Coordination(emptyList(), config).apply(declare), EventOptions(WatchMode.PUSH)) { log += it }
+
+    private fun path(port: String) = "/${naming.address}/${FixtureRuntime.hostContext}/$port"
+
+    private suspend fun peers(port: String): Set<String> =
+        witness.port(path(port)).connections().flatMap { connection -> connection.ports.map { it.fullName } }.filter { !it.startsWith(port.substringBefore(".rtc")) }.toSet()
+
+    private fun ModeBuilder.traced(name: String) {
+        entry { trace += "enter $name" }
+        exit { trace += "exit $name" }
+    }
+
+    @Test
+    fun `a mode switch reshapes the network in dependency order and reports done`(): Unit = runBlocking {
+        system.runtime.create(Scenarios.odoLocalise, "odo_localise0")
+        coordinator {
+            modes("localisation") {
+                initial("laser")
+                mode("laser") {
+                    network {
+                        active("laser0", "laser_localise0")
+                        inactive("odo_localise0")
+                        connected("laser0:laser", "laser_localise0:laser")
+                        connected("odometry0:odo", "laser_localise0:odo")
+                    }
+                    on(component("laser0")).state(ERROR) goTo "odometry"
+                }
+                mode("odometry") {
+                    network {
+                        inactive("laser_localise0")
+                        disconnected("laser0:laser", "laser_localise0:laser")
+                        disconnected("odometry0:odo", "laser_localise0:odo")
+                        configSet("odo_localise0", "precise")
+                        connected("odometry0:odo", "odo_localise0:odo")
+                        connected("gyro0:gyro", "odo_localise0:gyro")
+                        active("odo_localise0")
+                    }
+                    initial("switching")
+                    mode("switching") {
+                        on(done) goTo "running"
+                        on(failed) goTo "stranded"
+                    }
+                    mode("running")
+                    mode("stranded")
+                }
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            val machine = coordinator.machine("localisation")
+            await("the start's network to be checked") { log.any { it.startsWith("mode localisation/laser: network done (0 steps in ") } }
+            assertEquals("localisation/laser", machine.mode.value)
+
+            system.component("laser0").fail()
+            await("the odometry mode to run", timeout = kotlin.time.Duration.parse("20s")) { machine.mode.value != "localisation/odometry/switching" && machine.mode.value?.startsWith("localisation/odometry") == true }
+            assertEquals("localisation/odometry/running", machine.mode.value, log.toString())
+            assertEquals(
+                listOf(null to "localisation/laser", "localisation/laser" to "localisation/odometry/switching", "localisation/odometry/switching" to "localisation/odometry/running"),
+                machine.history.value.map { it.from to it.to },
+            )
+            assertEquals(listOf("start", "laser0 enters ERROR", "done"), machine.history.value.map { it.trigger })
+            assertTrue(log.contains("mode localisation/laser -> localisation/odometry/switching on laser0 enters ERROR"), log.toString())
+            assertTrue(log.any { it.startsWith("mode localisation/odometry/switching: network done (7 steps in ") }, log.toString())
+
+            // The steps ran in dependency order: stop, cut, configure, wire, start.
+            val order = listOf("deactivate /", "disconnect ", "disconnect ", "activate configuration set precise", "connect ", "connect ", "activate /")
+            val steps = log.dropWhile { !it.startsWith("mode localisation/odometry/switching: bringing") }.drop(1).take(order.size)
+            order.zip(steps).forEach { (expected, line) -> assertTrue(line.startsWith(expected), "$expected... expected in order, got $steps") }
+
+            // Read back independently: the fixtures' own state, a second tree, and data flowing on the new wires.
+            assertEquals(LifeCycleState.INACTIVE_STATE, system.component("laser_localise0").state)
+            assertEquals(LifeCycleState.ACTIVE_STATE, system.component("odo_localise0").state)
+            assertEquals("precise", system.component("odo_localise0").activeConfigurationSet)
+            assertEquals(setOf("odometry0.odo"), peers("odo_localise0.rtc:odo"))
+            assertEquals(setOf("gyro0.gyro"), peers("odo_localise0.rtc:gyro"))
+            assertEquals(emptySet<String>(), peers("laser_localise0.rtc:laser") + peers("laser_localise0.rtc:odo"))
+            await("gyro samples to reach odo_localise0") { system.component("odo_localise0").latest("gyro") != null }
+            assertEquals(0, coordinator.failures)
+        }
+    }
+
+    @Test
+    fun `a reconfiguration that fails reports the step, the object and why`(): Unit = runBlocking {
+        system.runtime.create(Scenarios.odoLocalise, "odo_localise0")
+        coordinator {
+            modes("m") {
+                initial("idle")
+                mode("idle") { on(component("gyro0")).state(ERROR) goTo "miswired" }
+                mode("miswired") {
+                    // The gyro's TimedDouble cannot feed the localiser's TimedDoubleSeq laser input.
+                    network {
+                        inactive("odometry0")
+                        connected("gyro0:gyro", "laser_localise0:laser")
+                        active("odo_localise0")
+                    }
+                    on(failed) goTo "missing"
+                }
+                mode("missing") {
+                    network { active("ghost0") }
+                    on(failed) goTo "stuck"
+                }
+                mode("stuck") {
+                    network { active("gyro0") }
+                    on(failed) goTo "halted"
+                }
+                mode("halted")
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            val machine = coordinator.machine("m")
+            await("the machine to start") { machine.mode.value == "m/idle" }
+            system.component("gyro0").fail()
+            await("the machine to halt", timeout = kotlin.time.Duration.parse("30s")) { machine.mode.value == "m/halted" }
+
+            val triggers = machine.history.value.map { it.trigger }
+            assertEquals(5, triggers.size, triggers.toString())
+            assertTrue(triggers[2].startsWith("failed: connect gyro0.rtc:gyro to laser_localise0.rtc:laser: ") && "incompatible data types" in triggers[2], triggers[2])
+            assertTrue(triggers[3].startsWith("failed: read the state of ghost0.rtc: ghost0.rtc: no such component"), triggers[3])
+            assertTrue(triggers[4].startsWith("failed: activate gyro0.rtc: ") && "ERROR" in triggers[4], triggers[4])
+
+            // It stopped at the failing step: the step before it was applied, the one after it was not.
+            assertEquals(LifeCycleState.INACTIVE_STATE, system.component("odometry0").state)
+            assertEquals(setOf("laser0.laser"), peers("laser_localise0.rtc:laser"))
+            assertEquals(LifeCycleState.INACTIVE_STATE, system.component("odo_localise0").state)
+            assertEquals(LifeCycleState.ERROR_STATE, system.component("gyro0").state)
+        }
+    }
+
+    @Test
+    fun `nested modes enter outer to inner and exit inner to outer, deepest transition first`(): Unit = runBlocking {
+        coordinator {
+            modes("robot") {
+                entry { trace += "enter robot" }
+                initial("operating")
+                mode("operating") {
+                    traced("operating")
+                    initial("navigating")
+                    // Outer transitions: taken in any sub-mode unless a deeper mode takes the event first.
+                    on(component("laser0")).state(ERROR) goTo "stopped"
+                    on(component("gyro0")).state(ERROR).goTo("stopped") { trace += "action gyro" }
+                    mode("navigating") {
+                        traced("navigating")
+                        initial("planning")
+                        mode("planning") {
+                            traced("planning")
+                            on(component("laser0")).state(ERROR).where { (event as StateChanged).old == ACTIVE }.goTo("docking") { trace += "action laser" }
+                        }
+                    }
+                    mode("docking") { traced("docking") }
+                }
+                mode("stopped") {
+                    traced("stopped")
+                    on(component("laser0")).state(ERROR).where { false } goTo "operating"
+                }
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            val machine = coordinator.machine("robot")
+            await("the machine to start") { machine.mode.value == "robot/operating/navigating/planning" }
+            assertEquals(listOf("enter robot", "enter operating", "enter navigating", "enter planning"), trace.toList())
+
+            system.component("laser0").fail()
+            await("docking") { machine.mode.value == "robot/operating/docking" }
+            system.component("gyro0").fail()
+            await("stopped") { machine.mode.value == "robot/stopped" }
+            assertEquals(
+                listOf(
+                    "enter robot", "enter operating", "enter navigating", "enter planning",
+                    "exit planning", "exit navigating", "action laser", "enter docking",
+                    "exit docking", "exit operating", "action gyro", "enter stopped",
+                ),
+                trace.toList(),
+            )
+            assertEquals(0, machine.unconsumed)
+
+            // In stopped, a laser failure meets only a guard that does not hold: counted, not dropped unseen.
+            tree.componentNamed("laser0").reset()
+            tree.componentNamed("laser0").activate()
+            system.component("laser0").fail()
+            await("the unconsumed event to be counted") { machine.unconsumed == 1 }
+            assertEquals("robot/stopped", machine.mode.value)
+            assertEquals(listOf("start", "laser0 enters ERROR", "gyro0 enters ERROR"), machine.history.value.map { it.trigger })
+            assertEquals(0, coordinator.failures)
+        }
+    }
+}
