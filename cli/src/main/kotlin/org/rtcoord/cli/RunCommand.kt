@@ -19,7 +19,7 @@ import java.time.format.DateTimeFormatter
 
 /**
  * Runs a coordinator script against the live system until SIGINT/SIGTERM or `--for` elapses, logging
- * each rule firing and action. On the way out the coordinator's observers are detached.
+ * each rule firing, action and mode transition. On the way out the coordinator's observers are detached.
  */
 class RunCommand : TreeCommand("run") {
     override fun help(context: Context): String = "Run a coordinator (SCRIPT.coord.kts) until interrupted."
@@ -44,7 +44,8 @@ class RunCommand : TreeCommand("run") {
         val options = poll?.let { EventOptions(WatchMode.POLL, pollPeriod = it) }
         val coordinator = Coordinator(tree, coordination, options) { echo("${LocalTime.now().format(TIME)} $it") }
         coordinator.start()
-        confirm("${LocalTime.now().format(TIME)} coordinating with ${coordination.description.size} rules and timers: ${coordination.description.joinToString("; ")}")
+        confirm("${LocalTime.now().format(TIME)} coordinating:")
+        coordination.description.forEach { confirm("  $it") }
 
         val stopped = CompletableDeferred<Unit>()
         // On SIGINT/SIGTERM the JVM runs this before exiting: detach observers while the ORB still works.
@@ -57,7 +58,8 @@ class RunCommand : TreeCommand("run") {
         withTimeoutOrNull(duration ?: kotlin.time.Duration.INFINITE) { stopped.await() }
         Runtime.getRuntime().removeShutdownHook(hook)
         coordinator.close()
-        confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures")
+        val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events unconsumed" }
+        confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures$machines")
     }
 
     private companion object {

@@ -17,14 +17,14 @@ class ScriptCommandsTest {
     private fun script(name: String, text: String): Path = directory.resolve(name).also { Files.writeString(it, text) }
 
     @Test
-    fun `check compiles scripts and reports errors as file, line and column`() {
+    fun `check compiles scripts, lists what they declare and reports errors as file, line and column`() {
         val good = script("good.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) { reset() }\n")
         val bad = script("bad.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) {\n    resett()\n}\n")
-        assertEquals("$good: compiles\n", runRtcoord("check", good.toString()).ok())
+        assertEquals("$good: compiles\n  on laser0.rtc enters ERROR\n", runRtcoord("check", good.toString()).ok())
 
         val result = runRtcoord("check", good.toString(), bad.toString())
         assertEquals(1, result.statusCode)
-        assertEquals("$good: compiles\n", result.stdout)
+        assertEquals("$good: compiles\n  on laser0.rtc enters ERROR\n", result.stdout)
         assertTrue(result.stderr.startsWith("$bad:2:5: ") && "resett" in result.stderr, result.stderr)
     }
 
@@ -44,6 +44,76 @@ class ScriptCommandsTest {
             assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} reset /""").containsMatchIn(result.stdout), result.stdout)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, gyro.state)
             assertEquals(emptySet<String>(), gyro.observerIds)
+        }
+    }
+
+    @Test
+    fun `check lists a machine's modes and rejects a machine that cannot run`() {
+        val machine = script(
+            "modes.coord.kts",
+            """
+            modes("gyro") {
+                initial("up")
+                mode("up") {
+                    network { active("gyro0") }
+                    on(component("gyro0")).state(ERROR) goTo "down"
+                }
+                mode("down") {
+                    entry { reset() }
+                    on(component("gyro0")).state(INACTIVE) goTo "up"
+                }
+            }
+            """.trimIndent(),
+        )
+        assertEquals(
+            """
+            $machine: compiles
+              modes gyro, initially up
+                mode up
+                  network: active gyro0.rtc
+                  on gyro0 enters ERROR -> down
+                mode down, entry
+                  on gyro0 enters INACTIVE -> up
+
+            """.trimIndent(),
+            runRtcoord("check", machine.toString()).ok(),
+        )
+
+        val unreachable = script("unreachable.coord.kts", "modes(\"gyro\") {\n    initial(\"up\")\n    mode(\"up\")\n    mode(\"down\")\n}\n")
+        val result = runRtcoord("check", unreachable.toString())
+        assertEquals(1, result.statusCode)
+        assertEquals("$unreachable:1:1: InvalidMachineException: machine 'gyro': mode 'gyro/down' is unreachable: no transition leads to it or into it\n", result.stderr)
+    }
+
+    @Test
+    fun `run prints each mode transition`() {
+        Localisation().use { localisation ->
+            val gyro = localisation.system.component("gyro0")
+            val modes = script(
+                "gyro.coord.kts",
+                """
+                modes("gyro") {
+                    initial("up")
+                    mode("up") { on(component("gyro0.rtc")).state(ERROR) goTo "down" }
+                    mode("down") {
+                        entry { component("gyro0.rtc").reset() }
+                        network { active("gyro0") }
+                        on(done) goTo "up"
+                    }
+                }
+                """.trimIndent(),
+            )
+            val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "8s", modes.toString()) }
+            await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { gyro.observerIds.isNotEmpty() }
+
+            gyro.fail()
+            val result = run.get()
+            assertEquals(0, result.statusCode, result.stderr)
+            for (line in listOf("mode gyro: starts in gyro/up", "mode gyro/up -> gyro/down on gyro0.rtc enters ERROR", "mode gyro/down -> gyro/up on done")) {
+                assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} ${Regex.escape(line)}\n""").containsMatchIn(result.stdout), result.stdout)
+            }
+            assertTrue("stopped; 0 handler failures; gyro in gyro/up, 0 events unconsumed" in result.stdout, result.stdout)
+            assertEquals(RTC.LifeCycleState.ACTIVE_STATE, gyro.state)
         }
     }
 
