@@ -1,8 +1,12 @@
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.TimeoutCancellationException
+import kotlinx.coroutines.async
 import kotlinx.coroutines.withTimeout
+import org.rtcoord.NotFoundException
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
@@ -10,9 +14,10 @@ import kotlin.time.Duration.Companion.seconds
  * Brings the live system to a [Network]: reads what the network names, [plan]s the difference, applies
  * the steps one by one, each within the network's step deadline, and reads the result back. The
  * configurator of the Coordinator-Configurator split: a mode machine decides where the system should
- * be, this gets it there and says whether it did. It leaves what the network does not name alone.
+ * be, this gets it there and says whether it did. It leaves what the network does not name alone; a
+ * component that does not exist satisfies `inactive` and `disconnected`, and fails the rest.
  */
-internal class Configurator(private val engine: Engine) {
+internal class Configurator(private val engine: Engine, private val scope: CoroutineScope) {
     /** How a reconfiguration ended. */
     sealed class Outcome {
         /** The live system matches; [steps] were needed to get there. */
@@ -36,8 +41,8 @@ internal class Configurator(private val engine: Engine) {
     }
 
     private suspend fun read(network: Network, deadline: Duration): LiveNetwork = LiveNetwork(
-        network.components.keys.associateWith { component ->
-            within("read the state of $component", deadline) { engine.withComponent(component) { it.state() } }
+        network.components.mapValues { (component, active) ->
+            within("read the state of $component", deadline) { unlessAbsent(allowed = !active) { engine.withComponent(component) { it.state() } } }
         },
         network.configurationSets.keys.associateWith { component ->
             within("read the configuration of $component", deadline) {
@@ -47,7 +52,9 @@ internal class Configurator(private val engine: Engine) {
                 }
             }
         },
-        network.connections.keys.associateWith { link -> within("read the connections of ${link.from}", deadline) { exists(link) } },
+        network.connections.mapValues { (link, present) ->
+            within("read the connections of ${link.from}", deadline) { unlessAbsent(allowed = !present) { exists(link) } ?: false }
+        },
     )
 
     /** Whether a connection joins the link's ports, recognised by path or by OpenRTM's `instance.port` name. */
@@ -58,14 +65,31 @@ internal class Configurator(private val engine: Engine) {
         return connections.any { connection -> connection.ports.any { it.path == path || it.fullName == fullName } }
     }
 
-    private suspend fun <T> within(what: String, deadline: Duration, block: suspend () -> T): T = try {
-        withTimeout(deadline) { block() }
-    } catch (e: TimeoutCancellationException) {
-        throw StepFailed("$what: did not finish within $deadline")
-    } catch (e: CancellationException) {
-        throw e
-    } catch (e: Exception) {
-        throw StepFailed("$what: ${e.message ?: e}")
+    /** [read], or null when what it reads does not exist and that is [allowed]: a missing component is neither active nor connected. */
+    private suspend fun <T> unlessAbsent(allowed: Boolean, read: suspend () -> T): T? = try {
+        read()
+    } catch (e: NotFoundException) {
+        if (allowed) null else throw e
+    }
+
+    /**
+     * Runs [block] as its own coroutine in [scope] and waits at most [deadline] for it. A CORBA call
+     * blocked in a socket read does not give way to cancellation, so an overrunning step is cancelled
+     * and left to end there, within the tree's call timeout, while the reconfiguration fails at once.
+     */
+    private suspend fun <T> within(what: String, deadline: Duration, block: suspend () -> T): T {
+        val step = scope.async(CoroutineName(what)) { block() }
+        return try {
+            withTimeout(deadline) { step.await() }
+        } catch (e: TimeoutCancellationException) {
+            step.cancel()
+            throw StepFailed("$what: did not finish within $deadline")
+        } catch (e: CancellationException) {
+            step.cancel()
+            throw e
+        } catch (e: Exception) {
+            throw StepFailed("$what: ${e.message ?: e}")
+        }
     }
 
     private class StepFailed(override val message: String) : Exception(message)

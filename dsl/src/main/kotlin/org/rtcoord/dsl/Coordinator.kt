@@ -39,7 +39,7 @@ public class Coordinator(
     private val failureCount = AtomicInteger()
 
     private val interpreters = coordination.machines.map { machine ->
-        MachineInterpreter(machine, scope, coordination.engine, Configurator(coordination.engine), log, ::failed)
+        MachineInterpreter(machine, scope, coordination.engine, Configurator(coordination.engine, scope), log, ::failed)
     }
 
     /** How many handler runs failed so far. */

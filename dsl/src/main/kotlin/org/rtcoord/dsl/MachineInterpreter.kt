@@ -52,8 +52,9 @@ internal class MachineInterpreter(
     fun start() {
         scope.launch(CoroutineName("modes ${machine.name}")) {
             val entering = listOf(machine.root) + machine.root.initialDescent
+            log("mode ${machine.name}: starts in ${entering.last().path}")
             enter(entering, Reaction(engine, null))
-            moved(null, "start")
+            record(null, "start")
             if (entering.any { it.network != null }) reconfigure()
             for (input in inputs) handle(input)
         }
@@ -73,17 +74,19 @@ internal class MachineInterpreter(
             return
         }
         val from = active.last()
+        val trigger = if (input is Input.Outcome) describe(input) else transition.trigger
         val kept = active.indexOf(domainOf(transition.source, transition.target)) + 1
         val leaving = active.drop(kept)
+        val entering = transition.target.lineage.drop(kept) + transition.target.initialDescent
+        log("mode ${from.path} -> ${entering.last().path} on $trigger")
         for (mode in leaving.asReversed()) {
             timers.remove(mode)?.forEach(Job::cancel)
             run("exit of ${mode.path}", mode.exitActions, reaction)
             active = active.dropLast(1)
         }
         transition.action?.let { run("action of ${transition.source.path} $transition", listOf(it), reaction) }
-        val entering = transition.target.lineage.drop(kept) + transition.target.initialDescent
         enter(entering, reaction)
-        moved(from, if (input is Input.Outcome) describe(input) else transition.trigger)
+        record(from, trigger)
         if ((leaving + entering).any { it.network != null }) {
             reconfiguration?.cancelAndJoin()
             generation++
@@ -139,10 +142,8 @@ internal class MachineInterpreter(
         }
     }
 
-    private fun moved(from: Mode?, trigger: String) {
-        val transition = ModeTransition(from?.path, active.last().path, trigger, now())
-        running.moved(transition)
-        log(if (from == null) "mode ${machine.name}: starts in ${transition.to}" else "mode ${transition.from} -> ${transition.to} on $trigger")
+    private fun record(from: Mode?, trigger: String) {
+        running.moved(ModeTransition(from?.path, active.last().path, trigger, now()))
     }
 
     private suspend fun reconfigure() {

@@ -66,7 +66,7 @@ public class NetworkBuilder internal constructor() {
         components.forEach { require(component(it), true) }
     }
 
-    /** These components must not be ACTIVE (INACTIVE, or left in ERROR for whoever recovers them). */
+    /** These components must not be ACTIVE (INACTIVE, left in ERROR for whoever recovers them, or absent). */
     public fun inactive(vararg components: String) {
         components.forEach { require(component(it), false) }
     }
@@ -78,7 +78,7 @@ public class NetworkBuilder internal constructor() {
         if (properties.isNotEmpty()) this.properties[link] = properties
     }
 
-    /** No connection may join port [from] and port [to]. */
+    /** No connection may join port [from] and port [to] (met too when either does not exist). */
     public fun disconnected(from: String, to: String) {
         require(Link(port(from), port(to)), false)
     }

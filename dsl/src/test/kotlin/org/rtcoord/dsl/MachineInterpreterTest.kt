@@ -40,7 +40,7 @@ class MachineInterpreterTest {
             }
         }
         val interpreter = MachineInterpreter(
-            machine, backgroundScope, Engine(), Configurator(Engine()), log = {}, failed = { what, e -> failures += "$what: $e" },
+            machine, backgroundScope, Engine(), Configurator(Engine(), backgroundScope), log = {}, failed = { what, e -> failures += "$what: $e" },
             now = { Instant.ofEpochMilli(testScheduler.currentTime) },
         )
         interpreter.start()
@@ -80,7 +80,7 @@ class MachineInterpreterTest {
             mode("a") { after(1.seconds) goTo "b" }
             mode("b") { entry { error("cannot start b") } }
         }
-        val interpreter = MachineInterpreter(machine, backgroundScope, Engine(), Configurator(Engine()), log = {}, failed = { what, e -> failures += "$what: ${e.message}" })
+        val interpreter = MachineInterpreter(machine, backgroundScope, Engine(), Configurator(Engine(), backgroundScope), log = {}, failed = { what, e -> failures += "$what: ${e.message}" })
         interpreter.start()
         advanceTimeBy(2.seconds)
         runCurrent()

@@ -18,6 +18,7 @@ import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
 import java.util.Collections
+import kotlin.time.Duration.Companion.milliseconds
 
 /** Mode machines driving the localisation system over IIOP; results are read back through the fixtures and a second tree. */
 class ModesTest {
@@ -162,6 +163,37 @@ class ModesTest {
             assertEquals(setOf("laser0.laser"), peers("laser_localise0.rtc:laser"))
             assertEquals(LifeCycleState.INACTIVE_STATE, system.component("odo_localise0").state)
             assertEquals(LifeCycleState.ERROR_STATE, system.component("gyro0").state)
+        }
+    }
+
+    @Test
+    fun `a step that misses its deadline fails the network`(): Unit = runBlocking {
+        coordinator {
+            modes("m") {
+                initial("idle")
+                mode("idle") { on(component("gyro0")).state(ERROR) goTo "stopping" }
+                mode("stopping") {
+                    network {
+                        stepDeadline = 300.milliseconds
+                        inactive("odometry0")
+                    }
+                    on(failed) goTo "stuck"
+                }
+                mode("stuck")
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            val machine = coordinator.machine("m")
+            await("the machine to start") { machine.mode.value == "m/idle" }
+            val odometry = system.component("odometry0")
+            odometry.hang()
+            try {
+                system.component("gyro0").fail()
+                await("the network to fail") { machine.mode.value == "m/stuck" }
+                assertEquals("failed: read the state of odometry0.rtc: did not finish within 300ms", machine.history.value.last().trigger)
+            } finally {
+                odometry.release()
+            }
         }
     }
 

@@ -30,6 +30,12 @@ class ExampleSystem(script: String, options: EventOptions, args: List<String> = 
 
     fun path(name: String) = "/${naming.address}/${FixtureRuntime.hostContext}/$name"
 
+    /** OpenRTM's names (`instance.port`) of the ports connected to [port] (`component.rtc:port`), read by the witness. */
+    suspend fun peers(port: String): Set<String> {
+        val own = port.substringBefore(".rtc:") + "." + port.substringAfter(':')
+        return witness.port(path(port)).connections().flatMap { connection -> connection.ports.map { it.fullName } }.filter { it != own }.toSet()
+    }
+
     override fun close() {
         coordinator.close()
         tree.close()

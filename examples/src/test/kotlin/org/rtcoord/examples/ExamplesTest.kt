@@ -11,6 +11,7 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.WatchMode
 import org.rtcoord.fixtures.await
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 
 class ExamplesTest {
     enum class Mode(val options: EventOptions) {
@@ -68,6 +69,38 @@ class ExamplesTest {
             await("the precise set to be active") { example.system.component("laser_localise0").activeConfigurationSet == "precise" }
             localiser.setParameter("gain", "1.5", set = "precise")
             await("the default set to be active again") { example.system.component("laser_localise0").activeConfigurationSet == "default" }
+        }
+    }
+
+    @Test
+    fun `modes - the laser fails, the system runs on odometry, and back on the laser once it is active`(): Unit = runBlocking {
+        ExampleSystem("modes.coord.kts", Mode.PUSH.options).use { example ->
+            example.coordinator.start()
+            val machine = example.coordinator.machine("localisation")
+            await("the laser mode's network") { example.log.any { it.startsWith("mode localisation/laser: network done (0 steps") } }
+
+            example.system.component("laser0").fail()
+            await("the odometry localiser to track", timeout = 30.seconds) { machine.mode.value == "localisation/degraded/odometry/tracking" }
+            assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("laser0").state, "reset on entry")
+            assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("laser_localise0").state)
+            assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("odo_localise0").state)
+            assertEquals(setOf("odometry0.odo"), example.peers("odo_localise0.rtc:odo"))
+            assertEquals(setOf("gyro0.gyro"), example.peers("odo_localise0.rtc:gyro"))
+            assertEquals(emptySet<String>(), example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"))
+
+            example.witness.component(example.path("laser0.rtc")).activate()
+            await("the laser mode's network again", timeout = 30.seconds) { example.log.count { it.startsWith("mode localisation/laser: network done") } == 2 }
+            assertEquals("localisation/laser", machine.mode.value)
+            assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("laser_localise0").state)
+            assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("odo_localise0").state)
+            assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
+            assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
+            assertEquals(emptySet<String>(), example.peers("odo_localise0.rtc:odo") + example.peers("odo_localise0.rtc:gyro"))
+            assertEquals(
+                listOf("start", "laser0.rtc enters ERROR", "done", "laser0.rtc enters ACTIVE"),
+                machine.history.value.map { it.trigger },
+            )
+            assertEquals(0, example.coordinator.failures)
         }
     }
 }
