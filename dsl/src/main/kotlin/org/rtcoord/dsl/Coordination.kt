@@ -6,7 +6,8 @@ import kotlin.time.Duration
 
 /**
  * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), mode machines
- * (`modes(...)`), name servers and how to watch. Evaluating a script only builds this model; a [Coordinator] runs it.
+ * (`modes(...)`), name servers and how to watch. Evaluating a script only builds this model; a
+ * [Coordinator] runs it.
  *
  * @property args the arguments the script was started with.
  * @property host the tree configuration the host application runs the coordinator with.

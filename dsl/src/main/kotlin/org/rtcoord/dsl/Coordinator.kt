@@ -20,8 +20,9 @@ import java.util.concurrent.atomic.AtomicInteger
 
 /**
  * Runs a [Coordination] against a live system: subscribes its rules, starts its timers and mode
- * machines, and runs their handlers, one structured-concurrency scope for all of it. A failing handler is logged and counted and
- * the coordinator keeps running; [close] cancels running handlers and detaches every observer.
+ * machines, and runs their handlers, one structured-concurrency scope for all of it. A failing handler
+ * is logged and counted and the coordinator keeps running; [close] cancels running handlers and
+ * detaches every observer.
  *
  * @param options how rules watch, overriding the script's own choice when given.
  * @param log receives one line per rule firing, action, mode transition and failure.

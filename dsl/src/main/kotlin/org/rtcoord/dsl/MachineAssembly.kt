@@ -2,8 +2,8 @@ package org.rtcoord.dsl
 
 /**
  * Turns a `modes { ... }` declaration into a [ModeMachine], checking it as a whole first: names,
- * initial modes, transition targets, networks, then that every mode can be reached from the start.
- * Throws [InvalidMachineException] listing every problem found.
+ * initial modes, transition targets, networks, then, once those are sound, that every mode can be
+ * reached from the start. Throws [InvalidMachineException] listing every problem found.
  */
 internal fun assemble(declaration: ModeBuilder, takenNames: Collection<String>): ModeMachine {
     val problems = mutableListOf<String>()

@@ -17,7 +17,7 @@ import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
-import java.util.Collections
+import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.milliseconds
 
 /** Mode machines driving the localisation system over IIOP; results are read back through the fixtures and a second tree. */
@@ -27,8 +27,9 @@ class ModesTest {
     private val config = TreeConfig(nameServers = listOf(naming.address))
     private val tree = RtcTree.create(config)
     private val witness = RtcTree.create(config)
-    private val log = Collections.synchronizedList(mutableListOf<String>())
-    private val trace = Collections.synchronizedList(mutableListOf<String>())
+    // Copy-on-write: the tests iterate them while the coordinator appends.
+    private val log = CopyOnWriteArrayList<String>()
+    private val trace = CopyOnWriteArrayList<String>()
 
     @AfterEach
     fun stop() {
