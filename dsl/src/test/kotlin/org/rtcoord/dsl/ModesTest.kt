@@ -47,6 +47,12 @@ class ModesTest {
     private suspend fun peers(port: String): Set<String> =
         witness.port(path(port)).connections().flatMap { connection -> connection.ports.map { it.fullName } }.filter { !it.startsWith(port.substringBefore(".rtc")) }.toSet()
 
+    /** Starts the coordinator and waits until machine [name] is in [mode]. */
+    private suspend fun Coordinator.started(name: String, mode: String): RunningMachine {
+        start()
+        return machine(name).also { machine -> await("$name to start in $mode") { machine.mode.value == mode } }
+    }
+
     private fun ModeBuilder.traced(name: String) {
         entry { trace += "enter $name" }
         exit { trace += "exit $name" }
@@ -147,9 +153,7 @@ class ModesTest {
                 mode("halted")
             }
         }.use { coordinator ->
-            coordinator.start()
-            val machine = coordinator.machine("m")
-            await("the machine to start") { machine.mode.value == "m/idle" }
+            val machine = coordinator.started("m", "m/idle")
             system.component("gyro0").fail()
             await("the machine to halt", timeout = kotlin.time.Duration.parse("30s")) { machine.mode.value == "m/halted" }
 
@@ -183,9 +187,7 @@ class ModesTest {
                 mode("stuck")
             }
         }.use { coordinator ->
-            coordinator.start()
-            val machine = coordinator.machine("m")
-            await("the machine to start") { machine.mode.value == "m/idle" }
+            val machine = coordinator.started("m", "m/idle")
             val odometry = system.component("odometry0")
             odometry.hang()
             try {
@@ -226,9 +228,7 @@ class ModesTest {
                 }
             }
         }.use { coordinator ->
-            coordinator.start()
-            val machine = coordinator.machine("robot")
-            await("the machine to start") { machine.mode.value == "robot/operating/navigating/planning" }
+            val machine = coordinator.started("robot", "robot/operating/navigating/planning")
             assertEquals(listOf("enter robot", "enter operating", "enter navigating", "enter planning"), trace.toList())
 
             system.component("laser0").fail()
