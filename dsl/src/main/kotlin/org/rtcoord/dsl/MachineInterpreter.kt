@@ -79,6 +79,11 @@ internal class MachineInterpreter(
         val leaving = active.drop(kept)
         val entering = transition.target.lineage.drop(kept) + transition.target.initialDescent
         log("mode ${from.path} -> ${entering.last().path} on $trigger")
+        // Before any action runs, so that entry actions never race a reconfiguration for the modes being left.
+        if ((leaving + entering).any { it.network != null }) {
+            reconfiguration?.cancelAndJoin()
+            generation++
+        }
         for (mode in leaving.asReversed()) {
             timers.remove(mode)?.forEach(Job::cancel)
             run("exit of ${mode.path}", mode.exitActions, reaction)
@@ -87,10 +92,6 @@ internal class MachineInterpreter(
         transition.action?.let { run("action of ${transition.source.path} $transition", listOf(it), reaction) }
         enter(entering, reaction)
         record(from, trigger)
-        if ((leaving + entering).any { it.network != null }) {
-            reconfiguration?.cancelAndJoin()
-            generation++
-        }
         if (entering.any { it.network != null }) reconfigure()
     }
 
