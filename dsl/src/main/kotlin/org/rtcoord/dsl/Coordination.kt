@@ -5,8 +5,8 @@ import org.rtcoord.TreeConfig
 import kotlin.time.Duration
 
 /**
- * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), name servers and how
- * to watch. Evaluating a script only builds this model; a [Coordinator] runs it.
+ * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), supervisors
+ * (`supervise(...)`), name servers and how to watch. Evaluating a script only builds this model; a [Coordinator] runs it.
  *
  * @property args the arguments the script was started with.
  * @property host the tree configuration the host application runs the coordinator with.
@@ -16,6 +16,7 @@ public open class Coordination(public val args: List<String>, public val host: T
     internal val engine = Engine()
     internal val rules = mutableListOf<Rule<*>>()
     internal val timers = mutableListOf<Timer>()
+    internal val supervisions = mutableListOf<Supervision>()
     internal val nameServers = mutableListOf<String>()
 
     /** How rules watch (push, poll, period, overlap), unless the host overrides it. */
@@ -60,8 +61,16 @@ public open class Coordination(public val args: List<String>, public val host: T
         timers += Timer("after $delay", delay, null, action)
     }
 
-    /** What the script declared, one line per rule and timer: what `check` shows and tools can draw. */
-    public val description: List<String> get() = rules.map { "on ${it.description}" } + timers.map { it.description }
+    /**
+     * Supervises [components], restarting them as [configure] says: `supervise(component("a.rtc"),
+     * component("b.rtc")) { strategy = oneForAll; maxRestarts = 3 within 60.seconds }` (see [Supervision]).
+     */
+    public fun supervise(vararg components: ComponentRef, configure: Supervision.() -> Unit = {}): Supervision =
+        Supervision(components.toList()).apply(configure).also { supervisions += it }
+
+    /** What the script declared, one line per rule, timer and supervisor: what `check` shows and tools can draw. */
+    public val description: List<String>
+        get() = rules.map { "on ${it.description}" } + timers.map { it.description } + supervisions.map { it.description }
 
     internal fun add(rule: Rule<*>) {
         rules += rule

@@ -19,9 +19,10 @@ import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 
 /**
- * Runs a [Coordination] against a live system: subscribes its rules, starts its timers, and runs their
- * handlers, one structured-concurrency scope for all of it. A failing handler is logged and counted and
- * the coordinator keeps running; [close] cancels running handlers and detaches every observer.
+ * Runs a [Coordination] against a live system: subscribes its rules, starts its timers and supervisors,
+ * and runs their handlers, one structured-concurrency scope for all of it. A failing handler is logged
+ * and counted and the coordinator keeps running; [close] cancels running handlers and detaches every
+ * observer. Rules on a component a supervisor re-creates follow it to the new component.
  *
  * @param options how rules watch, overriding the script's own choice when given.
  * @param log receives one line per rule firing, action and failure.
@@ -35,22 +36,27 @@ public class Coordinator(
     private val scope = CoroutineScope(
         SupervisorJob() + CoroutineName("coordinator") + CoroutineExceptionHandler { _, e -> failed("timer", e) },
     )
-    private val subscriptions = CopyOnWriteArrayList<Subscription>()
+    private val watches = CopyOnWriteArrayList<RuleWatch>()
+    private val supervisors = CopyOnWriteArrayList<Supervisor>()
     private val failureCount = AtomicInteger()
 
     /** How many handler runs failed so far. */
     public val failures: Int get() = failureCount.get()
 
     /**
-     * Resolves every rule's target and subscribes it; fails (with nothing left running) when a target
-     * does not exist or is ambiguous.
+     * Resolves every rule's target and subscribes it, and starts the supervisors; fails (with nothing
+     * left running) when a target does not exist or is ambiguous.
      */
     public suspend fun start() {
         coordination.engine.tree = tree
         coordination.engine.log = log
         coordination.nameServers.forEach(tree::addNameServer)
         try {
-            coordination.rules.forEach { subscribe(it) }
+            coordination.rules.forEach { subscribe(it, targets(it.target)) }
+            coordination.supervisions.forEach { supervision ->
+                val watching = options ?: coordination.watching
+                supervisors += Supervisor(supervision, tree, coordination.engine, watching, scope, log, ::follow, { escalated(supervision, it) }).also { it.start() }
+            }
         } catch (e: Exception) {
             close()
             throw e
@@ -66,10 +72,20 @@ public class Coordinator(
         }
     }
 
-    private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>) {
+    private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>, nodes: List<Node>) {
         val watching = options ?: coordination.watching
-        for (node in targets(rule.target)) {
-            subscriptions += tree.on(node, rule.type, watching) { event -> fire(rule, event) }
+        for (node in nodes) {
+            watches += RuleWatch(rule, node, tree.on(node, rule.type, watching) { event -> fire(rule, event) })
+        }
+    }
+
+    /** References to [old], a component since re-created as [new], and rules watching it, follow it. */
+    private suspend fun follow(old: ComponentNode, new: ComponentNode) {
+        coordination.engine.follow(old, new)
+        for (watch in watches.filter { (it.node as? ComponentNode)?.isSameComponent(old) == true }) {
+            watches -= watch
+            watch.subscription.cancel()
+            subscribe(watch.rule, listOf(new))
         }
     }
 
@@ -78,6 +94,12 @@ public class Coordinator(
         is Target.Port -> listOf(target.ref.component.node().also { it.port(target.ref.name) })
         is Target.Manager -> listOf(coordination.engine.manager(target.ref))
         is Target.Context -> listOf(tree.node(target.ref.path))
+    }
+
+    private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
+        for (handler in supervision.escalationHandlers) {
+            run("escalation handler of ${escalation.supervisor}") { Reaction(coordination.engine, null).handler(escalation) }
+        }
     }
 
     private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E) {
@@ -105,10 +127,14 @@ public class Coordinator(
 
     /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
     override fun close() {
-        subscriptions.forEach(Subscription::cancel)
-        subscriptions.clear()
+        supervisors.forEach(Supervisor::close)
+        watches.forEach { it.subscription.cancel() }
+        watches.clear()
         scope.cancel()
     }
+
+    /** A rule's subscription to one of its target nodes. */
+    private class RuleWatch(val rule: Rule<*>, val node: Node, val subscription: Subscription)
 
     private companion object {
         fun describe(event: RtcEvent): String = "${event.javaClass.simpleName} at ${(event.source as? ComponentNode)?.path ?: event.path}"

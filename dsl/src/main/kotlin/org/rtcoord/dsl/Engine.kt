@@ -31,6 +31,11 @@ internal class Engine {
 
     fun reference(node: ComponentNode): ComponentRef = ComponentRef(node.path.toString(), this).also { resolved[node.path.toString()] = node }
 
+    /** References that resolved to [old], a component since re-created, resolve to [new] from now on. */
+    fun follow(old: ComponentNode, new: ComponentNode) {
+        resolved.replaceAll { _, node -> if (node.isSameComponent(old)) new else node }
+    }
+
     fun portOf(port: Any): PortRef = when (port) {
         is PortRef -> port
         is String -> portRef(port)
