@@ -50,12 +50,13 @@ public class Coordinator(
     public suspend fun start() {
         coordination.engine.tree = tree
         coordination.engine.log = log
+        coordination.engine.followed = ::follow
         coordination.nameServers.forEach(tree::addNameServer)
         try {
             coordination.rules.forEach { subscribe(it, targets(it.target)) }
             coordination.supervisions.forEach { supervision ->
                 val watching = options ?: coordination.watching
-                supervisors += Supervisor(supervision, tree, coordination.engine, watching, scope, log, ::follow, { escalated(supervision, it) }).also { it.start() }
+                supervisors += Supervisor(supervision, tree, coordination.engine, watching, scope, log) { escalated(supervision, it) }.also { it.start() }
             }
         } catch (e: Exception) {
             close()
@@ -79,11 +80,11 @@ public class Coordinator(
         }
     }
 
-    /** References to [old], a component since re-created as [new], and rules watching it, follow it. */
+    /** Rules watching [old], a component since re-created as [new], watch [new] from now on. */
     private suspend fun follow(old: ComponentNode, new: ComponentNode) {
-        coordination.engine.follow(old, new)
         for (watch in watches.filter { (it.node as? ComponentNode)?.isSameComponent(old) == true }) {
-            watches -= watch
+            // Whoever removes it moves it: a supervisor and a handler may follow the same component at once.
+            if (!watches.remove(watch)) continue
             watch.subscription.cancel()
             subscribe(watch.rule, listOf(new))
         }

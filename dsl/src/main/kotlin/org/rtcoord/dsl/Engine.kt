@@ -31,9 +31,13 @@ internal class Engine {
 
     fun reference(node: ComponentNode): ComponentRef = ComponentRef(node.path.toString(), this).also { resolved[node.path.toString()] = node }
 
-    /** References that resolved to [old], a component since re-created, resolve to [new] from now on. */
-    fun follow(old: ComponentNode, new: ComponentNode) {
+    /** Told when references move to a re-created component, so that the rules watching it move too. */
+    var followed: suspend (old: ComponentNode, new: ComponentNode) -> Unit = { _, _ -> }
+
+    /** References that resolved to [old], a component since re-created as [new], resolve to [new] from now on. */
+    suspend fun follow(old: ComponentNode, new: ComponentNode) {
         resolved.replaceAll { _, node -> if (node.isSameComponent(old)) new else node }
+        followed(old, new)
     }
 
     fun portOf(port: Any): PortRef = when (port) {
@@ -78,17 +82,44 @@ internal class Engine {
      * [what] names its objects itself); once more after a fresh lookup if the component stopped answering.
      */
     suspend fun act(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Unit) {
+        fun line(node: ComponentNode) = if (namesItself) what else "$what ${node.path}"
+        read(ref, { node -> log(line(node)) }, { again -> log("${line(again)} (looked up again)") }, action)
+    }
+
+    /**
+     * Runs [action] on [ref]'s component ([first] told which); once more after a fresh lookup ([again]
+     * told which) if the component stopped answering and another answers to the name now.
+     */
+    suspend fun <T> read(
+        ref: ComponentRef,
+        first: (ComponentNode) -> Unit = {},
+        again: (ComponentNode) -> Unit = {},
+        action: suspend (ComponentNode) -> T,
+    ): T {
         val node = component(ref.selector)
-        log(if (namesItself) what else "$what ${node.path}")
-        try {
+        first(node)
+        return try {
             action(node)
         } catch (e: UnreachableException) {
-            resolved.remove(ref.selector)
-            node.path.parent?.let { tree.refresh(it, depth = 0) }
-            val again = component(ref.selector).takeUnless { it.isSameComponent(node) } ?: throw e
-            log("${if (namesItself) what else "$what ${again.path}"} (looked up again)")
-            action(again)
+            val other = successor(ref.selector, node) ?: throw e
+            again(other)
+            action(other)
         }
+    }
+
+    /**
+     * The component that replaced [old], which stopped answering: the one bound at its path now (its
+     * naming context read again), else the one [selector] finds now; references and rules follow it.
+     */
+    private suspend fun successor(selector: String, old: ComponentNode): ComponentNode? {
+        val parent = old.path.parent ?: return null
+        tree.refresh(parent, depth = 0)
+        val atPath = try { tree.node(old.path) as? ComponentNode } catch (e: NotFoundException) { null }
+        val found = atPath?.takeUnless { it.isSameComponent(old) }
+            ?: resolved.remove(selector).let { component(selector) }.takeUnless { it.isSameComponent(old) }
+            ?: return null
+        follow(old, found)
+        return found
     }
 
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {

@@ -28,9 +28,9 @@ import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
-import kotlin.time.Duration
 import kotlin.time.TimeSource
 
 /**
@@ -39,10 +39,7 @@ import kotlin.time.TimeSource
  * the order they arrive, by one coroutine of [scope]; the records are kept under a lock the recovery
  * holds, so a recovery never sees them half updated.
  *
- * @param follow makes the script's references and rules follow a component from its old node to the
- *   node of its re-created self.
  * @param escalate runs the script's escalation handlers.
- * @param now the clock of the restart intensity and back-off.
  */
 internal class Supervisor(
     private val supervision: Supervision,
@@ -51,9 +48,7 @@ internal class Supervisor(
     watching: EventOptions,
     private val scope: CoroutineScope,
     private val log: (String) -> Unit,
-    private val follow: suspend (old: ComponentNode, new: ComponentNode) -> Unit,
     private val escalate: suspend (Escalation) -> Unit,
-    now: () -> Duration = TimeSource.Monotonic.markNow().let { start -> { start.elapsedNow() } },
 ) {
     /** A failure to handle: [child] did [what] while it was [node]. [exited]: it ended by itself. */
     private class Failure(val child: SupervisedChild, val node: ComponentNode, val what: String, val exited: Boolean)
@@ -71,7 +66,7 @@ internal class Supervisor(
     private val connections = mutableListOf<RecordedConnection>()
     private val lock = Mutex()
     private val failures = Channel<Failure>(Channel.UNLIMITED)
-    private val policy = RestartPolicy(supervision.maxRestarts, supervision.backoff, now)
+    private val policy = TimeSource.Monotonic.markNow().let { start -> RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() } }
     @Volatile private var stopped = false
 
     /** Resolves and watches the components, records what recovery needs, and starts handling failures. */
@@ -143,7 +138,7 @@ internal class Supervisor(
     }
 
     /** The managers above [path], nearest first, among [managers]. */
-    private fun managersFrom(path: org.rtcoord.RtcPath, managers: List<ManagerNode>): List<ManagerNode> =
+    private fun managersFrom(path: RtcPath, managers: List<ManagerNode>): List<ManagerNode> =
         generateSequence(path.parent) { it.parent }.mapNotNull { above -> managers.firstOrNull { it.path == above } }.toList()
 
     /** Records the connections of [child]'s port [port] that are not recorded yet ([only] that one, when given). */
@@ -176,9 +171,10 @@ internal class Supervisor(
             is PortConnected -> if (connections.none { it.id == event.connector.id }) recordConnections(child, event.port, only = event.connector.id)
             is PortDisconnected -> {
                 val connection = connections.firstOrNull { it.id == event.connector.id } ?: return
-                // A connection lost because one of its components died is made again with it; one removed
-                // while all its components answer was removed on purpose.
-                if (connection.children.all { probe(it) is Status.Up }) {
+                // A connection lost because one of its components failed or exits (it leaves its execution
+                // contexts first, so it reads as CREATED) is made again with it; one removed while all its
+                // components run normally was removed on purpose.
+                if (connection.children.all { (probe(it) as? Status.Up)?.state in RUNNING }) {
                     connections -= connection
                     log("$name: connection $connection was removed: it will not be made again")
                 }
@@ -190,8 +186,7 @@ internal class Supervisor(
             }
             is ParameterChanged -> {
                 val recorded = child.configuration?.takeIf { it.set == event.set } ?: return
-                val values = if (event.new == null) recorded.values - event.name else recorded.values + (event.name to event.new!!)
-                child.configuration = recorded.copy(values = values)
+                child.configuration = recorded.copy(values = event.new?.let { recorded.values + (event.name to it) } ?: (recorded.values - event.name))
             }
             else -> Unit
         }
@@ -284,7 +279,7 @@ internal class Supervisor(
         val managers = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER)).toList().filterIsInstance<ManagerNode>()
         child.managers = (managersFrom(created.path, managers) + child.managers).distinctBy { it.path }
         log("$name: re-created ${old.path} as ${node.path}")
-        follow(old, node)
+        engine.follow(old, node)
         watch(child)
         restoreConfiguration(child)
         restoreConnections(child)
@@ -400,5 +395,10 @@ internal class Supervisor(
             log("$name: $what failed: ${e.message ?: e}")
             null
         }
+    }
+
+    private companion object {
+        /** The states of a component that works normally, active or not. */
+        val RUNNING = setOf(LifeCycle.ACTIVE, LifeCycle.INACTIVE)
     }
 }

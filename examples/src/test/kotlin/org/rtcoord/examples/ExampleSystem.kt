@@ -10,7 +10,7 @@ import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.naming.NamingService
 import java.nio.file.Paths
-import java.util.Collections
+import java.util.concurrent.CopyOnWriteArrayList
 
 /**
  * The localisation system with [script] coordinating it, watched as [options] says, plus a second
@@ -22,7 +22,7 @@ class ExampleSystem(script: String, options: EventOptions, args: List<String> = 
     private val config = TreeConfig(nameServers = listOf(naming.address))
     private val tree = RtcTree.create(config)
     val witness: RtcTree = RtcTree.create(config)
-    val log: MutableList<String> = Collections.synchronizedList(mutableListOf())
+    val log: MutableList<String> = CopyOnWriteArrayList()
     val coordinator: Coordinator = Coordinator(tree, runBlocking { scripts.load(Paths.get(script), args, config) }, options) { line ->
         log += line
         println("coordinator: $line")
