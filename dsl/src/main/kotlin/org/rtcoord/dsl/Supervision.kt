@@ -17,6 +17,11 @@ import kotlin.time.Duration.Companion.seconds
  *   before, started in declared order after;
  * - a failure beyond [maxRestarts] escalates: [onEscalation] handlers run and the supervisor stops.
  *
+ * A component whose registration vanishes is noticed by its own events: it exited, or it stopped
+ * answering. A component that still runs but was unbound from naming has not failed. Connections are
+ * recorded when the supervisor starts and as they are made; one removed while all its supervised
+ * components run normally is removed on purpose and not made again.
+ *
  * Every step goes to the coordinator's log; a step that fails is logged with the object it concerned.
  */
 @RtcDsl

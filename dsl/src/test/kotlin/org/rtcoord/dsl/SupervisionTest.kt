@@ -33,8 +33,8 @@ import kotlin.time.TimeSource
 /**
  * Supervisors against the fixtures: sensors in this JVM, hosted by a slave of the master `manager.mgr`;
  * for the tests that kill a component, a laser localiser in a separate process whose own slave joined
- * that master, fed by the laser and the odometry and feeding odo_localise0 (not supervised), so that
- * SIGKILL takes the component and its manager down together, as it would a robot's process.
+ * that master, fed by the laser and the odometry, so that SIGKILL takes the component and its manager
+ * down together, as it would a robot's process.
  */
 class SupervisionTest {
     private val naming = NamingService.start()
@@ -81,9 +81,12 @@ class SupervisionTest {
         return witness.component(path(name)).also { it.refresh() }
     }
 
+    /** The connections of port [port], each as the paths of its ports. */
+    private suspend fun ends(port: String): List<List<String>> = witness.port(path(port)).connections().map { c -> c.ports.map { it.path.toString() } }
+
     private fun logged(text: String): Boolean = log.any { text in it }
 
-    /** laser_localise0 in its own process, joined to the master, between the sensors and odo_localise0, active in set precise with gain 0.7. */
+    /** laser_localise0 in its own process, joined to the master, fed by laser0 and odometry0, active in set precise with gain 0.7. */
     private fun localiserProcess(): FixtureProcess {
         val process = FixtureProcess.start(
             "--naming", naming.address, "--scenario", "component:laser_localise0", "--type", "laser_localise",
@@ -93,7 +96,6 @@ class SupervisionTest {
             runBlocking {
                 witness.connect(path("laser0.rtc:laser"), path("laser_localise0.rtc:laser"))
                 witness.connect(path("odometry0.rtc:odo"), path("laser_localise0.rtc:odo"))
-                witness.connect(path("laser_localise0.rtc:pose"), path("odo_localise0.rtc:odo"))
                 val localiser = witness.component(path("laser_localise0.rtc"))
                 localiser.setParameter("gain", "0.7", set = "precise")
                 localiser.activateConfigurationSet("precise")
@@ -119,6 +121,14 @@ class SupervisionTest {
                 on(component("laser_localise0")).state(ERROR) { event -> ruleSaw += event.source.path.toString() }
             }.use { coordinator ->
                 coordinator.start()
+                // Changes after the start: a connection to odo_localise0 (not supervised) is made, the odometry's is removed.
+                witness.connect(path("laser_localise0.rtc:pose"), path("odo_localise0.rtc:odo"))
+                val odometry = witness.port(path("odometry0.rtc:odo"))
+                odometry.disconnect(odometry.connections().single().id)
+                await("the supervisor to record both changes") {
+                    logged("recorded connection ${path("laser_localise0.rtc:pose")} -> ${path("odo_localise0.rtc:odo")}") &&
+                        logged("connection ${path("odometry0.rtc:odo")} -> ${path("laser_localise0.rtc:odo")} was removed")
+                }
                 val killed = TimeSource.Monotonic.markNow()
                 process.kill()
 
@@ -138,15 +148,13 @@ class SupervisionTest {
 
                 assertEquals("precise", localiser.activeConfigurationSet)
                 assertEquals("0.7", localiser.parameter("gain"))
-                await("data from the odometry to reach the new localiser") { localiser.latest("odo") != null }
                 await("data from the laser to reach the new localiser") { localiser.latest("laser") != null }
                 val new = fresh("laser_localise0.rtc").snapshot()
-                assertEquals(mapOf("laser" to 1, "odo" to 1, "pose" to 1), new.ports.associate { it.name to it.connectors.size })
-                for ((from, to) in listOf("laser0.rtc:laser" to "laser_localise0.rtc:laser", "odometry0.rtc:odo" to "laser_localise0.rtc:odo", "laser_localise0.rtc:pose" to "odo_localise0.rtc:odo")) {
-                    val peer = if (from.startsWith("laser_localise0")) to else from
-                    val connections = witness.port(path(peer)).connections()
-                    assertEquals(listOf(listOf(path(from), path(to))), connections.map { c -> c.ports.map { it.path.toString() } }, "$peer holds no stale connector")
-                }
+                assertEquals(mapOf("laser" to 1, "odo" to 0, "pose" to 1), new.ports.associate { it.name to it.connectors.size })
+                assertEquals(listOf(listOf(path("laser0.rtc:laser"), path("laser_localise0.rtc:laser"))), ends("laser0.rtc:laser"), "no stale connector")
+                assertEquals(listOf(listOf(path("laser_localise0.rtc:pose"), path("odo_localise0.rtc:odo"))), ends("odo_localise0.rtc:odo"), "no stale connector")
+                assertEquals(emptyList<List<String>>(), ends("odometry0.rtc:odo"), "the connection removed on purpose stays removed")
+                assertEquals(null, localiser.latest("odo"))
                 val fed = system.component("odo_localise0")
                 val before = fed.latest("odo")
                 await("the new localiser's pose to reach odo_localise0") { fed.latest("odo") !== before }
