@@ -133,13 +133,14 @@ internal class Supervisor(
             val hosted = try { manager.children() } catch (e: RtcException) { emptyList() }
             hosted.any { it is ComponentNode && it.isSameComponent(node) }
         }
-        child.managers = host?.let { managersFrom(it.path.child(node.name), managers) }.orEmpty()
+        child.managers = host?.let { managersAbove(it.path.child(node.name)) }.orEmpty()
         if (host == null) log("$name: no manager hosts ${node.path}: it can be reset, not re-created")
     }
 
-    /** The managers above [path], nearest first, among [managers]. */
-    private fun managersFrom(path: RtcPath, managers: List<ManagerNode>): List<ManagerNode> =
-        generateSequence(path.parent) { it.parent }.mapNotNull { above -> managers.firstOrNull { it.path == above } }.toList()
+    /** The managers above [path] (a component below a manager, a slave below its master), nearest first. */
+    private suspend fun managersAbove(path: RtcPath): List<ManagerNode> =
+        generateSequence(path.parent) { it.parent }.takeWhile { it.names.isNotEmpty() }.toList()
+            .mapNotNull { above -> try { tree.node(above) as? ManagerNode } catch (e: RtcException) { null } }
 
     /** Records the connections of [child]'s port [port] that are not recorded yet ([only] that one, when given). */
     private suspend fun recordConnections(child: SupervisedChild, port: String, only: String? = null) {
@@ -276,8 +277,7 @@ internal class Supervisor(
         child.subscription?.cancel()
         child.node = node
         child.instanceName = node.snapshot().instanceName
-        val managers = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER)).toList().filterIsInstance<ManagerNode>()
-        child.managers = (managersFrom(created.path, managers) + child.managers).distinctBy { it.path }
+        child.managers = (managersAbove(created.path) + child.managers).distinctBy { it.path }
         log("$name: re-created ${old.path} as ${node.path}")
         engine.follow(old, node)
         watch(child)
