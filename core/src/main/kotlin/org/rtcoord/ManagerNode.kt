@@ -28,7 +28,15 @@ public class ManagerNode internal constructor(
         val hosted = async { core.remote.call(subject, "get_components") { ref.get_components() } }
         val slaveNodes = slaves.await().map { slave ->
             async {
-                val name = nameOf(core.remote.call(subject, "get_profile") { slave.get_profile() }.properties.toMap())
+                // A slave whose process died has no name to show: it is left out, not the whole listing.
+                val profile = try {
+                    core.remote.call(subject, "get_profile") { slave.get_profile() }
+                } catch (e: UnreachableException) {
+                    return@async null
+                } catch (e: TimedOutException) {
+                    return@async null
+                }
+                val name = nameOf(profile.properties.toMap())
                 previous.filterIsInstance<ManagerNode>().firstOrNull { it.name == name && it.ref._is_equivalent(slave) }
                     ?: ManagerNode(path.child(name), core, slave, null)
             }
@@ -41,7 +49,7 @@ public class ManagerNode internal constructor(
                     ?: ComponentNode(path.child(name), core, component)
             }
         }
-        slaveNodes.awaitAll() + componentNodes.awaitAll()
+        slaveNodes.awaitAll().filterNotNull() + componentNodes.awaitAll()
     }
 
     /** The manager's profile properties (`instance_name`, `pid`, ...). */

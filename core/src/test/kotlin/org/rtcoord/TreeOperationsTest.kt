@@ -165,6 +165,21 @@ class TreeOperationsTest {
     }
 
     @Test
+    fun `a slave whose process died is left out of its master's listing, and the master creates through the others`(): Unit = runBlocking {
+        val masterAddress = localisation.system.master!!.runtime.orb.corbaloc("manager")
+        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--type", "laser_localise", "--master", masterAddress).use { process ->
+            val master = tree.manager(path("manager.mgr"))
+            val remote = master.children().filterIsInstance<ManagerNode>().single { it.name != "manager_slave" }
+            assertEquals(listOf("hosted0.rtc"), remote.children().map { it.name })
+
+            process.kill()
+            master.refresh()
+            assertEquals(listOf("manager_slave"), master.children().filterIsInstance<ManagerNode>().map { it.name })
+            assertEquals("hosted0", master.create("laser_localise", "hosted0").snapshot().instanceName)
+        }
+    }
+
+    @Test
     fun `a dead registration becomes a zombie that can be unbound`(): Unit = runBlocking {
         FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:doomed0").use { process ->
             assertEquals("doomed0", tree.component(path("doomed0.rtc")).snapshot().instanceName)

@@ -6,8 +6,8 @@ import kotlin.time.Duration
 
 /**
  * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), mode machines
- * (`modes(...)`), name servers and how to watch. Evaluating a script only builds this model; a
- * [Coordinator] runs it.
+ * (`modes(...)`), supervisors (`supervise(...)`), name servers and how to watch. Evaluating a script
+ * only builds this model; a [Coordinator] runs it.
  *
  * @property args the arguments the script was started with.
  * @property host the tree configuration the host application runs the coordinator with.
@@ -17,6 +17,7 @@ public open class Coordination(public val args: List<String>, public val host: T
     internal val engine = Engine()
     internal val rules = mutableListOf<Rule<*>>()
     internal val timers = mutableListOf<Timer>()
+    internal val supervisions = mutableListOf<Supervision>()
     internal val nameServers = mutableListOf<String>()
     private val machineList = mutableListOf<ModeMachine>()
 
@@ -75,11 +76,19 @@ public open class Coordination(public val args: List<String>, public val host: T
         assemble(ModeBuilder(name, engine).apply(declare), machineList.map { it.name }).also { machineList += it }
 
     /**
-     * What the script declared, one line per rule and timer, then each machine's modes, indented by
-     * nesting: what `check` shows and tools can draw.
+     * Supervises [components], restarting them as [configure] says: `supervise(component("a.rtc"),
+     * component("b.rtc")) { strategy = oneForAll; maxRestarts = 3 within 60.seconds }` (see [Supervision]).
+     */
+    public fun supervise(vararg components: ComponentRef, configure: Supervision.() -> Unit = {}): Supervision =
+        Supervision(components.toList()).apply(configure).also { supervisions += it }
+
+    /**
+     * What the script declared, one line per rule, timer and supervisor, then each machine's modes,
+     * indented by nesting: what `check` shows and tools can draw.
      */
     public val description: List<String>
-        get() = rules.map { "on ${it.description}" } + timers.map { it.description } + machineList.flatMap { it.description }
+        get() = rules.map { "on ${it.description}" } + timers.map { it.description } + supervisions.map { it.description } +
+            machineList.flatMap { it.description }
 
     internal fun add(rule: Rule<*>) {
         rules += rule

@@ -19,10 +19,11 @@ import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 
 /**
- * Runs a [Coordination] against a live system: subscribes its rules, starts its timers and mode
- * machines, and runs their handlers, one structured-concurrency scope for all of it. A failing handler
- * is logged and counted and the coordinator keeps running; [close] cancels running handlers and
- * detaches every observer.
+ * Runs a [Coordination] against a live system: subscribes its rules, starts its timers, mode machines
+ * and supervisors, and runs their handlers, one structured-concurrency scope for all of it. A failing
+ * handler is logged and counted and the coordinator keeps running; [close] cancels running handlers and
+ * detaches every observer. Rules and transitions on a component a supervisor re-creates follow it to
+ * the new component.
  *
  * @param options how rules watch, overriding the script's own choice when given.
  * @param log receives one line per rule firing, action, mode transition and failure.
@@ -36,7 +37,8 @@ public class Coordinator(
     private val scope = CoroutineScope(
         SupervisorJob() + CoroutineName("coordinator") + CoroutineExceptionHandler { _, e -> failed("timer", e) },
     )
-    private val subscriptions = CopyOnWriteArrayList<Subscription>()
+    private val watches = CopyOnWriteArrayList<Watch>()
+    private val supervisors = CopyOnWriteArrayList<Supervisor>()
     private val failureCount = AtomicInteger()
 
     private val interpreters = coordination.machines.map { machine ->
@@ -54,16 +56,21 @@ public class Coordinator(
         ?: throw IllegalArgumentException("no machine named '$name' (machines: ${machines.joinToString { it.name }.ifEmpty { "none" }})")
 
     /**
-     * Resolves every rule's target and subscribes it; fails (with nothing left running) when a target
-     * does not exist or is ambiguous.
+     * Resolves every rule's target and subscribes it, and starts the supervisors; fails (with nothing
+     * left running) when a target does not exist or is ambiguous.
      */
     public suspend fun start() {
         coordination.engine.tree = tree
         coordination.engine.log = log
+        coordination.engine.followed = ::follow
         coordination.nameServers.forEach(tree::addNameServer)
         try {
-            coordination.rules.forEach { subscribe(it) }
+            coordination.rules.forEach { subscribe(it, targets(it.target)) }
             interpreters.forEach { watch(it) }
+            coordination.supervisions.forEach { supervision ->
+                val watching = options ?: coordination.watching
+                supervisors += Supervisor(supervision, tree, coordination.engine, watching, scope, log) { escalated(supervision, it) }.also { it.start() }
+            }
         } catch (e: Exception) {
             close()
             throw e
@@ -87,13 +94,29 @@ public class Coordinator(
         for (pattern in machine.machine.eventPatterns) {
             for (node in targets(pattern.target)) groups.getOrPut(node.path.toString() to pattern.type) { node to mutableListOf() }.second += pattern
         }
-        for ((node, patterns) in groups.values) subscriptions += patterns.first().watch(tree, node, watching) { machine.offer(it, patterns) }
+        for ((node, patterns) in groups.values) watch(machine, patterns, node)
     }
 
-    private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>) {
+    private suspend fun watch(machine: MachineInterpreter, patterns: List<EventPattern<*>>, node: Node) {
         val watching = options ?: coordination.watching
-        for (node in targets(rule.target)) {
-            subscriptions += tree.on(node, rule.type, watching) { event -> fire(rule, event) }
+        val subscription = patterns.first().watch(tree, node, watching) { machine.offer(it, patterns) }
+        watches += Watch(node, subscription) { new -> watch(machine, patterns, new) }
+    }
+
+    private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>, nodes: List<Node>) {
+        val watching = options ?: coordination.watching
+        for (node in nodes) {
+            watches += Watch(node, tree.on(node, rule.type, watching) { event -> fire(rule, event) }) { new -> subscribe(rule, listOf(new)) }
+        }
+    }
+
+    /** Rules and transitions watching [old], a component since re-created as [new], watch [new] from now on. */
+    private suspend fun follow(old: ComponentNode, new: ComponentNode) {
+        for (watch in watches.filter { (it.node as? ComponentNode)?.isSameComponent(old) == true }) {
+            // Whoever removes it moves it: a supervisor and a handler may follow the same component at once.
+            if (!watches.remove(watch)) continue
+            watch.subscription.cancel()
+            watch.resubscribe(new)
         }
     }
 
@@ -102,6 +125,12 @@ public class Coordinator(
         is Target.Port -> listOf(target.ref.component.node().also { it.port(target.ref.name) })
         is Target.Manager -> listOf(coordination.engine.manager(target.ref))
         is Target.Context -> listOf(tree.node(target.ref.path))
+    }
+
+    private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
+        for (handler in supervision.escalationHandlers) {
+            run("escalation handler of ${escalation.supervisor}") { Reaction(coordination.engine, null).handler(escalation) }
+        }
     }
 
     private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E) {
@@ -129,10 +158,14 @@ public class Coordinator(
 
     /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
     override fun close() {
-        subscriptions.forEach(Subscription::cancel)
-        subscriptions.clear()
+        supervisors.forEach(Supervisor::close)
+        watches.forEach { it.subscription.cancel() }
+        watches.clear()
         scope.cancel()
     }
+
+    /** A rule's or a machine's subscription to one of its target nodes, and how to make it again on another. */
+    private class Watch(val node: Node, val subscription: Subscription, val resubscribe: suspend (Node) -> Unit)
 
     private companion object {
         fun describe(event: RtcEvent): String = "${event.javaClass.simpleName} at ${(event.source as? ComponentNode)?.path ?: event.path}"

@@ -31,6 +31,15 @@ internal class Engine {
 
     fun reference(node: ComponentNode): ComponentRef = ComponentRef(node.path.toString(), this).also { resolved[node.path.toString()] = node }
 
+    /** Told when references move to a re-created component, so that the rules watching it move too. */
+    var followed: suspend (old: ComponentNode, new: ComponentNode) -> Unit = { _, _ -> }
+
+    /** References that resolved to [old], a component since re-created as [new], resolve to [new] from now on. */
+    suspend fun follow(old: ComponentNode, new: ComponentNode) {
+        resolved.replaceAll { _, node -> if (node.isSameComponent(old)) new else node }
+        followed(old, new)
+    }
+
     fun portOf(port: Any): PortRef = when (port) {
         is PortRef -> port
         is String -> portRef(port)
@@ -79,7 +88,7 @@ internal class Engine {
 
     /**
      * Runs [action] on [selector]'s component, after [before]; when the component stopped answering
-     * (re-created, moved), looks it up again and, if that finds another one, runs [action] on it after [again].
+     * (re-created, moved) and another answers to the name now, runs [action] on that one, after [again].
      */
     suspend fun <T> withComponent(
         selector: String,
@@ -92,12 +101,25 @@ internal class Engine {
         return try {
             action(node)
         } catch (e: UnreachableException) {
-            resolved.remove(selector)
-            node.path.parent?.let { tree.refresh(it, depth = 0) }
-            val other = component(selector).takeUnless { it.isSameComponent(node) } ?: throw e
+            val other = successor(selector, node) ?: throw e
             again(other)
             action(other)
         }
+    }
+
+    /**
+     * The component that replaced [old], which stopped answering: the one bound at its path now (its
+     * naming context read again), else the one [selector] finds now; references and rules follow it.
+     */
+    private suspend fun successor(selector: String, old: ComponentNode): ComponentNode? {
+        val parent = old.path.parent ?: return null
+        tree.refresh(parent, depth = 0)
+        val atPath = try { tree.node(old.path) as? ComponentNode } catch (e: NotFoundException) { null }
+        val found = atPath?.takeUnless { it.isSameComponent(old) }
+            ?: resolved.remove(selector).let { component(selector) }.takeUnless { it.isSameComponent(old) }
+            ?: return null
+        follow(old, found)
+        return found
     }
 
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {

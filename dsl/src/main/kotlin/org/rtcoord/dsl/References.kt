@@ -25,8 +25,8 @@ public class ComponentRef internal constructor(
     /** The component's path, as resolved now. */
     public suspend fun path(): RtcPath = node().path
 
-    /** Its state in its default execution context, read now. */
-    public suspend fun state(): LifeCycle = node().state()
+    /** Its state in its default execution context, read now (from the component answering to the name now). */
+    public suspend fun state(): LifeCycle = engine.withComponent(selector) { it.state() }
 
     /** What was last read of it. */
     public suspend fun snapshot(): ComponentSnapshot = node().snapshot()

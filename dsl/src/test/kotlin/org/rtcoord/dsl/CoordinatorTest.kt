@@ -16,6 +16,7 @@ import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
 import java.util.Collections
+import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
 
 /** The engine behind the DSL, driven by coordinations written directly in Kotlin. */
@@ -92,6 +93,29 @@ class CoordinatorTest {
                 listOf(system.component("twin0x"), other.component("twin0")).forEach { it.activate() }
                 await("both matches to report") { seen == setOf("twin0x.rtc", "twin0.rtc") }
             }
+        }
+    }
+
+    @Test
+    fun `a reference and the rules on it follow a component re-created at its path`(): Unit = runBlocking {
+        val reactions = AtomicInteger()
+        lateinit var gyro: ComponentRef
+        coordinator {
+            gyro = component("gyro0")
+            on(gyro).state(ERROR) { reactions.incrementAndGet() }
+        }.use { coordinator ->
+            coordinator.start()
+            val host = "/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}"
+            tree.component("$host/gyro0.rtc").exit()
+            await("gyro0 to be gone") { system.runtime.components.none { it.instanceName == "gyro0" } }
+            RtcTree.create(config).use { other -> other.manager("$host/manager.mgr").create("gyro", "gyro0") }
+            val new = system.component("gyro0")
+
+            assertEquals(org.rtcoord.LifeCycle.INACTIVE, gyro.state(), "the state of the new gyro0")
+            await("the rule to watch the new gyro0") { new.observerIds.size == 1 }
+            new.activate()
+            new.fail()
+            await("the rule to fire on the new gyro0") { reactions.get() == 1 }
         }
     }
 

@@ -42,6 +42,37 @@ class ScriptHostTest {
     }
 
     @Test
+    fun `a script declares supervisors, and a bad one is one line naming the component and the reason`(): Unit = runBlocking {
+        val file = script(
+            "supervised.coord.kts",
+            """
+            val logger = component("logger0.rtc")
+            supervise(component("laser0.rtc"), component("laser_localise0.rtc"), logger) {
+                strategy = restForOne
+                maxRestarts = 5 within 30.seconds
+                backoff = exponential(1.seconds, max = 30.seconds)
+                child(logger, restart = temporary)
+                onEscalation { escalation -> log(escalation.reason) }
+            }
+            """,
+        )
+        assertEquals(
+            listOf("supervise laser0.rtc, laser_localise0.rtc, logger0.rtc: restForOne, at most 5 within 30s, back-off exponential from 1s to 30s, permanent, logger0.rtc temporary"),
+            host.load(file).description,
+        )
+        val pattern = script("pattern.coord.kts", "supervise(component(\"laser0.rtc\"), component(\"*_localise0\"))")
+        assertEquals(
+            listOf("$pattern:1:1: IllegalArgumentException: cannot supervise '*_localise0': it is a pattern; name each component"),
+            assertThrows(ScriptFailure::class.java) { runBlocking { host.load(pattern) } }.problems,
+        )
+        val stranger = script("stranger.coord.kts", "supervise(component(\"laser0.rtc\")) { child(\"gyro0\", restart = transient) }")
+        assertEquals(
+            listOf("$stranger:1:1: IllegalArgumentException: 'gyro0' is not supervised here (supervised: laser0.rtc)"),
+            assertThrows(ScriptFailure::class.java) { runBlocking { host.load(stranger) } }.problems,
+        )
+    }
+
+    @Test
     fun `compile errors come as file, line, column and message`(): Unit = runBlocking {
         val file = script("broken.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) {\n    resett()\n}\n")
         val errors = host.check(file)

@@ -8,8 +8,10 @@ import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.EnumSource
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle
+import org.rtcoord.RtcPath
 import org.rtcoord.WatchMode
 import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.awaitValue
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -100,6 +102,37 @@ class ExamplesTest {
                 listOf("start", "laser0.rtc enters ERROR", "done", "laser0.rtc enters ACTIVE"),
                 machine.history.value.map { it.trigger },
             )
+            assertEquals(0, example.coordinator.failures)
+        }
+    }
+
+    @Test
+    fun `supervision - a laser that exits is re-created and reconnected, the localiser restarted after it, and past the limit the localiser stops`(): Unit = runBlocking {
+        ExampleSystem("supervision.coord.kts", Mode.PUSH.options, args = listOf("1")).use { example ->
+            example.coordinator.start()
+            val (odometry, exited, localiser) = listOf("odometry0", "laser0", "laser_localise0").map(example.system::component)
+            example.witness.component(example.path("laser0.rtc")).exit()
+
+            val laser = awaitValue("laser0 to be re-created and active") {
+                example.system.runtime.components.firstOrNull { it.instanceName == "laser0" && it !== exited && it.state == RTC.LifeCycleState.ACTIVE_STATE }
+            }
+            await("the localiser to be restarted after it") { example.log.any { it.endsWith("activate ${example.path("laser_localise0.rtc")}") } }
+            val steps = example.log.filter { ": stop " in it || ": start " in it }.map { it.substringAfter("): ").substringBefore(" /") + " " + it.substringAfterLast('/') }
+            assertEquals(listOf("stop laser_localise0.rtc", "start laser0.rtc", "start laser_localise0.rtc"), steps)
+            val before = localiser.latest("laser")
+            await("the new laser's data to reach the localiser") { localiser.latest("laser") !== before }
+            example.witness.refresh(RtcPath.parse(example.path("laser0.rtc")).parent!!, depth = 0)
+            val connections = example.witness.port(example.path("laser0.rtc:laser")).connections()
+            assertEquals(listOf(example.path("laser_localise0.rtc:laser")), connections.map { it.ports.last().path.toString() })
+            assertEquals(1, example.witness.port(example.path("laser_localise0.rtc:laser")).connections().size, "no stale connector left")
+            assertEquals(RTC.LifeCycleState.ACTIVE_STATE, odometry.state)
+
+            laser.fail()
+            await("the supervisor to give up and stop the localiser") {
+                example.log.any { it.startsWith("giving up: ${example.path("laser0.rtc")} entered ERROR after 1 restarts") } &&
+                    localiser.state == RTC.LifeCycleState.INACTIVE_STATE
+            }
+            assertEquals(RTC.LifeCycleState.ERROR_STATE, laser.state)
             assertEquals(0, example.coordinator.failures)
         }
     }

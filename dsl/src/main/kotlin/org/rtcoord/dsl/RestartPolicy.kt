@@ -1,0 +1,41 @@
+package org.rtcoord.dsl
+
+import kotlin.time.Duration
+
+/**
+ * A supervisor's restart decisions, apart from any I/O so they can be checked on virtual time: the
+ * restart intensity over a sliding window, and the back-off of each component's consecutive restarts.
+ * [now] is a monotonic clock.
+ */
+internal class RestartPolicy(
+    private val intensity: RestartIntensity,
+    private val backoff: Backoff,
+    private val now: () -> Duration,
+) {
+    /** What to do about a failure. */
+    sealed class Decision {
+        /** Restart after [wait]: the [attempt]th consecutive restart of that component. */
+        data class Restart(val wait: Duration, val attempt: Int) : Decision()
+
+        /** Give up: [restarts] restarts were made within the period already. */
+        data class Escalate(val restarts: Int) : Decision()
+    }
+
+    /** When each restart within the window was made (or is scheduled to be made). */
+    private val restarts = mutableListOf<Duration>()
+
+    /** Per component: how many consecutive restarts, and when the last one was made. */
+    private val runs = HashMap<Int, Pair<Int, Duration>>()
+
+    /** Decides about a failure of component [child] (its index in the supervisor) happening now. */
+    fun decide(child: Int): Decision {
+        val time = now()
+        restarts.removeAll { time - it >= intensity.period }
+        if (restarts.size >= intensity.maxRestarts) return Decision.Escalate(restarts.size)
+        val attempt = runs[child]?.takeIf { (_, last) -> time - last < intensity.period }?.first?.plus(1) ?: 1
+        val wait = backoff.delay(attempt)
+        restarts += time + wait
+        runs[child] = attempt to time + wait
+        return Decision.Restart(wait, attempt)
+    }
+}

@@ -1,0 +1,36 @@
+package org.rtcoord.dsl
+
+import org.rtcoord.ComponentNode
+import org.rtcoord.ManagerNode
+import org.rtcoord.Subscription
+
+/**
+ * What a supervisor knows of one of its components: where it is now ([node], replaced when it is
+ * re-created), what to re-create it from, and the configuration to restore. Changed only under the
+ * supervisor's lock.
+ *
+ * @property index its place in the declared order.
+ */
+internal class SupervisedChild(val index: Int, val ref: ComponentRef, val restart: RestartType) {
+    lateinit var node: ComponentNode
+
+    /** The supervisor's watch on [node]. */
+    var subscription: Subscription? = null
+
+    /** The managers to re-create it through: the one hosting it first, then that one's masters. */
+    var managers: List<ManagerNode> = emptyList()
+
+    lateinit var typeName: String
+    lateinit var instanceName: String
+
+    /** The active configuration set and its values, as last seen. */
+    var configuration: RecordedConfiguration? = null
+
+    /** Set once the supervisor let it go (a temporary or transient component that ended). */
+    var left: Boolean = false
+
+    override fun toString(): String = node.path.toString()
+}
+
+/** A configuration set id and its parameter values. */
+internal data class RecordedConfiguration(val set: String, val values: Map<String, String>)
