@@ -29,7 +29,13 @@ public class TreeConfig(
     init {
         require(callTimeout.isPositive()) { "callTimeout must be positive, was $callTimeout" }
         require(concurrency > 0) { "concurrency must be positive, was $concurrency" }
-        val problem = listenAddress?.let(ListenAddress::problem)
+        val problem = listenAddress?.let(::listenAddressProblem)
         require(problem == null) { "listen address: $problem" }
+    }
+
+    public companion object {
+        /** Why a tree's ORB could not listen on [address], or null when it can: one of this host's addresses, or `0.0.0.0`. */
+        @JvmStatic
+        public fun listenAddressProblem(address: String): String? = ListenAddress.problem(address)
     }
 }

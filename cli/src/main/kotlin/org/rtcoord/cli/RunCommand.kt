@@ -9,7 +9,6 @@ import com.github.ajalt.clikt.parameters.types.path
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.EventOptions
-import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptFailure
@@ -36,7 +35,7 @@ class RunCommand : TreeCommand("run") {
 
     override suspend fun execute() {
         val coordination = try {
-            ScriptHost().load(script, arguments, TreeConfig(session.nameServers, session.timeout))
+            ScriptHost().load(script, arguments, session.treeConfig())
         } catch (e: ScriptFailure) {
             e.problems.forEach { echo(it, err = true) }
             throw ProgramResult(1)
