@@ -7,9 +7,11 @@ import _SDOPackage.NameValue
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.StateFlow
 import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.ParameterConstraint
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.name
 import org.rtcoord.internal.orFail
+import org.rtcoord.internal.toMap
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
@@ -93,21 +95,39 @@ public class ComponentNode internal constructor(
     }
 
     /**
-     * Sets [parameter] to [value] in configuration set [set] (the active one by default). The component
-     * rejects values it cannot use with a [BadParameterException].
+     * Sets [parameter] to [value] in configuration set [set] (the active one by default); see [setParameters].
      */
-    public suspend fun setParameter(parameter: String, value: String, set: String? = null) {
+    public suspend fun setParameter(parameter: String, value: String, set: String? = null): Unit = setParameters(mapOf(parameter to value), set)
+
+    /**
+     * Sets several parameters of configuration set [set] (the active one by default) in one call, so
+     * either all change or none does. Checked first, before anything changes: the set and every parameter
+     * must exist, and each value must meet the constraint the component declares for it in its
+     * `__constraints__` set (`0<x<10`, `(slow,fast)`). The component itself may still refuse a value it
+     * cannot use: a [BadParameterException] then too.
+     */
+    public suspend fun setParameters(values: Map<String, String>, set: String? = null) {
+        require(values.isNotEmpty()) { "no parameters to set" }
+        val operation = "set ${values.keys.joinToString()}"
         val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
+        val sets = core.remote.call(subject, "get_configuration_sets") { configuration.get_configuration_sets() }
         val target = set ?: core.remote.call(subject, "get_active_configuration_set") { configuration.get_active_configuration_set().id }
-        val current = core.remote.call(subject, "get_configuration_set") { configuration.get_configuration_set(target) }
-        if (current.configuration_data.none { it.name == parameter }) {
-            throw NotFoundException("$subject", "no parameter '$parameter' in configuration set '$target'")
+        val current = sets.firstOrNull { it.id == target }
+            ?: throw NotFoundException(subject, "no configuration set '$target' (sets: ${sets.map { it.id }.sorted().joinToString()})")
+        val parameters = current.configuration_data.map { it.name }
+        values.keys.firstOrNull { it !in parameters }?.let { missing ->
+            throw NotFoundException(subject, "no parameter '$missing' in configuration set '$target' (parameters: ${parameters.sorted().joinToString()})")
         }
-        val values = current.configuration_data.map { if (it.name == parameter) stringValue(parameter, value) else it }
-        val accepted = core.remote.call(subject, "set_configuration_set_values") {
-            configuration.set_configuration_set_values(ConfigurationSet(target, current.description, values.toTypedArray()))
+        val constraints = sets.firstOrNull { it.id == CONSTRAINTS }?.configuration_data?.toMap().orEmpty()
+        for ((name, value) in values) {
+            val violation = constraints[name]?.let { ParameterConstraint.violation(it, value) } ?: continue
+            throw BadParameterException(subject, "set $name", violation)
         }
-        if (!accepted) throw BadParameterException(subject, "set $parameter", "'$value' refused in set '$target'")
+        val merged = current.configuration_data.map { entry -> values[entry.name]?.let { stringValue(entry.name, it) } ?: entry }
+        val accepted = core.remote.call(subject, operation) {
+            configuration.set_configuration_set_values(ConfigurationSet(target, current.description, merged.toTypedArray()))
+        }
+        if (!accepted) throw BadParameterException(subject, operation, "refused in set '$target'")
         refresh()
     }
 
@@ -184,5 +204,10 @@ public class ComponentNode internal constructor(
             delay(pause)
             pause = (pause * 2).coerceAtMost(20.milliseconds)
         }
+    }
+
+    private companion object {
+        /** The hidden configuration set where a component declares its parameters' constraints. */
+        const val CONSTRAINTS = "__constraints__"
     }
 }

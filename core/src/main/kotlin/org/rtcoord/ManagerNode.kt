@@ -1,5 +1,6 @@
 package org.rtcoord
 
+import RTC.ReturnCode_t
 import RTM.Manager
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
@@ -68,6 +69,9 @@ public class ManagerNode internal constructor(
         if (factories.isNotEmpty() && type !in factories) {
             throw NotFoundException(subject, "no factory for component type '$type' (types: ${factories.sorted().joinToString()})")
         }
+        if (instanceName != null && instanceName in hostedInstanceNames()) {
+            throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
+        }
         val settings = buildList {
             instanceName?.let { add("instance_name=$it") }
             options.filterKeys { it != "manager_name" }.forEach { (key, value) -> add("$key=$value") }
@@ -97,12 +101,24 @@ public class ManagerNode internal constructor(
     }
 
     /** Loads module [path] (calling [initFunction] in it, if the manager needs one). */
-    public suspend fun loadModule(path: String, initFunction: String = ""): Unit =
-        core.remote.call(subject, "load_module") { ref.load_module(path, initFunction) }.orFail(subject, "load module '$path'")
+    public suspend fun loadModule(path: String, initFunction: String = "") {
+        val code = core.remote.call(subject, "load_module") { ref.load_module(path, initFunction) }
+        if (code == ReturnCode_t.BAD_PARAMETER) {
+            val loadable = loadableModules().mapNotNull { it["module_file_name"] ?: it["module_file_path"] }.sorted()
+            throw BadParameterException(subject, "load module '$path'", "BAD_PARAMETER (loadable: ${loadable.joinToString().ifEmpty { "none" }})")
+        }
+        code.orFail(subject, "load module '$path'")
+    }
 
     /** Unloads module [path]. */
-    public suspend fun unloadModule(path: String): Unit =
-        core.remote.call(subject, "unload_module") { ref.unload_module(path) }.orFail(subject, "unload module '$path'")
+    public suspend fun unloadModule(path: String) {
+        val code = core.remote.call(subject, "unload_module") { ref.unload_module(path) }
+        if (code == ReturnCode_t.BAD_PARAMETER) {
+            val loaded = loadedModules().mapNotNull { it["file_path"] ?: it["module_file_path"] }.sorted()
+            throw BadParameterException(subject, "unload module '$path'", "BAD_PARAMETER (loaded: ${loaded.joinToString().ifEmpty { "none" }})")
+        }
+        code.orFail(subject, "unload module '$path'")
+    }
 
     /** Modules the manager could load, as their profile properties. */
     public suspend fun loadableModules(): List<Map<String, String>> =
@@ -115,6 +131,14 @@ public class ManagerNode internal constructor(
     /** The component types the manager can create, as their factory profiles. */
     public suspend fun factories(): List<Map<String, String>> =
         core.remote.call(subject, "get_factory_profiles") { ref.get_factory_profiles() }.map { it.properties.toMap() }
+
+    /** The instance names of the components this manager and its slaves host, read now. */
+    private suspend fun hostedInstanceNames(): Set<String> = coroutineScope {
+        val slaves = core.remote.call(subject, "get_slave_managers") { ref.get_slave_managers() }
+        (listOf(ref) + slaves).map { manager ->
+            async { core.remote.call(subject, "get_component_profiles") { manager.get_component_profiles() }.map { it.instance_name } }
+        }.awaitAll().flatten().toSet()
+    }
 
     private suspend fun hostOf(instanceName: String): ManagerNode? {
         val hosts = listOf(this) + children().filterIsInstance<ManagerNode>()

@@ -127,6 +127,8 @@ public class Port internal constructor(
     }
 
     private fun checkCompatible(ports: List<Port>, snapshots: List<PortSnapshot>, properties: Map<String, String>) {
+        ports.withIndex().firstOrNull { (index, port) -> ports.take(index).any { it.name == port.name && it.component.isSameComponent(port.component) } }
+            ?.let { (_, port) -> throw BadParameterException(subject, "connect", "${port.path} is given twice: a port cannot connect to itself") }
         val data = snapshots.map { it.kind == PortKind.DATA_IN || it.kind == PortKind.DATA_OUT }
         if (data.distinct().size > 1) throw BadParameterException(subject, "connect", "cannot connect a data port to a service port")
         if (!data.first()) return

@@ -20,9 +20,12 @@ public class BadPathException(path: String, public val position: Int, reason: St
 /** Nothing exists at the path or under the name. */
 public class NotFoundException(subject: String, reason: String = "not found") : RtcException(subject, reason)
 
-/** A name matches several different objects; [candidates] are their paths. */
-public class AmbiguousNameException(name: String, public val candidates: List<String>) :
-    RtcException(name, "ambiguous: matches ${candidates.joinToString(", ")}")
+/** A name matches several different objects; [candidates] are their paths, sorted. */
+public class AmbiguousNameException(name: String, candidates: List<String>) :
+    RtcException(name, "ambiguous: matches ${candidates.sorted().joinToString(", ")}") {
+    /** The paths of the objects the name matches, sorted. */
+    public val candidates: List<String> = candidates.sorted()
+}
 
 /** The object exists but is not of the kind the operation needs. */
 public class WrongKindException(subject: String, public val expected: String, public val actual: String) :

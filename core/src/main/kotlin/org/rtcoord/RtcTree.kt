@@ -21,7 +21,7 @@ import java.util.concurrent.CopyOnWriteArrayList
  * to release its ORB (unless the host application supplied it).
  */
 public class RtcTree private constructor(public val config: TreeConfig) : AutoCloseable {
-    internal val core = TreeCore(config)
+    internal val core = TreeCore(config) { servers.firstOrNull()?.address?.substringBeforeLast(':') }
     private val servers = CopyOnWriteArrayList<NameServerNode>()
 
     /** The root node; its children are the name servers. */

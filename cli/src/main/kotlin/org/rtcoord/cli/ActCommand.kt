@@ -6,7 +6,7 @@ import org.rtcoord.ContextSelector
 import org.rtcoord.LifeCycle
 
 /** `rtcoord act`: rtact that checks every path first and reports the component's answer. */
-class ActCommand : LifecycleCommand("act", "activate", LifeCycle.INACTIVE, LifeCycle.ACTIVE) {
+class ActCommand : LifecycleCommand("act", "activate", "activated", LifeCycle.INACTIVE, LifeCycle.ACTIVE) {
     override fun help(context: Context): String =
         "Activate components and wait until they are Active. Every PATH is checked first (a live component, " +
             "Inactive or already Active): if one is not, nothing changes."

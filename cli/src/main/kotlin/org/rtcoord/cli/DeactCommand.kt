@@ -6,7 +6,7 @@ import org.rtcoord.ContextSelector
 import org.rtcoord.LifeCycle
 
 /** `rtcoord deact`: rtdeact that checks every path first and reports the component's answer. */
-class DeactCommand : LifecycleCommand("deact", "deactivate", LifeCycle.ACTIVE, LifeCycle.INACTIVE) {
+class DeactCommand : LifecycleCommand("deact", "deactivate", "deactivated", LifeCycle.ACTIVE, LifeCycle.INACTIVE) {
     override fun help(context: Context): String =
         "Deactivate components and wait until they are Inactive. Every PATH is checked first (a live component, " +
             "Active or already Inactive): if one is not, nothing changes."

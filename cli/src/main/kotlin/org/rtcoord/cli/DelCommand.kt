@@ -23,7 +23,7 @@ class DelCommand : TreeCommand("del") {
 
     override suspend fun execute() {
         val zombies = paths.map { zombie(it) }
-        zombies.forEach { it.unbind() }
+        eachInTurn(zombies, "unbound", { it.path.toString() }) { it.unbind() }
     }
 
     /** The registration at [text], if it is dead: its context is read again so that death is current. */

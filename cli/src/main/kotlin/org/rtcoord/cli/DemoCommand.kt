@@ -7,7 +7,6 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcTree
-import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.fixtures.FixtureRuntime
@@ -39,7 +38,7 @@ class DemoCommand : TreeCommand("demo") {
         echo("Starting an embedded naming service and the paper's localisation system...")
         NamingService.start().use { naming ->
             Scenarios.localisation(naming.corbaloc).use { system ->
-                RtcTree.create(TreeConfig(listOf(naming.address), session.timeout)).use { tree ->
+                RtcTree.create(session.treeConfig(listOf(naming.address))).use { tree ->
                     demonstrate(naming, system, tree)
                 }
             }
@@ -53,7 +52,7 @@ class DemoCommand : TreeCommand("demo") {
 
         val script = script()
         echo("\nCompiling examples/localisation.coord.kts (cached after the first run)...")
-        val coordination = ScriptHost().load(script, host = TreeConfig(listOf(naming.address), session.timeout))
+        val coordination = ScriptHost().load(script, host = session.treeConfig(listOf(naming.address)))
         Coordinator(tree, coordination, EventOptions()) { echo("${now()}   coordinator: $it") }.use { coordinator ->
             coordinator.start()
             echo("${now()} coordinator running: ${coordination.description.joinToString("; ")}")

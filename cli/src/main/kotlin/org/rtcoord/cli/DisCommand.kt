@@ -40,6 +40,6 @@ class DisCommand : TreeCommand("dis") {
                 .ifEmpty { throw NotFoundException(port.path.toString(), "no connector '$id' (connectors: ${connectors.joinToString().ifEmpty { "none" }})") }
             else -> connectors
         }
-        doomed.forEach { port.disconnect(it) }
+        eachInTurn(doomed, "disconnected", { "connector '$it'" }) { port.disconnect(it) }
     }
 }

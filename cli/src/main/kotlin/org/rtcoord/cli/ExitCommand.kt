@@ -18,6 +18,6 @@ class ExitCommand : TreeCommand("exit") {
 
     override suspend fun execute() {
         val components = paths.map { text -> component(text).also { it.refresh() } }
-        components.forEach { it.exit() }
+        eachInTurn(components, "exited", { it.path.toString() }) { it.exit() }
     }
 }

@@ -20,12 +20,15 @@ import org.rtcoord.RtcException
  * A lifecycle transition of several components (`act`, `deact`, `reset`), all or nothing as far as
  * checking goes: every path must be a live component, with the chosen execution context, in the state
  * the transition starts from (or already in the one it leads to), before any component is changed.
- * Each transition then waits until the state is reached.
+ * Each transition then waits until the state is reached; if one fails, the error says which components
+ * were changed before it and which were not attempted.
  */
 abstract class LifecycleCommand(
     name: String,
     /** The operation's name in messages: `activate`, `deactivate`, `reset`. */
     private val operation: String,
+    /** What a component the operation succeeded on is, in messages: `activated`, `deactivated`, `reset`. */
+    private val done: String,
     private val from: LifeCycle,
     private val to: LifeCycle,
 ) : TreeCommand(name) {
@@ -43,7 +46,7 @@ abstract class LifecycleCommand(
 
     override suspend fun execute() {
         val pending = paths.map { checked(it) }.filter { (_, state) -> state != to }.map { (component, _) -> component }
-        pending.forEach { it.transition(context) }
+        eachInTurn(pending, done, { it.path.toString() }) { it.transition(context) }
     }
 
     /** The component at [text] and its state now, if the transition can start from it. */

@@ -6,7 +6,7 @@ import org.rtcoord.ContextSelector
 import org.rtcoord.LifeCycle
 
 /** `rtcoord reset`: rtreset that checks every path first and reports the component's answer. */
-class ResetCommand : LifecycleCommand("reset", "reset", LifeCycle.ERROR, LifeCycle.INACTIVE) {
+class ResetCommand : LifecycleCommand("reset", "reset", "reset", LifeCycle.ERROR, LifeCycle.INACTIVE) {
     override fun help(context: Context): String =
         "Reset components from Error and wait until they are Inactive. Every PATH is checked first (a live component, " +
             "in Error or already Inactive): if one is not, nothing changes."

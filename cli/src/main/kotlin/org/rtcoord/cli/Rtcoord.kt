@@ -15,6 +15,7 @@ import com.github.ajalt.clikt.parameters.options.versionOption
 import com.github.ajalt.mordant.terminal.Terminal
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
+import org.rtcoord.TreeConfig
 import java.util.Properties
 import kotlin.time.Duration.Companion.seconds
 
@@ -56,6 +57,13 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
         help = "How long any one call to the system may take, e.g. 3s or 500ms.",
     ).duration().default(3.seconds)
 
+    private val listen by option(
+        "--listen",
+        metavar = "ADDRESS",
+        help = "The one address to listen on for components calling back (watch, run, demo). Default: the address this " +
+            "host uses to reach the first name server, loopback for a local one. 0.0.0.0 listens on every interface.",
+    ).convert { address -> TreeConfig.listenAddressProblem(address)?.let { fail(it) } ?: address }
+
     private val json by option("--json", help = "Machine-readable output (JSON) from every listing command.").flag()
 
     private val verbose by option("-v", "--verbose", help = "Turn JacORB's logging on and show the stack trace of an error.").flag()
@@ -71,6 +79,7 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
             verbose = verbose,
             quiet = quiet,
             workingDirectory = workingDirectoryFromEnvironment(),
+            listenAddress = listen,
         )
         currentContext.findOrSetObject { currentContext.registerCloseable(session) }
     }

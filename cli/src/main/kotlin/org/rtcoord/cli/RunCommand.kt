@@ -1,7 +1,6 @@
 package org.rtcoord.cli
 
 import com.github.ajalt.clikt.core.Context
-import com.github.ajalt.clikt.core.ProgramResult
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.options.option
@@ -9,7 +8,7 @@ import com.github.ajalt.clikt.parameters.types.path
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.EventOptions
-import org.rtcoord.TreeConfig
+import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptFailure
@@ -36,16 +35,27 @@ class RunCommand : TreeCommand("run") {
 
     override suspend fun execute() {
         val coordination = try {
-            ScriptHost().load(script, arguments, TreeConfig(session.nameServers, session.timeout))
+            ScriptHost().load(script, arguments, session.treeConfig())
         } catch (e: ScriptFailure) {
-            e.problems.forEach { echo(it, err = true) }
-            throw ProgramResult(1)
+            // Each problem (file:line:col: message) is an error line of its own.
+            e.problems.dropLast(1).forEach { echo("rtcoord: $it", err = true) }
+            fail(e.problems.last(), e)
         }
         val options = poll?.let { EventOptions(WatchMode.POLL, pollPeriod = it) }
         val coordinator = Coordinator(tree, coordination, options) { echo("${LocalTime.now().format(TIME)} $it") }
+<<<<<<< HEAD
         coordinator.start()
         confirm("${LocalTime.now().format(TIME)} coordinating:")
         coordination.description.forEach { confirm("  $it") }
+=======
+        try {
+            coordinator.start()
+        } catch (e: RtcException) {
+            // A rule's target that does not exist, is ambiguous or is of the wrong kind: nothing was started.
+            fail("$script: ${explain(e)}", e)
+        }
+        confirm("${LocalTime.now().format(TIME)} coordinating with ${coordination.description.size} rules and timers: ${coordination.description.joinToString("; ")}")
+>>>>>>> net
 
         val stopped = CompletableDeferred<Unit>()
         // On SIGINT/SIGTERM the JVM runs this before exiting: detach observers while the ORB still works.

@@ -22,8 +22,13 @@ class Session(
     val quiet: Boolean,
     /** Where relative paths start, or null when they are not allowed. */
     val workingDirectory: RtcPath?,
+    /** The one address the ORB listens on, or null for the one that reaches the first name server. */
+    val listenAddress: String? = null,
 ) : AutoCloseable {
-    private val lazyTree = lazy { RtcTree.create(TreeConfig(nameServers = nameServers, callTimeout = timeout)) }
+    private val lazyTree = lazy { RtcTree.create(treeConfig()) }
+
+    /** A tree's configuration for [servers], with the run's deadline and listen address. */
+    fun treeConfig(servers: List<String> = nameServers): TreeConfig = TreeConfig(servers, timeout, listenAddress = listenAddress)
 
     /** The tree over the system, created on first use. */
     val tree: RtcTree by lazyTree

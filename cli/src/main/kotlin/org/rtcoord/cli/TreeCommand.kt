@@ -33,6 +33,8 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
             runBlocking { execute() }
         } catch (e: CliktError) {
             throw e
+        } catch (e: PartlyDone) {
+            fail("${explain(e.failure)}; ${e.progress}", e)
         } catch (e: RtcException) {
             fail(explain(e), e)
         } catch (e: IllegalArgumentException) {

@@ -46,7 +46,7 @@ class ConfCommandTest {
     @Test
     fun `an invalid value is refused and the old one kept`() {
         val line = runRtcoord("conf", localiser, "set", "gain", "fast").failure()
-        assertEquals("rtcoord: $localiser: set_configuration_set_values rejected: 'fast' is not a valid value for gain", line)
+        assertEquals("rtcoord: $localiser: set gain rejected: 'fast' is not a number (constraint 0<x<10)", line)
         assertEquals("1.0", fixture.parameter("gain"))
     }
 

@@ -38,6 +38,7 @@ class GlobalOptionsTest {
         assertTrue("'fast' is not a positive duration" in runRtcoord("--timeout", "fast", "ls", "/").usageError())
         assertTrue("bad path" in runRtcoord("-n", "host:port:x", "ls").usageError())
         assertTrue("RTCOORD_NAMESERVERS" in runRtcoord("ls", environment = mapOf("RTCOORD_NAMESERVERS" to "a:b:c")).usageError())
+        assertTrue("--listen: 203.0.113.7 is not an address of this host" in runRtcoord("--listen", "203.0.113.7", "ls", "/").usageError())
     }
 
     @Test

@@ -122,7 +122,7 @@ class ScriptCommandsTest {
         val bad = script("bad.coord.kts", "on(component(\"x\")).state(ERRORR) { }\n")
         val result = runRtcoord("run", bad.toString())
         assertEquals(1, result.statusCode)
-        assertTrue(result.stderr.startsWith("$bad:1:"), result.stderr)
+        assertTrue(result.stderr.startsWith("rtcoord: $bad:1:"), result.stderr)
     }
 
     @Test

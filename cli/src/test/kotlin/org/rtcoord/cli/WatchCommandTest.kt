@@ -5,7 +5,11 @@ import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.awaitValue
+import org.rtcoord.fixtures.iiopAddresses
+import org.rtcoord.fixtures.listeningSockets
 import java.util.concurrent.CompletableFuture
+import kotlin.time.Duration.Companion.seconds
 
 /** `watch`: one line per event while it runs, observers gone when it stops. */
 class WatchCommandTest {
@@ -47,6 +51,24 @@ class WatchCommandTest {
     fun `the observers it attached are detached when it stops`() {
         runRtcoord("watch", gyro, "--for", "1s").ok()
         assertEquals(emptySet<String>(), localisation.system.component("gyro0").observerIds)
+    }
+
+    /** Where the observer `watch` attached to gyro0 is reached, and where that port is listened on, while it runs. */
+    private fun observerEndpoint(vararg global: String): Pair<List<String>, List<String>> {
+        val watching = CompletableFuture.supplyAsync { runRtcoord(*global, "watch", gyro, "--for", "4s") }
+        val component = localisation.system.component("gyro0")
+        val observer = awaitValue("watch to attach its observer", 30.seconds) { component.observerReferences.firstOrNull() }
+        val carried = iiopAddresses(localisation.system.runtime.orb.orb, observer).map { it.substringBeforeLast(':') }
+        val port = iiopAddresses(localisation.system.runtime.orb.orb, observer).first().substringAfterLast(':').toInt()
+        val listening = listeningSockets().filter { it.port == port }.map { it.address.hostAddress }
+        watching.get().ok()
+        return carried to listening
+    }
+
+    @Test
+    fun `the observer listens on loopback alone for a local name server, or on --listen`() {
+        assertEquals(listOf("127.0.0.1") to listOf("127.0.0.1"), observerEndpoint())
+        assertEquals(listOf("127.0.0.2") to listOf("127.0.0.2"), observerEndpoint("--listen", "127.0.0.2"))
     }
 
     @Test

@@ -5,16 +5,18 @@ import java.util.Properties
 import kotlin.time.Duration
 
 /**
- * The tree's ORB: a JacORB ORB it configures and owns, whose every call times out after [callTimeout];
- * or one handed in by a host application, used as it is (its policies are the host's) and left running
- * on close.
+ * The tree's ORB: a JacORB ORB it configures and owns, listening on [listenAddress] only, whose every
+ * call times out after [callTimeout]; or one handed in by a host application, used as it is (its
+ * policies are the host's) and left running on close. An owned ORB starts on first use, when the tree
+ * knows which name server it talks to and so which address to listen on.
  */
-internal class OrbHolder(supplied: ORB?, listenAddress: String, callTimeout: Duration) : AutoCloseable {
+internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeout: Duration) : AutoCloseable {
     val owned: Boolean = supplied == null
-    val orb: ORB = supplied ?: ORB.init(emptyArray(), jacorbProperties(listenAddress, callTimeout))
+    private val started = lazy { supplied ?: ORB.init(emptyArray(), jacorbProperties(listenAddress(), callTimeout)) }
+    val orb: ORB by started
 
     override fun close() {
-        if (!owned) return
+        if (!owned || !started.isInitialized()) return
         orb.shutdown(false)
         orb.destroy()
     }
@@ -24,6 +26,7 @@ internal class OrbHolder(supplied: ORB?, listenAddress: String, callTimeout: Dur
         fun jacorbProperties(listenAddress: String, callTimeout: Duration) = Properties().apply {
             setProperty("org.omg.CORBA.ORBClass", "org.jacorb.orb.ORB")
             setProperty("org.omg.CORBA.ORBSingletonClass", "org.jacorb.orb.ORBSingleton")
+            // Binds the listener to this address alone, and it is the only one the references carry.
             setProperty("OAIAddr", listenAddress)
             // A refused connection fails at once (default: five retries, 2.5 s); a host that never completes
             // the TCP handshake fails at the call deadline instead of after 90 s.

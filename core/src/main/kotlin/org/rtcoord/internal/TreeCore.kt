@@ -10,11 +10,14 @@ import org.rtcoord.internal.events.Watcher
 import org.slf4j.LoggerFactory
 import java.util.concurrent.atomic.AtomicBoolean
 
-/** What every node of one tree shares: the ORB, the remote-call runner, the scope and the registry. */
-internal class TreeCore(val config: TreeConfig) : AutoCloseable {
+/**
+ * What every node of one tree shares: the ORB, the remote-call runner, the scope and the registry.
+ * [firstNameServer] is the host of the tree's first name server, asked when the ORB starts.
+ */
+internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) : AutoCloseable {
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
 
-    val orb = OrbHolder(config.orb, config.listenAddress, config.callTimeout)
+    val orb = OrbHolder(config.orb, { config.listenAddress ?: listenAddressToward(firstNameServer()) }, config.callTimeout)
     val remote = Remote(config.concurrency, config.callTimeout)
     val scope = CoroutineScope(
         SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
@@ -22,6 +25,9 @@ internal class TreeCore(val config: TreeConfig) : AutoCloseable {
     val components = ComponentRegistry(this)
     val watcher = Watcher(this)
     private val closed = AtomicBoolean()
+
+    private fun listenAddressToward(nameServer: String?): String =
+        ListenAddress.toward(nameServer).also { log.debug("listening on {}, the address that reaches {}", it, nameServer ?: "this host") }
 
     override fun close() {
         if (!closed.compareAndSet(false, true)) return

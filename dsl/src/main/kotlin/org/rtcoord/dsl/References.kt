@@ -46,10 +46,13 @@ public class ComponentRef internal constructor(
     /** Disconnects every connection of every port. */
     public suspend fun disconnectAll(): Unit = engine.act("disconnect all", this) { it.disconnectAll() }
 
-    /** Sets parameters of its active configuration set (or of `set(...)`'s set): `configure { set("gain", "2.0") }`. */
+    /**
+     * Sets parameters of its active configuration set (or of `inSet(...)`'s set), all in one change:
+     * `configure { set("gain", "2.0") }`. An unknown parameter or a value the component refuses changes none.
+     */
     public suspend fun configure(changes: ConfigurationChanges.() -> Unit) {
         val requested = ConfigurationChanges().apply(changes)
-        engine.act("configure ${requested.describe()}", this) { node -> requested.values.forEach { (name, value) -> node.setParameter(name, value, requested.set) } }
+        engine.act("configure ${requested.describe()}", this) { node -> node.setParameters(requested.values, requested.set) }
     }
 
     /** Makes configuration set [id] the active one. */
