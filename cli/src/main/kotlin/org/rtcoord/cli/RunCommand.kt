@@ -43,19 +43,14 @@ class RunCommand : TreeCommand("run") {
         }
         val options = poll?.let { EventOptions(WatchMode.POLL, pollPeriod = it) }
         val coordinator = Coordinator(tree, coordination, options) { echo("${LocalTime.now().format(TIME)} $it") }
-<<<<<<< HEAD
-        coordinator.start()
-        confirm("${LocalTime.now().format(TIME)} coordinating:")
-        coordination.description.forEach { confirm("  $it") }
-=======
         try {
             coordinator.start()
         } catch (e: RtcException) {
             // A rule's target that does not exist, is ambiguous or is of the wrong kind: nothing was started.
             fail("$script: ${explain(e)}", e)
         }
-        confirm("${LocalTime.now().format(TIME)} coordinating with ${coordination.description.size} rules and timers: ${coordination.description.joinToString("; ")}")
->>>>>>> net
+        confirm("${LocalTime.now().format(TIME)} coordinating:")
+        coordination.description.forEach { confirm("  $it") }
 
         val stopped = CompletableDeferred<Unit>()
         // On SIGINT/SIGTERM the JVM runs this before exiting: detach observers while the ORB still works.
