@@ -132,12 +132,22 @@ public class ManagerNode internal constructor(
     public suspend fun factories(): List<Map<String, String>> =
         core.remote.call(subject, "get_factory_profiles") { ref.get_factory_profiles() }.map { it.properties.toMap() }
 
-    /** The instance names of the components this manager and its slaves host, read now. */
+    /**
+     * The instance names of the components this manager and its slaves host, read now. A slave that does
+     * not answer hosts nothing any more (its process is gone), so its names are free again.
+     */
     private suspend fun hostedInstanceNames(): Set<String> = coroutineScope {
-        val slaves = core.remote.call(subject, "get_slave_managers") { ref.get_slave_managers() }
-        (listOf(ref) + slaves).map { manager ->
-            async { core.remote.call(subject, "get_component_profiles") { manager.get_component_profiles() }.map { it.instance_name } }
-        }.awaitAll().flatten().toSet()
+        val own = async { core.remote.call(subject, "get_component_profiles") { ref.get_component_profiles() }.map { it.instance_name } }
+        val slaves = core.remote.call(subject, "get_slave_managers") { ref.get_slave_managers() }.map { slave ->
+            async {
+                try {
+                    core.remote.call(subject, "get_component_profiles") { slave.get_component_profiles() }.map { it.instance_name }
+                } catch (e: UnreachableException) {
+                    emptyList()
+                }
+            }
+        }
+        (own.await() + slaves.awaitAll().flatten()).toSet()
     }
 
     private suspend fun hostOf(instanceName: String): ManagerNode? {
