@@ -15,6 +15,7 @@ import org.rtcoord.Node
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
+import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 
@@ -36,6 +37,7 @@ public class Coordinator(
         SupervisorJob() + CoroutineName("coordinator") + CoroutineExceptionHandler { _, e -> failed("timer", e) },
     )
     private val subscriptions = CopyOnWriteArrayList<Subscription>()
+    private val followed = ConcurrentHashMap<String, FollowedComponent>()
     private val failureCount = AtomicInteger()
 
     /** How many handler runs failed so far. */
@@ -68,8 +70,22 @@ public class Coordinator(
 
     private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>) {
         val watching = options ?: coordination.watching
+        val named = when (val target = rule.target) {
+            is Target.Component -> target.ref.takeUnless { it.isPattern }
+            is Target.Port -> target.ref.component
+            else -> null
+        }
         for (node in targets(rule.target)) {
-            subscriptions += tree.on(node, rule.type, watching) { event -> fire(rule, event) }
+            val subscribe: suspend (Node) -> Subscription = { target -> tree.on(target, rule.type, watching) { event -> fire(rule, event) } }
+            if (named == null || node !is ComponentNode) {
+                subscriptions += subscribe(node)
+                continue
+            }
+            // Rules on a named component follow it when it is re-created.
+            val followed = followed.getOrPut(named.selector) {
+                FollowedComponent(tree, coordination.engine, named.selector, node, watching, scope)
+            }
+            followed.add(subscribe)
         }
     }
 
@@ -105,6 +121,8 @@ public class Coordinator(
 
     /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
     override fun close() {
+        followed.values.forEach(FollowedComponent::close)
+        followed.clear()
         subscriptions.forEach(Subscription::cancel)
         subscriptions.clear()
         scope.cancel()

@@ -8,6 +8,7 @@ import org.rtcoord.NodeFilters
 import org.rtcoord.NodeFilters.and
 import org.rtcoord.NodeKind
 import org.rtcoord.NotFoundException
+import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.UnreachableException
 import java.util.concurrent.ConcurrentHashMap
@@ -86,12 +87,51 @@ internal class Engine {
         }
     }
 
+    /**
+     * The component registered now where [dead] was, if it is a different one: [dead] was re-created.
+     * Only the binding's own context is read again, however often a rule asks.
+     */
+    suspend fun successor(selector: String, dead: ComponentNode): ComponentNode? {
+        val parent = dead.path.parent ?: return null
+        val now = try {
+            tree.refresh(parent, depth = 0)
+            tree.node(dead.path)
+        } catch (e: RtcException) {
+            return null
+        }
+        return (now as? ComponentNode)?.takeUnless { it.isSameComponent(dead) }?.also { resolved[selector] = it }
+    }
+
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {
         val manager = manager(ref)
         log("create $type${name?.let { " as $it" } ?: ""} through ${manager.path}")
-        val created = manager.create(type, name)
+        val created = try {
+            manager.create(type, name)
+        } catch (e: UnreachableException) {
+            val again = restarted(manager, e) ?: throw e
+            log("create $type${name?.let { " as $it" } ?: ""} through ${again.path} (looked up again)")
+            again.create(type, name)
+        }
         log("created ${created.path}")
         return reference(created)
+    }
+
+    /**
+     * The manager now registered where [manager] was, if it is a new one and [failure] shows that the
+     * request never reached the old one (refused, or the object gone), so sending it again cannot
+     * create twice. A manager that died while it was creating is not asked again: the failure stands.
+     */
+    private suspend fun restarted(manager: ManagerNode, failure: UnreachableException): ManagerNode? {
+        val cause = failure.cause
+        if (cause !is org.omg.CORBA.TRANSIENT && cause !is org.omg.CORBA.OBJECT_NOT_EXIST) return null
+        val parent = manager.path.parent ?: return null
+        val now = try {
+            tree.refresh(parent, depth = 0)
+            tree.node(manager.path)
+        } catch (e: RtcException) {
+            return null
+        }
+        return (now as? ManagerNode)?.takeUnless { it === manager }
     }
 
     suspend fun delete(ref: ManagerRef, instanceName: String) {

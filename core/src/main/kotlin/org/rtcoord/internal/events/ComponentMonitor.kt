@@ -170,7 +170,9 @@ internal class ComponentMonitor(
             hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT || hint.kind == HintKind.OTHER -> return false
             hint.isFinalize -> finalizing = true
             hint.kind == HintKind.RTC_STATUS -> {
-                val (state, handle) = hint.lifeCycle() ?: return false
+                // A hint that names no state, or a context the component is not known to be in, is no
+                // transition: only reading the component tells what, if anything, happened.
+                val (state, handle) = hint.lifeCycle() ?: return true
                 val tracker = trackers[handle] ?: return true
                 tracker.hint(state, now())
                 hintedStates += handle
@@ -294,6 +296,7 @@ internal class ComponentMonitor(
         lastSign = TimeSource.Monotonic.markNow()
         val events = mutableListOf<RtcEvent>()
         if (dead || suspect) {
+            log.info("{}: answers again", subject)
             events += Recovered(node)
             dead = false
             suspect = false
@@ -311,6 +314,7 @@ internal class ComponentMonitor(
     private fun failed(e: RtcException) {
         val gone = e is UnreachableException && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST
         if (gone || (finalizing && e is UnreachableException)) {
+            log.info("{}: finalized", subject)
             finished = true
             poller?.cancel()
             watchdog?.cancel()
@@ -321,6 +325,7 @@ internal class ComponentMonitor(
         }
         if (dead) return
         dead = true
+        log.info("{}; probing until it answers again", e.message)
         val events = mutableListOf<RtcEvent>()
         if (!suspect) events += HeartbeatLost(node, lastSign.elapsedNow().inWholeMilliseconds)
         events += BecameZombie(node, e)
@@ -340,6 +345,7 @@ internal class ComponentMonitor(
         } catch (e: RtcException) {
             return
         }
+        removeStaleObservers(core, subject, node.component.ref, configuration)
         val seconds = (push.options.heartbeat.inWholeMilliseconds / 1000.0).toString()
         for (flavour in flavours) {
             val candidate = host.observer(flavour) { hint -> work.trySend(Received(hint)) }

@@ -23,6 +23,7 @@ import kotlin.time.Duration
  * vanishing, a manager reports components it created and deleted.
  */
 internal class ListingMonitor(private val core: TreeCore, private val directory: DirectoryNode) {
+    /** [appeared] starts watching a new child; its events are offered once it returns. */
     class Registration(val sink: EventSink, val period: Duration, val appeared: suspend (Node) -> Unit)
 
     private val registrations = CopyOnWriteArrayList<Registration>()
@@ -73,8 +74,9 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
             appeared.map { NodeAppeared(directory, it) } + vanished.map { NodeVanished(directory, it.path) }
         }
         for (registration in registrations) {
-            events.forEach(registration.sink::offer)
+            // Watched before announced: a handler acting on a new node misses none of its events.
             appeared.forEach { registration.appeared(it) }
+            events.forEach(registration.sink::offer)
         }
     }
 
