@@ -170,7 +170,7 @@ class FaultToleranceTest {
                 )
                 notifications.forEach { (kind, hint) -> client.send(observer, kind, hint) }
                 client.sync(observer)
-                delay(1.seconds) // longer than a hint waits for confirmation
+                delay(2.seconds) // longer than hints wait for a read to agree
                 assertEquals(emptyList<RtcEvent>(), recorder.drained<RtcEvent>(), "no event from notifications alone")
 
                 node.deactivate()

@@ -52,6 +52,7 @@ class SoakTest {
                     await("an observer on every component") { system.components.all { it.observerIds.size == 1 } }
                     println("soak: $COMPONENTS components watched in ${attaching.elapsedNow()}")
 
+                    val begun = System.nanoTime()
                     val driven = Churn(system.components, system::connect, Random(SEED)).run(length)
                     delay(SETTLING) // failures injected last take effect at the next execution
                     val truth = system.components.associate { it.instanceName to it.transitions.map { t -> t.pair() to t } }
@@ -69,6 +70,11 @@ class SoakTest {
                         val matched = alignment(transitions.map { it.first }, events.map { it.transition })
                         lost += transitions.size - matched.size
                         phantom += events.size - matched.size
+                        if (matched.size != transitions.size || matched.size != events.size) {
+                            fun Pair<LifeCycle, LifeCycle>.text(at: Long) = "$first>$second@${(at - begun) / 1_000_000}"
+                            println("soak: $name happened ${transitions.map { (pair, t) -> pair.text(t.at) }}")
+                            println("soak: $name reported ${events.map { it.transition.text(it.at) }}")
+                        }
                         matched.forEach { (t, e) -> maxLatency = maxOf(maxLatency, events[e].at - transitions[t].second.at) }
                     }
                     val total = truth.values.sumOf { it.size }
@@ -78,9 +84,11 @@ class SoakTest {
                             "${seen.values.sumOf { it.size }} events, $lost lost, $phantom phantom, ${alarms.size} liveness alarms, " +
                             "max latency ${maxLatency / 1_000_000} ms",
                     )
+                    val observers = system.components.filter { it.observerIds.size != 1 }.associate { it.instanceName to it.observerIds }
                     assertEquals(0, lost, "lost transitions")
                     assertEquals(0, phantom, "phantom transitions")
                     assertEquals(emptyList<RtcEvent>(), alarms.toList(), "no component died")
+                    assertEquals(emptyMap<String, Set<String>>(), observers, "components with other than one observer")
                 }
             }
         }

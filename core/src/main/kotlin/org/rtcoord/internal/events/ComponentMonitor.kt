@@ -174,7 +174,7 @@ internal class ComponentMonitor(
                 // transition: only reading the component tells what, if anything, happened.
                 val (state, handle) = hint.lifeCycle() ?: return true
                 val tracker = trackers[handle] ?: return true
-                tracker.hint(state, now())
+                tracker.hint(state)
                 hintedStates += handle
                 return false
             }
@@ -204,13 +204,13 @@ internal class ComponentMonitor(
         publish(stateEvents(snapshot))
     }
 
-    /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read for unconfirmed hints. */
+    /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read where hints and reads disagree. */
     private fun stateEvents(snapshot: ComponentSnapshot): List<RtcEvent> {
         val previous = last
         val events = mutableListOf<RtcEvent>()
         for (context in snapshot.contexts) {
             val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
-            tracker.reconcile(context.state, now(), GRACE_MILLIS).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
+            tracker.reconcile(context.state, now(), GRACE_MILLIS, hintsExpected = observer != null).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
         }
         trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
         if (trackers.values.any { it.awaitingConfirmation }) {
@@ -390,8 +390,8 @@ internal class ComponentMonitor(
     }
 
     private companion object {
-        /** How long hinted states may wait for a read that confirms them. */
-        const val GRACE_MILLIS = 250L
+        /** How long hints and reads may disagree before a read decides: hints late under load still count. */
+        const val GRACE_MILLIS = 500L
 
         fun now(): Long = System.nanoTime() / 1_000_000
     }
