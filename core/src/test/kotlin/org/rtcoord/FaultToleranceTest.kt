@@ -226,6 +226,13 @@ class FaultToleranceTest {
                 client.send(profile.service, StatusKind.RTC_STATUS, "ERROR:5") // no context with handle 5
                 assertEquals(StateChanged(node, 0, LifeCycle.INACTIVE, LifeCycle.ACTIVE), recorder.next<RtcEvent>())
 
+                context.deactivate_component(fixture.ref)
+                client.send(profile.service, StatusKind.RTC_STATUS, "DEACTIVATED") // names no state
+                assertEquals(StateChanged(node, 0, LifeCycle.ACTIVE, LifeCycle.INACTIVE), recorder.next<RtcEvent>())
+                context.activate_component(fixture.ref)
+                client.send(profile.service, StatusKind.RTC_STATUS, "ACTIVE:0")
+                assertEquals(StateChanged(node, 0, LifeCycle.INACTIVE, LifeCycle.ACTIVE), recorder.next<RtcEvent>())
+
                 val connector = localisation.system.connect("subject0:out", "subject0:in")
                 client.send(profile.service, StatusKind.PORT_PROFILE, "CONNECT:subject0.nowhere") // no such port
                 val connected = listOf(recorder.next<RtcEvent>(), recorder.next<RtcEvent>()).map { it as PortConnected }

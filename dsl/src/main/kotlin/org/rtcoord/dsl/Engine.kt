@@ -4,11 +4,13 @@ import kotlinx.coroutines.flow.toList
 import org.rtcoord.AmbiguousNameException
 import org.rtcoord.ComponentNode
 import org.rtcoord.ManagerNode
+import org.rtcoord.Node
 import org.rtcoord.NodeFilters
 import org.rtcoord.NodeFilters.and
 import org.rtcoord.NodeKind
 import org.rtcoord.NotFoundException
 import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.UnreachableException
 import java.util.concurrent.ConcurrentHashMap
@@ -91,16 +93,8 @@ internal class Engine {
      * The component registered now where [dead] was, if it is a different one: [dead] was re-created.
      * Only the binding's own context is read again, however often a rule asks.
      */
-    suspend fun successor(selector: String, dead: ComponentNode): ComponentNode? {
-        val parent = dead.path.parent ?: return null
-        val now = try {
-            tree.refresh(parent, depth = 0)
-            tree.node(dead.path)
-        } catch (e: RtcException) {
-            return null
-        }
-        return (now as? ComponentNode)?.takeUnless { it.isSameComponent(dead) }?.also { resolved[selector] = it }
-    }
+    suspend fun successor(selector: String, dead: ComponentNode): ComponentNode? =
+        (registeredAt(dead.path) as? ComponentNode)?.takeUnless { it.isSameComponent(dead) }?.also { resolved[selector] = it }
 
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {
         val manager = manager(ref)
@@ -124,14 +118,18 @@ internal class Engine {
     private suspend fun restarted(manager: ManagerNode, failure: UnreachableException): ManagerNode? {
         val cause = failure.cause
         if (cause !is org.omg.CORBA.TRANSIENT && cause !is org.omg.CORBA.OBJECT_NOT_EXIST) return null
-        val parent = manager.path.parent ?: return null
-        val now = try {
+        return (registeredAt(manager.path) as? ManagerNode)?.takeUnless { it === manager }
+    }
+
+    /** What is bound at [path] now, its parent listed again; null if nothing (reachable) is. */
+    private suspend fun registeredAt(path: RtcPath): Node? {
+        val parent = path.parent ?: return null
+        return try {
             tree.refresh(parent, depth = 0)
-            tree.node(manager.path)
+            tree.node(path)
         } catch (e: RtcException) {
-            return null
+            null
         }
-        return (now as? ManagerNode)?.takeUnless { it === manager }
     }
 
     suspend fun delete(ref: ManagerRef, instanceName: String) {
