@@ -38,9 +38,10 @@ internal class FollowedComponent(
 
     /** Subscribes a rule with [subscribe], now to the current component and later to any that replaces it. */
     suspend fun add(subscribe: suspend (ComponentNode) -> Subscription): Unit = lock.withLock {
-        if (active.isEmpty()) watchLiveness(node)
-        subscribers += subscribe
+        // The rule first: the first registration attaches the observer, and the rule misses nothing after that.
         active += subscribe(node)
+        if (subscribers.isEmpty()) watchLiveness(node)
+        subscribers += subscribe
     }
 
     private suspend fun watchLiveness(target: ComponentNode) {
@@ -61,8 +62,8 @@ internal class FollowedComponent(
                     active.forEach(Subscription::cancel)
                     active.clear()
                     node = successor
-                    watchLiveness(successor)
                     subscribers.forEach { active += it(successor) }
+                    watchLiveness(successor)
                 }
                 engine.log("$selector was re-created at ${successor.path}: its rules follow it")
                 return@launch
