@@ -17,6 +17,7 @@ import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
 import org.rtcoord.fixtures.naming.NamingSnapshot
+import org.rtcoord.internal.events.ListingMonitor
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -73,34 +74,38 @@ class FaultToleranceTest {
     @ParameterizedTest
     @EnumSource(NameServerRestart::class)
     fun `a name server restarted is read again, components registering again are found, and events flow throughout`(restart: NameServerRestart): Unit = runBlocking {
-        restart.start().use { server ->
-            Scenarios.localisation(server.corbaloc).use { system ->
-                RtcTree.create(TreeConfig(listOf(server.address))).use { tree ->
-                    val host = "/${server.address}/${FixtureRuntime.hostContext}"
-                    val recorder = EventRecorder()
-                    tree.on(host, RtcEvent::class.java, push, recorder.handler)
+        LogCapture(ListingMonitor::class.java).use { logs ->
+            restart.start().use { server ->
+                Scenarios.localisation(server.corbaloc).use { system ->
+                    RtcTree.create(TreeConfig(listOf(server.address))).use { tree ->
+                        val host = "/${server.address}/${FixtureRuntime.hostContext}"
+                        val recorder = EventRecorder()
+                        tree.on(host, RtcEvent::class.java, push, recorder.handler)
 
-                    server.stop()
-                    system.component("gyro0").fail()
-                    assertEquals(LifeCycle.ERROR, recorder.next<StateChanged> { it.source.name == "gyro0.rtc" }.new, "events flow while the name server is down")
+                        server.stop()
+                        system.component("gyro0").fail()
+                        assertEquals(LifeCycle.ERROR, recorder.next<StateChanged> { it.source.name == "gyro0.rtc" }.new, "events flow while the name server is down")
+                        await("the outage to be reported") { logs.lines.any { it.startsWith("$host: ") && it.endsWith("listing it again every 100ms") } }
 
-                    server.restart()
-                    if (!restart.keepsData) {
-                        // As OpenRTM's periodic naming update does: every process registers again.
-                        system.runtime.rebindAll()
-                        system.master!!.runtime.bind("manager.mgr", system.master!!.ref)
+                        server.restart()
+                        if (!restart.keepsData) {
+                            // As OpenRTM's periodic naming update does: every process registers again.
+                            system.runtime.rebindAll()
+                            system.master!!.runtime.bind("manager.mgr", system.master!!.ref)
+                        }
+                        system.runtime.create(Scenarios.relay, "late0")
+                        recorder.next<NodeAppeared>(timeout = 10.seconds) { it.child.name == "late0.rtc" }
+                        assertTrue("$host: listed again" in logs.lines, "the recovery is reported")
+                        system.component("late0").activate()
+                        assertEquals(LifeCycle.ACTIVE, recorder.next<StateChanged> { it.source.name == "late0.rtc" }.new, "a component registered after the restart is watched")
+                        system.component("laser0").fail()
+                        assertEquals(LifeCycle.ERROR, recorder.next<StateChanged> { it.source.name == "laser0.rtc" }.new, "events flow after the restart")
+
+                        tree.refresh()
+                        val found = tree.find(RtcPath.parse(host)) { it.path.parent == RtcPath.parse(host) }.toList().map { it.name }.toSet()
+                        assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc", "late0.rtc", "manager.mgr"), found)
+                        assertEquals(LifeCycle.ERROR, tree.component("$host/laser0.rtc").state())
                     }
-                    system.runtime.create(Scenarios.relay, "late0")
-                    recorder.next<NodeAppeared>(timeout = 10.seconds) { it.child.name == "late0.rtc" }
-                    system.component("late0").activate()
-                    assertEquals(LifeCycle.ACTIVE, recorder.next<StateChanged> { it.source.name == "late0.rtc" }.new, "a component registered after the restart is watched")
-                    system.component("laser0").fail()
-                    assertEquals(LifeCycle.ERROR, recorder.next<StateChanged> { it.source.name == "laser0.rtc" }.new, "events flow after the restart")
-
-                    tree.refresh()
-                    val found = tree.find(RtcPath.parse(host)) { it.path.parent == RtcPath.parse(host) }.toList().map { it.name }.toSet()
-                    assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc", "late0.rtc", "manager.mgr"), found)
-                    assertEquals(LifeCycle.ERROR, tree.component("$host/laser0.rtc").state())
                 }
             }
         }
