@@ -22,7 +22,8 @@ import java.util.concurrent.atomic.AtomicInteger
 /**
  * Runs a [Coordination] against a live system: subscribes its rules, starts its timers, and runs their
  * handlers, one structured-concurrency scope for all of it. A failing handler is logged and counted and
- * the coordinator keeps running; [close] cancels running handlers and detaches every observer.
+ * the coordinator keeps running; [close] cancels running handlers and detaches every observer. Rules on
+ * a component the script names (not a pattern) follow it when it dies and is re-created at its path.
  *
  * @param options how rules watch, overriding the script's own choice when given.
  * @param log receives one line per rule firing, action and failure.
@@ -82,10 +83,7 @@ public class Coordinator(
                 continue
             }
             // Rules on a named component follow it when it is re-created.
-            val followed = followed.getOrPut(named.selector) {
-                FollowedComponent(tree, coordination.engine, named.selector, node, watching, scope)
-            }
-            followed.add(subscribe)
+            followed.getOrPut(named.selector) { FollowedComponent(tree, coordination.engine, named.selector, node, watching, scope) }.add(subscribe)
         }
     }
 
