@@ -16,44 +16,65 @@ class StateTrackerTest {
     @Test
     fun `hinted transitions confirmed by a read are all published`() {
         val tracker = StateTracker(ACTIVE)
-        listOf(INACTIVE, ACTIVE, INACTIVE).forEach { tracker.hint(it, 0) }
-        assertEquals(listOf(ACTIVE to INACTIVE, INACTIVE to ACTIVE, ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1, grace))
+        listOf(INACTIVE, ACTIVE, INACTIVE).forEach { tracker.hint(it) }
+        assertEquals(listOf(ACTIVE to INACTIVE, INACTIVE to ACTIVE, ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1, grace, hintsExpected = true))
     }
 
     @Test
     fun `an abort announced as INACTIVE then ERROR is one transition`() {
         val tracker = StateTracker(ACTIVE)
-        tracker.hint(INACTIVE, 0)
-        tracker.hint(ERROR, 0)
-        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 1, grace))
+        tracker.hint(INACTIVE)
+        tracker.hint(ERROR)
+        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 1, grace, hintsExpected = true))
     }
 
     @Test
     fun `a hint no read confirms is dropped after the grace period`() {
         val tracker = StateTracker(INACTIVE)
-        tracker.hint(ACTIVE, 0)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10, grace), "waits for later hints")
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10 + grace, grace), "a spoofed ACTIVE leaves no phantom")
+        tracker.hint(ACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10, grace, hintsExpected = true), "waits for later hints")
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10 + grace, grace, hintsExpected = true), "a spoofed ACTIVE leaves no phantom")
         assertEquals(INACTIVE, tracker.confirmed)
     }
 
     @Test
     fun `duplicates and impossible transitions are ignored, and the read wins`() {
         val tracker = StateTracker(INACTIVE)
-        tracker.hint(INACTIVE, 0)
-        tracker.hint(ACTIVE, 0)
-        tracker.hint(ACTIVE, 0)
-        assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 1, grace))
+        tracker.hint(INACTIVE)
+        tracker.hint(ACTIVE)
+        tracker.hint(ACTIVE)
+        assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 1, grace, hintsExpected = true))
         val erroneous = StateTracker(ERROR)
-        erroneous.hint(ACTIVE, 0)
-        assertEquals(listOf(ERROR to INACTIVE), erroneous.reconcile(INACTIVE, 1, grace), "ERROR to ACTIVE is impossible: the read decides")
+        erroneous.hint(ACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), erroneous.reconcile(INACTIVE, 1, grace, hintsExpected = true), "waits for the hint of the change read")
+        assertEquals(listOf(ERROR to INACTIVE), erroneous.reconcile(INACTIVE, 1 + grace, grace, hintsExpected = true), "ERROR to ACTIVE is impossible: the read decides")
     }
 
     @Test
-    fun `without hints a read that differs is a transition`() {
+    fun `without an observer a read that differs is a transition at once`() {
         val tracker = StateTracker(ACTIVE)
-        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 0, grace))
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 0, grace))
+        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 0, grace, hintsExpected = false))
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 0, grace, hintsExpected = false))
+    }
+
+    @Test
+    fun `a change a read finds before its hints waits for them, so late hints announce it once`() {
+        val tracker = StateTracker(ACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 0, grace, hintsExpected = true))
+        // The abort's hints arrive after the read: one transition, not ACTIVE to ERROR and then ERROR to INACTIVE to ERROR.
+        tracker.hint(INACTIVE)
+        tracker.hint(ERROR)
+        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 100, grace, hintsExpected = true))
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 200, grace, hintsExpected = true))
+    }
+
+    @Test
+    fun `a change no hint announces is published once the grace period after the first read that found it is over`() {
+        val tracker = StateTracker(ACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 1000, grace, hintsExpected = true))
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 1000 + grace - 1, grace, hintsExpected = true))
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1000 + grace, grace, hintsExpected = true))
+        assertEquals(false, tracker.awaitingConfirmation)
     }
 
     @Test

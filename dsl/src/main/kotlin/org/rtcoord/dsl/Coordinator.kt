@@ -15,6 +15,7 @@ import org.rtcoord.Node
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
+import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 
@@ -22,8 +23,8 @@ import java.util.concurrent.atomic.AtomicInteger
  * Runs a [Coordination] against a live system: subscribes its rules, starts its timers, mode machines
  * and supervisors, and runs their handlers, one structured-concurrency scope for all of it. A failing
  * handler is logged and counted and the coordinator keeps running; [close] cancels running handlers and
- * detaches every observer. Rules and transitions on a component a supervisor re-creates follow it to
- * the new component.
+ * detaches every observer. Rules and transitions on a component the script names (not a pattern) follow
+ * it when it is re-created, by a supervisor, a rule or by hand.
  *
  * @param options how rules watch, overriding the script's own choice when given.
  * @param log receives one line per rule firing, action, mode transition and failure.
@@ -39,6 +40,7 @@ public class Coordinator(
     )
     private val watches = CopyOnWriteArrayList<Watch>()
     private val supervisors = CopyOnWriteArrayList<Supervisor>()
+    private val searches = ConcurrentHashMap<String, SuccessorSearch>()
     private val failureCount = AtomicInteger()
 
     private val interpreters = coordination.machines.map { machine ->
@@ -101,13 +103,30 @@ public class Coordinator(
         val watching = options ?: coordination.watching
         val subscription = patterns.first().watch(tree, node, watching) { machine.offer(it, patterns) }
         watches += Watch(node, subscription) { new -> watch(machine, patterns, new) }
+        searchOnDeath(patterns.first().target, node)
     }
 
     private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>, nodes: List<Node>) {
         val watching = options ?: coordination.watching
         for (node in nodes) {
             watches += Watch(node, tree.on(node, rule.type, watching) { event -> fire(rule, event) }) { new -> subscribe(rule, listOf(new)) }
+            searchOnDeath(rule.target, node)
         }
+    }
+
+    /**
+     * Makes sure the death of [node], a component [target] names (not a pattern), starts a search for its
+     * successor. After the rule's own subscription: the observer that attaches misses nothing for the rule.
+     */
+    private suspend fun searchOnDeath(target: Target, node: Node) {
+        val named = when (target) {
+            is Target.Component -> target.ref.takeUnless { it.isPattern }
+            is Target.Port -> target.ref.component
+            else -> null
+        }
+        if (named == null || node !is ComponentNode || searches.containsKey(named.selector)) return
+        val search = SuccessorSearch(tree, coordination.engine, named.selector, node, options ?: coordination.watching, scope)
+        if (searches.putIfAbsent(named.selector, search) == null) search.start()
     }
 
     /** Rules and transitions watching [old], a component since re-created as [new], watch [new] from now on. */
@@ -159,6 +178,8 @@ public class Coordinator(
     /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
     override fun close() {
         supervisors.forEach(Supervisor::close)
+        searches.values.forEach(SuccessorSearch::close)
+        searches.clear()
         watches.forEach { it.subscription.cancel() }
         watches.clear()
         scope.cancel()

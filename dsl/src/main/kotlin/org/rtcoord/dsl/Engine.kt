@@ -4,10 +4,13 @@ import kotlinx.coroutines.flow.toList
 import org.rtcoord.AmbiguousNameException
 import org.rtcoord.ComponentNode
 import org.rtcoord.ManagerNode
+import org.rtcoord.Node
 import org.rtcoord.NodeFilters
 import org.rtcoord.NodeFilters.and
 import org.rtcoord.NodeKind
 import org.rtcoord.NotFoundException
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.UnreachableException
 import java.util.concurrent.ConcurrentHashMap
@@ -108,26 +111,53 @@ internal class Engine {
     }
 
     /**
-     * The component that replaced [old], which stopped answering: the one bound at its path now (its
-     * naming context read again), else the one [selector] finds now; references and rules follow it.
+     * The component that replaced [old], which stopped answering: the one bound at its path now, else
+     * the one [selector] finds now; references and rules follow it.
      */
-    private suspend fun successor(selector: String, old: ComponentNode): ComponentNode? {
-        val parent = old.path.parent ?: return null
-        tree.refresh(parent, depth = 0)
-        val atPath = try { tree.node(old.path) as? ComponentNode } catch (e: NotFoundException) { null }
-        val found = atPath?.takeUnless { it.isSameComponent(old) }
-            ?: resolved.remove(selector).let { component(selector) }.takeUnless { it.isSameComponent(old) }
-            ?: return null
-        follow(old, found)
-        return found
-    }
+    private suspend fun successor(selector: String, old: ComponentNode): ComponentNode? =
+        successorAt(old) ?: resolved.remove(selector).let { component(selector) }.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
+
+    /**
+     * The component registered now where [old] was, if it is a different one: [old] was re-created, and
+     * references and rules follow the new one. Only the binding's own context is read again.
+     */
+    suspend fun successorAt(old: ComponentNode): ComponentNode? =
+        (registeredAt(old.path) as? ComponentNode)?.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
 
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {
         val manager = manager(ref)
         log("create $type${name?.let { " as $it" } ?: ""} through ${manager.path}")
-        val created = manager.create(type, name)
+        val created = try {
+            manager.create(type, name)
+        } catch (e: UnreachableException) {
+            val again = restarted(manager, e) ?: throw e
+            log("create $type${name?.let { " as $it" } ?: ""} through ${again.path} (looked up again)")
+            again.create(type, name)
+        }
         log("created ${created.path}")
         return reference(created)
+    }
+
+    /**
+     * The manager now registered where [manager] was, if it is a new one and [failure] shows that the
+     * request never reached the old one (refused, or the object gone), so sending it again cannot
+     * create twice. A manager that died while it was creating is not asked again: the failure stands.
+     */
+    private suspend fun restarted(manager: ManagerNode, failure: UnreachableException): ManagerNode? {
+        val cause = failure.cause
+        if (cause !is org.omg.CORBA.TRANSIENT && cause !is org.omg.CORBA.OBJECT_NOT_EXIST) return null
+        return (registeredAt(manager.path) as? ManagerNode)?.takeUnless { it === manager }
+    }
+
+    /** What is bound at [path] now, its parent listed again; null if nothing (reachable) is. */
+    private suspend fun registeredAt(path: RtcPath): Node? {
+        val parent = path.parent ?: return null
+        return try {
+            tree.refresh(parent, depth = 0)
+            tree.node(path)
+        } catch (e: RtcException) {
+            null
+        }
     }
 
     suspend fun delete(ref: ManagerRef, instanceName: String) {

@@ -170,9 +170,11 @@ internal class ComponentMonitor(
             hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT || hint.kind == HintKind.OTHER -> return false
             hint.isFinalize -> finalizing = true
             hint.kind == HintKind.RTC_STATUS -> {
-                val (state, handle) = hint.lifeCycle() ?: return false
+                // A hint that names no state, or a context the component is not known to be in, is no
+                // transition: only reading the component tells what, if anything, happened.
+                val (state, handle) = hint.lifeCycle() ?: return true
                 val tracker = trackers[handle] ?: return true
-                tracker.hint(state, now())
+                tracker.hint(state)
                 hintedStates += handle
                 return false
             }
@@ -202,13 +204,13 @@ internal class ComponentMonitor(
         publish(stateEvents(snapshot))
     }
 
-    /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read for unconfirmed hints. */
+    /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read where hints and reads disagree. */
     private fun stateEvents(snapshot: ComponentSnapshot): List<RtcEvent> {
         val previous = last
         val events = mutableListOf<RtcEvent>()
         for (context in snapshot.contexts) {
             val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
-            tracker.reconcile(context.state, now(), GRACE_MILLIS).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
+            tracker.reconcile(context.state, now(), GRACE_MILLIS, hintsExpected = observer != null).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
         }
         trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
         if (trackers.values.any { it.awaitingConfirmation }) {
@@ -294,6 +296,7 @@ internal class ComponentMonitor(
         lastSign = TimeSource.Monotonic.markNow()
         val events = mutableListOf<RtcEvent>()
         if (dead || suspect) {
+            log.info("{}: answers again", subject)
             events += Recovered(node)
             dead = false
             suspect = false
@@ -311,6 +314,7 @@ internal class ComponentMonitor(
     private fun failed(e: RtcException) {
         val gone = e is UnreachableException && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST
         if (gone || (finalizing && e is UnreachableException)) {
+            log.info("{}: finalized", subject)
             finished = true
             poller?.cancel()
             watchdog?.cancel()
@@ -321,6 +325,7 @@ internal class ComponentMonitor(
         }
         if (dead) return
         dead = true
+        log.info("{}; probing until it answers again", e.message)
         val events = mutableListOf<RtcEvent>()
         if (!suspect) events += HeartbeatLost(node, lastSign.elapsedNow().inWholeMilliseconds)
         events += BecameZombie(node, e)
@@ -340,6 +345,7 @@ internal class ComponentMonitor(
         } catch (e: RtcException) {
             return
         }
+        removeStaleObservers(core, subject, node.component.ref, configuration)
         val seconds = (push.options.heartbeat.inWholeMilliseconds / 1000.0).toString()
         for (flavour in flavours) {
             val candidate = host.observer(flavour) { hint -> work.trySend(Received(hint)) }
@@ -384,8 +390,8 @@ internal class ComponentMonitor(
     }
 
     private companion object {
-        /** How long hinted states may wait for a read that confirms them. */
-        const val GRACE_MILLIS = 250L
+        /** How long hints and reads may disagree before a read decides: hints late under load still count. */
+        const val GRACE_MILLIS = 500L
 
         fun now(): Long = System.nanoTime() / 1_000_000
     }

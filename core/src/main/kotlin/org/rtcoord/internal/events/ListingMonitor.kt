@@ -14,6 +14,7 @@ import org.rtcoord.NodeVanished
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.internal.TreeCore
+import org.slf4j.LoggerFactory
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration
 
@@ -23,8 +24,10 @@ import kotlin.time.Duration
  * vanishing, a manager reports components it created and deleted.
  */
 internal class ListingMonitor(private val core: TreeCore, private val directory: DirectoryNode) {
+    /** [appeared] starts watching a new child; its events are offered once it returns. */
     class Registration(val sink: EventSink, val period: Duration, val appeared: suspend (Node) -> Unit)
 
+    private val log = LoggerFactory.getLogger(ListingMonitor::class.java)
     private val registrations = CopyOnWriteArrayList<Registration>()
     private var poller: Job? = null
     private var period: Duration? = null
@@ -51,9 +54,18 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
         poller = shortest?.let { every ->
             core.scope.launch {
                 var before = directory.listed.value
+                var failing = false
                 while (isActive) {
                     delay(every)
-                    val after = try { directory.relist() } catch (e: RtcException) { continue }
+                    val after = try {
+                        directory.relist()
+                    } catch (e: RtcException) {
+                        if (!failing) log.info("{}; listing it again every {}", e.message, every)
+                        failing = true
+                        continue
+                    }
+                    if (failing) log.info("{}: listed again", directory.path)
+                    failing = false
                     if (before != null) announce(before, after)
                     before = after
                 }
@@ -73,8 +85,9 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
             appeared.map { NodeAppeared(directory, it) } + vanished.map { NodeVanished(directory, it.path) }
         }
         for (registration in registrations) {
-            events.forEach(registration.sink::offer)
+            // Watched before announced: a handler acting on a new node misses none of its events.
             appeared.forEach { registration.appeared(it) }
+            events.forEach(registration.sink::offer)
         }
     }
 

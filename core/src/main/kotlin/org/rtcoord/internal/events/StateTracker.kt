@@ -5,10 +5,12 @@ import org.rtcoord.LifeCycle
 /**
  * The lifecycle of one component in one execution context, reconciled from two sources: the states
  * its observer hints report, in order, and the state read back from it. Hints are untrusted: a hinted
- * transition is published only once a read agrees with where the hints lead; hints a read never
- * confirms within the grace period are dropped, and the read state wins. So the published stream has
- * no phantom transition, keeps every transition the hints reported and the reads confirmed, and always
- * ends in the real state.
+ * transition is published only once a read agrees with where the hints lead. A read that finds a change
+ * no hint announced yet waits for the hints too, when hints are expected: they may be on their way, and
+ * arriving after the change was published they would announce it a second time. What the two sources do
+ * not agree on within the grace period, counted from the first read that disagreed, is decided by the
+ * read. So the published stream has no phantom transition, keeps every transition the hints reported and
+ * the reads confirmed, and always ends in the real state.
  */
 internal class StateTracker(initial: LifeCycle) {
     /** The last published state. */
@@ -16,31 +18,32 @@ internal class StateTracker(initial: LifeCycle) {
         private set
 
     private val hinted = ArrayList<LifeCycle>()
-    private var hintedSince = 0L
+    private var disagreedSince: Long? = null
 
-    /** Whether hints wait for a read to confirm them. */
-    val awaitingConfirmation: Boolean get() = hinted.isNotEmpty()
+    /** Whether hints and reads disagree, and a later read must decide. */
+    val awaitingConfirmation: Boolean get() = disagreedSince != null
 
     /** Takes a hinted state; duplicates and impossible transitions are ignored (the next read decides). */
-    fun hint(state: LifeCycle, now: Long) {
+    fun hint(state: LifeCycle) {
         val last = hinted.lastOrNull() ?: confirmed
         if (state == last || !possible(last, state)) return
-        if (hinted.isEmpty()) hintedSince = now
         hinted += state
     }
 
     /**
-     * Reconciles with [real], read just now, and returns the transitions to publish. Unconfirmed hints
-     * older than [graceMillis] are given up.
+     * Reconciles with [real], read just now, and returns the transitions to publish. [hintsExpected]
+     * says whether an observer announces this component's changes.
      */
-    fun reconcile(real: LifeCycle, now: Long, graceMillis: Long): List<Pair<LifeCycle, LifeCycle>> {
+    fun reconcile(real: LifeCycle, now: Long, graceMillis: Long, hintsExpected: Boolean): List<Pair<LifeCycle, LifeCycle>> {
         if (real == LifeCycle.UNKNOWN) return emptyList()
-        val path = when {
-            hinted.lastOrNull() == real -> listOf(confirmed) + hinted
-            hinted.isNotEmpty() && now - hintedSince < graceMillis -> return emptyList()
-            else -> listOf(confirmed, real)
+        val agreed = if (hinted.isEmpty()) real == confirmed || !hintsExpected else hinted.last() == real
+        if (!agreed) {
+            val since = disagreedSince ?: now.also { disagreedSince = it }
+            if (now - since < graceMillis) return emptyList()
         }
+        val path = if (hinted.lastOrNull() == real) listOf(confirmed) + hinted else listOf(confirmed, real)
         hinted.clear()
+        disagreedSince = null
         confirmed = real
         return collapseAborts(path).zipWithNext().filter { (from, to) -> from != to }
     }

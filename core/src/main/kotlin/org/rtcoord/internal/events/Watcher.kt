@@ -1,6 +1,6 @@
 package org.rtcoord.internal.events
 
-import kotlinx.coroutines.launch
+import kotlinx.coroutines.CompletableDeferred
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
@@ -44,19 +44,29 @@ internal class Watcher(private val core: TreeCore) {
         val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
         val releases = mutableListOf<() -> Unit>()
-        val watched = HashSet<Any>()
+        val watched = HashSet<DirectoryNode>()
+        // A component reached by two paths at once (its naming context, its manager) is included once;
+        // the second caller waits until it is watched, as the first does.
+        val included = HashMap<ComponentObject, CompletableDeferred<Unit>>()
 
         suspend fun include(node: Node) {
             when (node) {
-                is ComponentNode -> synchronized(watched) { watched.add(node.component) }.takeIf { it }?.let {
-                    val registration = ComponentMonitor.Registration(sink, options, configuration, statesOnly)
-                    val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node) { live.remove(it) }.also { live += it } } }
-                    monitor.add(registration)
-                    synchronized(releases) { releases += { release(node.component, monitor, registration) } }
+                is ComponentNode -> {
+                    val inclusion = CompletableDeferred<Unit>()
+                    val earlier = synchronized(included) { included.putIfAbsent(node.component, inclusion) }
+                    if (earlier != null) return earlier.await()
+                    try {
+                        val registration = ComponentMonitor.Registration(sink, options, configuration, statesOnly)
+                        val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node) { live.remove(it) }.also { live += it } } }
+                        monitor.add(registration)
+                        synchronized(releases) { releases += { release(node.component, monitor, registration) } }
+                    } finally {
+                        inclusion.complete(Unit)
+                    }
                 }
                 is DirectoryNode -> synchronized(watched) { watched.add(node) }.takeIf { it }?.let {
                     val children = try { node.children() } catch (e: RtcException) { emptyList() }
-                    val registration = ListingMonitor.Registration(sink, options.pollPeriod) { child -> core.scope.launch { include(child) } }
+                    val registration = ListingMonitor.Registration(sink, options.pollPeriod) { child -> include(child) }
                     val monitor = synchronized(listings) { listings.getOrPut(node) { ListingMonitor(core, node) } }
                     monitor.add(registration)
                     synchronized(releases) { releases += { release(node, monitor, registration) } }
