@@ -40,6 +40,15 @@ public class ComponentNode internal constructor(
     /** The latest snapshot, read now if there is none yet. */
     public suspend fun snapshot(): ComponentSnapshot = component.loaded(subject)
 
+    /** What a listing shows, as last read by a full read or a summary read; null before either. Never waits. */
+    public val summaries: StateFlow<ComponentSummary?> get() = component.summary
+
+    /**
+     * Reads what a listing shows of the component now (see [ComponentSummary]): fewer calls than
+     * [refresh]. The [snapshots] stay as they were.
+     */
+    public suspend fun refreshSummary(): ComponentSummary = component.refreshSummary(subject)
+
     override suspend fun refresh(depth: Int) {
         component.refresh(subject)
     }

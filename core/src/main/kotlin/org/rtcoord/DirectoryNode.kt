@@ -1,11 +1,11 @@
 package org.rtcoord
 
-import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
+import kotlinx.coroutines.withContext
 import org.rtcoord.internal.TreeCore
 
 /**
@@ -27,9 +27,31 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     public suspend fun child(name: String): Node? =
         children().firstOrNull { it.name == name } ?: relist().firstOrNull { it.name == name }
 
-    override suspend fun refresh(depth: Int) {
+    override suspend fun refresh(depth: Int): Unit = withContext(core.remote.dispatcher) {
         val children = relist()
-        if (depth > 0) coroutineScope { children.forEach { child -> launch { child.refreshOrBury(depth - 1) } } }
+        if (depth > 0) children.forEach { child -> launch { buryIfDead(child) { child.refresh(depth - 1) } } }
+    }
+
+    /**
+     * Lists this directory again, and those below it down to [depth] levels, reading of each component
+     * only its [ComponentSummary]: what a listing shows, in fewer calls than [refresh]. Dead and hung
+     * components become [ZombieNode]s, as with [refresh].
+     */
+    public suspend fun survey(depth: Int = Int.MAX_VALUE): Unit = withContext(core.remote.dispatcher) {
+        val children = relist()
+        if (depth > 0) {
+            children.forEach { child ->
+                launch {
+                    buryIfDead(child) {
+                        when (child) {
+                            is DirectoryNode -> child.survey(depth - 1)
+                            is ComponentNode -> child.refreshSummary()
+                            else -> child.refresh(depth - 1)
+                        }
+                    }
+                }
+            }
+        }
     }
 
     /** Lists the children from the live system, reusing [previous] nodes that still stand. */
@@ -41,17 +63,17 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     }
 
     internal suspend fun relist(): List<Node> = listingLock.withLock {
-        readChildren(listing.value.orEmpty()).also { listing.value = it }
+        withContext(core.remote.dispatcher) { readChildren(listing.value.orEmpty()) }.also { listing.value = it }
     }
 
-    /** Refreshes [this] child; if it turns out dead, its parent shows a zombie in its place. */
-    private suspend fun Node.refreshOrBury(depth: Int) {
+    /** Reads [child] with [read]; if it turns out dead, this directory shows a zombie in its place. */
+    private suspend fun buryIfDead(child: Node, read: suspend () -> Unit) {
         try {
-            refresh(depth)
+            read()
         } catch (e: UnreachableException) {
-            bury(this, e)
+            bury(child, e)
         } catch (e: TimedOutException) {
-            bury(this, e)
+            bury(child, e)
         }
     }
 

@@ -45,7 +45,7 @@ public class ManagerNode internal constructor(
         val componentNodes = hosted.await().map { rtc ->
             async {
                 val component = core.components.objectFor(rtc)
-                val name = "${component.loaded(subject).instanceName}.rtc"
+                val name = "${component.instanceName(subject)}.rtc"
                 previous.filterIsInstance<ComponentNode>().firstOrNull { it.component === component && it.name == name }
                     ?: ComponentNode(path.child(name), core, component)
             }
@@ -153,7 +153,8 @@ public class ManagerNode internal constructor(
     private suspend fun hostOf(instanceName: String): ManagerNode? {
         val hosts = listOf(this) + children().filterIsInstance<ManagerNode>()
         return hosts.firstOrNull { manager ->
-            manager.relist().any { it is ComponentNode && it.snapshots.value?.instanceName == instanceName }
+            // Below a manager a component is named after its instance name.
+            manager.relist().any { it is ComponentNode && it.name == "$instanceName.rtc" }
         }
     }
 

@@ -1,5 +1,6 @@
 package org.rtcoord
 
+import org.omg.CosNaming.NameComponent
 import org.omg.CosNaming.NamingContext
 import org.omg.CosNaming.NamingContextHelper
 import org.rtcoord.internal.TreeCore
@@ -15,6 +16,10 @@ public class NameServerNode internal constructor(path: RtcPath, core: TreeCore) 
     public val corbaloc: String get() = "corbaloc:iiop:$address/NameService"
 
     private val root: NamingContext by lazy { NamingContextHelper.unchecked_narrow(core.orb.orb.string_to_object(corbaloc)) }
+
+    override val fullName: Array<NameComponent> = emptyArray()
+
+    override fun root(): NamingContext = root
 
     override suspend fun context(): NamingContext = root
 }

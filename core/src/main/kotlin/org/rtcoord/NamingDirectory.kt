@@ -18,6 +18,12 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
 
     internal abstract suspend fun context(): NamingContext
 
+    /** This context's name from its name server's root context. */
+    internal abstract val fullName: Array<NameComponent>
+
+    /** The root context of this context's name server. */
+    internal abstract fun root(): NamingContext
+
     /** Removes the binding [name] (`id.kind`) from this context, whatever it is bound to. */
     public suspend fun unbind(name: String) {
         val context = context()
@@ -91,13 +97,20 @@ public class ContextNode internal constructor(
     path: RtcPath,
     core: TreeCore,
     private val parent: NamingDirectory,
-    private val binding: Array<NameComponent>,
+    binding: Array<NameComponent>,
 ) : NamingDirectory(path, core) {
     override val kind: NodeKind get() = NodeKind.CONTEXT
 
-    /** Resolved on every use: a restarted name server may serve the context under a new reference. */
+    override val fullName: Array<NameComponent> = parent.fullName + binding
+
+    override fun root(): NamingContext = parent.root()
+
+    /**
+     * Resolved on every use: a restarted name server may serve the context under a new reference. One
+     * call from the root with the whole name, not one per level.
+     */
     override suspend fun context(): NamingContext {
-        val within = parent.context()
-        return org.omg.CosNaming.NamingContextHelper.unchecked_narrow(core.remote.call(path.toString(), "resolve") { within.resolve(binding) })
+        val root = parent.root()
+        return org.omg.CosNaming.NamingContextHelper.unchecked_narrow(core.remote.call(path.toString(), "resolve") { root.resolve(fullName) })
     }
 }

@@ -9,6 +9,8 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.runPeer
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.measureTime
 
 class TreeDiscoveryTest {
     private val localisation = LocalisationSystem()
@@ -102,6 +104,49 @@ class TreeDiscoveryTest {
             val laserFed = tree.find(predicate = hasPort("laser", "TimedDoubleSeq") and kind(NodeKind.COMPONENT)).toList()
             assertEquals(setOf("laser0.rtc", "laser_localise0.rtc"), laserFed.map { it.name }.toSet())
             assertEquals(8, tree.find(predicate = state(LifeCycle.ACTIVE)).toList().size, "4 in naming, 4 below the manager")
+        }
+    }
+
+    @Test
+    fun `a survey reads what listings show of every component, and a full read agrees with it`(): Unit = runBlocking {
+        tree.root.survey()
+        val components = tree.find { it is ComponentNode }.toList().map { it as ComponentNode }
+        assertEquals(8, components.size, "4 in naming, 4 below the manager")
+        assertTrue(components.all { it.snapshots.value == null }, "a survey reads no snapshot")
+        val laser = components.first { it.name == "laser_localise0.rtc" }.summaries.value!!
+        assertEquals(mapOf(0 to LifeCycle.ACTIVE), laser.states)
+        assertEquals(listOf("laser", "odo", "pose"), laser.ports.map { it.name })
+        assertEquals(1, laser.ports.first { it.name == "laser" }.connectors.size)
+
+        val surveyed = components.associateWith { it.summaries.value }
+        tree.refresh()
+        components.forEach { assertEquals(it.snapshots.value!!.summary, surveyed.getValue(it), it.path.toString()) }
+    }
+
+    @Test
+    fun `a survey shows a hung component as a zombie within the call deadline`(): Unit = runBlocking {
+        RtcTree.create(TreeConfig(nameServers = listOf(localisation.naming.address), callTimeout = 1.seconds)).use { quick ->
+            val gyro = localisation.system.component("gyro0")
+            gyro.hang()
+            try {
+                val host = quick.node(localisation.host) as DirectoryNode
+                val elapsed = measureTime { host.survey() }
+                assertTrue(elapsed < 3.seconds, "survey took $elapsed")
+                val hung = host.children().single { it.name == "gyro0.rtc" }
+                assertTrue(hung is ZombieNode && hung.cause is TimedOutException, hung.toString())
+                val laser = host.children().single { it.name == "laser0.rtc" } as ComponentNode
+                assertEquals(LifeCycle.ACTIVE, laser.summaries.value!!.states.getValue(0))
+            } finally {
+                gyro.release()
+            }
+        }
+    }
+
+    @Test
+    fun `nested contexts are listed from their name server's root, each by its whole name`(): Unit = runBlocking {
+        Scenarios.scale(localisation.naming.corbaloc, 3).use {
+            val sub = tree.node("/${localisation.naming.address}/${FixtureRuntime.hostContext}/group0.grp_cxt/sub0.sub_cxt") as ContextNode
+            assertEquals(listOf("relay0.rtc", "relay1.rtc", "relay2.rtc"), sub.children().map { it.name })
         }
     }
 

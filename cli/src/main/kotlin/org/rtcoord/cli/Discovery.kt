@@ -9,10 +9,11 @@ import org.rtcoord.Node
 import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * Reads [from] and everything below it again, concurrently (dead and hung objects become zombies).
- * When that takes more than half a second, [progress] (if any) shows how far it got.
+ * Reads [from] and everything below it again, concurrently (dead and hung objects become zombies):
+ * whole components, or with [summaries] only what listings show of them. When that takes more than
+ * half a second, [progress] (if any) shows how far it got.
  */
-internal suspend fun discover(from: Node, progress: StatusLine?): Unit = coroutineScope {
+internal suspend fun discover(from: Node, progress: StatusLine?, summaries: Boolean = false): Unit = coroutineScope {
     val ticker = progress?.let { line ->
         launch {
             delay(PROGRESS_AFTER)
@@ -24,7 +25,7 @@ internal suspend fun discover(from: Node, progress: StatusLine?): Unit = corouti
         }
     }
     try {
-        from.refresh(Int.MAX_VALUE)
+        if (summaries && from is DirectoryNode) from.survey() else from.refresh(Int.MAX_VALUE)
     } finally {
         ticker?.cancel()
         progress?.clear()
@@ -33,7 +34,7 @@ internal suspend fun discover(from: Node, progress: StatusLine?): Unit = corouti
 
 /** Components read and directories listed below [node] so far, from what the tree holds (no calls). */
 private fun countKnown(node: Node): Pair<Int, Int> = when (node) {
-    is ComponentNode -> (if (node.snapshots.value != null) 1 else 0) to 0
+    is ComponentNode -> (if (node.summaries.value != null) 1 else 0) to 0
     is DirectoryNode -> node.listed.value.orEmpty().map(::countKnown)
         .fold(0 to 1) { (components, directories), (c, d) -> components + c to directories + d }
     else -> 0 to 0

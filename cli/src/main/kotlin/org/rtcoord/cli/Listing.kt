@@ -2,18 +2,20 @@ package org.rtcoord.cli
 
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ComponentSummary
 import org.rtcoord.DirectoryNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.Node
 import org.rtcoord.PortKind
 import org.rtcoord.ZombieNode
+import org.rtcoord.summary
 
 /**
- * One node as a listing shows it. [snapshot] is what was read of a component; a component that could
+ * One node as a listing shows it. [summary] is what was read of a component; a component that could
  * not be read is [dead] and shows like a zombie.
  */
-internal class Entry(val node: Node, val snapshot: ComponentSnapshot?) {
-    val dead: Boolean get() = node is ZombieNode || (node is ComponentNode && snapshot == null)
+internal class Entry(val node: Node, val summary: ComponentSummary?) {
+    val dead: Boolean get() = node is ZombieNode || (node is ComponentNode && summary == null)
 
     /** The short form: directories end in `/`, dead registrations start with `*`, as in rtls. */
     val shortName: String
@@ -26,11 +28,11 @@ internal class Entry(val node: Node, val snapshot: ComponentSnapshot?) {
     /** The columns before the name in the long form: state and four port counts, or `-` where they mean nothing. */
     val columns: List<String>
         get() {
-            val snapshot = snapshot?.takeUnless { dead } ?: return List(5) { "-" }
-            val ports = snapshot.ports
+            val summary = summary?.takeUnless { dead } ?: return List(5) { "-" }
+            val ports = summary.ports
             fun count(kind: PortKind?) = ports.filter { kind == null || it.kind == kind }
                 .let { "${it.size}/${it.count { port -> port.connectors.isNotEmpty() }}" }
-            return listOf(stateLabel(snapshot.overallState), count(null), count(PortKind.DATA_IN), count(PortKind.DATA_OUT), count(PortKind.SERVICE))
+            return listOf(stateLabel(summary.overallState), count(null), count(PortKind.DATA_IN), count(PortKind.DATA_OUT), count(PortKind.SERVICE))
         }
 
     /** The entry for `--json`. */
@@ -39,21 +41,21 @@ internal class Entry(val node: Node, val snapshot: ComponentSnapshot?) {
         put("name", node.name)
         put("kind", if (dead) "zombie" else node.kind.name.lowercase())
         (node as? ZombieNode)?.let { put("error", it.cause.message) }
-        snapshot?.takeUnless { dead }?.let { snapshot ->
-            put("state", snapshot.overallState.name)
-            put("ports", portCounts(snapshot))
+        summary?.takeUnless { dead }?.let { summary ->
+            put("state", summary.overallState.name)
+            put("ports", portCounts(summary))
         }
     }
 
-    private fun portCounts(snapshot: ComponentSnapshot): Map<String, Map<String, Int>> =
+    private fun portCounts(summary: ComponentSummary): Map<String, Map<String, Int>> =
         listOf("all" to null, "in" to PortKind.DATA_IN, "out" to PortKind.DATA_OUT, "service" to PortKind.SERVICE).associate { (label, kind) ->
-            val ports = snapshot.ports.filter { kind == null || it.kind == kind }
+            val ports = summary.ports.filter { kind == null || it.kind == kind }
             label to mapOf("total" to ports.size, "connected" to ports.count { it.connectors.isNotEmpty() })
         }
 }
 
 /** The entry for [node] as its last reading left it. */
-internal fun entryOf(node: Node): Entry = Entry(node, (node as? ComponentNode)?.snapshots?.value)
+internal fun entryOf(node: Node): Entry = Entry(node, (node as? ComponentNode)?.summaries?.value)
 
 /**
  * Lines in rtls's long format: each column as wide as its widest cell plus two spaces, then the name
@@ -87,11 +89,13 @@ internal fun shortLines(entries: List<Entry>, width: Int?): List<String> {
  * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over
  * ACTIVE over INACTIVE, else CREATED; UNKNOWN only without any context.
  */
-internal val ComponentSnapshot.overallState: LifeCycle
+internal val ComponentSnapshot.overallState: LifeCycle get() = summary.overallState
+
+/** [ComponentSnapshot.overallState] for what a listing read. */
+internal val ComponentSummary.overallState: LifeCycle
     get() {
-        val states = contexts.map { it.state }
         if (states.isEmpty()) return LifeCycle.UNKNOWN
-        return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states } ?: LifeCycle.CREATED
+        return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states.values } ?: LifeCycle.CREATED
     }
 
 /** A state as rtshell prints it: `Active`, `Inactive`, `Error`, `Created`, `Unknown`. */

@@ -60,10 +60,10 @@ class LsCommand : TreeCommand("ls") {
             return listOf(Block(null, listOf(readNow(node))))
         }
         if (!recursive) {
-            node.refresh(1)
+            node.survey(1)
             return listOf(Block(text.takeIf { headed }, node.children().map(::entryOf)))
         }
-        discover(node, progressLine())
+        discover(node, progressLine(), summaries = true)
         return directoriesBelow(node).map { directory ->
             val header = when {
                 directory === node -> if (headed) text else "."

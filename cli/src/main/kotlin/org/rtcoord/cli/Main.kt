@@ -1,11 +1,13 @@
 package org.rtcoord.cli
 
+import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.CliktError
 import com.github.ajalt.clikt.core.PrintHelpMessage
 import com.github.ajalt.clikt.core.PrintMessage
 import com.github.ajalt.clikt.core.UsageError
 import com.github.ajalt.clikt.core.parse
 import com.github.ajalt.clikt.core.subcommands
+import com.github.ajalt.clikt.parsers.CommandLineParser
 import kotlin.system.exitProcess
 
 /**
@@ -13,9 +15,17 @@ import kotlin.system.exitProcess
  * non-daemon threads behind that would keep the JVM alive after the tree is closed.
  */
 fun main(args: Array<String>) {
-    val command = rtcoord()
+    // Before anything logs or makes a reference: SLF4J takes CliLogging as it is named (instead of searching
+    // every jar for a provider) and says nothing about it, and neither JacORB nor RMI-IIOP start logging
+    // of their own (see JacorbSetup and PlainStubs).
+    System.setProperty("slf4j.provider", CliLogging::class.java.name)
+    System.setProperty("slf4j.internal.verbosity", "WARN")
+    System.setProperty("jacorb.log.initializer", CliLogging.JacorbSetup::class.java.name)
+    System.setProperty("javax.rmi.CORBA.StubClass", PlainStubs::class.java.name)
+    val argv = args.asList()
+    val command = rtcoord(argv)
     val status = try {
-        command.execute(args.asList())
+        command.execute(argv)
         0
     } catch (e: CliktError) {
         command.echoFormattedHelp(e)
@@ -25,24 +35,40 @@ fun main(args: Array<String>) {
 }
 
 /** The `rtcoord` command with every subcommand. */
-fun rtcoord(): Rtcoord = Rtcoord().subcommands(
-    DemoCommand(),
-    RunCommand(),
-    CheckCommand(),
-    LsCommand(),
-    CatCommand(),
-    FindCommand(),
-    ActCommand(),
-    DeactCommand(),
-    ResetCommand(),
-    ExitCommand(),
-    ConCommand(),
-    DisCommand(),
-    ConfCommand(),
-    MgrCommand(),
-    DelCommand(),
-    WatchCommand(),
-    GraphCommand(),
+fun rtcoord(): Rtcoord = Rtcoord().subcommands(SUBCOMMANDS.values.map { it() })
+
+/**
+ * The `rtcoord` command to run [argv] with: only the subcommand [argv] names, when that alone parses
+ * it, since making every subcommand costs a command more start-up than listing a small system; every
+ * subcommand otherwise, so that help and usage errors read as they always do.
+ */
+fun rtcoord(argv: List<String>): Rtcoord {
+    val named = argv.firstNotNullOfOrNull { SUBCOMMANDS[it] } ?: return rtcoord()
+    val alone = Rtcoord().subcommands(named())
+    val parsed = CommandLineParser.parse(alone, argv).invocation
+    val subcommand = parsed.subcommandInvocations.singleOrNull()
+    return if (parsed.errors.isEmpty() && subcommand != null && subcommand.errors.isEmpty()) alone else rtcoord()
+}
+
+/** Every subcommand, in the order help lists them, by name. */
+internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
+    "demo" to { DemoCommand() },
+    "run" to { RunCommand() },
+    "check" to { CheckCommand() },
+    "ls" to { LsCommand() },
+    "cat" to { CatCommand() },
+    "find" to { FindCommand() },
+    "act" to { ActCommand() },
+    "deact" to { DeactCommand() },
+    "reset" to { ResetCommand() },
+    "exit" to { ExitCommand() },
+    "con" to { ConCommand() },
+    "dis" to { DisCommand() },
+    "conf" to { ConfCommand() },
+    "mgr" to { MgrCommand() },
+    "del" to { DelCommand() },
+    "watch" to { WatchCommand() },
+    "graph" to { GraphCommand() },
 )
 
 /**

@@ -30,6 +30,16 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
         context {
             helpFormatter = ::HelpFormatter
             terminal = Terminal(terminalInterface = PlainTerminal)
+            // Listings print thousands of plain lines: those skip Mordant's rendering, which would change
+            // nothing in them and costs more than printing them.
+            val rendered = echoMessage
+            echoMessage = { context, message, trailingLinebreak, stderr ->
+                if (message is String && printsAsIs(message)) {
+                    context.terminal.rawPrint(if (trailingLinebreak) "$message\n" else message, stderr)
+                } else {
+                    rendered(context, message, trailingLinebreak, stderr)
+                }
+            }
         }
     }
 
@@ -101,6 +111,12 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
     }
 
     private companion object {
+        /**
+         * Whether Mordant prints [text] as it is: it expands tabs and interprets escape sequences, and
+         * leaves text without control characters (newlines apart) unchanged.
+         */
+        fun printsAsIs(text: String): Boolean = text.none { it.isISOControl() && it != '\n' }
+
         val NAME_SERVER_VARIABLES = listOf("RTCOORD_NAMESERVERS", "RTCTREE_NAMESERVERS")
         val CWD_VARIABLES = listOf("RTCOORD_CWD", "RTCSH_CWD")
 

@@ -29,9 +29,10 @@ class CliJarIT {
     /** What a process printed and how it ended. */
     data class Run(val status: Int, val stdout: String, val stderr: String, val millis: Long)
 
-    private fun run(command: List<String>, path: String? = null): Run {
+    private fun run(command: List<String>, path: String? = null, environment: Map<String, String> = emptyMap()): Run {
         val builder = ProcessBuilder(command)
         path?.let { builder.environment()["PATH"] = it }
+        builder.environment().putAll(environment)
         builder.environment().remove("RTCTREE_NAMESERVERS")
         builder.environment().remove("RTCOORD_NAMESERVERS")
         val started = System.nanoTime()
@@ -108,6 +109,35 @@ class CliJarIT {
         assertEquals(0, version.status, version.stderr)
         assertEquals("rtcoord: building (first run)...\n", version.stderr)
     }
+
+    @Test
+    fun `the launcher archives a browsing command's classes on its first run and maps them after, silently`(@TempDir directory: Path) {
+        val tree = launcherTree(directory)
+        // Sources and jar made a while ago, so that an archive made now is newer than all of them.
+        Files.walk(tree).filter { Files.isRegularFile(it) }.forEach { Files.setLastModifiedTime(it, FileTime.fromMillis(System.currentTimeMillis() - 600_000)) }
+        Files.setLastModifiedTime(tree.resolve("cli/target").resolve(jar.fileName), FileTime.fromMillis(System.currentTimeMillis() - 300_000))
+        val cache = directory.resolve("cache")
+        val environment = mapOf("RTCOORD_CACHE" to cache.toString())
+        val expected = runRtcoord("ls", "-l", localisation.host).ok()
+        fun listing() = run(listOf(tree.resolve("rtcoord").toString(), "ls", "-l", localisation.host), fakeMaven(directory), environment)
+
+        assertEquals(Run(0, "rtcoord ${version()}\n", "", 0), run(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory), environment).copy(millis = 0))
+        assertTrue(Files.notExists(cache.resolve("cds")), "--version makes no archive")
+        assertEquals(Run(0, expected, "", 0), listing().copy(millis = 0))
+        val archive = Files.list(cache.resolve("cds")).use { files -> files.toList() }.single()
+        assertTrue(archive.fileName.toString().startsWith("browse"), archive.toString())
+        val made = Files.getLastModifiedTime(archive)
+        assertEquals(Run(0, expected, "", 0), listing().copy(millis = 0))
+        assertEquals(made, Files.getLastModifiedTime(archive), "the archive is mapped, not made again")
+
+        // An archive the JVM cannot use is ignored without a word.
+        Files.delete(archive)
+        Files.writeString(archive, "not an archive")
+        assertEquals(Run(0, expected, "", 0), listing().copy(millis = 0))
+        assertTrue(Files.notExists(directory.resolve("maven-called")))
+    }
+
+    private fun version() = jar.fileName.toString().removePrefix("rtcoord-cli-").removeSuffix(".jar")
 
     /**
      * A copy of the project as the launcher sees it: the script, module folders, and the built jar with

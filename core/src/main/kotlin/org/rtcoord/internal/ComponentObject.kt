@@ -5,14 +5,16 @@ import RTC.PortService
 import RTC.RTObject
 import _SDOPackage.Configuration
 import kotlinx.coroutines.async
-import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
+import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ComponentSummary
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.RtcPath
+import org.rtcoord.summary
 import java.util.concurrent.CopyOnWriteArraySet
 
 /**
@@ -23,6 +25,7 @@ import java.util.concurrent.CopyOnWriteArraySet
 internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     private val refreshing = Mutex()
     private val current = MutableStateFlow<ComponentSnapshot?>(null)
+    private val currentSummary = MutableStateFlow<ComponentSummary?>(null)
 
     private val paths = CopyOnWriteArraySet<RtcPath>()
 
@@ -43,8 +46,15 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
 
     val snapshot: StateFlow<ComponentSnapshot?> get() = current
 
+    /** The summary of the latest read, full or not. */
+    val summary: StateFlow<ComponentSummary?> get() = currentSummary
+
     /** The snapshot, read now if none was read yet. */
     suspend fun loaded(subject: String): ComponentSnapshot = current.value ?: refresh(subject)
+
+    /** The instance name: the snapshot's, or read from the profile alone when there is no snapshot yet. */
+    suspend fun instanceName(subject: String): String =
+        current.value?.instanceName ?: core.remote.call(subject, "get_component_profile") { ref.get_component_profile() }.instance_name
 
     /** The component's configuration object, once known. */
     @Volatile private var configuration: Configuration? = null
@@ -57,7 +67,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
         val readsBefore = reads
         return refreshing.withLock {
             // A read that finished while this caller waited is as fresh as its own would be.
-            current.value.takeIf { reads != readsBefore } ?: coroutineScope {
+            current.value.takeIf { reads != readsBefore } ?: withContext(core.remote.dispatcher) {
                 val reader = ComponentReader(core.remote, subject, ref)
                 val withConfiguration = current.value?.configuration != null
                 val settings = async { if (withConfiguration) readConfiguration(reader) else null }
@@ -66,10 +76,16 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
                 ports = reading.ports
                 reading.snapshot.copy(configuration = settings.await()).also {
                     current.value = it
+                    currentSummary.value = it.summary
                     reads++
                 }
             }
         }
+    }
+
+    /** Reads what a listing shows (see [ComponentSummary]) and publishes it; the snapshot stays as it was. */
+    suspend fun refreshSummary(subject: String): ComponentSummary = refreshing.withLock {
+        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, ref).readSummary() }.also { currentSummary.value = it }
     }
 
     /** Reads the configuration sets and publishes them with the rest of the latest snapshot. */
@@ -89,5 +105,6 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     /** Publishes [snapshot] as the latest, after an operation whose effect is known. */
     fun publish(snapshot: ComponentSnapshot) {
         current.value = snapshot
+        currentSummary.value = snapshot.summary
     }
 }

@@ -1,7 +1,9 @@
 package org.rtcoord.internal
 
+import RTC.ComponentProfile
 import RTC.ExecutionContext
 import RTC.ExecutionContextServiceHelper
+import RTC.LifeCycleState
 import RTC.PortService
 import RTC.RTObject
 import _SDOPackage.Configuration
@@ -10,6 +12,7 @@ import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ComponentSummary
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.ContextSnapshot
@@ -21,7 +24,8 @@ import org.rtcoord.PortSnapshot
 /**
  * Reads a component, issuing the independent remote calls concurrently: profile, ports and execution
  * contexts together ([read]), configuration apart ([readConfiguration]), since listing a system does not
- * need it and every call counts at a thousand components.
+ * need it and every call counts at a thousand components; for listings, only what they show
+ * ([readSummary]).
  */
 internal class ComponentReader(private val remote: Remote, private val subject: String, private val ref: RTObject) {
 
@@ -29,10 +33,10 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     class Reading(val snapshot: ComponentSnapshot, val contexts: Map<Int, ExecutionContext>, val ports: Map<String, PortService>)
 
     suspend fun read(): Reading = coroutineScope {
-        val profile = async { remote.call(subject, "get_component_profile") { ref.get_component_profile() } }
-        val contexts = async { readContexts() }
+        val profile = async { readProfile() }
+        val contexts = async { readContexts().map { (context, isOwned, handle) -> async { readContext(context, isOwned, handle) } }.awaitAll() }
         val p = profile.await()
-        val (contextSnapshots, contextRefs) = contexts.await()
+        val read = contexts.await()
         val snapshot = ComponentSnapshot(
             instanceName = p.instance_name,
             typeName = p.type_name,
@@ -41,42 +45,57 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
             vendor = p.vendor,
             category = p.category,
             properties = p.properties.toMap(),
-            ports = p.port_profiles.map { port ->
-                val properties = port.properties.toMap()
-                PortSnapshot(
-                    name = port.name.removePrefix("${p.instance_name}."),
-                    fullName = port.name,
-                    kind = when (properties["port.port_type"]) {
-                        "DataInPort" -> PortKind.DATA_IN
-                        "DataOutPort" -> PortKind.DATA_OUT
-                        "CorbaPort" -> PortKind.SERVICE
-                        else -> PortKind.OTHER
-                    },
-                    dataType = properties["dataport.data_type"],
-                    properties = properties,
-                    connectors = port.connector_profiles.map { connector ->
-                        ConnectorSnapshot(connector.connector_id, connector.name, connector.properties.toMap())
-                    },
-                )
-            },
-            contexts = contextSnapshots,
+            ports = portsOf(p),
+            contexts = read.map { it.first },
             configuration = null,
         )
-        Reading(snapshot, contextRefs, p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref })
+        Reading(snapshot, read.associate { it.first.handle to it.second }, p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref })
     }
 
-    private suspend fun readContexts(): Pair<List<ContextSnapshot>, Map<Int, ExecutionContext>> = coroutineScope {
+    /** What a listing shows: the profile's ports and the state in each context, without the contexts' own details. */
+    suspend fun readSummary(): ComponentSummary = coroutineScope {
+        val profile = async { readProfile() }
+        val states = async {
+            readContexts().map { (context, _, handle) -> async { handle to LifeCycle.of(readState(context)) } }.awaitAll().toMap()
+        }
+        ComponentSummary(states.await(), portsOf(profile.await()))
+    }
+
+    private suspend fun readProfile(): ComponentProfile = remote.call(subject, "get_component_profile") { ref.get_component_profile() }
+
+    /** Every context with whether the component owns it and its handle for it. */
+    private suspend fun readContexts(): List<Triple<ExecutionContext, Boolean, Int>> = coroutineScope {
         val owned = async { remote.call(subject, "get_owned_contexts") { ref.get_owned_contexts() } }
         val participating = async { remote.call(subject, "get_participating_contexts") { ref.get_participating_contexts() } }
         // OpenRTM numbers owned contexts 0.. and participating ones 1000.. in list order.
-        val all = owned.await().mapIndexed { index, context -> Triple(context, true, index) } +
+        owned.await().mapIndexed { index, context -> Triple(context, true, index) } +
             participating.await().mapIndexed { index, context -> Triple(context, false, PARTICIPATING_BASE + index) }
-        val read = all.map { (context, isOwned, handle) -> async { readContext(context, isOwned, handle) } }.awaitAll()
-        read.map { it.first } to read.associate { it.first.handle to it.second }
+    }
+
+    private suspend fun readState(context: ExecutionContext): LifeCycleState =
+        remote.call(subject, "get_component_state") { context.get_component_state(ref) }
+
+    private fun portsOf(p: ComponentProfile): List<PortSnapshot> = p.port_profiles.map { port ->
+        val properties = port.properties.toMap()
+        PortSnapshot(
+            name = port.name.removePrefix("${p.instance_name}."),
+            fullName = port.name,
+            kind = when (properties["port.port_type"]) {
+                "DataInPort" -> PortKind.DATA_IN
+                "DataOutPort" -> PortKind.DATA_OUT
+                "CorbaPort" -> PortKind.SERVICE
+                else -> PortKind.OTHER
+            },
+            dataType = properties["dataport.data_type"],
+            properties = properties,
+            connectors = port.connector_profiles.map { connector ->
+                ConnectorSnapshot(connector.connector_id, connector.name, connector.properties.toMap())
+            },
+        )
     }
 
     private suspend fun readContext(context: ExecutionContext, owned: Boolean, handle: Int): Pair<ContextSnapshot, ExecutionContext> = coroutineScope {
-        val state = async { remote.call(subject, "get_component_state") { context.get_component_state(ref) } }
+        val state = async { readState(context) }
         val running = async { remote.call(subject, "is_running") { context.is_running() } }
         val profile = async {
             // Plain ExecutionContexts have no profile: fall back to what every context answers.

@@ -1,10 +1,10 @@
 package org.rtcoord.internal
 
 import RTC.ReturnCode_t
+import kotlinx.coroutines.CoroutineDispatcher
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.runInterruptible
-import kotlinx.coroutines.sync.Semaphore
-import kotlinx.coroutines.sync.withPermit
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.BadParameterException
 import org.rtcoord.NotFoundException
@@ -18,13 +18,19 @@ import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * Runs blocking CORBA calls on a bounded dispatcher, turning every failure into an [RtcException] about
- * the call's subject. The tree's own ORB times every call out at the tree's deadline; a coroutine
- * backstop also ends the wait at a call's own (shorter) deadline, and is the only guard on an ORB a
- * host application supplied. One hung object holds at most the threads of the calls made to it.
+ * Runs blocking CORBA calls on a bounded [dispatcher], turning every failure into an [RtcException]
+ * about the call's subject. The tree's own ORB times every call out at the tree's deadline; a coroutine
+ * backstop ends the wait at a call's own (shorter) deadline, and is the only guard on an ORB a host
+ * application supplied ([orbEnforcesDeadline] false). One hung object holds at most the threads of the
+ * calls made to it.
  */
-internal class Remote(concurrency: Int, val defaultDeadline: Duration) {
-    private val slots = Semaphore(concurrency)
+internal class Remote(concurrency: Int, val defaultDeadline: Duration, private val orbEnforcesDeadline: Boolean) {
+    /**
+     * Where calls run, [concurrency] at a time. Work that makes many calls (discovery, reading a
+     * component) runs here too: a call made from this dispatcher runs on the caller's thread, without
+     * the two thread hand-overs per call that cost discovery more than the calls themselves.
+     */
+    val dispatcher: CoroutineDispatcher = Dispatchers.IO.limitedParallelism(concurrency)
 
     /**
      * Runs [block] once one of the tree's call slots is free; the deadline counts from then, so calls
@@ -32,19 +38,24 @@ internal class Remote(concurrency: Int, val defaultDeadline: Duration) {
      */
     suspend fun <T> call(subject: String, operation: String, deadline: Duration? = null, block: () -> T): T {
         val limit = deadline ?: defaultDeadline
-        val outcome = slots.withPermit {
-            withTimeoutOrNull(limit + BACKSTOP) {
-                runInterruptible(Dispatchers.IO) {
-                    try {
-                        Result.success(block())
-                    } catch (e: Exception) {
-                        Result.failure(translate(e, subject, operation, limit))
-                    }
-                }
+        val outcome = withContext(dispatcher) {
+            if (orbEnforcesDeadline && limit >= defaultDeadline) {
+                attempt(subject, operation, limit, block)
+            } else {
+                withTimeoutOrNull(limit + BACKSTOP) { attempt(subject, operation, limit, block) }
             }
         } ?: throw TimedOutException(subject, operation, limit.inWholeMilliseconds)
         return outcome.getOrThrow()
     }
+
+    private suspend fun <T> attempt(subject: String, operation: String, limit: Duration, block: () -> T): Result<T> =
+        runInterruptible {
+            try {
+                Result.success(block())
+            } catch (e: Exception) {
+                Result.failure(translate(e, subject, operation, limit))
+            }
+        }
 
     private companion object {
         val BACKSTOP = 200.milliseconds

@@ -18,7 +18,7 @@ internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) 
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
 
     val orb = OrbHolder(config.orb, { config.listenAddress ?: listenAddressToward(firstNameServer()) }, config.callTimeout)
-    val remote = Remote(config.concurrency, config.callTimeout)
+    val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned)
     val scope = CoroutineScope(
         SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
     )
