@@ -31,6 +31,13 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         config.nameServers.forEach(::addNameServer)
     }
 
+    /**
+     * How many poll ticks the tree missed since it was created: ticks that came while the component's
+     * previous tick was still waiting to be served, so one read stood for several periods. Nonzero means
+     * the tree polls more than it can read at the periods asked for.
+     */
+    public val missedPollTicks: Long get() = core.missedPollTicks.get()
+
     /** The name servers, in the order they were added. */
     public val nameServers: List<NameServerNode> get() = servers.toList()
 

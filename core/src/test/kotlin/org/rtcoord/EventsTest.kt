@@ -4,9 +4,11 @@ import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
 import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.EnumSource
 import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.await
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -113,5 +115,19 @@ class EventsTest {
         recorder.next<Recovered>(timeout = 10.seconds)
         node.deactivate()
         assertEquals(StateChanged(node, 0, LifeCycle.ACTIVE, LifeCycle.INACTIVE), recorder.next<StateChanged>())
+    }
+
+    @Test
+    fun `poll ticks held up by a slow read are counted as missed`(): Unit = runBlocking {
+        val recorder = EventRecorder()
+        watched(Source.POLL, recorder)
+        val fixture = localisation.system.component("subject0")
+        fixture.hang()
+        try {
+            // Every read now waits for the call deadline (3 s) while ticks come every 50 ms.
+            await("missed poll ticks", 10.seconds) { tree.missedPollTicks > 0 }
+        } finally {
+            fixture.release()
+        }
     }
 }

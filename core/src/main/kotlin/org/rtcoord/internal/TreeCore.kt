@@ -9,6 +9,7 @@ import org.rtcoord.TreeConfig
 import org.rtcoord.internal.events.Watcher
 import org.slf4j.LoggerFactory
 import java.util.concurrent.atomic.AtomicBoolean
+import java.util.concurrent.atomic.AtomicLong
 
 /**
  * What every node of one tree shares: the ORB, the remote-call runner, the scope and the registry.
@@ -24,6 +25,9 @@ internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) 
     )
     val components = ComponentRegistry(this)
     val watcher = Watcher(this)
+
+    /** Poll ticks that found the previous one still waiting and were folded into it (see [RtcTree.missedPollTicks]). */
+    val missedPollTicks = AtomicLong()
     private val closed = AtomicBoolean()
 
     private fun listenAddressToward(nameServer: String?): String =

@@ -1,0 +1,144 @@
+package org.rtcoord.bench
+
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+
+/** The benchmarks, by the names `--only` takes, in the order a run does them. */
+internal enum class Benchmark(val label: String) {
+    DISCOVERY("discovery"),
+    REACTION("reaction"),
+    MONITORING("monitoring"),
+    ROUNDTRIP("roundtrip"),
+    MEMORY("memory"),
+    STARTUP("startup"),
+}
+
+/**
+ * How big and how long: the full run measures what issue 9 asks for; [quick] the same things smaller and
+ * shorter; [smoke] tiny, only to show the harness works (the unit test runs it). Repetitions and
+ * warm-ups are per measured quantity; [seed] fixes every random pause.
+ */
+internal data class BenchOptions(
+    val profile: String,
+    val benchmarks: List<Benchmark>,
+    val discoverySizes: List<Int>,
+    /** Untimed runs of each command before the timed ones: file cache, class-data archives, JIT caches. */
+    val processWarmups: Int,
+    /** Timed runs of each command at size N. */
+    val processRepetitions: (Int) -> Int,
+    val libraryWarmups: Int,
+    val libraryRepetitions: Int,
+    val reactionChanges: Int,
+    val monitoredComponents: Int,
+    val monitoringWindow: Duration,
+    val monitoringWarmup: Duration,
+    val roundTripRepetitions: Int,
+    /** Tree sizes to try for the memory benchmark, largest first: the first the machine can serve counts. */
+    val memorySizes: List<Int>,
+    val memoryRepetitions: Int,
+    /** Profile reads for the discovery floor: one at a time, then all callers at once. */
+    val floorCalls: Pair<Int, Int>,
+    val startupRepetitions: Int,
+    /** Whether to time the coordinator scripts (round trip, cached script start): they compile the script once. */
+    val scripts: Boolean,
+    val seed: Long = 9,
+) {
+    companion object {
+        const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S]
+
+Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
+in the same run). Results are printed, never stored.
+  --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
+  --only        some of: discovery, reaction, monitoring, roundtrip, memory, startup
+  --seconds S   the monitoring window (default 60, quick 10)"""
+
+        fun full(benchmarks: List<Benchmark>): BenchOptions = BenchOptions(
+            profile = "full",
+            benchmarks = benchmarks,
+            discoverySizes = listOf(10, 100, 1000),
+            processWarmups = 1,
+            processRepetitions = { n -> if (n >= 1000) 5 else 10 },
+            libraryWarmups = 3,
+            libraryRepetitions = 10,
+            reactionChanges = 1000,
+            monitoredComponents = 1000,
+            monitoringWindow = 60.seconds,
+            monitoringWarmup = 10.seconds,
+            roundTripRepetitions = 10,
+            memorySizes = listOf(10_000, 5000, 2000),
+            memoryRepetitions = 3,
+            floorCalls = 2000 to 20_000,
+            startupRepetitions = 10,
+            scripts = true,
+        )
+
+        fun quick(benchmarks: List<Benchmark>): BenchOptions = BenchOptions(
+            profile = "quick",
+            benchmarks = benchmarks,
+            discoverySizes = listOf(10, 100),
+            processWarmups = 1,
+            processRepetitions = { 3 },
+            libraryWarmups = 2,
+            libraryRepetitions = 5,
+            reactionChanges = 200,
+            monitoredComponents = 1000,
+            monitoringWindow = 10.seconds,
+            monitoringWarmup = 3.seconds,
+            roundTripRepetitions = 3,
+            memorySizes = listOf(2000),
+            memoryRepetitions = 2,
+            floorCalls = 1000 to 10_000,
+            startupRepetitions = 3,
+            scripts = true,
+        )
+
+        /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
+        fun smoke(): BenchOptions = BenchOptions(
+            profile = "smoke",
+            benchmarks = Benchmark.values().toList(),
+            discoverySizes = listOf(10),
+            processWarmups = 0,
+            processRepetitions = { 1 },
+            libraryWarmups = 1,
+            libraryRepetitions = 2,
+            reactionChanges = 20,
+            monitoredComponents = 10,
+            monitoringWindow = 1.seconds,
+            monitoringWarmup = 500.milliseconds,
+            roundTripRepetitions = 1,
+            memorySizes = listOf(100),
+            memoryRepetitions = 1,
+            floorCalls = 50 to 200,
+            startupRepetitions = 1,
+            scripts = false,
+        )
+
+        /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */
+        fun parse(args: List<String>): BenchOptions {
+            var quick = false
+            var only: List<Benchmark> = Benchmark.values().toList()
+            var seconds: Double? = null
+            val rest = args.iterator()
+            while (rest.hasNext()) {
+                when (val arg = rest.next()) {
+                    "--quick" -> quick = true
+                    "--only" -> {
+                        val names = (if (rest.hasNext()) rest.next() else throw IllegalArgumentException("--only needs a list of benchmarks"))
+                            .split(',').map { it.trim() }.filter { it.isNotEmpty() }
+                        only = names.map { name ->
+                            Benchmark.values().firstOrNull { it.label == name }
+                                ?: throw IllegalArgumentException("--only: no benchmark '$name' (there are ${Benchmark.values().joinToString { it.label }})")
+                        }
+                    }
+                    "--seconds" -> seconds = (if (rest.hasNext()) rest.next() else null)?.toDoubleOrNull()?.takeIf { it > 0 }
+                        ?: throw IllegalArgumentException("--seconds needs a positive number")
+                    else -> throw IllegalArgumentException("unknown argument '$arg'")
+                }
+            }
+            val chosen = Benchmark.values().filter { it in only }
+            val options = if (quick) quick(chosen) else full(chosen)
+            return seconds?.let { options.copy(monitoringWindow = it.seconds) } ?: options
+        }
+    }
+}
