@@ -1,5 +1,6 @@
 package org.rtcoord.bench
 
+import kotlinx.coroutines.yield
 import java.lang.management.ManagementFactory
 
 /** The heap this JVM uses, as a benchmark reads it. */
@@ -9,8 +10,13 @@ internal object Heap {
     /** Heap in use now, garbage included, in bytes. */
     fun used(): Long = memory.heapMemoryUsage.used
 
-    /** Heap in use by reachable objects: after full collections, once the figure stops falling. */
-    fun live(): Long {
+    /**
+     * Heap in use by reachable objects: after full collections, once the figure stops falling. It first
+     * yields, because `runBlocking`'s event loop keeps the last continuation it ran in a slot of its
+     * thread's stack, and with it whatever that continuation reached: a tree closed a moment ago, all of it.
+     */
+    suspend fun live(): Long {
+        yield()
         var previous = Long.MAX_VALUE
         repeat(5) {
             System.gc()
