@@ -43,6 +43,9 @@ public class Coordinator(
     private val searches = ConcurrentHashMap<String, SuccessorSearch>()
     private val failureCount = AtomicInteger()
 
+    /** How rules, transitions and supervisors watch: the host's choice, else the script's. */
+    private val watching: EventOptions get() = options ?: coordination.watching
+
     private val interpreters = coordination.machines.map { machine ->
         MachineInterpreter(machine, scope, coordination.engine, Configurator(coordination.engine, scope), log, ::failed)
     }
@@ -70,7 +73,6 @@ public class Coordinator(
             coordination.rules.forEach { subscribe(it, targets(it.target)) }
             interpreters.forEach { watch(it) }
             coordination.supervisions.forEach { supervision ->
-                val watching = options ?: coordination.watching
                 supervisors += Supervisor(supervision, tree, coordination.engine, watching, scope, log) { escalated(supervision, it) }.also { it.start() }
             }
         } catch (e: Exception) {
@@ -91,7 +93,6 @@ public class Coordinator(
 
     /** Subscribes once per node and event type, however many of [machine]'s transitions watch for it. */
     private suspend fun watch(machine: MachineInterpreter) {
-        val watching = options ?: coordination.watching
         val groups = linkedMapOf<Pair<String, Class<*>>, Pair<Node, MutableList<EventPattern<*>>>>()
         for (pattern in machine.machine.eventPatterns) {
             for (node in targets(pattern.target)) groups.getOrPut(node.path.toString() to pattern.type) { node to mutableListOf() }.second += pattern
@@ -100,14 +101,12 @@ public class Coordinator(
     }
 
     private suspend fun watch(machine: MachineInterpreter, patterns: List<EventPattern<*>>, node: Node) {
-        val watching = options ?: coordination.watching
         val subscription = patterns.first().watch(tree, node, watching) { machine.offer(it, patterns) }
         watches += Watch(node, subscription) { new -> watch(machine, patterns, new) }
         searchOnDeath(patterns.first().target, node)
     }
 
     private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>, nodes: List<Node>) {
-        val watching = options ?: coordination.watching
         for (node in nodes) {
             watches += Watch(node, tree.on(node, rule.type, watching) { event -> fire(rule, event) }) { new -> subscribe(rule, listOf(new)) }
             searchOnDeath(rule.target, node)
@@ -125,7 +124,7 @@ public class Coordinator(
             else -> null
         }
         if (named == null || node !is ComponentNode || searches.containsKey(named.selector)) return
-        val search = SuccessorSearch(tree, coordination.engine, named.selector, node, options ?: coordination.watching, scope)
+        val search = SuccessorSearch(tree, coordination.engine, named.selector, node, watching, scope)
         if (searches.putIfAbsent(named.selector, search) == null) search.start()
     }
 
