@@ -47,7 +47,7 @@ class LsCommand : TreeCommand("ls") {
         val blocks = read.map { block -> Block(block.header, block.entries.filter { it.node !in unreachable }) }
         show(blocks)
         if (unreachable.isEmpty()) return
-        unreachable.distinctBy { it.path }.forEach { echo("rtcoord: ${it.path.nameServer}: ${it.cause.reason}", err = true) }
+        unreachable.distinctBy { it.path }.forEach { echo(CommandFailed("${it.path}: ${it.cause.reason}").message, err = true) }
         throw ProgramResult(1)
     }
 

@@ -67,7 +67,7 @@ class LsCommandTest {
         val dead = deadNameServer()
         val listed = runRtcoord("-n", address, "-n", dead, "ls", "-l")
         assertEquals("-  -  -  -  -  $address\n", listed.stdout)
-        assertTrue(listed.stderr.matches(Regex("rtcoord: ${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
+        assertTrue(listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
         assertEquals(1, listed.statusCode)
         // rtls fails on it too, with an error.
         val theirs = runPeer("rtls", "/$dead/")
@@ -81,11 +81,11 @@ class LsCommandTest {
         val recursive = runRtcoord("-n", dead[0], "-n", address, "-n", dead[1], "ls", "-R")
         assertEquals(1, recursive.statusCode)
         assertTrue(recursive.stdout.startsWith(".:\n$address/\n"), recursive.stdout)
-        assertEquals(dead.map { "rtcoord: $it" }, recursive.stderr.lines().filter { it.isNotEmpty() }.map { it.substringBefore(": unreachable") })
+        assertEquals(dead.map { "rtcoord: /$it" }, recursive.stderr.lines().filter { it.isNotEmpty() }.map { it.substringBefore(": unreachable") })
         val json = runRtcoord("-n", dead[0], "--json", "ls")
         assertEquals(1, json.statusCode)
         assertEquals("[]\n", json.stdout)
-        assertTrue(json.stderr.startsWith("rtcoord: ${dead[0]}: unreachable"), json.stderr)
+        assertTrue(json.stderr.startsWith("rtcoord: /${dead[0]}: unreachable"), json.stderr)
     }
 
     @Test
