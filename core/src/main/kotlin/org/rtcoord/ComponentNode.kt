@@ -6,7 +6,9 @@ import _SDOPackage.ConfigurationSet
 import _SDOPackage.NameValue
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.withContext
 import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.ComponentReader
 import org.rtcoord.internal.ParameterConstraint
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.name
@@ -55,6 +57,13 @@ public class ComponentNode internal constructor(
 
     /** The configuration sets, read now if they never were (later refreshes keep them up to date). */
     public suspend fun configuration(): ConfigurationSnapshot = snapshot().configuration ?: component.loadConfiguration(subject)
+
+    /**
+     * Whether the component is a composite and whether it is part of one, read now: snapshots leave it
+     * out, since it costs two calls and OpenRTM-aist composites are rare.
+     */
+    public suspend fun composition(): Composition =
+        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, component.ref).readComposition() }
 
     /** Whether this and [other] are the same component, reached by different paths or not. */
     public fun isSameComponent(other: ComponentNode): Boolean = component === other.component

@@ -12,6 +12,8 @@ public data class ComponentSnapshot(
     val version: String,
     val vendor: String,
     val category: String,
+    /** The instance name of the profile's parent object; null when it has none (OpenRTM-aist never sets one). */
+    val parent: String?,
     val properties: Map<String, String>,
     val ports: List<PortSnapshot>,
     val contexts: List<ContextSnapshot>,
@@ -33,16 +35,24 @@ public enum class PortKind { DATA_IN, DATA_OUT, SERVICE, OTHER }
 
 /**
  * A port: its short [name], OpenRTM's [fullName] (`instance.port`), kind, data type for data ports,
- * advertised properties and current connectors.
+ * the interfaces a service port provides and requires, advertised properties and current connectors.
  */
 public data class PortSnapshot(
     val name: String,
     val fullName: String,
     val kind: PortKind,
     val dataType: String?,
+    /** The service interfaces, in the order the component registered them; none for data ports. */
+    val interfaces: List<PortInterface>,
     val properties: Map<String, String>,
     val connectors: List<ConnectorSnapshot>,
 )
+
+/** A service interface of a port, from its `PortInterfaceProfile`: [instanceName] of IDL type [typeName]. */
+public data class PortInterface(val instanceName: String, val typeName: String, val polarity: Polarity) {
+    /** Whether the port provides the interface (serves it) or requires it (calls one provided elsewhere). */
+    public enum class Polarity { PROVIDED, REQUIRED }
+}
 
 /** A connection as one of its ports records it; [Port.connections] resolves its ends to tree paths. */
 public data class ConnectorSnapshot(
@@ -63,6 +73,12 @@ public data class ContextSnapshot(
     val state: LifeCycle,
     /** How many components take part in it. */
     val participants: Int,
+    /**
+     * The context's profile properties: OpenRTM-aist puts there the options it was created with
+     * (`type`, `rate` as configured, `sync_transition`, `transition_timeout`...); empty for a context
+     * without a profile.
+     */
+    val properties: Map<String, String>,
 )
 
 /** Configuration sets by id (hidden `__name__` sets included) and which one is active. */

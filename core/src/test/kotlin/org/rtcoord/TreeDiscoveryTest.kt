@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.rtSystem
 import org.rtcoord.fixtures.runPeer
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.measureTime
@@ -27,6 +28,27 @@ class TreeDiscoveryTest {
 
         val listing = runPeer("rtls", "-R", "/${localisation.naming.address}/").ok().output
         assertEquals(rtlsPaths(listing), ours)
+    }
+
+    @Test
+    fun `snapshots carry service interfaces, contexts' properties and the parent, and the composition is read on demand`(): Unit = runBlocking {
+        rtSystem(localisation.naming.corbaloc) { component(Scenarios.mapServer) }.use {
+            val node = tree.component(localisation.path("map_server0.rtc"))
+            val snapshot = node.snapshot()
+            assertEquals(
+                listOf(
+                    PortInterface("map", "MapServer::Map", PortInterface.Polarity.PROVIDED),
+                    PortInterface("pose", "Localisation::PoseSource", PortInterface.Polarity.REQUIRED),
+                ),
+                snapshot.port("map")!!.interfaces,
+            )
+            assertEquals(
+                mapOf("sync_transition" to "YES", "transition_timeout" to "0.5", "type" to "PeriodicExecutionContext", "rate" to "100.0"),
+                snapshot.context(0)!!.properties,
+            )
+            assertEquals(null, snapshot.parent)
+            assertEquals(Composition(isComposite = false, isMember = false), node.composition())
+        }
     }
 
     @Test

@@ -5,16 +5,19 @@ import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.Composition
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.RtcPath
 
 /**
- * What `cat` shows of a component: profile, execution contexts, ports with their connections and,
- * when asked for, configuration. Read in one go, printed afterwards.
+ * What `cat` shows of a component: profile with its place in composites, execution contexts, ports
+ * with their interfaces and connections and, when asked for, configuration. Read in one go, printed
+ * afterwards.
  */
 internal class ComponentReport private constructor(
     private val path: RtcPath,
     private val snapshot: ComponentSnapshot,
+    private val composition: Composition,
     private val ports: List<PortReport>,
     private val configuration: ConfigurationSnapshot?,
 ) {
@@ -30,7 +33,7 @@ internal class ComponentReport private constructor(
                     listOf("Vendor", snapshot.vendor),
                     listOf("Category", snapshot.category),
                     listOf("Description", snapshot.description),
-                ),
+                ) + listOfNotNull(snapshot.parent?.let { listOf("Parent", it) }) + listOf(listOf("Type", typeLabel)),
                 "  ",
             ),
         )
@@ -39,21 +42,23 @@ internal class ComponentReport private constructor(
             addAll(aligned(sorted(snapshot.properties), "    "))
         }
         add("  Execution contexts")
-        addAll(
-            aligned(
-                snapshot.contexts.map { context ->
-                    listOf(
-                        context.handle.toString(),
-                        context.kind,
-                        "${context.rate} Hz",
-                        if (context.running) "running" else "stopped",
-                        stateLabel(context.state),
-                        if (context.owned) "owned" else "participating",
-                    )
-                },
-                "    ",
-            ),
+        val contextLines = aligned(
+            snapshot.contexts.map { context ->
+                listOf(
+                    context.handle.toString(),
+                    context.kind,
+                    "${context.rate} Hz",
+                    if (context.running) "running" else "stopped",
+                    stateLabel(context.state),
+                    if (context.owned) "owned" else "participating",
+                )
+            },
+            "    ",
         )
+        snapshot.contexts.zip(contextLines).forEach { (context, line) ->
+            add(line)
+            if (long) addAll(aligned(sorted(context.properties), "        "))
+        }
         add("  Ports")
         ports.forEach { addAll(it.lines(long, "    ")) }
         configuration?.let { configuration ->
@@ -72,6 +77,8 @@ internal class ComponentReport private constructor(
         put("vendor", snapshot.vendor)
         put("category", snapshot.category)
         put("description", snapshot.description)
+        put("parent", snapshot.parent)
+        put("type", typeLabel)
         put("state", snapshot.overallState.name)
         put("properties", snapshot.properties.toSortedMap())
         put(
@@ -85,6 +92,7 @@ internal class ComponentReport private constructor(
                     "running" to context.running,
                     "state" to context.state.name,
                     "participants" to context.participants,
+                    "properties" to context.properties.toSortedMap(),
                 )
             },
         )
@@ -92,14 +100,19 @@ internal class ComponentReport private constructor(
         configuration?.let { put("configuration", it.toJson(it.shownSets(showHidden = false))) }
     }
 
+    /** The component's type as rtcat names it: monolithic or composite, and whether it is part of a composite. */
+    private val typeLabel: String
+        get() = (if (composition.isComposite) "Composite" else "Monolithic") + if (composition.isMember) " composite member" else ""
+
     companion object {
         /** Reads [component] now; its configuration too when [withConfiguration]. */
         suspend fun read(component: ComponentNode, withConfiguration: Boolean): ComponentReport = coroutineScope {
+            val composition = async { component.composition() }
             component.refresh()
             val snapshot = component.snapshot()
             val configuration = if (withConfiguration) async { component.configuration() } else null
             val ports = snapshot.ports.map { port -> async { PortReport.read(component.port(port.name)) } }
-            ComponentReport(component.path, snapshot, ports.awaitAll(), configuration?.await())
+            ComponentReport(component.path, snapshot, composition.await(), ports.awaitAll(), configuration?.await())
         }
     }
 }

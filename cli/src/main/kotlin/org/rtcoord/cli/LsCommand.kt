@@ -1,6 +1,7 @@
 package org.rtcoord.cli
 
 import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.ProgramResult
 import com.github.ajalt.clikt.core.terminal
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
@@ -9,15 +10,18 @@ import com.github.ajalt.clikt.parameters.options.option
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.Node
+import org.rtcoord.RtcPath
 import org.rtcoord.TimedOutException
 import org.rtcoord.UnreachableException
 import org.rtcoord.WrongKindException
+import org.rtcoord.ZombieNode
 
 /** `rtcoord ls`: rtls, without its hangs, its 200-entry limit or its all-or-nothing failures. */
 class LsCommand : TreeCommand("ls") {
     override fun help(context: Context): String =
         "List name servers, naming contexts, managers and components, as rtls does. Directories end in '/', " +
-            "dead registrations (zombies) start with '*'. With no PATH, list the name servers given by -n or the environment."
+            "dead registrations (zombies) start with '*'. With no PATH, list the name servers given by -n or the environment. " +
+            "A name server that cannot be reached is reported on stderr, one line each, and the status is 1; what can be reached is listed."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord -n localhost ls" to "the name server's root context",
@@ -37,7 +41,17 @@ class LsCommand : TreeCommand("ls") {
             if (session.nameServers.isEmpty()) usage("no PATH and no name server: give a PATH, -n HOST[:PORT] or RTCOORD_NAMESERVERS")
             listOf("/")
         }
-        val blocks = targets.flatMap { listing(it, headed = targets.size > 1) }
+        val read = targets.flatMap { listing(it, headed = targets.size > 1) }
+        // As rtls fails on a name server it cannot reach, rather than list it as a dead registration.
+        val unreachable = read.flatMap { block -> block.entries.map { it.node }.filterIsInstance<ZombieNode>().filter { it.path.isNameServer } }
+        val blocks = read.map { block -> Block(block.header, block.entries.filter { it.node !in unreachable }) }
+        show(blocks)
+        if (unreachable.isEmpty()) return
+        unreachable.distinctBy { it.path }.forEach { echo(CommandFailed("${it.path}: ${it.cause.reason}").message, err = true) }
+        throw ProgramResult(1)
+    }
+
+    private fun show(blocks: List<Block>) {
         if (session.json) {
             echoJson(blocks.flatMap { block -> block.entries.map { it.toJson() } })
             return
@@ -96,6 +110,9 @@ class LsCommand : TreeCommand("ls") {
     /** [directory] and every directory below it, depth first, each before its children, as rtls -R lists them. */
     private fun directoriesBelow(directory: DirectoryNode): List<DirectoryNode> =
         listOf(directory) + directory.listed.value.orEmpty().filterIsInstance<DirectoryNode>().flatMap(::directoriesBelow)
+
+    /** Whether the path is a name server's root context, `/host:port`. */
+    private val RtcPath.isNameServer: Boolean get() = nameServer != null && names.isEmpty() && objectReference == null
 
     /** A listing under an optional `header:` line. */
     private class Block(val header: String?, val entries: List<Entry>)

@@ -2,18 +2,24 @@ package org.rtcoord.cli
 
 import org.rtcoord.Connection
 import org.rtcoord.Port
+import org.rtcoord.PortInterface
 import org.rtcoord.PortKind
 import org.rtcoord.PortSnapshot
 
-/** What `cat` shows of a port: kind, data type and its connections with the far ends as tree paths. */
+/**
+ * What `cat` shows of a port: kind, data type or service interfaces, and its connections with the far
+ * ends as tree paths.
+ */
 internal class PortReport(val snapshot: PortSnapshot, val connections: List<Connection>) {
     /**
-     * A heading line `name  kind  type`, then one line per connection; [long] adds the port's properties
-     * below the heading and each connector's below its line.
+     * A heading line `name  kind  type`, a service port's interfaces (`Provided  instance  type`), then
+     * one line per connection; [long] adds the port's properties below the heading and each connector's
+     * below its line.
      */
     fun lines(long: Boolean, indent: String): List<String> = buildList {
         add(indent + listOfNotNull(snapshot.name, kindLabel(snapshot.kind), snapshot.dataType).joinToString("  "))
         if (long) addAll(aligned(sorted(snapshot.properties), "$indent    "))
+        addAll(aligned(snapshot.interfaces.map { listOf(polarityLabel(it.polarity), it.instanceName, it.typeName) }, "$indent  "))
         val arrow = when (snapshot.kind) {
             PortKind.DATA_OUT -> "->"
             PortKind.DATA_IN -> "<-"
@@ -32,6 +38,7 @@ internal class PortReport(val snapshot: PortSnapshot, val connections: List<Conn
         "name" to snapshot.name,
         "kind" to kindLabel(snapshot.kind),
         "dataType" to snapshot.dataType,
+        "interfaces" to snapshot.interfaces.map { mapOf("instanceName" to it.instanceName, "typeName" to it.typeName, "polarity" to it.polarity.name) },
         "properties" to snapshot.properties.toSortedMap(),
         "connections" to connections.map { connection ->
             mapOf(
@@ -53,6 +60,9 @@ internal class PortReport(val snapshot: PortSnapshot, val connections: List<Conn
             val snapshot = port.snapshot()
             return PortReport(snapshot, if (snapshot.connectors.isEmpty()) emptyList() else port.connections())
         }
+
+        /** A polarity as rtcat prints it: `Provided`, `Required`. */
+        fun polarityLabel(polarity: PortInterface.Polarity): String = polarity.name.lowercase().replaceFirstChar { it.uppercase() }
 
         /** The port types OpenRTM writes in `port.port_type`. */
         fun kindLabel(kind: PortKind): String = when (kind) {

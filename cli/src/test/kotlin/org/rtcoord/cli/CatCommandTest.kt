@@ -5,6 +5,9 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
+import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.rtSystem
+import org.rtcoord.fixtures.runPeer
 
 /** `cat` of components, ports and managers of the localisation system. */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
@@ -26,6 +29,7 @@ class CatCommandTest {
               Vendor         rtcoord
               Category       fixture
               Description    rtcoord fixture component laser_localise
+              Type           Monolithic
               Execution contexts
                 0  PERIODIC  100.0 Hz  running  Active  owned
               Ports
@@ -46,6 +50,64 @@ class CatCommandTest {
         assertTrue(shown.endsWith("  Configuration\n    * default\n        fail  0\n        gain  1.0\n      precise\n        fail  0\n        gain  0.5\n"), shown)
         assertTrue("dataport.subscription_type  flush,new,periodic" in shown, shown)
         assertTrue("__constraints__" !in shown, shown)
+    }
+
+    @Test
+    fun `-l shows a service port's interfaces and each context's properties, as rtcat -ll does`() {
+        rtSystem(localisation.naming.corbaloc) { component(Scenarios.mapServer) }.use {
+            val path = localisation.path("map_server0.rtc")
+            val shown = runRtcoord("cat", "-l", path).ok()
+            assertTrue(
+                shown.contains(
+                    """
+                    |    0  PERIODIC  100.0 Hz  running  Inactive  owned
+                    |        rate                100.0
+                    |        sync_transition     YES
+                    |        transition_timeout  0.5
+                    |        type                PeriodicExecutionContext
+                    |  Ports
+                    |    map  CorbaPort
+                    |        port.port_type  CorbaPort
+                    |      Provided  map   MapServer::Map
+                    |      Required  pose  Localisation::PoseSource
+                    |
+                    """.trimMargin(),
+                ),
+                shown,
+            )
+            assertTrue("\n  Type           Monolithic\n" in shown, shown)
+            // rtcat -ll says the same, in its own layout.
+            val theirs = runPeer("rtcat", "-ll", path).ok().output
+            for (line in listOf(
+                "Type           Monolithic", "Instance name  map", "Type name      MapServer::Map", "Polarity       Provided",
+                "Instance name  pose", "Type name      Localisation::PoseSource", "Polarity       Required",
+                "sync_transition     YES", "transition_timeout  0.5", "type                PeriodicExecutionContext", "rate                100.0",
+            )) assertTrue(line in theirs, "rtcat -ll lacks `$line`:\n$theirs")
+        }
+    }
+
+    @Test
+    fun `--json holds the interfaces, the contexts' properties, the parent and the type`() {
+        rtSystem(localisation.naming.corbaloc) { component(Scenarios.mapServer) }.use {
+            val json = runRtcoord("--json", "cat", localisation.path("map_server0.rtc")).ok()
+            assertTrue("\"parent\": null,\n    \"type\": \"Monolithic\"," in json, json)
+            assertTrue("\"properties\": {\n          \"rate\": \"100.0\",\n          \"sync_transition\": \"YES\"," in json, json)
+            val interfaces = """
+                "interfaces": [
+                  {
+                    "instanceName": "map",
+                    "typeName": "MapServer::Map",
+                    "polarity": "PROVIDED"
+                  },
+                  {
+                    "instanceName": "pose",
+                    "typeName": "Localisation::PoseSource",
+                    "polarity": "REQUIRED"
+                  }
+                ],
+            """.trimIndent().prependIndent("        ")
+            assertTrue(interfaces in json, json)
+        }
     }
 
     @Test

@@ -4,6 +4,7 @@ import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
+import org.rtcoord.fixtures.runPeer
 
 /** `find` with each filter, alone and combined. */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
@@ -23,6 +24,19 @@ class FindCommandTest {
         assertEquals(listOf(host), find("--type", "context"))
         assertEquals(emptyList<String>(), find("--type", "zombie"))
         assertEquals(8, find("--type", "component").size, "each component below its context and below its manager")
+    }
+
+    @Test
+    fun `names and directories are found as rtfind finds them`() {
+        fun rtfind(vararg arguments: String) = runPeer("rtfind", "$host/", *arguments).ok().output.lines().filter { it.isNotEmpty() }.sorted()
+        // rtfind searches the whole path for the pattern: no need to write the `.rtc`.
+        assertEquals(listOf("$slave/laser0.rtc", localisation.path("laser0.rtc")), find("--name", "laser0"))
+        assertEquals(rtfind("-n", "laser0"), find("--name", "laser0").sorted())
+        assertEquals(rtfind("-n", "local*0"), find("--name", "local*0").sorted())
+        assertEquals(rtfind("-n", "slave"), find("--name", "slave").sorted())
+        // rtfind's d: naming contexts, name servers and managers.
+        assertEquals(listOf(host, localisation.path("manager.mgr"), slave), find("--type", "directory"))
+        assertEquals(rtfind("-t", "d"), find("--type", "directory").sorted())
     }
 
     @Test

@@ -47,7 +47,10 @@ class GlobalOptionsTest {
         val both = mapOf("RTCOORD_NAMESERVERS" to address, "RTCTREE_NAMESERVERS" to dead)
         assertEquals("$address/\n", runRtcoord("ls", environment = both).ok())
         assertEquals("$address/\n", runRtcoord("-n", address, "ls", environment = mapOf("RTCOORD_NAMESERVERS" to dead)).ok())
-        assertEquals("$address/\n*$dead\n", runRtcoord("ls", environment = mapOf("RTCTREE_NAMESERVERS" to "$address;$dead")).ok())
+        val listed = runRtcoord("ls", environment = mapOf("RTCTREE_NAMESERVERS" to "$address;$dead"))
+        assertEquals("$address/\n", listed.stdout)
+        assertTrue(listed.stderr.startsWith("rtcoord: /$dead: unreachable"), listed.stderr)
+        assertEquals(1, listed.statusCode)
     }
 
     @Test

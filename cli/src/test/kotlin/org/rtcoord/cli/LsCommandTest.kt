@@ -63,10 +63,29 @@ class LsCommandTest {
     }
 
     @Test
-    fun `a dead name server among live ones is one zombie line, not a failure`() {
+    fun `a dead name server among live ones is an error line and status 1, the live ones still listed`() {
         val dead = deadNameServer()
-        val listed = runRtcoord("-n", address, "-n", dead, "ls", "-l").ok()
-        assertEquals("-  -  -  -  -  $address\n-  -  -  -  -  *$dead\n", listed)
+        val listed = runRtcoord("-n", address, "-n", dead, "ls", "-l")
+        assertEquals("-  -  -  -  -  $address\n", listed.stdout)
+        assertTrue(listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
+        assertEquals(1, listed.statusCode)
+        // rtls fails on it too, with an error.
+        val theirs = runPeer("rtls", "/$dead/")
+        assertEquals(1, theirs.exitCode)
+        assertTrue(theirs.errors.startsWith("rtls: "), theirs.errors)
+    }
+
+    @Test
+    fun `each dead name server has its own line, under -R and --json too`() {
+        val dead = listOf(deadNameServer(), deadNameServer())
+        val recursive = runRtcoord("-n", dead[0], "-n", address, "-n", dead[1], "ls", "-R")
+        assertEquals(1, recursive.statusCode)
+        assertTrue(recursive.stdout.startsWith(".:\n$address/\n"), recursive.stdout)
+        assertEquals(dead.map { "rtcoord: /$it" }, recursive.stderr.lines().filter { it.isNotEmpty() }.map { it.substringBefore(": unreachable") })
+        val json = runRtcoord("-n", dead[0], "--json", "ls")
+        assertEquals(1, json.statusCode)
+        assertEquals("[]\n", json.stdout)
+        assertTrue(json.stderr.startsWith("rtcoord: /${dead[0]}: unreachable"), json.stderr)
     }
 
     @Test

@@ -13,11 +13,13 @@ import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ComponentSummary
+import org.rtcoord.Composition
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.ContextSnapshot
 import org.rtcoord.LifeCycle
 import org.rtcoord.OperationUnsupportedException
+import org.rtcoord.PortInterface
 import org.rtcoord.PortKind
 import org.rtcoord.PortSnapshot
 
@@ -36,6 +38,8 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
         val profile = async { readProfile() }
         val contexts = async { readContexts().map { (context, isOwned, handle) -> async { readContext(context, isOwned, handle) } }.awaitAll() }
         val p = profile.await()
+        // OpenRTM-aist never sets a parent: the extra call is made only for a component that has one.
+        val parent = p.parent?.let { parent -> remote.call(subject, "get_component_profile of the parent") { parent.get_component_profile() }.instance_name }
         val read = contexts.await()
         val snapshot = ComponentSnapshot(
             instanceName = p.instance_name,
@@ -44,6 +48,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
             version = p.version,
             vendor = p.vendor,
             category = p.category,
+            parent = parent,
             properties = p.properties.toMap(),
             ports = portsOf(p),
             contexts = read.map { it.first },
@@ -87,6 +92,10 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
                 else -> PortKind.OTHER
             },
             dataType = properties["dataport.data_type"],
+            interfaces = port.interfaces.map { profile ->
+                val polarity = if (profile.polarity == RTC.PortInterfacePolarity.PROVIDED) PortInterface.Polarity.PROVIDED else PortInterface.Polarity.REQUIRED
+                PortInterface(profile.instance_name, profile.type_name, polarity)
+            },
             properties = properties,
             connectors = port.connector_profiles.map { connector ->
                 ConnectorSnapshot(connector.connector_id, connector.name, connector.properties.toMap())
@@ -101,13 +110,23 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
             // Plain ExecutionContexts have no profile: fall back to what every context answers.
             try {
                 remote.call(subject, "get_profile") { ExecutionContextServiceHelper.unchecked_narrow(context).get_profile() }
-                    .let { Triple(it.kind.label(), it.rate, it.participants.size) }
+                    .let { ContextProfile(it.kind.label(), it.rate, it.participants.size, it.properties.toMap()) }
             } catch (e: OperationUnsupportedException) {
-                Triple(remote.call(subject, "get_kind") { context.get_kind() }.label(), remote.call(subject, "get_rate") { context.get_rate() }, 0)
+                ContextProfile(remote.call(subject, "get_kind") { context.get_kind() }.label(), remote.call(subject, "get_rate") { context.get_rate() }, 0, emptyMap())
             }
         }
-        val (kind, rate, participants) = profile.await()
-        ContextSnapshot(handle, owned, kind, rate, running.await(), LifeCycle.of(state.await()), participants) to context
+        val (kind, rate, participants, properties) = profile.await()
+        ContextSnapshot(handle, owned, kind, rate, running.await(), LifeCycle.of(state.await()), participants, properties) to context
+    }
+
+    /** What a context's profile says of it, or what a plain context answers in its place. */
+    private data class ContextProfile(val kind: String, val rate: Double, val participants: Int, val properties: Map<String, String>)
+
+    /** Whether the component owns SDO organisations (a composite) and belongs to any (a member), as rtctree reads it. */
+    suspend fun readComposition(): Composition = coroutineScope {
+        val owned = async { remote.call(subject, "get_owned_organizations") { ref.get_owned_organizations() } }
+        val memberOf = async { remote.call(subject, "get_organizations") { ref.get_organizations() } }
+        Composition(isComposite = owned.await().isNotEmpty(), isMember = memberOf.await().isNotEmpty())
     }
 
     /** The configuration sets, through [configuration] (the component's, fetched when null). */
