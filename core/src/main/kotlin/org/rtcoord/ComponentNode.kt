@@ -111,7 +111,7 @@ public class ComponentNode internal constructor(
      * changes: the set and every parameter must exist, and each value must meet the constraint the
      * component declares for it in its `__constraints__` set (`0<x<10`, `(slow,fast)`). OpenRTM-aist
      * leaves a component with no active set after a write, applying nothing: so the set that was active
-     * (or [set], when none was) is activated again, and the values and the active set are read back.
+     * (or [set], when none was) is activated again, and the values are read back with a set active.
      * A component with no active set needs [set] named.
      */
     public suspend fun setParameters(values: Map<String, String>, set: String? = null) {
