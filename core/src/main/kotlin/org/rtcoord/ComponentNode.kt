@@ -2,18 +2,15 @@ package org.rtcoord
 
 import RTC.ExecutionContext
 import RTC.ReturnCode_t
-import _SDOPackage.ConfigurationSet
-import _SDOPackage.NameValue
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.withContext
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.ComponentReader
-import org.rtcoord.internal.ParameterConstraint
+import org.rtcoord.internal.ConfigurationWriter
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.name
 import org.rtcoord.internal.orFail
-import org.rtcoord.internal.toMap
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
@@ -119,60 +116,37 @@ public class ComponentNode internal constructor(
 
     /**
      * Sets several parameters of configuration set [set] (the active one by default) in one call, so
-     * either all change or none does. Checked first, before anything changes: the set and every parameter
-     * must exist, and each value must meet the constraint the component declares for it in its
-     * `__constraints__` set (`0<x<10`, `(slow,fast)`). The component itself may still refuse a value it
-     * cannot use: a [BadParameterException] then too.
+     * either all change or none does, and makes the change take effect. Checked first, before anything
+     * changes: the set and every parameter must exist, and each value must meet the constraint the
+     * component declares for it in its `__constraints__` set (`0<x<10`, `(slow,fast)`). OpenRTM-aist
+     * leaves a component with no active set after a write, applying nothing: so the set that was active
+     * (or [set], when none was) is activated again, and the values are read back with a set active.
+     * A component with no active set needs [set] named.
      */
     public suspend fun setParameters(values: Map<String, String>, set: String? = null) {
-        require(values.isNotEmpty()) { "no parameters to set" }
-        val operation = "set ${values.keys.joinToString()}"
-        val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
-        val sets = core.remote.call(subject, "get_configuration_sets") { configuration.get_configuration_sets() }
-        val target = set ?: core.remote.call(subject, "get_active_configuration_set") { configuration.get_active_configuration_set().id }
-        val current = sets.firstOrNull { it.id == target }
-            ?: throw NotFoundException(subject, "no configuration set '$target' (sets: ${sets.map { it.id }.sorted().joinToString()})")
-        val parameters = current.configuration_data.map { it.name }
-        values.keys.firstOrNull { it !in parameters }?.let { missing ->
-            throw NotFoundException(subject, "no parameter '$missing' in configuration set '$target' (parameters: ${parameters.sorted().joinToString()})")
-        }
-        val constraints = sets.firstOrNull { it.id == CONSTRAINTS }?.configuration_data?.toMap().orEmpty()
-        for ((name, value) in values) {
-            val violation = constraints[name]?.let { ParameterConstraint.violation(it, value) } ?: continue
-            throw BadParameterException(subject, "set $name", violation)
-        }
-        val merged = current.configuration_data.map { entry -> values[entry.name]?.let { stringValue(entry.name, it) } ?: entry }
-        val accepted = core.remote.call(subject, operation) {
-            configuration.set_configuration_set_values(ConfigurationSet(target, current.description, merged.toTypedArray()))
-        }
-        if (!accepted) throw BadParameterException(subject, operation, "refused in set '$target'")
+        configurationWriter().setValues(values, set)
         refresh()
     }
 
-    /** Makes configuration set [id] the active one. */
+    /** Makes configuration set [id] the active one; this works on a component that has no active set too. */
     public suspend fun activateConfigurationSet(id: String) {
-        configurationCall("activate configuration set '$id'") { it.activate_configuration_set(id) }
-    }
-
-    /** Adds configuration set [id] holding [values]. */
-    public suspend fun addConfigurationSet(id: String, values: Map<String, String>) {
-        configurationCall("add configuration set '$id'") { configuration ->
-            configuration.add_configuration_set(ConfigurationSet(id, "", values.map { (k, v) -> stringValue(k, v) }.toTypedArray()))
-        }
-    }
-
-    /** Removes configuration set [id]. */
-    public suspend fun removeConfigurationSet(id: String) {
-        configurationCall("remove configuration set '$id'") { it.remove_configuration_set(id) }
-    }
-
-    private suspend fun configurationCall(operation: String, call: (_SDOPackage.Configuration) -> Boolean) {
-        val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
-        if (!core.remote.call(subject, operation) { call(configuration) }) throw OperationFailedException(subject, operation, "false")
+        configurationWriter().activate(id)
         refresh()
     }
 
-    private fun stringValue(name: String, value: String) = NameValue(name, core.orb.orb.create_any().apply { insert_string(value) })
+    /** Adds configuration set [id] holding [values]; the active set stays active. */
+    public suspend fun addConfigurationSet(id: String, values: Map<String, String>) {
+        configurationWriter().add(id, values)
+        refresh()
+    }
+
+    /** Removes configuration set [id] (one added at run time, not the active one); the active set stays active. */
+    public suspend fun removeConfigurationSet(id: String) {
+        configurationWriter().remove(id)
+        refresh()
+    }
+
+    private fun configurationWriter() = ConfigurationWriter(core.remote, core.orb.orb, subject, component.ref)
 
     internal suspend fun resolve(selector: ContextSelector): Pair<Int, ExecutionContext> {
         val snapshot = snapshot()
@@ -222,10 +196,5 @@ public class ComponentNode internal constructor(
             delay(pause)
             pause = (pause * 2).coerceAtMost(20.milliseconds)
         }
-    }
-
-    private companion object {
-        /** The hidden configuration set where a component declares its parameters' constraints. */
-        const val CONSTRAINTS = "__constraints__"
     }
 }

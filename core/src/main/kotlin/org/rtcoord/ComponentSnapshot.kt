@@ -81,12 +81,15 @@ public data class ContextSnapshot(
     val properties: Map<String, String>,
 )
 
-/** Configuration sets by id (hidden `__name__` sets included) and which one is active. */
-public data class ConfigurationSnapshot(val sets: Map<String, Map<String, String>>, val activeSet: String) {
-    /** The value of [parameter] in the active set, or null. */
-    public fun value(parameter: String): String? = sets[activeSet]?.get(parameter)
+/**
+ * Configuration sets by id (hidden `__name__` sets included) and which one is active: null when none is,
+ * as OpenRTM-aist leaves a component after a set was written, added or removed until one is activated.
+ */
+public data class ConfigurationSnapshot(val sets: Map<String, Map<String, String>>, val activeSet: String?) {
+    /** The value of [parameter] in the active set, or null (also when no set is active). */
+    public fun value(parameter: String): String? = activeSet?.let { sets[it]?.get(parameter) }
 
     internal companion object {
-        val NONE = ConfigurationSnapshot(emptyMap(), "")
+        val NONE = ConfigurationSnapshot(emptyMap(), null)
     }
 }

@@ -33,8 +33,8 @@ public data class PortDisconnected(override val source: ComponentNode, val port:
 /** Parameter [name] of configuration set [set] changed from [old] to [new] (null: absent). */
 public data class ParameterChanged(override val source: ComponentNode, val set: String, val name: String, val old: String?, val new: String?) : RtcEvent()
 
-/** The active configuration set changed from [old] to [new]. */
-public data class ConfigurationSetActivated(override val source: ComponentNode, val old: String, val new: String) : RtcEvent()
+/** The active configuration set changed from [old] to [new]; null is none active (after a set was written, added or removed). */
+public data class ConfigurationSetActivated(override val source: ComponentNode, val old: String?, val new: String?) : RtcEvent()
 
 /** Configuration set [id] was added. */
 public data class ConfigurationSetAdded(override val source: ComponentNode, val id: String) : RtcEvent()

@@ -107,20 +107,56 @@ class TreeOperationsTest {
     @Test
     fun `configuration parameters and sets change as rtconf reads them`(): Unit = runBlocking {
         val localiser = tree.component(path("laser_localise0.rtc"))
+        val fixture = localisation.system.component("laser_localise0")
         localiser.setParameter("gain", "2.5")
         assertEquals("2.5", runPeer("rtconf", path("laser_localise0.rtc"), "get", "gain").ok().output.trim())
+        assertEquals("+default*\n+precise", rtconfList())
+        await("the component to use gain 2.5") { fixture.parameter("gain") == "2.5" }
         assertThrows(BadParameterException::class.java) { runBlocking { localiser.setParameter("gain", "fast") } }
         assertThrows(NotFoundException::class.java) { runBlocking { localiser.setParameter("speed", "1") } }
 
         localiser.activateConfigurationSet("precise")
-        assertEquals("+default\n+precise*", runPeer("rtconf", path("laser_localise0.rtc"), "list").ok().output.trim())
+        assertEquals("+default\n+precise*", rtconfList())
         localiser.addConfigurationSet("night", mapOf("gain" to "3.0", "fail" to "0"))
         assertEquals("3.0", seenConfiguration("laser_localise0.rtc").sets.getValue("night")["gain"])
+        assertEquals("precise", fixture.activeConfigurationSet, "adding a set keeps the active one")
         assertThrows(BadParameterException::class.java) { runBlocking { localiser.removeConfigurationSet("precise") } }
         localiser.removeConfigurationSet("night")
         assertFalse("night" in seenConfiguration("laser_localise0.rtc").sets)
-        assertThrows(BadParameterException::class.java) { runBlocking { localiser.activateConfigurationSet("missing") } }
+        assertEquals("precise", fixture.activeConfigurationSet, "removing a set keeps the active one")
+        val missing = assertThrows(NotFoundException::class.java) { runBlocking { localiser.activateConfigurationSet("missing") } }
+        assertEquals("${path("laser_localise0.rtc")}: no configuration set 'missing' (sets: __constraints__, default, precise)", missing.message)
     }
+
+    @Test
+    fun `a component left with no active set is read as such and repaired by naming a set`(): Unit = runBlocking {
+        val localiser = tree.component(path("laser_localise0.rtc"))
+        val fixture = localisation.system.component("laser_localise0")
+        // rtconf writes a set that is not active without activating anything: OpenRTM-aist then has none active.
+        runPeer("rtconf", path("laser_localise0.rtc"), "-s", "precise", "set", "gain", "0.25").ok()
+        val none = seenConfiguration("laser_localise0.rtc")
+        assertEquals(null, none.activeSet)
+        assertEquals(null, none.value("gain"))
+        assertEquals("0.25", none.sets.getValue("precise")["gain"])
+
+        val unnamed = assertThrows(PreconditionNotMetException::class.java) { runBlocking { localiser.setParameter("gain", "3.0") } }
+        assertEquals(
+            "${path("laser_localise0.rtc")}: set gain refused: no configuration set is active: name the set to change (sets: __constraints__, default, precise)",
+            unnamed.message,
+        )
+        localiser.setParameter("gain", "0.75", set = "precise")
+        assertEquals("precise", fixture.activeConfigurationSet)
+        await("the component to use gain 0.75") { fixture.parameter("gain") == "0.75" }
+        assertEquals("+default\n+precise*", rtconfList())
+
+        runPeer("rtconf", path("laser_localise0.rtc"), "-s", "default", "set", "gain", "4.0").ok()
+        assertEquals(null, seenConfiguration("laser_localise0.rtc").activeSet)
+        localiser.activateConfigurationSet("default")
+        assertEquals("default", localiser.configuration().activeSet)
+        await("the component to use gain 4.0") { fixture.parameter("gain") == "4.0" }
+    }
+
+    private fun rtconfList() = runPeer("rtconf", path("laser_localise0.rtc"), "list").ok().output.trim()
 
     @Test
     fun `execution context rate and participants change`(): Unit = runBlocking {

@@ -5,14 +5,12 @@ import com.github.ajalt.clikt.parameters.arguments.argument
 
 /** `rtcoord conf PATH act SET`: switches the active configuration set. */
 class ConfActCommand(private val conf: ConfCommand) : TreeCommand("act") {
-    override fun help(context: Context): String = "Make configuration set SET the active one."
+    override fun help(context: Context): String =
+        "Make configuration set SET the active one; this also repairs a component left with no active set."
 
     private val set by argument("SET", help = "The set to activate.")
 
     override suspend fun execute() {
-        val component = component(conf.path)
-        val sets = component.configuration().sets.keys
-        if (set !in sets) throw noSuchSet(component, set, sets)
-        component.activateConfigurationSet(set)
+        component(conf.path).activateConfigurationSet(set)
     }
 }

@@ -16,7 +16,7 @@ class ConfGetCommand(private val conf: ConfCommand) : TreeCommand("get") {
     override suspend fun execute() {
         val component = component(conf.path)
         val configuration = component.configuration()
-        val id = set ?: configuration.activeSet
+        val id = set ?: configuration.activeSet ?: throw noActiveSet(component, "get $name", configuration)
         val parameters = configuration.sets[id]
             ?: throw noSuchSet(component, id, configuration.sets.keys)
         val value = parameters[name]

@@ -7,7 +7,8 @@ import com.github.ajalt.clikt.parameters.options.option
 /** `rtcoord conf PATH list`: the configuration sets and their parameters. */
 class ConfListCommand(private val conf: ConfCommand) : TreeCommand("list") {
     override fun help(context: Context): String =
-        "List the configuration sets and their parameters, the active set marked '*'. OpenRTM's hidden sets " +
+        "List the configuration sets and their parameters, the active set marked '*' (none is after a set was " +
+            "written without being activated). OpenRTM's hidden sets " +
             "(__constraints__ and the like) only with --all."
 
     private val set by option("--set", metavar = "SET", help = "Only this set.")
@@ -26,6 +27,13 @@ class ConfListCommand(private val conf: ConfCommand) : TreeCommand("list") {
             throw noSuchSet(component, set, configuration.sets.keys)
         }
         val shown = configuration.shownSets(showHidden = all, only = set)
-        if (session.json) echoJson(configuration.toJson(shown)) else configuration.lines(shown, "").forEach { echo(it) }
+        if (session.json) {
+            echoJson(configuration.toJson(shown))
+            return
+        }
+        configuration.lines(shown, "").forEach { echo(it) }
+        if (configuration.activeSet == null && configuration.sets.isNotEmpty()) {
+            echo("rtcoord: ${component.path}: no configuration set is active; 'rtcoord conf ${conf.path} act SET' activates one", err = true)
+        }
     }
 }

@@ -7,7 +7,8 @@ import com.github.ajalt.clikt.parameters.options.option
 /** `rtcoord conf PATH set NAME VALUE`: changes one parameter, if the component accepts the value. */
 class ConfSetCommand(private val conf: ConfCommand) : TreeCommand("set") {
     override fun help(context: Context): String =
-        "Set parameter NAME to VALUE in the active set (or --set). The component may refuse a value it cannot use."
+        "Set parameter NAME to VALUE in the active set (or --set), then activate the set that was active (--set's " +
+            "when none was) so that the component applies it, and read it back."
 
     private val name by argument("NAME", help = "The parameter.")
 

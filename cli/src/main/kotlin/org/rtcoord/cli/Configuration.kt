@@ -3,6 +3,7 @@ package org.rtcoord.cli
 import org.rtcoord.ComponentNode
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.NotFoundException
+import org.rtcoord.PreconditionNotMetException
 
 /** Whether [id] names one of OpenRTM's hidden configuration sets (`__constraints__`, `__widget__`, ...). */
 internal fun isHiddenSet(id: String): Boolean = id.startsWith("__") && id.endsWith("__")
@@ -17,10 +18,17 @@ internal fun ConfigurationSnapshot.lines(sets: Map<String, Map<String, String>>,
         listOf("$indent${if (id == activeSet) "* " else "  "}$id") + aligned(sorted(parameters), "$indent    ")
     }
 
-/** [sets] for `--json`, with the active set's id. */
+/** [sets] for `--json`, with the active set's id (null when none is active). */
 internal fun ConfigurationSnapshot.toJson(sets: Map<String, Map<String, String>>): Map<String, Any?> =
     mapOf("active" to activeSet, "sets" to sets.mapValues { (_, parameters) -> parameters.toSortedMap() })
 
 /** The error for a configuration set [id] that [component] does not have among [sets]. */
 internal fun noSuchSet(component: ComponentNode, id: String, sets: Set<String>): NotFoundException =
     NotFoundException(component.path.toString(), "no configuration set '$id' (sets: ${sets.sorted().joinToString()})")
+
+/** The error for [operation] on the active set of [component], which has none. */
+internal fun noActiveSet(component: ComponentNode, operation: String, configuration: ConfigurationSnapshot): PreconditionNotMetException =
+    PreconditionNotMetException(
+        component.path.toString(), operation,
+        "no configuration set is active: name one with --set, or activate one (sets: ${configuration.sets.keys.sorted().joinToString()})",
+    )

@@ -40,7 +40,7 @@ private fun RtcEvent.what(): String = when (this) {
     is PortConnected -> "port $port connected (connector ${connector.name}, id ${connector.id})"
     is PortDisconnected -> "port $port disconnected (connector ${connector.name}, id ${connector.id})"
     is ParameterChanged -> "parameter $name in set $set: ${old ?: "(none)"} -> ${new ?: "(none)"}"
-    is ConfigurationSetActivated -> "active configuration set: $old -> $new"
+    is ConfigurationSetActivated -> "active configuration set: ${old ?: "(none)"} -> ${new ?: "(none)"}"
     is ConfigurationSetAdded -> "configuration set $id added"
     is ConfigurationSetRemoved -> "configuration set $id removed"
     is ContextRateChanged -> "rate of context $handle: $old -> $new Hz"

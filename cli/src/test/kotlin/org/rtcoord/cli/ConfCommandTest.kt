@@ -1,8 +1,11 @@
 package org.rtcoord.cli
 
+import _SDOPackage.ConfigurationSet
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.await
 
 /** `conf`: list, get, set and act, read back from the component itself. */
 class ConfCommandTest {
@@ -30,17 +33,50 @@ class ConfCommandTest {
     fun `gets and sets a value in the active set or another`() {
         assertEquals("1.0\n", runRtcoord("conf", localiser, "get", "gain").ok())
         runRtcoord("conf", localiser, "set", "gain", "2.5").ok()
-        assertEquals("2.5", fixture.parameter("gain"))
+        assertEquals("default", fixture.activeConfigurationSet)
+        await("the component to use gain 2.5") { fixture.parameter("gain") == "2.5" }
+        assertEquals("2.5\n", runRtcoord("conf", localiser, "get", "gain").ok())
         runRtcoord("conf", localiser, "set", "gain", "0.25", "--set", "precise").ok()
         assertEquals("0.25\n", runRtcoord("conf", localiser, "get", "gain", "--set", "precise").ok())
+        assertEquals("default", fixture.activeConfigurationSet, "writing another set keeps the active one")
         assertEquals("2.5", fixture.parameter("gain"))
+    }
+
+    @Test
+    fun `a component with no active set is listed with none marked, and act or set --set repairs it`() {
+        val configuration = fixture.ref.get_configuration()
+        // A set added through CORBA, as any tool may: OpenRTM-aist then has no set active.
+        assertTrue(configuration.add_configuration_set(ConfigurationSet("night", "", emptyArray())))
+        val listed = runRtcoord("conf", localiser)
+        assertEquals(0, listed.statusCode, listed.stderr)
+        assertEquals("  default\n    fail  0\n    gain  1.0\n  night\n  precise\n    fail  0\n    gain  0.5\n", listed.stdout)
+        assertEquals("rtcoord: $localiser: no configuration set is active; 'rtcoord conf $localiser act SET' activates one\n", listed.stderr)
+        assertTrue(runRtcoord("--json", "conf", localiser, "list").stdout.contains("\"active\": null"))
+        val sets = "sets: __constraints__, default, night, precise"
+        assertEquals(
+            "rtcoord: $localiser: get gain refused: no configuration set is active: name one with --set, or activate one ($sets)",
+            runRtcoord("conf", localiser, "get", "gain").failure(),
+        )
+        assertEquals(
+            "rtcoord: $localiser: set gain refused: no configuration set is active: name the set to change ($sets)",
+            runRtcoord("conf", localiser, "set", "gain", "2.0").failure(),
+        )
+
+        runRtcoord("conf", localiser, "set", "gain", "0.75", "--set", "precise").ok()
+        assertEquals("precise", fixture.activeConfigurationSet)
+        await("the component to use gain 0.75") { fixture.parameter("gain") == "0.75" }
+
+        assertTrue(configuration.add_configuration_set(ConfigurationSet("dusk", "", emptyArray())))
+        runRtcoord("conf", localiser, "act", "default").ok()
+        assertEquals("default", fixture.activeConfigurationSet)
+        await("the component to use gain 1.0") { fixture.parameter("gain") == "1.0" }
     }
 
     @Test
     fun `activates a set`() {
         runRtcoord("conf", localiser, "act", "precise").ok()
         assertEquals("precise", fixture.activeConfigurationSet)
-        assertEquals("0.5", fixture.parameter("gain"))
+        await("the component to use gain 0.5") { fixture.parameter("gain") == "0.5" }
     }
 
     @Test

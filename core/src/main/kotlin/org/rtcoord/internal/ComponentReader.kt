@@ -142,7 +142,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     private suspend fun readSets(configuration: Configuration): ConfigurationSnapshot {
         return coroutineScope {
             val sets = async { remote.call(subject, "get_configuration_sets") { configuration.get_configuration_sets() } }
-            val active = async { remote.call(subject, "get_active_configuration_set") { configuration.get_active_configuration_set().id } }
+            val active = async { remote.call(subject, "get_active_configuration_set") { configuration.activeSetId() } }
             ConfigurationSnapshot(sets.await().associate { it.id to it.configuration_data.toMap() }, active.await())
         }
     }

@@ -2,8 +2,8 @@ package org.rtcoord.dsl
 
 import org.rtcoord.LifeCycle
 
-/** The live system as read for what a [Network] names: component states (null: absent), active sets, which links exist. */
-internal class LiveNetwork(val states: Map<String, LifeCycle?>, val activeSets: Map<String, String>, val links: Map<Link, Boolean>)
+/** The live system as read for what a [Network] names: component states (null: absent), active sets (null: none active), which links exist. */
+internal class LiveNetwork(val states: Map<String, LifeCycle?>, val activeSets: Map<String, String?>, val links: Map<Link, Boolean>)
 
 /** One change to the live system, named as the script names its objects (the failure reason starts with it). */
 internal sealed class Step(val description: String) {

@@ -128,7 +128,7 @@ internal class Supervisor(
         child.typeName = snapshot.typeName
         child.instanceName = snapshot.instanceName
         val configuration = node.configuration()
-        child.configuration = configuration.sets[configuration.activeSet]?.let { RecordedConfiguration(configuration.activeSet, it) }
+        child.configuration = configuration.activeSet?.let { id -> configuration.sets[id]?.let { RecordedConfiguration(id, it) } }
         val host = managers.firstOrNull { manager ->
             val hosted = try { manager.children() } catch (e: RtcException) { emptyList() }
             hosted.any { it is ComponentNode && it.isSameComponent(node) }
@@ -181,9 +181,11 @@ internal class Supervisor(
                 }
             }
             is ConfigurationSetActivated -> {
-                val values = child.node.snapshot().configuration?.sets?.get(event.new) ?: return
-                child.configuration = RecordedConfiguration(event.new, values)
-                log("$name: ${child.node.path} runs configuration set ${event.new}")
+                // None active is a passing state (a set was written and is about to be activated): keep the record.
+                val set = event.new ?: return
+                val values = child.node.snapshot().configuration?.sets?.get(set) ?: return
+                child.configuration = RecordedConfiguration(set, values)
+                log("$name: ${child.node.path} runs configuration set $set")
             }
             is ParameterChanged -> {
                 val recorded = child.configuration?.takeIf { it.set == event.set } ?: return

@@ -59,6 +59,27 @@ class CoordinatorTest {
     }
 
     @Test
+    fun `configure makes the component use what it sets and keeps the active set active`(): Unit = runBlocking {
+        val configured = AtomicInteger()
+        coordinator {
+            on(component("laser0")).state(ERROR) {
+                component("laser_localise0").configure { set("gain", "2.0") }
+                component("laser_localise0").configure { inSet("precise"); set("gain", "0.25") }
+                configured.incrementAndGet()
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            system.component("laser0").fail()
+            val localiser = system.component("laser_localise0")
+            await("laser_localise0 to use gain 2.0") { localiser.parameter("gain") == "2.0" }
+            await("both changes to be made") { configured.get() == 1 }
+            assertEquals("default", localiser.activeConfigurationSet)
+            assertEquals("0.25", tree.componentNamed("laser_localise0").also { it.refresh() }.configuration().sets.getValue("precise")["gain"])
+            assertEquals(0, coordinator.failures, log.toString())
+        }
+    }
+
+    @Test
     fun `guards narrow a rule`(): Unit = runBlocking {
         val fired = Collections.synchronizedList(mutableListOf<String>())
         coordinator {
