@@ -40,11 +40,8 @@ public class Port internal constructor(
         name: String? = null,
         id: String = "",
     ): ConnectorSnapshot {
-        require(others.isNotEmpty()) { "connect needs at least one other port" }
+        val merged = connectable(others, properties)
         val ports = listOf(this) + others
-        val snapshots = ports.map { it.snapshot() }
-        val merged = defaults(snapshots.first()) + properties
-        checkCompatible(ports, snapshots, merged)
         val references = ports.map { it.reference() }
         val holder = ConnectorProfileHolder(
             ConnectorProfile(
@@ -59,6 +56,19 @@ public class Port internal constructor(
         refreshAll(ports)
         val made = holder.value
         return ConnectorSnapshot(made.connector_id, made.name, made.properties.toMap())
+    }
+
+    /**
+     * The properties a connection of this port to [others] would get (OpenRTM's defaults overridden by
+     * [properties]); fails as [connect] would if the ports or properties do not fit. Changes nothing.
+     */
+    internal suspend fun connectable(others: List<Port>, properties: Map<String, String>): Map<String, String> {
+        require(others.isNotEmpty()) { "connect needs at least one other port" }
+        val ports = listOf(this) + others
+        val snapshots = ports.map { it.snapshot() }
+        val merged = defaults(snapshots.first()) + properties
+        checkCompatible(ports, snapshots, merged)
+        return merged
     }
 
     /** Removes the connection [connectorId] from this port and its peers. */

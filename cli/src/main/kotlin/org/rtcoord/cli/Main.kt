@@ -55,6 +55,7 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "demo" to { DemoCommand() },
     "run" to { RunCommand() },
     "check" to { CheckCommand() },
+    "profile" to { ProfileCommand() },
     "ls" to { LsCommand() },
     "cat" to { CatCommand() },
     "find" to { FindCommand() },

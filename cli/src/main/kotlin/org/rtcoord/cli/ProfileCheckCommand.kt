@@ -1,0 +1,33 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.choice
+import org.rtcoord.LifeCycle
+
+/** `rtcoord profile check`: rtcheck. */
+class ProfileCheckCommand : ProfileFileCommand("check") {
+    override fun help(context: Context): String =
+        "Compare the running system with a profile: components present, their state, connections, configuration and " +
+            "rates. Prints each difference and exits 1 when there is any."
+
+    private val state by option("--state", help = "The state components should be in (default: active, as rtcheck).")
+        .choice("active", "inactive", "any").default("active")
+
+    override suspend fun execute() {
+        val profile = profile()
+        val expected = when (state) {
+            "active" -> LifeCycle.ACTIVE
+            "inactive" -> LifeCycle.INACTIVE
+            else -> null
+        }
+        val differences = refusing { profiles.check(profile, expected) }
+        if (session.json) {
+            echoJson(differences.map { mapOf("subject" to it.subject, "expected" to it.expected, "actual" to it.actual) })
+        } else {
+            differences.forEach { echo(it.toString()) }
+        }
+        if (differences.isNotEmpty()) throw CommandFailed("${differences.size} difference(s) from the profile")
+    }
+}

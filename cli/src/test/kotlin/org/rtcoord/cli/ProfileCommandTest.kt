@@ -1,0 +1,48 @@
+package org.rtcoord.cli
+
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.io.TempDir
+import java.nio.file.Files
+import java.nio.file.Path
+
+/** `profile save|restore|check|start|stop|teardown` on the localisation system. */
+class ProfileCommandTest {
+    private val localisation = Localisation()
+
+    @AfterEach
+    fun stop() = localisation.close()
+
+    @Test
+    fun `save, teardown, check, restore and check again`(@TempDir dir: Path) {
+        val file = dir.resolve("sys.yaml").toString()
+        runRtcoord("-n", localisation.naming.address, "profile", "save", "-o", file).ok()
+        assertTrue(Files.readString(dir.resolve("sys.yaml")).startsWith("rtsProfile:"))
+        assertEquals("", runRtcoord("profile", "check", file).ok())
+        assertEquals(2, runRtcoord("profile", "teardown", file).ok().lines().count { it.startsWith("disconnected") })
+        val check = runRtcoord("profile", "check", file)
+        assertEquals(1, check.statusCode)
+        assertEquals(2, check.stdout.lines().count { "expected a connection, found none" in it }, check.stdout)
+        assertEquals("rtcoord: 2 difference(s) from the profile", check.stderr.trim())
+        assertEquals(2, runRtcoord("profile", "restore", file).ok().lines().count { it.startsWith("connected") })
+        assertTrue(runRtcoord("profile", "restore", file).ok().startsWith("nothing to change (2 connections already there)"))
+        assertEquals("[]", runRtcoord("--json", "profile", "check", file).ok().trim())
+    }
+
+    @Test
+    fun `a bad file is one line naming file and line, and start --dry-run prints the plan`(@TempDir dir: Path) {
+        val bad = dir.resolve("bad.xml")
+        Files.writeString(bad, "<?xml version=\"1.0\"?>\n<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\">\n</rts:RtsProfile>\n")
+        assertEquals("rtcoord: $bad:2: rts:RtsProfile has no rts:id", runRtcoord("profile", "check", bad.toString()).failure())
+        val file = dir.resolve("sys.xml").toString()
+        runRtcoord("-n", localisation.naming.address, "profile", "save", "-o", file).ok()
+        val plan = runRtcoord("profile", "start", "--dry-run", file).ok().lines().filter { it.isNotEmpty() }
+        assertEquals(4, plan.size, plan.toString())
+        assertTrue(plan.all { it.startsWith("0 /${localisation.naming.address}/") && it.endsWith(" context 0") }, plan.toString())
+        val stopped = runRtcoord("profile", "stop", file).ok()
+        assertEquals(4, stopped.lines().count { it.startsWith("done at") }, stopped)
+        assertEquals(4, runRtcoord("profile", "check", "--state", "active", file).stdout.lines().count { "expected ACTIVE, found INACTIVE" in it })
+    }
+}

@@ -1,0 +1,61 @@
+package org.rtcoord.profile
+
+import org.rtcoord.profile.internal.XmlProfileReader
+import org.rtcoord.profile.internal.XmlProfileWriter
+import org.rtcoord.profile.internal.YamlProfileReader
+import org.rtcoord.profile.internal.YamlProfileWriter
+import java.nio.file.Files
+import java.nio.file.Path
+
+/** The two forms of an RTSProfile file. */
+public enum class ProfileFormat {
+    XML, YAML;
+
+    public companion object {
+        /** The form a file named [fileName] has by its extension (`.yaml`/`.yml`: YAML), else by its [text]. */
+        public fun of(fileName: String, text: String): ProfileFormat = when {
+            fileName.endsWith(".yaml", ignoreCase = true) || fileName.endsWith(".yml", ignoreCase = true) -> YAML
+            fileName.endsWith(".xml", ignoreCase = true) -> XML
+            text.trimStart().startsWith("<") -> XML
+            else -> YAML
+        }
+    }
+}
+
+/** A profile file that cannot be read: [message] names the file, the line and what is wrong. */
+public class ProfileFormatException(
+    /** The file (or `-` for standard input). */
+    public val source: String,
+    /** The line, from 1; 0 when unknown. */
+    public val line: Int,
+    /** What is wrong. */
+    public val reason: String,
+) : Exception(if (line > 0) "$source:$line: $reason" else "$source: $reason")
+
+/** Reads and writes RTSProfile files, XML or YAML, as RTSystemEditor and rtshell (rtsprofile) do. */
+public object RtsProfiles {
+    /** Reads the profile in [file], in the form its name or content says. */
+    @JvmStatic
+    public fun read(file: Path): RtsProfile {
+        val text = try {
+            Files.readString(file)
+        } catch (e: java.io.IOException) {
+            throw ProfileFormatException(file.toString(), 0, "cannot read: ${e.message ?: e.javaClass.simpleName}")
+        }
+        return parse(text, ProfileFormat.of(file.fileName.toString(), text), file.toString())
+    }
+
+    /** Reads a profile from [text] in [format]; [source] names it in errors. */
+    @JvmStatic
+    public fun parse(text: String, format: ProfileFormat, source: String = "-"): RtsProfile = when (format) {
+        ProfileFormat.XML -> XmlProfileReader(source).read(text)
+        ProfileFormat.YAML -> YamlProfileReader(source).read(text)
+    }
+
+    /** [profile] as text in [format]. */
+    @JvmStatic
+    public fun write(profile: RtsProfile, format: ProfileFormat): String = when (format) {
+        ProfileFormat.XML -> XmlProfileWriter().write(profile)
+        ProfileFormat.YAML -> YamlProfileWriter().write(profile)
+    }
+}

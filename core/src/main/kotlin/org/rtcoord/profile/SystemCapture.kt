@@ -1,0 +1,88 @@
+package org.rtcoord.profile
+
+import kotlinx.coroutines.flow.toList
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.PortKind
+import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
+import java.time.LocalDateTime
+import java.time.format.DateTimeFormatter
+import java.time.temporal.ChronoUnit
+
+/** Saves the running system as a profile, as rtcryo does. */
+internal class SystemCapture(private val tree: RtcTree) {
+    suspend fun capture(below: RtcPath, onlyConnected: Boolean, systemId: String, abstract: String): RtsProfile {
+        tree.refresh(below)
+        // Naming-context paths only, as rtcryo: a component below its manager is the same component.
+        val nodes = tree.find(below) { it is ComponentNode && it.path.names.none { name -> name.endsWith(".mgr") } }.toList()
+            .map { it as ComponentNode }
+            .fold(emptyList<ComponentNode>()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+        val snapshots = nodes.associateWith { it.snapshot() }
+        val chosen = if (onlyConnected) nodes.filter { node -> snapshots.getValue(node).ports.any { it.connectors.isNotEmpty() } } else nodes
+        val components = chosen.map { component(it, snapshots.getValue(it)) }
+        val byInstance = components.associateBy { it.instanceName }
+        val data = mutableListOf<PortConnector>()
+        val service = mutableListOf<PortConnector>()
+        val seen = mutableSetOf<String>()
+        for (node in chosen) {
+            val snapshot = snapshots.getValue(node)
+            for (port in snapshot.ports.filter { it.connectors.isNotEmpty() }) {
+                // A data connection is recorded from its out-port, a service one from the first port that shows it.
+                if (port.kind == PortKind.DATA_IN) continue
+                for (connection in node.port(port.name).connections()) {
+                    if (!seen.add(connection.id)) continue
+                    val others = connection.ports.filter { it.fullName != port.fullName }
+                    val peer = others.firstOrNull() ?: continue
+                    val peerInstance = peer.fullName.substringBefore('.')
+                    val peerComponent = byInstance[peerInstance] ?: continue
+                    val source = end(byInstance.getValue(snapshot.instanceName), port.fullName)
+                    val target = end(peerComponent, peer.fullName)
+                    val properties = connection.properties.filterKeys { it !in PortConnector.STALE_REFERENCES }
+                    if (port.kind == PortKind.DATA_OUT) {
+                        data += PortConnector(
+                            connection.id, connection.name, source, target,
+                            dataType = properties["dataport.data_type"] ?: port.dataType,
+                            interfaceType = properties["dataport.interface_type"] ?: "corba_cdr",
+                            dataflowType = properties["dataport.dataflow_type"] ?: "push",
+                            subscriptionType = properties["dataport.subscription_type"],
+                            ext = Extension(properties = properties),
+                        )
+                    } else {
+                        service += PortConnector(connection.id, connection.name, source, target, ext = Extension(properties = properties))
+                    }
+                }
+            }
+        }
+        val now = LocalDateTime.now().truncatedTo(ChronoUnit.SECONDS).format(DateTimeFormatter.ISO_LOCAL_DATE_TIME)
+        return RtsProfile(systemId, abstract = abstract, creationDate = now, updateDate = now, components = components, dataPortConnectors = data, servicePortConnectors = service)
+    }
+
+    private suspend fun component(node: ComponentNode, s: ComponentSnapshot): ProfileComponent {
+        val configuration = node.configuration()
+        return ProfileComponent(
+            id = componentId(s),
+            pathUri = node.path.toString().removePrefix("/"),
+            instanceName = s.instanceName,
+            activeConfigurationSet = configuration.activeSet,
+            isRequired = true,
+            dataPorts = s.ports.filter { it.kind == PortKind.DATA_IN || it.kind == PortKind.DATA_OUT }.map { ProfilePort(it.name) },
+            servicePorts = s.ports.filter { it.kind == PortKind.SERVICE }.map { ProfilePort(it.name) },
+            configurationSets = configuration.sets.filterKeys { !isHidden(it) }.toSortedMap().map { (id, values) -> ConfigurationSet(id, values) },
+            executionContexts = s.contexts.filter { it.owned }.map { ExecutionContext(it.handle.toString(), it.kind.uppercase(), it.rate) },
+            ext = Extension(properties = mapOf("COMPONENT_PATH_ID" to node.path.toString().removePrefix("/"))),
+        )
+    }
+
+    private fun end(component: ProfileComponent, fullName: String) = TargetComponent(
+        component.id, component.instanceName, fullName,
+        ext = Extension(properties = mapOf(PortConnector.COMPONENT_PATH_ID to component.pathUri)),
+    )
+
+    internal companion object {
+        fun componentId(s: ComponentSnapshot) = "RTC:${s.vendor}:${s.category}:${s.typeName}:${s.version}"
+
+        /** Sets such as `__constraints__` describe parameters; they are not configuration to restore. */
+        fun isHidden(set: String) = set.startsWith("__") && set.endsWith("__")
+    }
+}

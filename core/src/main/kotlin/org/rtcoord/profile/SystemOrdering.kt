@@ -1,0 +1,135 @@
+package org.rtcoord.profile
+
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.TimeoutCancellationException
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withTimeout
+import org.rtcoord.ComponentNode
+import org.rtcoord.ContextSelector
+import org.rtcoord.LifeCycle
+import org.rtcoord.RtcException
+import org.rtcoord.RtcTree
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
+
+/** Starting (activating) or stopping (deactivating) a system in the order of its profile. */
+public enum class OrderedAction(internal val ordering: OrderingKind, internal val reaches: LifeCycle) {
+    /** Activation, in the order of the profile's Activation block. */
+    START(OrderingKind.ACTIVATION, LifeCycle.ACTIVE),
+
+    /** Deactivation, in the order of the profile's Deactivation block. */
+    STOP(OrderingKind.DEACTIVATION, LifeCycle.INACTIVE),
+}
+
+/**
+ * One step of an ordered start or stop: act on [component]'s context [contextId] once every step of a
+ * lower [sequence] is done and [condition] holds.
+ */
+public data class PlannedStep(val sequence: Int, val component: String, val contextId: Int, val condition: Condition) {
+    override fun toString(): String = "$sequence $component context $contextId" + when (condition) {
+        Condition.None -> ""
+        is Condition.WaitTime -> " after waiting ${condition.milliseconds} ms"
+        is Condition.Preceding -> " after ${condition.components.joinToString { it.instanceName }} (${condition.sendingTiming}" +
+            (if (condition.timeoutMillis > 0) ", timeout ${condition.timeoutMillis} ms)" else ")")
+    }
+}
+
+/** What became of one step: done (and when, from the start of the run), failed (why) or not done (why). */
+public data class StepOutcome(val step: PlannedStep, val done: Boolean, val atMillis: Long, val detail: String) {
+    override fun toString(): String = if (done) "done at $atMillis ms: $step" else "NOT done: $step: $detail"
+}
+
+/** Plans and runs an ordered start or stop. */
+internal class SystemOrdering(private val tree: RtcTree) {
+    fun plan(profile: RtsProfile, action: OrderedAction): List<PlannedStep> {
+        val targets = profile.orderings[action.ordering]?.targets
+            ?: profile.components.map { OrderedTarget(0, TargetComponent(it.id, it.instanceName, contextId = "0")) }
+        return targets.sortedBy { it.sequence }.map { t ->
+            val component = profile.component(t.target) ?: throw ProfileRefusedException("${action.ordering.xmlName} names ${t.target.instanceName}, which the profile does not have")
+            PlannedStep(t.sequence, "/" + component.pathUri.removePrefix("/"), t.target.contextId?.toIntOrNull() ?: 0, t.condition)
+        }
+    }
+
+    suspend fun run(profile: RtsProfile, action: OrderedAction, stepDeadline: Duration): List<StepOutcome> {
+        val steps = plan(profile, action)
+        val nodes = steps.associate { it.component to tree.component(it.component) }
+        val byInstance = profile.components.associate { it.instanceName to "/" + it.pathUri.removePrefix("/") }
+        val issued = steps.associateWith { CompletableDeferred<Boolean>() }
+        val finished = steps.associateWith { CompletableDeferred<Boolean>() }
+        val outcomes = java.util.concurrent.ConcurrentHashMap<PlannedStep, StepOutcome>()
+        val start = TimeSource.Monotonic.markNow()
+        coroutineScope {
+            for (step in steps) launch {
+                val outcome = try {
+                    withTimeout(stepDeadline + conditionTime(step.condition)) {
+                        val before = steps.filter { it.sequence < step.sequence }
+                        before.firstOrNull { !finished.getValue(it).await() }?.let { failed -> return@withTimeout "not done: ${failed.component} before it was not done" }
+                        when (val c = step.condition) {
+                            is Condition.WaitTime -> delay(c.milliseconds.milliseconds)
+                            is Condition.Preceding -> awaitPreceding(c, action, steps, byInstance, nodes, issued, finished)?.let { return@withTimeout it }
+                            Condition.None -> Unit
+                        }
+                        issued.getValue(step).complete(true)
+                        val node = nodes.getValue(step.component)
+                        val selector = ContextSelector.Handle(step.contextId)
+                        if (node.state(selector) != action.reaches) {
+                            if (action == OrderedAction.START) node.activate(selector, stepDeadline) else node.deactivate(selector, stepDeadline)
+                        }
+                        null
+                    }
+                } catch (e: TimeoutCancellationException) {
+                    "no result within its deadline"
+                } catch (e: RtcException) {
+                    e.message ?: e.reason
+                }
+                outcomes[step] = StepOutcome(step, outcome == null, start.elapsedNow().inWholeMilliseconds, outcome ?: "")
+                issued.getValue(step).complete(false)
+                finished.getValue(step).complete(outcome == null)
+            }
+        }
+        return steps.map { outcomes.getValue(it) }
+    }
+
+    /** Waits for the preceding components; returns why the step cannot go on, or null. */
+    private suspend fun awaitPreceding(
+        condition: Condition.Preceding,
+        action: OrderedAction,
+        steps: List<PlannedStep>,
+        byInstance: Map<String, String>,
+        nodes: Map<String, ComponentNode>,
+        issued: Map<PlannedStep, CompletableDeferred<Boolean>>,
+        finished: Map<PlannedStep, CompletableDeferred<Boolean>>,
+    ): String? {
+        suspend fun wait(): String? {
+            for (target in condition.components) {
+                val path = byInstance[target.instanceName] ?: return "preceding ${target.instanceName} is not in the profile"
+                val step = steps.firstOrNull { it.component == path }
+                // SYNC waits for the preceding component's transition, ASYNC only for its action to be sent.
+                if (step != null) {
+                    val ok = if (condition.sendingTiming.equals("SYNC", ignoreCase = true)) finished.getValue(step).await() else issued.getValue(step).await()
+                    if (!ok) return "preceding $path was not done"
+                } else {
+                    val node = nodes[path] ?: tree.component(path)
+                    val selector = ContextSelector.Handle(target.contextId?.toIntOrNull() ?: 0)
+                    while (node.state(selector) != action.reaches) delay(10)
+                }
+            }
+            return null
+        }
+        if (condition.timeoutMillis <= 0) return wait()
+        return try {
+            withTimeout(condition.timeoutMillis.milliseconds) { wait() }
+        } catch (e: TimeoutCancellationException) {
+            "preceding ${condition.components.joinToString { it.instanceName }} not ${action.reaches} within ${condition.timeoutMillis} ms"
+        }
+    }
+
+    private fun conditionTime(condition: Condition): Duration = when (condition) {
+        is Condition.WaitTime -> condition.milliseconds.milliseconds
+        is Condition.Preceding -> condition.timeoutMillis.milliseconds
+        Condition.None -> Duration.ZERO
+    }
+}

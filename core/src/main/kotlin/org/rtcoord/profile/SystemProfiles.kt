@@ -1,0 +1,64 @@
+package org.rtcoord.profile
+
+import org.rtcoord.LifeCycle
+import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * Whole-system operations on a live [tree] with RTSProfiles, as RTSystemEditor and rtshell's rtcryo,
+ * rtresurrect, rtcheck, rtstart, rtstop and rtteardown do: each checks what it can before it changes
+ * anything, and each remote call has the tree's deadline.
+ */
+public class SystemProfiles(private val tree: RtcTree) {
+    /**
+     * The running system below [below] as a profile: components (only those with connections when
+     * [onlyConnected], as rtcryo), their ports, configuration sets and active set, owned execution
+     * contexts and rates, and the connections among them with their properties.
+     */
+    public suspend fun save(
+        below: RtcPath = RtcPath.ROOT,
+        onlyConnected: Boolean = false,
+        systemId: String = "RTSystem:rtcoord:RTSystem:0",
+        abstract: String = "",
+    ): RtsProfile = SystemCapture(tree).capture(below, onlyConnected, systemId, abstract)
+
+    /**
+     * Restores [profile] onto the running system: components are found by `pathUri`; connections the
+     * system lacks are made with their properties (identical ones kept); configuration sets are written
+     * and the active set activated; execution context rates set. Everything is checked first: a missing
+     * required component, a missing port, incompatible ports, a connection that exists with other
+     * properties or a value out of range is a [ProfileRefusedException] before anything changes. Missing
+     * optional components are reported. Restoring again changes nothing.
+     */
+    public suspend fun restore(profile: RtsProfile): RestoreReport = SystemRestore(tree).restore(profile)
+
+    /**
+     * How the live system differs from [profile]: missing components, states other than [state] (not
+     * compared when null), missing or different connections, configuration and rates.
+     */
+    public suspend fun check(profile: RtsProfile, state: LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> =
+        SystemCheck(tree).check(profile, state)
+
+    /** The steps [action] takes for [profile], in order; changes nothing. */
+    public fun plan(profile: RtsProfile, action: OrderedAction): List<PlannedStep> = SystemOrdering(tree).plan(profile, action)
+
+    /**
+     * Runs [action] in the profile's order: steps of a higher sequence wait for those of lower ones,
+     * `WaitTime` and `Preceding` (SYNC or ASYNC, with timeout) conditions are honoured, and each step
+     * has [stepDeadline] beyond its condition's own time. Returns every step's outcome.
+     */
+    public suspend fun run(profile: RtsProfile, action: OrderedAction, stepDeadline: Duration = 10.seconds): List<StepOutcome> =
+        SystemOrdering(tree).run(profile, action, stepDeadline)
+
+    /** Removes the connections [profile] names; returns what was removed. */
+    public suspend fun teardown(profile: RtsProfile): List<String> = SystemTeardown(tree).teardown(profile)
+
+    /** What [run] brings components to. */
+    public companion object {
+        /** The state [action] brings components to. */
+        @JvmStatic
+        public fun stateAfter(action: OrderedAction): LifeCycle = action.reaches
+    }
+}

@@ -1,0 +1,124 @@
+package org.rtcoord.profile
+
+import kotlinx.coroutines.async
+import kotlinx.coroutines.awaitAll
+import kotlinx.coroutines.coroutineScope
+import org.rtcoord.ComponentNode
+import org.rtcoord.ContextSelector
+import org.rtcoord.NotFoundException
+import org.rtcoord.Port
+import org.rtcoord.RtcException
+import org.rtcoord.RtcTree
+import org.rtcoord.ZombieNode
+
+/** What a restore did, kept as it was, and could not find. */
+public data class RestoreReport(
+    /** Changes made, one line each (`connected a:out to b:in`). */
+    val done: List<String>,
+    /** Connections already there as the profile has them. */
+    val kept: List<String>,
+    /** Optional components the system does not have, by path. */
+    val missingOptional: List<String>,
+)
+
+/** A profile that cannot be applied as a whole; nothing was changed. */
+public class ProfileRefusedException(
+    /** Why, naming the component, port or value. */
+    public val reason: String,
+) : Exception(reason)
+
+/** A profile's components resolved on the live system. */
+internal class ResolvedSystem(val profile: RtsProfile, val nodes: Map<String, ComponentNode>, val missing: List<ProfileComponent>) {
+    fun node(target: TargetComponent): ComponentNode? = profile.component(target)?.let { nodes[it.instanceName] }
+
+    companion object {
+        suspend fun of(tree: RtcTree, profile: RtsProfile): ResolvedSystem = coroutineScope {
+            val found = profile.components.map { c -> async { c to find(tree, c) } }.awaitAll()
+            ResolvedSystem(profile, found.mapNotNull { (c, n) -> n?.let { c.instanceName to it } }.toMap(), found.filter { it.second == null }.map { it.first })
+        }
+
+        private suspend fun find(tree: RtcTree, c: ProfileComponent): ComponentNode? = try {
+            tree.component("/" + c.pathUri.removePrefix("/"))
+        } catch (e: NotFoundException) {
+            null
+        } catch (e: RtcException) {
+            // A dead registration is as good as missing: there is no component to restore onto.
+            if (runCatching { tree.node("/" + c.pathUri.removePrefix("/")) }.getOrNull() is ZombieNode) null else throw e
+        }
+    }
+}
+
+/** Restores a profile onto the running system: checks everything first, then changes what differs. */
+internal class SystemRestore(private val tree: RtcTree) {
+    private class PlannedConnection(val connector: PortConnector, val from: Port, val to: Port, val properties: Map<String, String>)
+
+    suspend fun restore(profile: RtsProfile): RestoreReport {
+        val system = ResolvedSystem.of(tree, profile)
+        system.missing.firstOrNull { it.isRequired }?.let { throw ProfileRefusedException("required component /${it.pathUri.removePrefix("/")} is not running") }
+        val kept = mutableListOf<String>()
+        val connections = (profile.dataPortConnectors + profile.servicePortConnectors).mapNotNull { plan(system, it, kept) }
+        for (c in profile.components) {
+            val node = system.nodes[c.instanceName] ?: continue
+            ConfigurationRestore.problem(c, node.configuration())?.let { throw ProfileRefusedException("${node.path}: $it") }
+            for (ec in c.executionContexts) {
+                val handle = ec.id.toIntOrNull() ?: throw ProfileRefusedException("${node.path}: execution context id '${ec.id}' is not a number")
+                if (node.snapshot().context(handle) == null) throw ProfileRefusedException("${node.path}: no execution context $handle")
+            }
+        }
+        val done = mutableListOf<String>()
+        for (c in connections) {
+            c.from.connect(listOf(c.to), c.properties, c.connector.name.ifEmpty { null }, c.connector.connectorId)
+            done += "connected ${c.from.path} to ${c.to.path}"
+        }
+        for (c in profile.components) {
+            val node = system.nodes[c.instanceName] ?: continue
+            done += ConfigurationRestore.apply(node, c).map { "${node.path}: $it" }
+            for (ec in c.executionContexts) {
+                val rate = ec.rate ?: continue
+                val handle = ec.id.toInt()
+                if (node.snapshot().context(handle)?.rate == rate) continue
+                node.executionContext(ContextSelector.Handle(handle)).setRate(rate)
+                done += "${node.path}: execution context $handle at $rate Hz"
+            }
+        }
+        return RestoreReport(done, kept, system.missing.map { "/" + it.pathUri.removePrefix("/") })
+    }
+
+    /** The connection to make, null when it is there already or an end is an optional missing component. */
+    private suspend fun plan(system: ResolvedSystem, connector: PortConnector, kept: MutableList<String>): PlannedConnection? {
+        val fromNode = system.node(connector.source)
+        val toNode = system.node(connector.target)
+        if (fromNode == null || toNode == null) {
+            val missing = listOf(connector.source, connector.target).first { system.node(it) == null }
+            if (system.profile.component(missing)?.isRequired != false) throw ProfileRefusedException("connector '${connector.name}': no component ${missing.instanceName}")
+            return null
+        }
+        val from = port(fromNode, connector.source)
+        val to = port(toNode, connector.target)
+        val wanted = connector.connectionProperties()
+        val existing = from.connections()
+        val same = existing.firstOrNull { c -> c.ports.any { it.fullName == "${toNode.snapshot().instanceName}.${to.name}" } }
+        val clash = existing.firstOrNull { it.id == connector.connectorId && connector.connectorId.isNotEmpty() && it !== same }
+        if (clash != null) throw ProfileRefusedException("${from.path}: connector id '${connector.connectorId}' is already used by another connection")
+        if (same != null) {
+            val differs = wanted.filter { (k, v) -> k.startsWith("dataport.") && same.properties[k] != null && same.properties[k] != v }
+            if (differs.isNotEmpty()) {
+                throw ProfileRefusedException("${from.path} and ${to.path} are connected with ${differs.keys.joinToString { "$it=${same.properties[it]}" }}, the profile wants ${differs.entries.joinToString { "${it.key}=${it.value}" }}")
+            }
+            kept += "${from.path} to ${to.path}"
+            return null
+        }
+        val properties = try {
+            from.connectable(listOf(to), wanted)
+        } catch (e: RtcException) {
+            throw ProfileRefusedException("cannot connect ${from.path} to ${to.path}: ${e.reason}")
+        }
+        return PlannedConnection(connector, from, to, properties)
+    }
+
+    private suspend fun port(node: ComponentNode, end: TargetComponent): Port {
+        val name = end.shortPortName ?: throw ProfileRefusedException("${node.path}: a connector end names no port")
+        if (node.snapshot().port(name) == null) throw ProfileRefusedException("${node.path}: no port '$name'")
+        return node.port(name)
+    }
+}

@@ -1,0 +1,153 @@
+package org.rtcoord.profile
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.assertThrows
+import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.LifeCycle
+import org.rtcoord.LocalisationSystem
+import org.rtcoord.fixtures.Peers
+import org.rtcoord.fixtures.runPeer
+import java.nio.file.Files
+import java.nio.file.Path
+
+/** Save, restore, check, ordered start and teardown on the fixtures' localisation system, and with rtshell. */
+class SystemProfilesTest {
+    private val system = LocalisationSystem()
+    private val profiles = SystemProfiles(system.tree)
+
+    @AfterEach
+    fun close() = system.close()
+
+    @Test
+    fun `save records components, connections, configuration and contexts`() = runBlocking {
+        val all = profiles.save()
+        assertEquals(setOf("laser0", "gyro0", "odometry0", "laser_localise0"), all.components.map { it.instanceName }.toSet())
+        assertEquals(setOf("laser0", "odometry0", "laser_localise0"), profiles.save(onlyConnected = true).components.map { it.instanceName }.toSet())
+        assertEquals(setOf("laser0.laser" to "laser_localise0.laser", "odometry0.odo" to "laser_localise0.odo"), all.dataPortConnectors.map { it.source.portName to it.target.portName }.toSet())
+        val localiser = all.components.single { it.instanceName == "laser_localise0" }
+        assertEquals("0.5", localiser.configurationSet("precise")!!.data["gain"])
+        assertTrue(localiser.configurationSets.none { it.id == "__constraints__" })
+        assertEquals(system.path("laser_localise0.rtc").removePrefix("/"), localiser.pathUri)
+        assertTrue(all.dataPortConnectors.all { it.dataType != null && it.ext.properties["dataport.dataflow_type"] == "push" })
+        assertEquals(emptyList<ProfileDifference>(), profiles.check(all))
+    }
+
+    @Test
+    fun `restore brings back connections and configuration, and a second restore changes nothing`() = runBlocking {
+        val saved = profiles.save()
+        val localiser = system.tree.component(system.path("laser_localise0.rtc"))
+        localiser.disconnectAll()
+        localiser.setParameter("gain", "2.0", "precise")
+        localiser.activateConfigurationSet("precise")
+        val differences = profiles.check(saved, state = null)
+        assertEquals(4, differences.size, differences.joinToString("\n"))
+        val first = profiles.restore(saved)
+        assertTrue(first.done.size >= 3, first.toString())
+        assertEquals(emptyList<ProfileDifference>(), profiles.check(saved, state = null))
+        assertEquals("default", localiser.configuration().activeSet)
+        val second = profiles.restore(saved)
+        assertEquals(emptyList<String>(), second.done)
+        assertEquals(2, second.kept.size)
+    }
+
+    @Test
+    fun `a restore that cannot all be done changes nothing and says why in one line`() = runBlocking {
+        val saved = profiles.save()
+        val localiser = system.tree.component(system.path("laser_localise0.rtc"))
+        localiser.disconnectAll()
+        val before = shape(profiles.save())
+        val missing = saved.copy(components = saved.components + saved.components.first().copy(instanceName = "ghost0", pathUri = saved.components.first().pathUri.replaceAfterLast('/', "ghost0.rtc")))
+        val outOfRange = saved.copy(components = saved.components.map { c ->
+            if (c.instanceName != "laser_localise0") c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "default") it.copy(data = it.data + ("gain" to "99")) else it })
+        })
+        val gyro = saved.components.single { it.instanceName == "gyro0" }
+        val incompatible = saved.copy(dataPortConnectors = saved.dataPortConnectors + saved.dataPortConnectors.first().let { c ->
+            c.copy(connectorId = "", source = TargetComponent(gyro.id, "gyro0", "gyro0.gyro"))
+        })
+        for ((profile, reason) in listOf(missing to "ghost0.rtc is not running", outOfRange to "'99' is outside 0<x<10", incompatible to "incompatible data types")) {
+            val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(profile) } }
+            assertTrue(reason in refused.message!! && '\n' !in refused.message!!, refused.message)
+            assertEquals(before, shape(profiles.save()), "after refusing: ${refused.message}")
+        }
+    }
+
+    @Test
+    fun `ordered start honours sequence, WaitTime and Preceding`() = runBlocking {
+        val saved = profiles.save()
+        fun target(name: String) = saved.components.single { it.instanceName == name }.let { TargetComponent(it.id, it.instanceName, contextId = "0") }
+        val ordered = saved.copy(
+            orderings = mapOf(
+                OrderingKind.ACTIVATION to Ordering(
+                    listOf(
+                        OrderedTarget(2, target("laser_localise0"), Condition.Preceding(listOf(target("odometry0")), 5000, "SYNC")),
+                        OrderedTarget(0, target("laser0")),
+                        OrderedTarget(1, target("odometry0"), Condition.WaitTime(300)),
+                    ),
+                ),
+            ),
+        )
+        assertEquals(listOf("laser0", "odometry0", "laser_localise0"), profiles.plan(ordered, OrderedAction.START).map { it.component.substringAfterLast('/').removeSuffix(".rtc") })
+        profiles.run(ordered, OrderedAction.STOP).forEach { assertTrue(it.done, it.toString()) }
+        val outcomes = profiles.run(ordered, OrderedAction.START).associateBy { it.step.component.substringAfterLast('/').removeSuffix(".rtc") }
+        assertTrue(outcomes.values.all { it.done }, outcomes.toString())
+        assertTrue(outcomes.getValue("odometry0").atMillis >= outcomes.getValue("laser0").atMillis + 300, outcomes.toString())
+        assertTrue(outcomes.getValue("laser_localise0").atMillis >= outcomes.getValue("odometry0").atMillis, outcomes.toString())
+        assertEquals(LifeCycle.ACTIVE, system.tree.component(system.path("laser_localise0.rtc")).state())
+    }
+
+    @Test
+    fun `teardown removes the profile's connections`() = runBlocking {
+        val saved = profiles.save()
+        assertEquals(2, profiles.teardown(saved).size)
+        assertEquals(2, profiles.check(saved).size)
+    }
+
+    @Test
+    fun `a profile rtcoord writes is read by rtsprofile and restored by rtresurrect`(@TempDir dir: Path) = runBlocking {
+        val saved = profiles.save()
+        val file = dir.resolve("system.xml")
+        Files.writeString(file, RtsProfiles.write(saved, ProfileFormat.XML))
+        val yaml = dir.resolve("system.yaml")
+        Files.writeString(yaml, RtsProfiles.write(saved, ProfileFormat.YAML))
+        val python = Peers.require("python").toString()
+        for ((path, form) in listOf(file to "xml_spec", yaml to "yaml_spec")) {
+            val read = ProcessBuilder(python, "-c", "import rtsprofile.rts_profile as r; p = r.RtsProfile($form=open('$path').read()); print(len(p.components), len(p.data_port_connectors))")
+                .redirectErrorStream(true).start()
+            val output = read.inputStream.bufferedReader().readText()
+            assertEquals(0, read.waitFor(), output)
+            assertEquals("4 2", output.trim())
+        }
+        val expected = shape(saved)
+        val localiser = system.tree.component(system.path("laser_localise0.rtc"))
+        localiser.disconnectAll()
+        localiser.setParameter("gain", "3.0")
+        runPeer("rtresurrect", file.toString()).ok()
+        assertEquals(expected, shape(profiles.save()))
+    }
+
+    @Test
+    fun `a profile rtcryo writes is restored and checked by rtcoord`(@TempDir dir: Path) = runBlocking {
+        val file = dir.resolve("cryo.xml")
+        runPeer("rtcryo", system.naming.address, "-o", file.toString()).ok()
+        val cryo = RtsProfiles.read(file)
+        assertEquals(setOf("laser0", "odometry0", "laser_localise0"), cryo.components.map { it.instanceName }.toSet())
+        val expected = shape(profiles.save())
+        val localiser = system.tree.component(system.path("laser_localise0.rtc"))
+        localiser.disconnectAll()
+        localiser.setParameter("gain", "3.0")
+        profiles.restore(cryo)
+        assertEquals(emptyList<ProfileDifference>(), profiles.check(cryo))
+        assertEquals(expected, shape(profiles.save()))
+    }
+
+    /** What a restore must bring back: connected port pairs, active sets and configuration values. */
+    private fun shape(profile: RtsProfile) = Triple(
+        profile.dataPortConnectors.map { it.source.portName to it.target.portName }.toSet(),
+        profile.components.associate { it.instanceName to it.activeConfigurationSet },
+        profile.components.associate { it.instanceName to it.configurationSets.associate { set -> set.id to set.data } },
+    )
+}
