@@ -64,7 +64,7 @@ internal class SystemCapture(private val tree: RtcTree) {
             id = componentId(s),
             pathUri = node.path.toString().removePrefix("/"),
             instanceName = s.instanceName,
-            activeConfigurationSet = configuration.activeSet,
+            activeConfigurationSet = configuration.activeSet.orEmpty(),
             isRequired = true,
             dataPorts = s.ports.filter { it.kind == PortKind.DATA_IN || it.kind == PortKind.DATA_OUT }.map { ProfilePort(it.name) },
             servicePorts = s.ports.filter { it.kind == PortKind.SERVICE }.map { ProfilePort(it.name) },

@@ -37,7 +37,7 @@ internal class SystemCheck(private val tree: RtcTree) {
             }
             val configuration = node.configuration()
             if (c.activeConfigurationSet.isNotEmpty() && configuration.activeSet != c.activeConfigurationSet) {
-                differences += ProfileDifference(subject, "active configuration set '${c.activeConfigurationSet}'", "'${configuration.activeSet}'")
+                differences += ProfileDifference(subject, "active configuration set '${c.activeConfigurationSet}'", configuration.activeSet?.let { "'$it'" } ?: "none active")
             }
             for (set in ConfigurationRestore.restorable(c)) {
                 val live = configuration.sets[set.id]
