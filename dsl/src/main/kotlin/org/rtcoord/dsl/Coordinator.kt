@@ -125,7 +125,7 @@ public class Coordinator(
     }
 
     private suspend fun watch(machine: MachineInterpreter, patterns: List<EventPattern<*>>, node: Node) {
-        val subscription = patterns.first().watch(tree, node, watching) { machine.offer(it, patterns) }
+        val subscription = patterns.first().watch(tree, node, watching, patterns) { machine.offer(it, patterns) }
         watches += Watch(node, subscription) { new -> watch(machine, patterns, new) }
         searchOnDeath(patterns.first().target, node)
     }

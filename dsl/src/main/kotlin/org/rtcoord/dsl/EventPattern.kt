@@ -33,6 +33,7 @@ internal class EventPattern<E : RtcEvent>(
     val type: Class<E>,
     val watched: Class<out RtcEvent> = type,
     private val translate: (RtcEvent) -> E? = { event -> if (type.isInstance(event)) type.cast(event) else null },
+    private val prepare: suspend (Node) -> Unit = {},
     val matches: (E) -> Boolean,
 ) {
     /** A rule running [handler] on these events when every guard holds. */
@@ -44,9 +45,14 @@ internal class EventPattern<E : RtcEvent>(
     /** Whether [event] is one of these. */
     fun accepts(event: RtcEvent): Boolean = match(event) != null
 
-    /** Hands every event this pattern reads from [node] to [deliver]. */
-    suspend fun watch(tree: RtcTree, node: Node, options: EventOptions, deliver: suspend (RtcEvent) -> Unit): Subscription =
-        tree.on(node, watched, options) { deliver(it) }
+    /**
+     * Hands every event this pattern reads from [node] to [deliver], once [others] watching with it (the
+     * same [watched] type) read what they follow of [node].
+     */
+    suspend fun watch(tree: RtcTree, node: Node, options: EventOptions, others: List<EventPattern<*>> = emptyList(), deliver: suspend (RtcEvent) -> Unit): Subscription {
+        (listOf(this) + others).distinct().forEach { it.prepare(node) }
+        return tree.on(node, watched, options) { deliver(it) }
+    }
 }
 
 /** The event kinds of each target, shared by rules and transitions so that both name and match them alike. */
@@ -57,10 +63,13 @@ internal object EventPatterns {
     fun stateChanged(target: ComponentRef) = EventPattern("$target changes state", Target.Component(target), StateChanged::class.java) { true }
 
     /** Changes of the effective value of [name]: in the active set, or by a switch to a set that holds another value. */
-    fun configParam(target: ComponentRef, name: String) = EventPattern(
-        "$target parameter $name changes", Target.Component(target), ParameterChanged::class.java,
-        watched = RtcEvent::class.java, translate = { effectiveChange(it, name) },
-    ) { it.name == name }
+    fun configParam(target: ComponentRef, name: String): EventPattern<ParameterChanged> {
+        val value = EffectiveValue(name)
+        return EventPattern(
+            "$target parameter $name changes", Target.Component(target), ParameterChanged::class.java,
+            watched = RtcEvent::class.java, translate = value::changeOf, prepare = value::prepare,
+        ) { true }
+    }
 
     fun configSetActivated(target: ComponentRef) =
         EventPattern("$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java) { true }

@@ -79,10 +79,18 @@ internal class MachineInterpreter(
         }
     }
 
-    /** Queues [event], delivered by the subscription watching for [patterns], if it is one of them. */
+    /**
+     * Queues [event], delivered by the subscription watching for [patterns], if it is one of them. Each
+     * pattern matches it once, here: a pattern that follows a value (a parameter's effective value) must
+     * see each event once, in order.
+     */
     fun offer(event: RtcEvent, patterns: List<EventPattern<*>>) {
-        if (!patterns.any { it.accepts(event) }) return
-        inputs.trySend(if (networkWatch.owns(patterns)) Input.Watched(event, patterns) else Input.Event(event, patterns))
+        if (networkWatch.owns(patterns)) {
+            if (patterns.any { it.accepts(event) }) inputs.trySend(Input.Watched(event, patterns))
+            return
+        }
+        val matched = patterns.mapNotNull { pattern -> pattern.match(event)?.let { pattern to it } }.toMap()
+        if (matched.isNotEmpty()) inputs.trySend(Input.Event(matched))
     }
 
     private suspend fun handle(received: Input) {
@@ -139,7 +147,7 @@ internal class MachineInterpreter(
     }
 
     private fun triggers(transition: Transition, input: Input): Boolean = when (val cause = transition.cause) {
-        is Trigger.Event -> input is Input.Event && cause.pattern in input.patterns && cause.pattern.accepts(input.event)
+        is Trigger.Event -> input is Input.Event && cause.pattern in input.matched
         is Trigger.Network -> when (cause.outcome) {
             NetworkOutcome.DONE -> input is Input.Outcome && input.failure == null
             NetworkOutcome.FAILED -> input is Input.Outcome && input.failure != null
@@ -225,7 +233,7 @@ internal class MachineInterpreter(
     }
 
     private fun describe(input: Input): String = when (input) {
-        is Input.Event -> input.patterns.first { it.accepts(input.event) }.description
+        is Input.Event -> input.matched.keys.first().description
         is Input.Outcome -> input.failure?.let { "failed: $it" } ?: "done"
         is Input.Broken -> "networkBroken: ${input.reason}"
         is Input.Watched -> "a change of the network"
@@ -239,7 +247,10 @@ internal class MachineInterpreter(
     private sealed class Input {
         open val event: RtcEvent? get() = null
 
-        class Event(override val event: RtcEvent, val patterns: List<EventPattern<*>>) : Input()
+        /** An event as each pattern it matched sees it. */
+        class Event(val matched: Map<EventPattern<*>, RtcEvent>) : Input() {
+            override val event: RtcEvent get() = matched.values.first()
+        }
 
         class Outcome(val generation: Int, val failure: String?, val connectors: Map<Link, List<String>>?) : Input()
 
