@@ -63,7 +63,8 @@ class RunCommand : TreeCommand("run") {
         withTimeoutOrNull(duration ?: kotlin.time.Duration.INFINITE) { stopped.await() }
         Runtime.getRuntime().removeShutdownHook(hook)
         coordinator.close()
-        val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events unconsumed" }
+        // Events the machine watched for that no transition took in the mode it was in (RunningMachine.unconsumed).
+        val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events no transition took" }
         confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures$machines")
     }
 

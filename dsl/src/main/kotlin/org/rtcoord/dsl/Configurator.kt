@@ -20,23 +20,43 @@ import kotlin.time.Duration.Companion.seconds
 internal class Configurator(private val engine: Engine, private val scope: CoroutineScope) {
     /** How a reconfiguration ended. */
     sealed class Outcome {
-        /** The live system matches; [steps] were needed to get there. */
-        class Done(val steps: List<Step>) : Outcome()
+        /** The live system matches; [steps] were needed to get there; [connectors] join each link, as read back. */
+        class Done(val steps: List<Step>, val connectors: Map<Link, List<String>>) : Outcome()
 
         /** It could not be brought there: [reason] names the step and object, then what went wrong. */
         class Failed(val reason: String) : Outcome()
     }
 
-    /** Applies [network], stopping at the first step that fails. */
+    /**
+     * Applies [network]: reads, plans and applies the steps. A step that fails may have failed because
+     * the system changed under it (a connector another client removed, a component someone activated):
+     * the rest is planned once more from a fresh read, and only a step of that plan that fails too ends
+     * the reconfiguration.
+     */
     suspend fun apply(network: Network): Outcome {
         val deadline = network.stepDeadline ?: DEFAULT_STEP_DEADLINE
+        val applied = mutableListOf<Step>()
         return try {
             val steps = plan(network, read(network, deadline))
-            steps.forEach { step -> within(step.description, deadline) { step.apply(engine) } }
-            val remaining = plan(network, read(network, deadline))
-            if (remaining.isEmpty()) Outcome.Done(steps) else Outcome.Failed("read back: still to do: ${remaining.joinToString()}")
+            try {
+                applyAll(steps, deadline, applied)
+            } catch (e: StepFailed) {
+                val rest = plan(network, read(network, deadline))
+                engine.log("network: ${e.message}; read again: ${if (rest.isEmpty()) "nothing left to do" else "still to do: ${rest.joinToString()}"}")
+                applyAll(rest, deadline, applied)
+            }
+            val live = read(network, deadline)
+            val remaining = plan(network, live)
+            if (remaining.isEmpty()) Outcome.Done(applied, live.links) else Outcome.Failed("read back: still to do: ${remaining.joinToString()}")
         } catch (e: StepFailed) {
             Outcome.Failed(e.message)
+        }
+    }
+
+    private suspend fun applyAll(steps: List<Step>, deadline: Duration, applied: MutableList<Step>) {
+        for (step in steps) {
+            within(step.description, deadline) { step.apply(engine) }
+            applied += step
         }
     }
 
@@ -53,16 +73,16 @@ internal class Configurator(private val engine: Engine, private val scope: Corou
             }
         },
         network.connections.mapValues { (link, present) ->
-            within("read the connections of ${link.from}", deadline) { unlessAbsent(allowed = !present) { exists(link) } ?: false }
+            within("read the connections of ${link.from}", deadline) { unlessAbsent(allowed = !present) { connectors(link) }.orEmpty() }
         },
     )
 
-    /** Whether a connection joins the link's ports, recognised by path or by OpenRTM's `instance.port` name. */
-    private suspend fun exists(link: Link): Boolean {
+    /** The ids of the connections joining the link's ports, recognised by path or by OpenRTM's `instance.port` name. */
+    private suspend fun connectors(link: Link): List<String> {
         val (from, to) = engine.portRef(link.from) to engine.portRef(link.to)
         val (path, fullName) = engine.withComponent(to.component.selector) { node -> node.port(to.name).path to "${node.snapshot().instanceName}.${to.name}" }
         val connections = engine.withComponent(from.component.selector) { it.port(from.name).connections() }
-        return connections.any { connection -> connection.ports.any { it.path == path || it.fullName == fullName } }
+        return connections.filter { connection -> connection.ports.any { it.path == path || it.fullName == fullName } }.map { it.id }
     }
 
     /** [read], or null when what it reads does not exist and that is [allowed]: a missing component is neither active nor connected. */

@@ -12,6 +12,7 @@ import kotlinx.coroutines.launch
 import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
 import org.rtcoord.Node
+import org.rtcoord.NotFoundException
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
@@ -42,12 +43,14 @@ public class Coordinator(
     private val supervisors = CopyOnWriteArrayList<Supervisor>()
     private val searches = ConcurrentHashMap<String, SuccessorSearch>()
     private val failureCount = AtomicInteger()
+    /** The network patterns of the machines that are subscribed. */
+    private val networkWatched = ConcurrentHashMap.newKeySet<EventPattern<*>>()
 
     /** How rules, transitions and supervisors watch: the host's choice, else the script's. */
     private val watching: EventOptions get() = options ?: coordination.watching
 
     private val interpreters = coordination.machines.map { machine ->
-        MachineInterpreter(machine, scope, coordination.engine, Configurator(coordination.engine, scope), log, ::failed)
+        MachineInterpreter(machine, scope, coordination.engine, Configurator(coordination.engine, scope), log, ::failed, ::watchNetwork)
     }
 
     /** How many handler runs failed so far. */
@@ -91,24 +94,46 @@ public class Coordinator(
         interpreters.forEach(MachineInterpreter::start)
     }
 
-    /** Subscribes once per node and event type, however many of [machine]'s transitions watch for it. */
+    /** Subscribes [machine]'s transitions, and what exists now of its networks. */
     private suspend fun watch(machine: MachineInterpreter) {
-        val groups = linkedMapOf<Pair<String, Class<*>>, Pair<Node, MutableList<EventPattern<*>>>>()
-        for (pattern in machine.machine.eventPatterns) {
-            for (node in targets(pattern.target)) groups.getOrPut(node.path.toString() to pattern.type) { node to mutableListOf() }.second += pattern
+        watch(machine, machine.machine.eventPatterns) { targets(it.target) }
+        watchNetwork(machine)
+    }
+
+    /**
+     * Subscribes what [machine]'s networks name that exists now and is not watched yet: at the start, and
+     * each time a network is done (a mode may create what its network names). Only the machine's own
+     * coroutine calls it once the machine runs.
+     */
+    private suspend fun watchNetwork(machine: MachineInterpreter) {
+        watch(machine, machine.networkWatch.patterns.filter { it !in networkWatched }) { pattern ->
+            try {
+                targets(pattern.target).also { networkWatched += pattern }
+            } catch (e: NotFoundException) {
+                emptyList()
+            }
         }
-        for ((node, patterns) in groups.values) watch(machine, patterns, node)
+    }
+
+    /** Subscribes once per node and event type, however many of [patterns] watch for it. */
+    private suspend fun watch(machine: MachineInterpreter, patterns: List<EventPattern<*>>, nodesOf: suspend (EventPattern<*>) -> List<Node>) {
+        val groups = linkedMapOf<Pair<String, Class<*>>, Pair<Node, MutableList<EventPattern<*>>>>()
+        for (pattern in patterns) {
+            for (node in nodesOf(pattern)) groups.getOrPut(node.path.toString() to pattern.watched) { node to mutableListOf() }.second += pattern
+        }
+        for ((node, grouped) in groups.values) watch(machine, grouped, node)
     }
 
     private suspend fun watch(machine: MachineInterpreter, patterns: List<EventPattern<*>>, node: Node) {
-        val subscription = patterns.first().watch(tree, node, watching) { machine.offer(it, patterns) }
+        val subscription = patterns.first().watch(tree, node, watching, patterns) { machine.offer(it, patterns) }
         watches += Watch(node, subscription) { new -> watch(machine, patterns, new) }
         searchOnDeath(patterns.first().target, node)
     }
 
     private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>, nodes: List<Node>) {
         for (node in nodes) {
-            watches += Watch(node, tree.on(node, rule.type, watching) { event -> fire(rule, event) }) { new -> subscribe(rule, listOf(new)) }
+            val subscription = rule.pattern.watch(tree, node, watching) { event -> rule.pattern.match(event)?.let { fire(rule, it) } }
+            watches += Watch(node, subscription) { new -> subscribe(rule, listOf(new)) }
             searchOnDeath(rule.target, node)
         }
     }
@@ -152,7 +177,6 @@ public class Coordinator(
     }
 
     private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E) {
-        if (!rule.matches(event)) return
         val reaction = Reaction(coordination.engine, event)
         if (!rule.guards.all { guard -> reaction.guard(event) }) return
         log("rule '${rule.description}' fired: ${describe(event)}")

@@ -2,6 +2,7 @@ package org.rtcoord.dsl
 
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
+import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.ContextRateChanged
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
@@ -23,17 +24,35 @@ import org.rtcoord.Subscription
 /**
  * One kind of event of one target (a component entering ERROR, a port losing a connection): what rules
  * and mode transitions are triggered by. [description] is how scripts, logs and `check` name it.
+ * Most patterns watch for events of their [type]; one that also reads other events ([watched] wider
+ * than [type]) turns those into its [type] with [translate], or drops them.
  */
-internal class EventPattern<E : RtcEvent>(val description: String, val target: Target, val type: Class<E>, val matches: (E) -> Boolean) {
+internal class EventPattern<E : RtcEvent>(
+    val description: String,
+    val target: Target,
+    val type: Class<E>,
+    val watched: Class<out RtcEvent> = type,
+    private val translate: (RtcEvent) -> E? = { event -> if (type.isInstance(event)) type.cast(event) else null },
+    private val prepare: suspend (Node) -> Unit = {},
+    val matches: (E) -> Boolean,
+) {
     /** A rule running [handler] on these events when every guard holds. */
-    fun rule(guards: List<Guard>, handler: suspend Reaction.(E) -> Unit): Rule<E> = Rule(description, target, type, matches, guards, handler)
+    fun rule(guards: List<Guard>, handler: suspend Reaction.(E) -> Unit): Rule<E> = Rule(this, guards, handler)
+
+    /** [event] as one of these, or null when it is not one. */
+    fun match(event: RtcEvent): E? = translate(event)?.takeIf(matches)
 
     /** Whether [event] is one of these. */
-    fun accepts(event: RtcEvent): Boolean = type.isInstance(event) && matches(type.cast(event))
+    fun accepts(event: RtcEvent): Boolean = match(event) != null
 
-    /** Hands every event of this pattern's type from [node] to [deliver]. */
-    suspend fun watch(tree: RtcTree, node: Node, options: EventOptions, deliver: suspend (RtcEvent) -> Unit): Subscription =
-        tree.on(node, type, options) { deliver(it) }
+    /**
+     * Hands every event this pattern reads from [node] to [deliver], once [others] watching with it (the
+     * same [watched] type) read what they follow of [node].
+     */
+    suspend fun watch(tree: RtcTree, node: Node, options: EventOptions, others: List<EventPattern<*>> = emptyList(), deliver: suspend (RtcEvent) -> Unit): Subscription {
+        (listOf(this) + others).distinct().forEach { it.prepare(node) }
+        return tree.on(node, watched, options) { deliver(it) }
+    }
 }
 
 /** The event kinds of each target, shared by rules and transitions so that both name and match them alike. */
@@ -43,8 +62,17 @@ internal object EventPatterns {
 
     fun stateChanged(target: ComponentRef) = EventPattern("$target changes state", Target.Component(target), StateChanged::class.java) { true }
 
-    fun configParam(target: ComponentRef, name: String) =
-        EventPattern("$target parameter $name changes", Target.Component(target), ParameterChanged::class.java) { it.name == name }
+    /** Changes of the effective value of [name]: in the active set, or by a switch to a set that holds another value. */
+    fun configParam(target: ComponentRef, name: String): EventPattern<ParameterChanged> {
+        val value = EffectiveValue(name)
+        return EventPattern(
+            "$target parameter $name changes", Target.Component(target), ParameterChanged::class.java,
+            watched = RtcEvent::class.java, translate = value::changeOf, prepare = value::prepare,
+        ) { true }
+    }
+
+    fun configSetActivated(target: ComponentRef) =
+        EventPattern("$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java) { true }
 
     fun rateChanged(target: ComponentRef) = EventPattern("$target rate changes", Target.Component(target), ContextRateChanged::class.java) { true }
 

@@ -27,6 +27,9 @@ import kotlin.time.TimeSource
  * mode that declares one cancels a reconfiguration still under way: its outcome never arrives.
  * A mode's `after` timers start once its entry actions ran and stop when it is left.
  *
+ * Once a network is done, it is watched while its modes stay active (see [NetworkWatch]): the first
+ * breach is logged and raised as `networkBroken`, later ones logged only, until the next network is done.
+ *
  * Only the machine's own coroutine touches its state; others only queue inputs.
  */
 internal class MachineInterpreter(
@@ -36,6 +39,8 @@ internal class MachineInterpreter(
     private val configurator: Configurator,
     private val log: (String) -> Unit,
     private val failed: (String, Throwable) -> Unit,
+    /** Watches the network components that exist now and were not watched yet. */
+    private val watchNetwork: suspend (MachineInterpreter) -> Unit = {},
     private val now: () -> Instant = Instant::now,
 ) {
     /** What others may watch. */
@@ -47,6 +52,20 @@ internal class MachineInterpreter(
     private val timers = HashMap<Mode, List<Job>>()
     private var reconfiguration: Job? = null
     private var generation = 0
+
+    /** What the machine watches of its modes' networks. */
+    val networkWatch = NetworkWatch(engine, machine)
+
+    /** The network of the active modes, as last asked of the configurator. */
+    private var network: Network? = null
+
+    /** That network once done, with the connectors joining its links; null until then. */
+    private var established: Established? = null
+
+    private class Established(val network: Network, val connectors: Map<Link, List<String>>) {
+        /** Whether a breach was raised already: what follows from the same fault (lost, then unreachable) is logged only. */
+        var broken = false
+    }
 
     /** Enters the initial modes, then handles inputs until [scope] ends. */
     fun start() {
@@ -60,12 +79,26 @@ internal class MachineInterpreter(
         }
     }
 
-    /** Queues [event], delivered by the subscription watching for [patterns], if it is one of them. */
+    /**
+     * Queues [event], delivered by the subscription watching for [patterns], if it is one of them. Each
+     * pattern matches it once, here: a pattern that follows a value (a parameter's effective value) must
+     * see each event once, in order.
+     */
     fun offer(event: RtcEvent, patterns: List<EventPattern<*>>) {
-        if (patterns.any { it.accepts(event) }) inputs.trySend(Input.Event(event, patterns))
+        if (networkWatch.owns(patterns)) {
+            if (patterns.any { it.accepts(event) }) inputs.trySend(Input.Watched(event, patterns))
+            return
+        }
+        val matched = patterns.mapNotNull { pattern -> pattern.match(event)?.let { pattern to it } }.toMap()
+        if (matched.isNotEmpty()) inputs.trySend(Input.Event(matched))
     }
 
-    private suspend fun handle(input: Input) {
+    private suspend fun handle(received: Input) {
+        val input = when (received) {
+            is Input.Watched -> breach(received) ?: return
+            is Input.Outcome -> received.also { if (isCurrent(it)) noteOutcome(it) }
+            else -> received
+        }
         val reaction = Reaction(engine, input.event)
         val transition = if (isCurrent(input)) choose(input, reaction) else null
         if (transition == null) {
@@ -74,7 +107,7 @@ internal class MachineInterpreter(
             return
         }
         val from = active.last()
-        val trigger = if (input is Input.Outcome) describe(input) else transition.trigger
+        val trigger = if (input is Input.Outcome || input is Input.Broken) describe(input) else transition.trigger
         val kept = active.indexOf(domainOf(transition.source, transition.target)) + 1
         val leaving = active.drop(kept)
         val entering = transition.target.lineage.drop(kept) + transition.target.initialDescent
@@ -83,6 +116,7 @@ internal class MachineInterpreter(
         if ((leaving + entering).any { it.network != null }) {
             reconfiguration?.cancelAndJoin()
             generation++
+            established = null
         }
         for (mode in leaving.asReversed()) {
             timers.remove(mode)?.forEach(Job::cancel)
@@ -99,6 +133,7 @@ internal class MachineInterpreter(
     private fun isCurrent(input: Input): Boolean = when (input) {
         is Input.Event -> true
         is Input.Outcome -> input.generation == generation
+        is Input.Broken, is Input.Watched -> true
         is Input.Timeout -> input.transition.source in active && entries[input.transition.source] == input.entry
     }
 
@@ -112,8 +147,12 @@ internal class MachineInterpreter(
     }
 
     private fun triggers(transition: Transition, input: Input): Boolean = when (val cause = transition.cause) {
-        is Trigger.Event -> input is Input.Event && cause.pattern in input.patterns && cause.pattern.accepts(input.event)
-        is Trigger.Network -> input is Input.Outcome && (input.failure == null) == (cause.outcome == NetworkOutcome.DONE)
+        is Trigger.Event -> input is Input.Event && cause.pattern in input.matched
+        is Trigger.Network -> when (cause.outcome) {
+            NetworkOutcome.DONE -> input is Input.Outcome && input.failure == null
+            NetworkOutcome.FAILED -> input is Input.Outcome && input.failure != null
+            NetworkOutcome.BROKEN -> input is Input.Broken
+        }
         is Trigger.Timeout -> input is Input.Timeout && input.transition === transition
     }
 
@@ -147,8 +186,26 @@ internal class MachineInterpreter(
         running.moved(ModeTransition(from?.path, active.last().path, trigger, now()))
     }
 
+    /** A network done is watched from now on: what it names that exists now is subscribed. */
+    private suspend fun noteOutcome(outcome: Input.Outcome) {
+        val network = network ?: return
+        val connectors = outcome.connectors ?: return
+        established = Established(network, connectors)
+        watchNetwork(this)
+    }
+
+    /** [watched] as the breach of the network in force it is, logged; null when it breaks nothing it requires. */
+    private fun breach(watched: Input.Watched): Input.Broken? {
+        val current = established ?: return null
+        val reason = networkWatch.breach(current.network, current.connectors, watched.event, watched.patterns) ?: return null
+        log("mode ${active.last().path}: network broken: $reason")
+        if (current.broken) return null
+        current.broken = true
+        return Input.Broken(reason)
+    }
+
     private suspend fun reconfigure() {
-        val network = active.mapNotNull { it.network }.reduce(Network::overriddenBy)
+        val network = active.mapNotNull { it.network }.reduce(Network::overriddenBy).also { network = it }
         val mode = active.last().path
         val current = generation
         reconfiguration = scope.launch(CoroutineName("network of $mode")) {
@@ -157,8 +214,9 @@ internal class MachineInterpreter(
             val outcome = configurator.apply(network)
             val took = started.elapsedNow().inWholeMilliseconds
             val failure = (outcome as? Configurator.Outcome.Failed)?.reason
-            log("mode $mode: network " + (failure?.let { "failed after $took ms: $it" } ?: "done (${(outcome as Configurator.Outcome.Done).steps.size} steps in $took ms)"))
-            inputs.send(Input.Outcome(current, failure))
+            val done = outcome as? Configurator.Outcome.Done
+            log("mode $mode: network " + (failure?.let { "failed after $took ms: $it" } ?: "done (${done!!.steps.size} steps in $took ms)"))
+            inputs.send(Input.Outcome(current, failure, done?.connectors))
         }
     }
 
@@ -175,8 +233,10 @@ internal class MachineInterpreter(
     }
 
     private fun describe(input: Input): String = when (input) {
-        is Input.Event -> input.patterns.first { it.accepts(input.event) }.description
+        is Input.Event -> input.matched.keys.first().description
         is Input.Outcome -> input.failure?.let { "failed: $it" } ?: "done"
+        is Input.Broken -> "networkBroken: ${input.reason}"
+        is Input.Watched -> "a change of the network"
         is Input.Timeout -> "${input.transition.trigger} in ${input.transition.source.path}"
     }
 
@@ -187,9 +247,17 @@ internal class MachineInterpreter(
     private sealed class Input {
         open val event: RtcEvent? get() = null
 
-        class Event(override val event: RtcEvent, val patterns: List<EventPattern<*>>) : Input()
+        /** An event as each pattern it matched sees it. */
+        class Event(val matched: Map<EventPattern<*>, RtcEvent>) : Input() {
+            override val event: RtcEvent get() = matched.values.first()
+        }
 
-        class Outcome(val generation: Int, val failure: String?) : Input()
+        class Outcome(val generation: Int, val failure: String?, val connectors: Map<Link, List<String>>?) : Input()
+
+        /** An event of a network's components, to be checked against the network in force. */
+        class Watched(override val event: RtcEvent, val patterns: List<EventPattern<*>>) : Input()
+
+        class Broken(val reason: String) : Input()
 
         class Timeout(val transition: Transition, val entry: Int) : Input()
     }

@@ -35,6 +35,12 @@ public class ModeBuilder internal constructor(internal val name: String, private
     /** The reconfiguration failed: `on(failed) goTo "safe"`. */
     public val failed: NetworkOutcome get() = NetworkOutcome.FAILED
 
+    /**
+     * The network of the active modes, once done, broke: a component it requires active entered ERROR,
+     * was lost or exited, or a connection it requires was removed: `on(networkBroken) goTo "degraded"`.
+     */
+    public val networkBroken: NetworkOutcome get() = NetworkOutcome.BROKEN
+
     /** The sub-mode [name] is the one entered when this mode is entered; required when there are sub-modes. */
     public fun initial(name: String) {
         initials += name
@@ -87,7 +93,7 @@ public class ModeBuilder internal constructor(internal val name: String, private
     /** Transitions on a naming context's events. */
     public fun on(target: ContextRef): ContextTransitions = ContextTransitions(this, target)
 
-    /** A transition on the outcome of bringing the system to the active modes' network: `on(done)`, `on(failed)`. */
+    /** A transition on the outcome of bringing the system to the active modes' network: `on(done)`, `on(failed)`, `on(networkBroken)`. */
     public fun on(outcome: NetworkOutcome): TransitionTrigger = add(Trigger.Network(outcome))
 
     /** A transition taken once the mode has been active for [delay] (restarting each time it is entered). */

@@ -2,8 +2,12 @@ package org.rtcoord.dsl
 
 import org.rtcoord.LifeCycle
 
-/** The live system as read for what a [Network] names: component states (null: absent), active sets (null: none active), which links exist. */
-internal class LiveNetwork(val states: Map<String, LifeCycle?>, val activeSets: Map<String, String?>, val links: Map<Link, Boolean>)
+/**
+ * The live system as read for what a [Network] names: component states (null: absent), active sets (null:
+ * none active), and for each link the ids of the connectors joining its ports (none: not connected, or a
+ * port is absent).
+ */
+internal class LiveNetwork(val states: Map<String, LifeCycle?>, val activeSets: Map<String, String?>, val links: Map<Link, List<String>>)
 
 /** One change to the live system, named as the script names its objects (the failure reason starts with it). */
 internal sealed class Step(val description: String) {
@@ -13,8 +17,12 @@ internal sealed class Step(val description: String) {
         override suspend fun apply(engine: Engine) = engine.componentRef(component).deactivate()
     }
 
-    class Disconnect(private val link: Link) : Step("disconnect ${link.from} from ${link.to}") {
-        override suspend fun apply(engine: Engine) = Reaction(engine, null).disconnect(link.from, link.to)
+    /** Removes the connectors read as joining the link: one another client removed since was not planned for. */
+    class Disconnect(private val link: Link, private val connectors: List<String>) : Step("disconnect ${link.from} from ${link.to}") {
+        override suspend fun apply(engine: Engine) {
+            val from = engine.portRef(link.from)
+            engine.act(description, from.component, namesItself = true) { node -> connectors.forEach { node.port(from.name).disconnect(it) } }
+        }
     }
 
     class ActivateSet(private val component: String, private val id: String) : Step("activate configuration set $id of $component") {
@@ -40,12 +48,12 @@ internal sealed class Step(val description: String) {
  */
 internal fun plan(desired: Network, live: LiveNetwork): List<Step> {
     val stop = desired.components.filter { (component, active) -> !active && live.states[component] == LifeCycle.ACTIVE }.keys.reversed()
-    val cut = desired.connections.filter { (link, present) -> !present && live.links[link] == true }.keys
+    val cut = desired.connections.filter { (link, present) -> !present && !live.links[link].isNullOrEmpty() }.keys
     val sets = desired.configurationSets.filter { (component, id) -> live.activeSets[component] != id }
-    val join = desired.connections.filter { (link, present) -> present && live.links[link] != true }.keys
+    val join = desired.connections.filter { (link, present) -> present && live.links[link].isNullOrEmpty() }.keys
     val start = desired.components.filter { (component, active) -> active && live.states[component] != LifeCycle.ACTIVE }.keys
     return stop.map { Step.Deactivate(it) } +
-        cut.map { Step.Disconnect(it) } +
+        cut.map { Step.Disconnect(it, live.links.getValue(it)) } +
         sets.map { (component, id) -> Step.ActivateSet(component, id) } +
         join.map { Step.Connect(it, desired.properties[it].orEmpty()) } +
         start.map { Step.Activate(it) }

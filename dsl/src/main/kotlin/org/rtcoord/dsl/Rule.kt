@@ -11,15 +11,15 @@ internal sealed class Target {
     class Context(val ref: ContextRef) : Target()
 }
 
-/** A rule: on events of [type] from [target] that [matches] and pass every guard, run [handler]. */
+/** A rule: on the events of [pattern] that pass every guard, run [handler]. */
 internal class Rule<E : RtcEvent>(
-    val description: String,
-    val target: Target,
-    val type: Class<E>,
-    val matches: (E) -> Boolean,
+    val pattern: EventPattern<E>,
     val guards: List<suspend Reaction.(RtcEvent) -> Boolean>,
     val handler: suspend Reaction.(E) -> Unit,
-)
+) {
+    val description: String get() = pattern.description
+    val target: Target get() = pattern.target
+}
 
 /** A timer: [action] after [delay], then every [period] if there is one. */
 internal class Timer(val description: String, val delay: Duration, val period: Duration?, val action: suspend Reaction.() -> Unit)

@@ -31,6 +31,7 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
+import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.TimeSource
 
 /**
@@ -51,7 +52,7 @@ internal class Supervisor(
     private val escalate: suspend (Escalation) -> Unit,
 ) {
     /** A failure to handle: [child] did [what] while it was [node]. [exited]: it ended by itself. */
-    private class Failure(val child: SupervisedChild, val node: ComponentNode, val what: String, val exited: Boolean)
+    private class Failure(val child: SupervisedChild, val node: ComponentNode, val what: String, val exited: Boolean, val seq: Long)
 
     /** What a component answers when asked for its state. */
     private sealed class Status {
@@ -66,6 +67,10 @@ internal class Supervisor(
     private val connections = mutableListOf<RecordedConnection>()
     private val lock = Mutex()
     private val failures = Channel<Failure>(Channel.UNLIMITED)
+    /** Numbers failures as they are reported, so a restart can tell which reports it already answered. */
+    private val sequence = AtomicLong()
+    /** Per child: the last failure number its latest restart answers (only the handling coroutine touches it). */
+    private val covered = HashMap<SupervisedChild, Long>()
     private val policy = TimeSource.Monotonic.markNow().let { start -> RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() } }
     @Volatile private var stopped = false
 
@@ -85,12 +90,14 @@ internal class Supervisor(
         scope.launch {
             for (failure in failures) {
                 if (stopped) break
+                // Failures reported together (one process killed) are one episode.
+                val reported = listOf(failure) + generateSequence { failures.tryReceive().getOrNull() }
                 try {
-                    handle(failure)
+                    handle(reported)
                 } catch (e: CancellationException) {
                     throw e
                 } catch (e: Exception) {
-                    log("$name: recovering ${failure.node.path} failed: ${e.message ?: e}")
+                    log("$name: recovering ${reported.joinToString { it.node.path.toString() }} failed: ${e.message ?: e}")
                 }
             }
         }
@@ -110,15 +117,19 @@ internal class Supervisor(
 
     private suspend fun observe(child: SupervisedChild, node: ComponentNode, event: RtcEvent) {
         when (event) {
-            is StateChanged -> if (event.new == LifeCycle.ERROR) failures.trySend(Failure(child, node, "entered ERROR", exited = false))
-            is HeartbeatLost -> failures.trySend(Failure(child, node, "was lost (silent for ${event.silentMillis} ms)", exited = false))
-            is BecameZombie -> failures.trySend(Failure(child, node, "became unreachable (${event.cause.reason})", exited = false))
-            is ComponentFinalized -> failures.trySend(Failure(child, node, "exited", exited = true))
+            is StateChanged -> if (event.new == LifeCycle.ERROR) report(child, node, "entered ERROR", exited = false)
+            is HeartbeatLost -> report(child, node, "was lost (silent for ${event.silentMillis} ms)", exited = false)
+            is BecameZombie -> report(child, node, "became unreachable (${event.cause.reason})", exited = false)
+            is ComponentFinalized -> report(child, node, "exited", exited = true)
             is PortConnected, is PortDisconnected, is ConfigurationSetActivated, is ParameterChanged -> lock.withLock {
                 if (!child.left && child.node.isSameComponent(node)) update(child, event)
             }
             else -> Unit
         }
+    }
+
+    private fun report(child: SupervisedChild, node: ComponentNode, what: String, exited: Boolean) {
+        failures.trySend(Failure(child, node, what, exited, sequence.incrementAndGet()))
     }
 
     /** Records [child]'s type, name, hosting managers (among [managers]) and active configuration set. */
@@ -195,54 +206,91 @@ internal class Supervisor(
         }
     }
 
-    private suspend fun handle(failure: Failure) {
-        val child = failure.child
-        // An earlier recovery re-created it, or let it go: this news is about a component that is no more.
-        if (child.left || !child.node.isSameComponent(failure.node)) return
-        if (!failure.exited) {
+    /**
+     * One restart episode: every child that failed by now (those reported, and siblings lost in the same
+     * fault, such as the components of one killed process) is recovered by one decision, which counts
+     * once against the restart intensity.
+     */
+    private suspend fun handle(reported: List<Failure>) {
+        val fresh = reported.filter { it.isNews() }
+        if (fresh.isEmpty()) return
+        val episode = sequence.get()
+        val failed = LinkedHashMap<SupervisedChild, String>()
+        for (child in children.filter { !it.left }) {
+            val report = fresh.firstOrNull { it.child === child }
             val status = probe(child)
-            if (status is Status.Up && status.state != LifeCycle.ERROR) {
-                log("$name: $child ${failure.what}, but it answers and is ${status.state}: nothing to recover")
-                return
+            when {
+                report?.exited == true -> failed[child] = report.what
+                status is Status.Gone -> failed[child] = report?.what ?: "is gone (${status.reason})"
+                (status as Status.Up).state == LifeCycle.ERROR -> failed[child] = report?.what ?: "is in ERROR"
+                report != null -> log("$name: $child ${report.what}, but it answers and is ${status.state}: nothing to recover")
             }
         }
-        log("$name: $child ${failure.what}")
-        when {
-            child.restart == RestartType.TEMPORARY -> return leave(child, "it is temporary: not restarted")
-            child.restart == RestartType.TRANSIENT && failure.exited -> return leave(child, "it is transient and exited by itself: not restarted")
-            else -> Unit
+        failed.keys.forEach { covered[it] = episode }
+        failed.forEach { (child, what) -> log("$name: $child $what") }
+        val exited = fresh.filter { it.exited }.map { it.child }.toSet()
+        for (child in failed.keys.toList()) {
+            when {
+                child.restart == RestartType.TEMPORARY -> leave(child, "it is temporary: not restarted")
+                child.restart == RestartType.TRANSIENT && child in exited -> leave(child, "it is transient and exited by itself: not restarted")
+                else -> continue
+            }
+            failed -= child
         }
-        when (val decision = policy.decide(child.index)) {
-            is RestartPolicy.Decision.Escalate -> giveUp(child, failure, decision.restarts)
+        if (failed.isEmpty()) return
+        when (val decision = policy.decide(failed.keys.map { it.index }.toSet())) {
+            is RestartPolicy.Decision.Escalate -> failed.entries.first().let { (child, what) -> giveUp(child, what, decision.restarts) }
             is RestartPolicy.Decision.Restart -> {
+                val together = failed.keys.joinToString()
                 if (decision.wait.isPositive()) {
-                    log("$name: restarting $child in ${decision.wait} (consecutive restart ${decision.attempt})")
+                    log("$name: restarting $together in ${decision.wait} (consecutive restart ${decision.attempt})")
                     delay(decision.wait)
                 }
-                lock.withLock { restart(child) }
+                // Whatever was reported of them meanwhile, this restart answers.
+                sequence.get().let { now -> failed.keys.forEach { covered[it] = now } }
+                if (failed.size > 1) log("$name: $together failed together: one restart")
+                lock.withLock { restart(failed.keys.toList()) }
             }
         }
     }
 
-    /** Restarts [failed] and, as the strategy says, the others: stopped in reverse order, started in order. */
-    private suspend fun restart(failed: SupervisedChild) {
+    /** Whether this failure is news: about the component the child is now, and after its last restart began. */
+    private fun Failure.isNews(): Boolean = !child.left && child.node.isSameComponent(node) && seq > (covered[child] ?: 0L)
+
+    /**
+     * Restarts [failed] and, as the strategy says, the others: those not failed are stopped in reverse
+     * order, then all are started in declared order. Where the others depend on the earlier ones
+     * (rest-for-one, one-for-all), starting stops at the first that does not come up: the later ones
+     * stay stopped until it does. One that did not come up is retried as a failure of its own.
+     */
+    private suspend fun restart(failed: List<SupervisedChild>) {
         val group = when (supervision.strategy) {
-            Strategy.ONE_FOR_ONE -> listOf(failed)
+            Strategy.ONE_FOR_ONE -> failed
             Strategy.ONE_FOR_ALL -> children
-            Strategy.REST_FOR_ONE -> children.drop(failed.index)
+            Strategy.REST_FOR_ONE -> children.drop(failed.minOf { it.index })
         }.filter { !it.left }
-        if (group.size > 1) {
+        if (group.size > failed.size) {
             log("$name: ${supervision.strategy}: restarting ${group.joinToString()}")
-            group.asReversed().filter { it !== failed }.forEach { stop(it) }
+            group.asReversed().filter { it !in failed }.forEach { stop(it) }
         }
-        for (member in group) {
-            if (member !== failed && member.restart == RestartType.TEMPORARY) {
+        val inOrder = supervision.strategy != Strategy.ONE_FOR_ONE
+        var notStarted: SupervisedChild? = null
+        for ((place, member) in group.withIndex()) {
+            if (member !in failed && member.restart == RestartType.TEMPORARY) {
                 leave(member, "it is temporary: stopped, not started again")
                 continue
             }
-            // One that could not be brought up fails again: the next try counts against the intensity.
-            if (!start(member)) failures.trySend(Failure(member, member.node, "could not be restarted", exited = false))
+            if (start(member)) continue
+            notStarted = notStarted ?: member
+            if (inOrder) {
+                group.drop(place + 1).filter { !it.left }.takeIf { it.isNotEmpty() }?.let { later ->
+                    log("$name: ${later.joinToString()} stay stopped until $member starts")
+                }
+                break
+            }
         }
+        // The next try counts against the intensity like any restart.
+        notStarted?.let { report(it, it.node, "could not be restarted", exited = false) }
     }
 
     private suspend fun stop(member: SupervisedChild) {
@@ -379,8 +427,8 @@ internal class Supervisor(
         log("$name: $child: $why; no longer supervised")
     }
 
-    private suspend fun giveUp(child: SupervisedChild, failure: Failure, restarts: Int) {
-        val escalation = Escalation(name, child.node.path.toString(), failure.what, restarts, supervision.maxRestarts.period)
+    private suspend fun giveUp(child: SupervisedChild, what: String, restarts: Int) {
+        val escalation = Escalation(name, child.node.path.toString(), what, restarts, supervision.maxRestarts.period)
         log("$name: escalation: ${escalation.reason}; the supervisor stops")
         close()
         escalate(escalation)

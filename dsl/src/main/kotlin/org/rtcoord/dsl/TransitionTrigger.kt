@@ -2,13 +2,26 @@ package org.rtcoord.dsl
 
 import kotlin.time.Duration
 
-/** The outcome of bringing the live system to a mode's network: `on(done) goTo "running"`, `on(failed) goTo "safe"`. */
-public enum class NetworkOutcome {
+/**
+ * The outcome of bringing the live system to a mode's network, and what happens to it after:
+ * `on(done) goTo "running"`, `on(failed) goTo "safe"`, `on(networkBroken) goTo "degraded"`.
+ */
+public enum class NetworkOutcome(private val text: String) {
     /** The live system was read back and matches the network the active modes declare. */
-    DONE,
+    DONE("done"),
 
     /** A step failed, missed its deadline, or the result read back differs; the reason names the step and object. */
-    FAILED,
+    FAILED("failed"),
+
+    /**
+     * After [DONE], the network broke: a component it requires active entered ERROR, was lost, became
+     * unreachable or exited, or a connection it requires was removed. Raised once per network brought
+     * about; each breach is logged.
+     */
+    BROKEN("networkBroken");
+
+    /** The name a script writes. */
+    override fun toString(): String = text
 }
 
 /** What makes a transition go: an event of the live system, the outcome of a reconfiguration, or time in a mode. */
@@ -23,7 +36,7 @@ internal sealed class Trigger {
     }
 
     class Network(val outcome: NetworkOutcome) : Trigger() {
-        override val description: String get() = outcome.name.lowercase()
+        override val description: String get() = outcome.toString()
     }
 
     class Timeout(val delay: Duration) : Trigger() {

@@ -11,8 +11,11 @@ public class ComponentTransitions internal constructor(private val mode: ModeBui
     /** On every lifecycle change. */
     public fun stateChanged(): TransitionTrigger = mode.trigger(EventPatterns.stateChanged(target))
 
-    /** When configuration parameter [name] changes (in any set). */
+    /** When the effective value of configuration parameter [name] changes (set in the active set, or by a set switch). */
     public fun configParam(name: String): TransitionTrigger = mode.trigger(EventPatterns.configParam(target, name))
+
+    /** When another configuration set becomes active. */
+    public fun configSetActivated(): TransitionTrigger = mode.trigger(EventPatterns.configSetActivated(target))
 
     /** When the rate of one of its execution contexts changes. */
     public fun rateChanged(): TransitionTrigger = mode.trigger(EventPatterns.rateChanged(target))

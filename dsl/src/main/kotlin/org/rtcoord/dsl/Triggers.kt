@@ -5,6 +5,7 @@ import org.rtcoord.ComponentFinalized
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.Node
+import org.rtcoord.ParameterChanged
 import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
 import org.rtcoord.Recovered
@@ -31,9 +32,18 @@ public class ComponentTriggers internal constructor(
     /** On every lifecycle change. */
     public fun stateChanged(handler: suspend Reaction.(StateChanged) -> Unit): Unit = add(EventPatterns.stateChanged(target), handler)
 
-    /** When configuration parameter [name] changes (in any set): `configParam("gain") { old, new -> ... }`. */
+    /**
+     * When the effective value of configuration parameter [name] changes, its value in the active set:
+     * set there, or changed by a switch to a set that holds another value (whoever switches).
+     * `configParam("gain") { old, new -> ... }`; the rule's [Reaction.event] is a [ParameterChanged]
+     * naming the active set.
+     */
     public fun configParam(name: String, handler: suspend Reaction.(old: String?, new: String?) -> Unit): Unit =
         add(EventPatterns.configParam(target, name)) { handler(it.old, it.new) }
+
+    /** When another configuration set becomes active: `configSetActivated { old, new -> ... }` with the sets' ids. */
+    public fun configSetActivated(handler: suspend Reaction.(old: String, new: String) -> Unit): Unit =
+        add(EventPatterns.configSetActivated(target)) { handler(it.old, it.new) }
 
     /** When the rate of one of its execution contexts changes. */
     public fun rateChanged(handler: suspend Reaction.(old: Double, new: Double) -> Unit): Unit =

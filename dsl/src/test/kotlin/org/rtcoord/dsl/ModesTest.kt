@@ -9,16 +9,22 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ACTIVE
 import org.rtcoord.LifeCycle.ERROR
+import org.rtcoord.ParameterChanged
 import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
+import org.rtcoord.fixtures.Behaviour
+import org.rtcoord.fixtures.ComponentContext
+import org.rtcoord.fixtures.ComponentType
+import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
 
 /** Mode machines driving the localisation system over IIOP; results are read back through the fixtures and a second tree. */
 class ModesTest {
@@ -39,8 +45,8 @@ class ModesTest {
         naming.close()
     }
 
-    private fun coordinator(declare: Coordination.() -> Unit): Coordinator =
-        Coordinator(tree, Coordination(emptyList(), config).apply(declare), EventOptions(WatchMode.PUSH)) { log += it }
+    private fun coordinator(options: EventOptions = EventOptions(WatchMode.PUSH), declare: Coordination.() -> Unit): Coordinator =
+        Coordinator(tree, Coordination(emptyList(), config).apply(declare), options) { log += it }
 
     private fun path(port: String) = "/${naming.address}/${FixtureRuntime.hostContext}/$port"
 
@@ -252,6 +258,149 @@ class ModesTest {
             await("the unconsumed event to be counted") { machine.unconsumed == 1 }
             assertEquals("robot/stopped", machine.mode.value)
             assertEquals(listOf("start", "laser0 enters ERROR", "gyro0 enters ERROR"), machine.history.value.map { it.trigger })
+            assertEquals(0, coordinator.failures)
+        }
+    }
+
+    @Test
+    fun `a network removed or failing under a mode raises networkBroken, logged with what broke`(): Unit = runBlocking {
+        coordinator {
+            modes("m") {
+                initial("tracking")
+                mode("tracking") {
+                    network {
+                        active("laser0", "laser_localise0")
+                        connected("laser0:laser", "laser_localise0:laser")
+                    }
+                    on(networkBroken) goTo "repairing"
+                }
+                mode("repairing") {
+                    network {
+                        active("laser0", "laser_localise0")
+                        connected("laser0:laser", "laser_localise0:laser")
+                    }
+                    on(done) goTo "tracking"
+                    on(failed) goTo "stranded"
+                }
+                mode("stranded")
+            }
+        }.use { coordinator ->
+            val machine = coordinator.started("m", "m/tracking")
+            await("the start's network to be done") { log.any { it.startsWith("mode m/tracking: network done") } }
+
+            // Another client removes the connection: the machine repairs it.
+            val laser = witness.port(path("laser0.rtc:laser"))
+            laser.disconnect(laser.connections().single().id)
+            await("the network to be repaired") { machine.history.value.size == 3 }
+            assertEquals(listOf("m/tracking", "m/repairing", "m/tracking"), machine.history.value.map { it.to })
+            assertEquals("networkBroken: laser0.rtc:laser -> laser_localise0.rtc:laser was disconnected", machine.history.value[1].trigger)
+            assertTrue(log.contains("mode m/tracking: network broken: laser0.rtc:laser -> laser_localise0.rtc:laser was disconnected"), log.toString())
+            await("the connection to be made again") { runBlocking { peers("laser_localise0.rtc:laser") } == setOf("laser0.laser") }
+
+            // The laser fails: the repair cannot activate it.
+            await("the repaired network to be done") { log.count { it.startsWith("mode m/tracking: network done") } == 2 }
+            system.component("laser0").fail()
+            await("the machine to be stranded", timeout = kotlin.time.Duration.parse("20s")) { machine.mode.value == "m/stranded" }
+            assertEquals("networkBroken: laser0.rtc enters ERROR", machine.history.value[3].trigger)
+            assertTrue(log.contains("mode m/tracking: network broken: laser0.rtc enters ERROR"), log.toString())
+            assertEquals(0, coordinator.failures)
+        }
+    }
+
+    @Test
+    fun `the death of the process hosting a mode's components raises networkBroken`(): Unit = runBlocking {
+        val process = FixtureProcess.start(
+            "--naming", naming.address, "--scenario", "components:laser1=laser,localise1=laser_localise",
+            "--master", system.master!!.runtime.orb.corbaloc("manager"),
+        )
+        process.use {
+            coordinator(EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds)) {
+                modes("m") {
+                    initial("tracking")
+                    mode("tracking") {
+                        network {
+                            active("laser1", "localise1")
+                            connected("laser1:laser", "localise1:laser")
+                        }
+                        on(networkBroken) goTo "blind"
+                    }
+                    mode("blind")
+                }
+            }.use { coordinator ->
+                val machine = coordinator.started("m", "m/tracking")
+                await("the network to be done") { log.any { it.startsWith("mode m/tracking: network done (3 steps") } }
+                val killed = TimeSource.Monotonic.markNow()
+                process.kill()
+                await("the machine to notice", timeout = kotlin.time.Duration.parse("20s")) { machine.mode.value == "m/blind" }
+                println("slave SIGKILL to networkBroken taken: ${killed.elapsedNow()}")
+                val trigger = machine.history.value.last().trigger
+                assertTrue(trigger.startsWith("networkBroken: laser1.rtc ") || trigger.startsWith("networkBroken: localise1.rtc "), trigger)
+                assertTrue(log.any { it.startsWith("mode m/tracking: network broken: ") }, log.toString())
+            }
+        }
+    }
+
+    @Test
+    fun `what another client already did is not an error, a failed step is planned again from a fresh read`(): Unit = runBlocking {
+        val odoLocaliser = system.runtime.create(Scenarios.odoLocalise, "odo_localise0")
+        // A component whose deactivation does, as another client, what the configurator's later steps would.
+        val tripwire = ComponentType("tripwire", behaviour = {
+            object : Behaviour {
+                override fun onDeactivated(rtc: ComponentContext): Boolean {
+                    system.component("laser0").ref.get_ports().forEach { it.disconnect_all() }
+                    odoLocaliser.activate()
+                    return true
+                }
+            }
+        })
+        system.runtime.create(tripwire, "tripwire0").activate()
+        coordinator {
+            modes("m") {
+                initial("idle")
+                mode("idle") { on(component("gyro0")).state(ERROR) goTo "switching" }
+                mode("switching") {
+                    network {
+                        inactive("tripwire0")
+                        disconnected("laser0:laser", "laser_localise0:laser")
+                        active("odo_localise0")
+                    }
+                    on(done) goTo "running"
+                    on(failed) goTo "stranded"
+                }
+                mode("running")
+                mode("stranded")
+            }
+        }.use { coordinator ->
+            val machine = coordinator.started("m", "m/idle")
+            system.component("gyro0").fail()
+            await("the switch to end") { machine.mode.value == "m/running" || machine.mode.value == "m/stranded" }
+            assertEquals("m/running", machine.mode.value, log.joinToString("\n"))
+            assertTrue(log.any { it.startsWith("network: disconnect laser0.rtc:laser from laser_localise0.rtc:laser: ") && it.endsWith("read again: nothing left to do") }, log.joinToString("\n"))
+            assertEquals(emptySet<String>(), peers("laser_localise0.rtc:laser"))
+            assertEquals(LifeCycleState.ACTIVE_STATE, odoLocaliser.state)
+        }
+    }
+
+    @Test
+    fun `a configuration set switch by another client fires the parameter's rule with the set's name, and the switch's own trigger`(): Unit = runBlocking {
+        val seen = CopyOnWriteArrayList<String>()
+        coordinator {
+            on(component("laser_localise0")).configParam("gain") { old, new -> seen += "gain ${(event as ParameterChanged).set}: $old -> $new" }
+            on(component("laser_localise0")).configSetActivated { old, new -> seen += "set $old -> $new" }
+        }.use { coordinator ->
+            coordinator.start()
+            val localiser = witness.component(path("laser_localise0.rtc"))
+            localiser.setParameter("gain", "3.0", set = "precise")
+            localiser.activateConfigurationSet("precise")
+            await("both rules to fire") { seen.size == 2 }
+            assertEquals(setOf("gain precise: 1.0 -> 3.0", "set default -> precise"), seen.toSet(), "a change in a set not in force is no change of the gain")
+
+            localiser.setParameter("gain", "1.0", set = "precise")
+            await("the change in force to fire the rule") { seen.size == 3 }
+            assertEquals("gain precise: 3.0 -> 1.0", seen.last())
+            localiser.activateConfigurationSet("default")
+            await("the switch to fire") { seen.size == 4 }
+            assertEquals("set precise -> default", seen.last(), "the same gain in both sets: no change of the gain")
             assertEquals(0, coordinator.failures)
         }
     }

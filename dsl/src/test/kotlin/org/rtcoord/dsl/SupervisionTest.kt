@@ -287,6 +287,64 @@ class SupervisionTest {
         }
     }
 
+    @Test
+    fun `components lost together in one killed process are one restart, restarted together`(): Unit = runBlocking {
+        val process = FixtureProcess.start(
+            "--naming", naming.address, "--scenario", "components:laser1=laser,localise1=laser_localise,odometry1=odometry",
+            "--master", system.master!!.runtime.orb.corbaloc("manager"),
+        )
+        process.use {
+            witness.connect(path("laser1.rtc:laser"), path("localise1.rtc:laser"))
+            witness.connect(path("odometry1.rtc:odo"), path("localise1.rtc:odo"))
+            listOf("laser1", "localise1", "odometry1").forEach { witness.component(path("$it.rtc")).activate() }
+            val escalations = CopyOnWriteArrayList<Escalation>()
+            coordinator {
+                supervise(component("laser1"), component("localise1"), component("odometry1")) {
+                    strategy = restForOne
+                    // Counted per component, the three losses would escalate at the second.
+                    maxRestarts = 1 within 60.seconds
+                    onEscalation { escalations += it }
+                }
+            }.use { coordinator ->
+                coordinator.start()
+                val killed = TimeSource.Monotonic.markNow()
+                process.kill()
+                val back = listOf("laser1", "localise1", "odometry1").map { name -> awaitValue("$name to be re-created here and active", 30.seconds) { active(name) } }
+                println("slave process SIGKILL to the pipeline (laser1, localise1, odometry1) ACTIVE again: ${killed.elapsedNow()}")
+                await("the localiser to get laser data again") { back[1].latest("laser") != null && back[1].latest("odo") != null }
+                assertEquals(emptyList<Escalation>(), escalations.toList(), log.joinToString("\n"))
+                assertEquals(1, log.count { it.endsWith("failed together: one restart") }, log.joinToString("\n"))
+                assertEquals(listOf("start laser1.rtc", "start localise1.rtc", "start odometry1.rtc"), steps())
+                assertEquals(0, coordinator.failures)
+            }
+        }
+    }
+
+    @Test
+    fun `rest-for-one leaves the later components stopped while an earlier one cannot be restarted, and starts them once it is`(): Unit = runBlocking {
+        val (laser, odometry) = listOf("laser0", "odometry0").map(system::component)
+        coordinator {
+            supervise(component("laser0"), component("odometry0")) {
+                strategy = restForOne
+                maxRestarts = 20 within 60.seconds
+                backoff = exponential(200.milliseconds, max = 200.milliseconds)
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            laser.breakDown()
+            await("laser0's reset to be refused twice") { log.count { it.endsWith("odometry0.rtc stay stopped until ${path("laser0.rtc")} starts") } >= 2 }
+            assertEquals(LifeCycleState.INACTIVE_STATE, odometry.state, "the dependant stays stopped")
+            assertTrue(log.none { it.endsWith("start ${path("odometry0.rtc")}") }, log.joinToString("\n"))
+
+            laser.repair()
+            await("laser0, then odometry0, to be active again") { listOf(laser, odometry).all { it.state == LifeCycleState.ACTIVE_STATE } }
+            val started = steps().filter { it.startsWith("start") }
+            assertEquals("start odometry0.rtc", started.last(), started.toString())
+            assertEquals(1, started.count { it == "start odometry0.rtc" }, started.toString())
+            assertEquals(0, coordinator.failures)
+        }
+    }
+
     private companion object {
         val STEP = Regex("""^supervisor\(.*?\): (stop|start) \S*/([^/\s:]+)$""")
     }

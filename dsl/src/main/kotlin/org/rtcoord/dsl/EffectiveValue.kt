@@ -1,0 +1,47 @@
+package org.rtcoord.dsl
+
+import org.rtcoord.ComponentNode
+import org.rtcoord.ConfigurationSetActivated
+import org.rtcoord.Node
+import org.rtcoord.ParameterChanged
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import java.util.concurrent.ConcurrentHashMap
+
+/**
+ * Follows the effective value of [parameter], its value in the active configuration set, in each
+ * component watched: a change in the active set and a switch to a set that holds another value both
+ * change it. Judged from the component as last read, so two changes read at once (values set in a set,
+ * then that set activated) are one change. Each event must be shown once, in order.
+ */
+internal class EffectiveValue(private val parameter: String) {
+    /** A value as last seen; [value] null: the active set does not hold the parameter. */
+    private class Seen(val value: String?)
+
+    private val seen = ConcurrentHashMap<String, Seen>()
+
+    /** Reads [node]'s value now, so that its first change is measured from it. */
+    suspend fun prepare(node: Node) {
+        if (node !is ComponentNode) return
+        try {
+            val configuration = node.configuration()
+            seen[node.path.toString()] = Seen(configuration.sets[configuration.activeSet]?.get(parameter))
+        } catch (e: RtcException) {
+            // Measured from the first event instead.
+        }
+    }
+
+    /** [event] as a change of the effective value, named after the set now active; null when the value did not change. */
+    fun changeOf(event: RtcEvent): ParameterChanged? {
+        if (!(event is ParameterChanged && event.name == parameter) && event !is ConfigurationSetActivated) return null
+        val source = event.source as? ComponentNode ?: return null
+        val configuration = source.snapshots.value?.configuration ?: return null
+        val now = configuration.sets[configuration.activeSet]?.get(parameter)
+        val before = seen.put(source.path.toString(), Seen(now))?.value ?: when (event) {
+            is ParameterChanged -> if (event.set == configuration.activeSet) event.old else now
+            is ConfigurationSetActivated -> configuration.sets[event.old]?.get(parameter)
+            else -> now
+        }
+        return if (before != now) ParameterChanged(source, configuration.activeSet, parameter, before, now) else null
+    }
+}
