@@ -55,7 +55,7 @@ class RunCommand : TreeCommand("run") {
             coordination.description.forEach { confirm("  $it") }
 
             val signal = signals.await(duration)
-            // Detached while the ORB still works; a second signal now ends the process at once.
+            // Detached while the ORB still works; after a signal, a second one ends the process at once.
             coordinator.close()
             val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events unconsumed" }
             confirm("${now()} stopped${signal?.let { " by $it" }.orEmpty()}; ${coordinator.failures} handler failures$machines")

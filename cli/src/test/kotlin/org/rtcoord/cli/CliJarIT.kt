@@ -96,7 +96,8 @@ class CliJarIT {
             while (printed.none { "coordinating:" in it }) {
                 printed += stdout.poll(120, TimeUnit.SECONDS) ?: break
             }
-            process.destroy() // SIGTERM
+            // Not Process.destroy, which sends SIGTERM but closes the streams this test still reads.
+            assertEquals(0, ProcessBuilder("kill", "-TERM", process.pid().toString()).start().waitFor(), "kill -TERM")
             assertTrue(process.waitFor(60, TimeUnit.SECONDS), "run did not end after SIGTERM")
             reader.join()
             printed += generateSequence { stdout.poll() }

@@ -75,6 +75,9 @@ internal class Watcher(private val core: TreeCore) {
                 }
                 is DirectoryNode -> synchronized(watched) { watched.add(node) }.takeIf { it }?.let {
                     val children = try { node.children() } catch (e: RtcException) { emptyList() }
+                    // Managers listed first, down to their slaves: a component that dies before the walk
+                    // reaches its manager is still known as that manager's, and the manager's death told.
+                    children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
                     val registration = ListingMonitor.Registration(sink, options.pollPeriod) { child -> include(child) }
                     val monitor = synchronized(listings) { listings.getOrPut(node) { ListingMonitor(core, node) } }
                     monitor.add(registration)
@@ -139,6 +142,12 @@ internal class Watcher(private val core: TreeCore) {
 
     private fun report(event: RtcEvent) {
         reporters.forEach { it.offer(event) }
+    }
+
+    /** Lists [manager] and its slaves (once: listings are cached), each recording the components it hosts. */
+    private suspend fun listManagers(manager: ManagerNode) {
+        val children = try { manager.children() } catch (e: RtcException) { return }
+        children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
     }
 
     private fun release(component: ComponentObject, monitor: ComponentMonitor, registration: ComponentMonitor.Registration) {
