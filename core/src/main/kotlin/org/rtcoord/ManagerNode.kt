@@ -44,7 +44,7 @@ public class ManagerNode internal constructor(
         }
         val componentNodes = hosted.await().map { rtc ->
             async {
-                val component = core.components.objectFor(rtc)
+                val component = core.components.objectFor(rtc).also { it.hostedBy(this@ManagerNode) }
                 val name = "${component.instanceName(subject)}.rtc"
                 previous.filterIsInstance<ComponentNode>().firstOrNull { it.component === component && it.name == name }
                     ?: ComponentNode(path.child(name), core, component)

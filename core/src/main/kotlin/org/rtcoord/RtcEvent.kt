@@ -68,3 +68,15 @@ public data class BecameZombie(override val source: ComponentNode, val cause: Rt
 
 /** A component presumed dead answers again. */
 public data class Recovered(override val source: ComponentNode) : RtcEvent()
+
+/** The tree watches the component by [new] from now on; [old] is null when it has just started watching it. */
+public data class WatchMethodChanged(override val source: ComponentNode, val old: WatchMethod?, val new: WatchMethod) : RtcEvent()
+
+/**
+ * Manager [source] stopped answering: its process died or hangs. [components] are those its last listing
+ * showed; they went silent with it, and each reports its own [HeartbeatLost] and [BecameZombie].
+ */
+public data class ManagerDied(override val source: ManagerNode, val components: List<ComponentNode>, val cause: RtcException) : RtcEvent()
+
+/** Manager [source], presumed dead, answers again. */
+public data class ManagerReturned(override val source: ManagerNode) : RtcEvent()

@@ -167,6 +167,15 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     public suspend inline fun <reified E : RtcEvent> on(path: String, options: EventOptions = EventOptions(), noinline handler: suspend (E) -> Unit): Subscription =
         on(path, E::class.java, options, handler)
 
+    /**
+     * Calls [handler] with how the tree watches each component it watches for any registration, once when
+     * it starts and again when that changes ([WatchMethodChanged]; a new handler first hears how each is
+     * watched now), and once with each manager hosting watched components that stops answering
+     * ([ManagerDied]) or answers again ([ManagerReturned]). A manager counts once the tree has listed it.
+     * Cancel the returned [Subscription] to stop.
+     */
+    public fun onWatching(handler: suspend (RtcEvent) -> Unit): Subscription = core.watcher.report(handler)
+
     /** Every event from the node at [path] (see [on]) while the flow is collected. */
     public fun events(path: String, options: EventOptions = EventOptions()): Flow<RtcEvent> = callbackFlow {
         val subscription = on(path, RtcEvent::class.java, options) { send(it) }

@@ -158,6 +158,7 @@ class FaultToleranceTest {
                 val node = localisation.tree.component(localisation.path("subject0.rtc"))
                 val recorder = EventRecorder()
                 localisation.tree.on(node, RtcEvent::class.java, push, recorder.handler)
+                assertTrue(recorder.next<WatchMethodChanged>().new is WatchMethod.Pushed, "pushed")
                 val observer = client.profile(fixture).service
 
                 val notifications = listOf(
@@ -192,6 +193,7 @@ class FaultToleranceTest {
                 val node = localisation.tree.component(localisation.path("subject0.rtc"))
                 val recorder = EventRecorder()
                 val subscription = localisation.tree.on(node, RtcEvent::class.java, push, recorder.handler)
+                assertTrue(recorder.next<WatchMethodChanged>().new is WatchMethod.Pushed, "pushed")
                 val genuine = client.profile(fixture).service
 
                 val forged = client.forged(genuine)
@@ -217,6 +219,7 @@ class FaultToleranceTest {
                 val recorder = EventRecorder()
                 // Heartbeats far apart: only the hints sent here may make the tree read the component.
                 localisation.tree.on(node, RtcEvent::class.java, EventOptions(WatchMode.PUSH, heartbeat = 60.seconds), recorder.handler)
+                assertTrue(recorder.next<WatchMethodChanged>().new is WatchMethod.Pushed, "pushed")
                 val profile = client.profile(fixture)
                 // The component stops telling the tree anything: what changes now, only a read can find.
                 client.detach(fixture, profile.id)

@@ -10,6 +10,8 @@ import org.rtcoord.ContextRateChanged
 import org.rtcoord.ContextRunningChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.ManagerComponentChanged
+import org.rtcoord.ManagerDied
+import org.rtcoord.ManagerReturned
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
 import org.rtcoord.ParameterChanged
@@ -18,6 +20,8 @@ import org.rtcoord.PortDisconnected
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.StateChanged
+import org.rtcoord.WatchMethod
+import org.rtcoord.WatchMethodChanged
 import java.time.Instant
 import java.time.ZoneId
 import java.time.format.DateTimeFormatter
@@ -34,7 +38,7 @@ internal fun RtcEvent.toJson(): Map<String, Any?> = mapOf(
 ) + fields()
 
 /** What happened, in a few words. */
-private fun RtcEvent.what(): String = when (this) {
+internal fun RtcEvent.what(): String = when (this) {
     is StateChanged -> "state in context $handle: $old -> $new"
     is ComponentFinalized -> "finalized"
     is PortConnected -> "port $port connected (connector ${connector.name}, id ${connector.id})"
@@ -52,6 +56,17 @@ private fun RtcEvent.what(): String = when (this) {
     is HeartbeatLost -> "no heartbeat for $silentMillis ms"
     is BecameZombie -> "unreachable: ${cause.reason}"
     is Recovered -> "answers again"
+    is WatchMethodChanged -> "${if (old == null) "watched" else "now watched"}: ${new.text()}"
+    is ManagerDied -> "manager stopped answering (${cause.reason}); " +
+        (if (components.isEmpty()) "it hosted no component" else "its components went with it: ${components.joinToString { it.name }}")
+    is ManagerReturned -> "manager answers again"
+}
+
+/** How a component is watched, in a few words. */
+private fun WatchMethod.text(): String = when (this) {
+    is WatchMethod.Pushed -> "pushed by its ${flavour.label}, heartbeat every $heartbeat" + (pollPeriod?.let { ", and polled every $it" } ?: "")
+    is WatchMethod.Polled -> "polled every $period, as $reason"
+    is WatchMethod.Unwatched -> "not at all, as $reason"
 }
 
 /** The event's own fields for JSON. */
@@ -73,6 +88,18 @@ private fun RtcEvent.fields(): Map<String, Any?> = when (this) {
     is HeartbeatLost -> mapOf("silentMillis" to silentMillis)
     is BecameZombie -> mapOf("error" to cause.message)
     is Recovered -> emptyMap()
+    is WatchMethodChanged -> new.fields() + mapOf("was" to old?.let { it.fields()["method"] })
+    is ManagerDied -> mapOf("components" to components.map { it.name }, "error" to cause.message)
+    is ManagerReturned -> emptyMap()
+}
+
+private fun WatchMethod.fields(): Map<String, Any?> = when (this) {
+    is WatchMethod.Pushed -> mapOf(
+        "method" to "pushed", "observer" to flavour.repositoryId, "heartbeatMillis" to heartbeat.inWholeMilliseconds,
+        "pollPeriodMillis" to pollPeriod?.inWholeMilliseconds,
+    )
+    is WatchMethod.Polled -> mapOf("method" to "polled", "pollPeriodMillis" to period.inWholeMilliseconds, "reason" to reason)
+    is WatchMethod.Unwatched -> mapOf("method" to "unwatched", "reason" to reason)
 }
 
 private val TIMESTAMP: DateTimeFormatter = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS")

@@ -5,8 +5,6 @@ import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.path
-import kotlinx.coroutines.CompletableDeferred
-import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
@@ -18,7 +16,8 @@ import java.time.format.DateTimeFormatter
 
 /**
  * Runs a coordinator script against the live system until SIGINT/SIGTERM or `--for` elapses, logging
- * each rule firing, action and mode transition. On the way out the coordinator's observers are detached.
+ * how each component is watched, managers that die, each rule firing, action and mode transition. On
+ * the way out the coordinator's observers are detached; a stop by signal is a clean exit (status 0).
  */
 class RunCommand : TreeCommand("run") {
     override fun help(context: Context): String = "Run a coordinator (SCRIPT.coord.kts) until interrupted."
@@ -42,31 +41,29 @@ class RunCommand : TreeCommand("run") {
             fail(e.problems.last(), e)
         }
         val options = poll?.let { EventOptions(WatchMode.POLL, pollPeriod = it) }
-        val coordinator = Coordinator(tree, coordination, options) { echo("${LocalTime.now().format(TIME)} $it") }
-        try {
-            coordinator.start()
-        } catch (e: RtcException) {
-            // A rule's target that does not exist, is ambiguous or is of the wrong kind: nothing was started.
-            fail("$script: ${explain(e)}", e)
-        }
-        confirm("${LocalTime.now().format(TIME)} coordinating:")
-        coordination.description.forEach { confirm("  $it") }
+        StopSignals().use { signals ->
+            val coordinator = Coordinator(tree, coordination, options) { echo("${now()} $it") }
+            // One line per component saying how it is watched (again when that changes), and one per manager that dies.
+            tree.onWatching { event -> echo("${now()} ${event.path} ${event.what()}") }
+            try {
+                coordinator.start()
+            } catch (e: RtcException) {
+                // A rule's target that does not exist, is ambiguous or is of the wrong kind: nothing was started.
+                fail("$script: ${explain(e)}", e)
+            }
+            confirm("${now()} coordinating:")
+            coordination.description.forEach { confirm("  $it") }
 
-        val stopped = CompletableDeferred<Unit>()
-        // On SIGINT/SIGTERM the JVM runs this before exiting: detach observers while the ORB still works.
-        val hook = Thread {
-            stopped.complete(Unit)
+            val signal = signals.await(duration)
+            // Detached while the ORB still works; after a signal, a second one ends the process at once.
             coordinator.close()
-            session.close()
+            // Events the machine watched for that no transition took in the mode it was in (RunningMachine.unconsumed).
+            val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events no transition took" }
+            confirm("${now()} stopped${signal?.let { " by $it" }.orEmpty()}; ${coordinator.failures} handler failures$machines")
         }
-        Runtime.getRuntime().addShutdownHook(hook)
-        withTimeoutOrNull(duration ?: kotlin.time.Duration.INFINITE) { stopped.await() }
-        Runtime.getRuntime().removeShutdownHook(hook)
-        coordinator.close()
-        // Events the machine watched for that no transition took in the mode it was in (RunningMachine.unconsumed).
-        val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events no transition took" }
-        confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures$machines")
     }
+
+    private fun now(): String = LocalTime.now().format(TIME)
 
     private companion object {
         val TIME: DateTimeFormatter = DateTimeFormatter.ofPattern("HH:mm:ss.SSS")

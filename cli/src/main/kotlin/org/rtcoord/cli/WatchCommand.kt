@@ -4,10 +4,8 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.options.option
-import kotlinx.coroutines.awaitCancellation
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcEvent
@@ -17,8 +15,10 @@ import org.rtcoord.WatchMode
 class WatchCommand : TreeCommand("watch") {
     override fun help(context: Context): String =
         "Print events as they happen, one line each: when the tree noticed it, the path, what happened. Components push " +
-            "them through their ComponentObserver when they accept one, else they are polled. A context or manager " +
-            "watches everything below it, including components that appear later. Runs until Ctrl-C or --for has passed."
+            "them through their ComponentObserver when they accept one, else they are polled: a line per component says " +
+            "which (and why), and again when that changes. A manager that stops answering is one line naming the " +
+            "components that went with it. A context or manager watches everything below it, including components that " +
+            "appear later. Runs until Ctrl-C, SIGTERM or --for has passed, then exits 0."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord watch /localhost/host.host_cxt/laser0.rtc" to "the laser's state, ports, configuration and contexts",
@@ -34,11 +34,7 @@ class WatchCommand : TreeCommand("watch") {
 
     override suspend fun execute() {
         val options = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
-        // Ctrl-C ends the JVM through its shutdown hooks: closing the tree there detaches the observers
-        // this command attached, instead of leaving them on the components.
-        val detach = Thread(tree::close, "rtcoord-detach")
-        Runtime.getRuntime().addShutdownHook(detach)
-        try {
+        StopSignals().use { signals ->
             // Subscribed one by one, each returning once its components are read and observed: a wrong
             // path fails before anything is printed, and --for counts from when every event is caught.
             val events = Channel<RtcEvent>(Channel.UNLIMITED)
@@ -47,15 +43,12 @@ class WatchCommand : TreeCommand("watch") {
                 val printing = launch {
                     for (event in events) if (session.json) echo(toJson(event.toJson(), pretty = false)) else echo(event.line())
                 }
-                duration?.let { delay(it) } ?: awaitCancellation()
+                signals.await(duration)
                 // Closing the tree while still subscribed detaches every observer before it returns;
                 // ending the subscriptions first would leave that to background work the exit cuts short.
                 tree.close()
                 printing.cancel()
             }
-        } finally {
-            // Refused while the JVM is already shutting down, which is when the hook is doing its work.
-            runCatching { Runtime.getRuntime().removeShutdownHook(detach) }
         }
     }
 }

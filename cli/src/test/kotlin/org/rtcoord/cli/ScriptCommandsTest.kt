@@ -4,6 +4,10 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
+import RTC.RTObjectHelper
+import org.omg.CosNaming.NamingContextExtHelper
+import org.rtcoord.fixtures.FixtureProcess
+import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.await
 import java.nio.file.Files
 import java.nio.file.Path
@@ -42,6 +46,8 @@ class ScriptCommandsTest {
             assertEquals(0, result.statusCode, result.stderr)
             assertTrue("rule 'gyro0.rtc enters ERROR' fired" in result.stdout, result.stdout)
             assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} reset /""").containsMatchIn(result.stdout), result.stdout)
+            val watched = Regex("""\d\d:\d\d:\d\d\.\d{3} /\S+/gyro0\.rtc watched: pushed by its OpenRTM::ComponentObserver, heartbeat every 1s\n""")
+            assertEquals(1, watched.findAll(result.stdout).count(), result.stdout)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, gyro.state)
             assertEquals(emptySet<String>(), gyro.observerIds)
         }
@@ -114,6 +120,29 @@ class ScriptCommandsTest {
             }
             assertTrue("stopped; 0 handler failures; gyro in gyro/up, 0 events no transition took" in result.stdout, result.stdout)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, gyro.state)
+        }
+    }
+
+    @Test
+    fun `run says once that a slave manager died, naming the components that went with it`() {
+        Localisation().use { localisation ->
+            val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
+            FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--master", master).use { process ->
+                val rule = script("hosted.coord.kts", "on(component(\"hosted0.rtc\")).state(ERROR) { reset() }\n")
+                val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "15s", rule.toString()) }
+                val orb = localisation.system.runtime.orb.orb
+                val hosted = RTObjectHelper.narrow(
+                    NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc)).resolve_str("${FixtureRuntime.hostContext}/hosted0.rtc"),
+                )
+                await("the coordinator to observe hosted0", timeout = kotlin.time.Duration.parse("60s")) {
+                    hosted.get_service_profiles().any { it.id.startsWith("rtcoord-observer-") }
+                }
+                process.kill()
+                val result = run.get()
+                assertEquals(0, result.statusCode, result.stderr)
+                val died = Regex("""\d\d:\d\d:\d\d\.\d{3} /\S+/manager_${process.pid} manager stopped answering \(.*\); its components went with it: hosted0\.rtc\n""")
+                assertEquals(1, died.findAll(result.stdout).count(), result.stdout)
+            }
         }
     }
 

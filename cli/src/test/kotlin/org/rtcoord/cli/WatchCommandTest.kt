@@ -1,13 +1,18 @@
 package org.rtcoord.cli
 
 import com.github.ajalt.clikt.testing.CliktCommandTestResult
+import RTC.RTObjectHelper
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.FixtureProcess
+import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import org.rtcoord.fixtures.iiopAddresses
 import org.rtcoord.fixtures.listeningSockets
+import org.omg.CosNaming.NamingContextExtHelper
 import java.util.concurrent.CompletableFuture
 import kotlin.time.Duration.Companion.seconds
 
@@ -34,15 +39,23 @@ class WatchCommandTest {
     @Test
     fun `prints a timestamped line per event until --for has passed`() {
         val started = System.nanoTime()
-        val lines = watchWhileToggling(3, "watch", localisation.host).ok().lines().filter { it.isNotEmpty() }
+        val printed = watchWhileToggling(3, "watch", localisation.host).ok().lines().filter { it.isNotEmpty() }
         assertTrue((System.nanoTime() - started) / 1_000_000 in 3_000..8_000)
+        val (watched, lines) = printed.partition { " watched: " in it }
         val line = Regex("""\d{4}-\d\d-\d\d \d\d:\d\d:\d\d\.\d{3} /\S+/gyro0\.rtc state in context 0: (ACTIVE -> INACTIVE|INACTIVE -> ACTIVE)""")
         assertTrue(lines.isNotEmpty() && lines.all { line.matches(it) }, lines.joinToString("\n"))
+        // How each component is watched, once each, before its events.
+        val how = Regex("""\S+ \S+ /\S+/(\w+)\.rtc watched: pushed by its OpenRTM::ComponentObserver, heartbeat every 1s""")
+        assertEquals(listOf("gyro0", "laser0", "laser_localise0", "odometry0"), watched.map { how.matchEntire(it)?.groupValues?.get(1) }.sortedBy { it }, watched.joinToString("\n"))
+        assertTrue(printed.indexOfFirst { "gyro0.rtc watched" in it } < printed.indexOfFirst { "gyro0.rtc state" in it }, printed.joinToString("\n"))
     }
 
     @Test
     fun `polls with --poll and prints JSON lines with --json`() {
-        val lines = watchWhileToggling(3, "--json", "watch", gyro, "--poll", "100ms").ok().lines().filter { it.isNotEmpty() }
+        val printed = watchWhileToggling(3, "--json", "watch", gyro, "--poll", "100ms").ok().lines().filter { it.isNotEmpty() }
+        val how = Regex("""\{"time":"[^"]+","path":"\Q$gyro\E","event":"WatchMethodChanged","method":"polled","pollPeriodMillis":100,"reason":"polling was asked for","was":null}""")
+        assertTrue(how.matches(printed.first()), printed.first())
+        val lines = printed.drop(1)
         val line = Regex("""\{"time":"[^"]+","path":"\Q$gyro\E","event":"StateChanged","handle":0,"old":"(ACTIVE|INACTIVE)","new":"(ACTIVE|INACTIVE)"}""")
         assertTrue(lines.isNotEmpty() && lines.all { line.matches(it) }, lines.joinToString("\n"))
     }
@@ -69,6 +82,31 @@ class WatchCommandTest {
     fun `the observer listens on loopback alone for a local name server, or on --listen`() {
         assertEquals(listOf("127.0.0.1") to listOf("127.0.0.1"), observerEndpoint())
         assertEquals(listOf("127.0.0.2") to listOf("127.0.0.2"), observerEndpoint("--listen", "127.0.0.2"))
+    }
+
+    @Test
+    fun `a slave manager that dies is one line naming the components that went with it`() {
+        val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
+        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--master", master).use { process ->
+            val watching = CompletableFuture.supplyAsync { runRtcoord("watch", localisation.host, "--for", "12s") }
+            val hosted = remoteComponent("hosted0.rtc")
+            await("watch to observe hosted0", 30.seconds) { hosted.get_service_profiles().any { it.id.startsWith("rtcoord-observer-") } }
+            process.kill()
+            val lines = watching.get().ok().lines()
+            val died = lines.filter { " manager stopped answering " in it }
+            assertEquals(1, died.size, lines.joinToString("\n"))
+            val line = Regex("""\S+ \S+ /\S+/manager_${process.pid} manager stopped answering \(unreachable \(\w+.*\)\); its components went with it: hosted0\.rtc""")
+            assertTrue(line.matches(died.single()), died.single())
+            // Pushed, or polled when the kill cut the attachment's reply short: either way said once.
+            assertEquals(1, lines.count { "hosted0.rtc watched: " in it }, lines.joinToString("\n"))
+        }
+    }
+
+    /** The component bound at [name] in the host context, as a client sees it. */
+    private fun remoteComponent(name: String): RTC.RTObject {
+        val orb = localisation.system.runtime.orb.orb
+        val naming = NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc))
+        return RTObjectHelper.narrow(naming.resolve_str("${FixtureRuntime.hostContext}/$name"))
     }
 
     @Test

@@ -13,6 +13,7 @@ import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ComponentSummary
 import org.rtcoord.ConfigurationSnapshot
+import org.rtcoord.ManagerNode
 import org.rtcoord.RtcPath
 import org.rtcoord.summary
 import java.util.concurrent.CopyOnWriteArraySet
@@ -36,6 +37,16 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     /** Port references by short port name, as of the last refresh. */
     @Volatile var ports: Map<String, PortService> = emptyMap()
         private set
+
+    private val hosts = java.util.concurrent.ConcurrentHashMap<RtcPath, ManagerNode>()
+
+    /** The managers whose listings showed this component, the latest node of each. */
+    val hostingManagers: Collection<ManagerNode> get() = hosts.values
+
+    /** Records that [manager]'s listing shows this component. */
+    fun hostedBy(manager: ManagerNode) {
+        hosts[manager.path] = manager
+    }
 
     /** The paths at which the tree shows this component, in the order they were found. */
     val knownPaths: List<RtcPath> get() = paths.toList()

@@ -20,11 +20,14 @@ import org.rtcoord.ComponentSnapshot
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
+import org.rtcoord.ObserverFlavour
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.StateChanged
 import org.rtcoord.UnreachableException
+import org.rtcoord.WatchMethod
+import org.rtcoord.WatchMethodChanged
 import org.rtcoord.WatchMode
 import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
@@ -33,6 +36,7 @@ import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
 /**
@@ -52,7 +56,10 @@ internal class ComponentMonitor(
      * One registration's needs: [configuration] when it wants configuration events, [statesOnly] when it
      * wants nothing but lifecycle and liveness events (then a poll tick reads only the states).
      */
-    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean, val statesOnly: Boolean)
+    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean, val statesOnly: Boolean) {
+        /** How the component is watched, as this registration was last told; owned by the monitor's coroutine. */
+        var told: WatchMethod? = null
+    }
 
     private sealed interface Work
     private class Received(val hint: Hint) : Work
@@ -68,10 +75,14 @@ internal class ComponentMonitor(
     private val work = Channel<Work>(Channel.UNLIMITED)
     @Volatile private var lastSign = TimeSource.Monotonic.markNow()
 
+    /** How the component is watched, once decided; set through [Watcher.announce]. */
+    @Volatile var method: WatchMethod? = null
+
     // Owned by the worker coroutine.
     private var last: ComponentSnapshot? = null
     private val trackers = HashMap<Int, StateTracker>()
     private var observer: ObserverHost.Observer? = null
+    private var attachment: Attachment = Attachment.NotTried
     private var poller: Job? = null
     private var pollPeriod: Duration? = null
     private var watchdog: Job? = null
@@ -245,13 +256,14 @@ internal class ComponentMonitor(
         }
         readAndPublish()
         if (finished) return
-        if (pushRegistration() != null && observer == null && !dead) {
-            attach()
+        if (pushRegistration() != null && observer == null) {
+            attachment = if (dead) Attachment.Failed("it does not answer") else attach()
             // A change between that read and the attachment sent its hint to nobody: read once more.
             if (observer != null) readAndPublish()
         }
-        val polled = registrations.filter { it.options.mode == WatchMode.POLL || (it.options.mode == WatchMode.AUTO && observer == null) }
-        schedulePolling(polled.minOfOrNull { it.options.pollPeriod })
+        val method = decideWatchMethod(registrations.map { it.options }, attachment)
+        schedulePolling(method?.pollPeriod)
+        announce(method)
         val push = pushRegistration()
         watchdog?.cancel()
         watchdog = push?.let { registration ->
@@ -335,21 +347,25 @@ internal class ComponentMonitor(
         publish(events)
         // Keep probing while dead, even when only the observer watched it.
         if (poller == null) schedulePolling(pushRegistration()?.options?.heartbeat)
+        // Its manager may have died with it, and with every other component it hosted.
+        core.watcher.componentSilent(node, pollPeriod ?: 1.seconds)
     }
 
-    private suspend fun attach() {
-        val push = pushRegistration() ?: return
+    /** Attaches an observer of a flavour the component advertises (either, when it lists none); says how that went. */
+    private suspend fun attach(): Attachment {
+        val push = pushRegistration() ?: return Attachment.NotTried
         val advertised = last?.properties?.get("sdo.service.consumer.available_services")
             ?.split(',')?.map { it.trim() }?.filter { it.isNotEmpty() }
         val flavours = ObserverFlavour.values().filter { advertised == null || it.repositoryId in advertised }
-        if (flavours.isEmpty()) return
+        if (flavours.isEmpty()) return Attachment.NotOffered(advertised.orEmpty())
         val configuration = try {
             core.remote.call(subject, "get_configuration") { node.component.ref.get_configuration() }
         } catch (e: RtcException) {
-            return
+            return Attachment.Failed("get_configuration: ${e.reason}")
         }
         removeStaleObservers(core, subject, node.component.ref, configuration)
         val seconds = (push.options.heartbeat.inWholeMilliseconds / 1000.0).toString()
+        var failure: String? = null
         for (flavour in flavours) {
             val candidate = host.observer(flavour) { hint -> work.trySend(Received(hint)) }
             val properties = mapOf(
@@ -361,17 +377,17 @@ internal class ComponentMonitor(
             val accepted = try {
                 core.remote.call(subject, "add_service_profile") { configuration.add_service_profile(profile) }
             } catch (e: RtcException) {
+                failure = failure ?: "add_service_profile (${flavour.label}): ${e.reason}"
                 false
             }
             if (accepted) {
                 observer = candidate
                 lastSign = TimeSource.Monotonic.markNow()
-                log.debug("{}: observing through the {} observer", subject, flavour)
-                return
+                return Attachment.Attached(flavour)
             }
             candidate.close()
         }
-        log.debug("{}: accepts no observer, polling", subject)
+        return failure?.let(Attachment::Failed) ?: Attachment.Refused(flavours)
     }
 
     private suspend fun detach() {
@@ -386,6 +402,21 @@ internal class ComponentMonitor(
             attached.close()
         }
     }
+
+    /** Tells each registration not yet told, and the tree's reporters when it changed, how the component is watched. */
+    private fun announce(method: WatchMethod?) {
+        if (method == null) return
+        if (method != this.method) log.debug("{}: watched by {}", subject, method)
+        core.watcher.announce(this, method)
+        for (registration in registrations) {
+            if (registration.told == method) continue
+            registration.sink.offer(WatchMethodChanged(node, registration.told, method))
+            registration.told = method
+        }
+    }
+
+    /** Where the registrations' events go. */
+    fun sinks(): List<EventSink> = registrations.map { it.sink }
 
     private fun publish(events: List<RtcEvent>) {
         if (events.isEmpty()) return

@@ -60,7 +60,10 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
                     val after = try {
                         directory.relist()
                     } catch (e: RtcException) {
-                        if (!failing) log.info("{}; listing it again every {}", e.message, every)
+                        if (!failing) {
+                            log.info("{}; listing it again every {}", e.message, every)
+                            if (directory is ManagerNode) core.watcher.managerSilent(directory, every)
+                        }
                         failing = true
                         continue
                     }
@@ -90,6 +93,9 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
             events.forEach(registration.sink::offer)
         }
     }
+
+    /** Where the registrations' events go. */
+    fun sinks(): List<EventSink> = registrations.map { it.sink }
 
     fun stop() {
         poller?.cancel()

@@ -7,14 +7,9 @@ import org.omg.PortableServer.POA
 import org.omg.PortableServer.POAHelper
 import org.omg.PortableServer.Servant
 import org.omg.PortableServer.ThreadPolicyValue
+import org.rtcoord.ObserverFlavour
 import java.security.SecureRandom
 import java.util.UUID
-
-/** The observer flavours, by the repository id a component advertises and `add_service_profile` takes. */
-internal enum class ObserverFlavour(val repositoryId: String) {
-    OPENRTM("IDL:OpenRTM/ComponentObserver:1.0"),
-    OMG("IDL:omg.org/RTC/ComponentObserver:1.0"),
-}
 
 /**
  * Hosts the tree's ComponentObserver servants on the tree's ORB, in a POA of their own: object ids are

@@ -10,18 +10,25 @@ import org.rtcoord.ConfigurationSetRemoved
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerNode
+import org.rtcoord.ManagerReturned
 import org.rtcoord.Node
+import org.rtcoord.Overlap
 import org.rtcoord.ParameterChanged
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.StateChanged
 import org.rtcoord.Subscription
+import org.rtcoord.WatchMethod
+import org.rtcoord.WatchMethodChanged
 import org.rtcoord.WrongKindException
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.label
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -33,6 +40,8 @@ internal class Watcher(private val core: TreeCore) {
     private val components = HashMap<ComponentObject, ComponentMonitor>()
     private val live = java.util.concurrent.ConcurrentHashMap.newKeySet<ComponentMonitor>()
     private val listings = HashMap<DirectoryNode, ListingMonitor>()
+    private val reporters = CopyOnWriteArrayList<EventSink>()
+    private val managers = ManagerLiveness(core, ::sinksOf, ::report)
 
     /**
      * Delivers the events of [types] (all when null) from [target] to [handler]: a component's own
@@ -66,6 +75,9 @@ internal class Watcher(private val core: TreeCore) {
                 }
                 is DirectoryNode -> synchronized(watched) { watched.add(node) }.takeIf { it }?.let {
                     val children = try { node.children() } catch (e: RtcException) { emptyList() }
+                    // Managers listed first, down to their slaves: a component that dies before the walk
+                    // reaches its manager is still known as that manager's, and the manager's death told.
+                    children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
                     val registration = ListingMonitor.Registration(sink, options.pollPeriod) { child -> include(child) }
                     val monitor = synchronized(listings) { listings.getOrPut(node) { ListingMonitor(core, node) } }
                     monitor.add(registration)
@@ -82,6 +94,60 @@ internal class Watcher(private val core: TreeCore) {
             sink.close()
             synchronized(releases) { releases.toList().also { releases.clear() } }.forEach { it() }
         }
+    }
+
+    /**
+     * Delivers to [handler] how each watched component is watched (now, and again when it changes) and
+     * which managers hosting watched components stop or resume answering, whoever asked for the watching.
+     */
+    fun report(handler: suspend (RtcEvent) -> Unit): Subscription {
+        val sink = EventSink(core.scope, { true }, Overlap.QUEUE, handler)
+        synchronized(reporters) {
+            reporters += sink
+            live.forEach { monitor -> monitor.method?.let { sink.offer(WatchMethodChanged(monitor.node, null, it)) } }
+        }
+        return Subscription {
+            reporters -= sink
+            sink.close()
+        }
+    }
+
+    /** Records that [monitor] watches its component by [method], telling the reporters if that is news. */
+    fun announce(monitor: ComponentMonitor, method: WatchMethod) {
+        synchronized(reporters) {
+            val old = monitor.method
+            if (old == method) return
+            monitor.method = method
+            reporters.forEach { it.offer(WatchMethodChanged(monitor.node, old, method)) }
+        }
+    }
+
+    /** [node] stopped answering: the managers that list it are asked whether they still answer, every [period] once dead. */
+    fun componentSilent(node: ComponentNode, period: Duration) {
+        node.component.hostingManagers.forEach { managers.suspect(it, period) }
+    }
+
+    /** Listing [manager] failed: it is asked whether it still answers, every [period] once dead. */
+    fun managerSilent(manager: ManagerNode, period: Duration) {
+        managers.suspect(manager, period)
+    }
+
+    /** Where events about [manager] go: to whoever watches it or a component its last listing showed. */
+    private fun sinksOf(manager: ManagerNode): Set<EventSink> {
+        val hosted = manager.listed.value.orEmpty().filterIsInstance<ComponentNode>().map { it.component }.toSet()
+        val componentSinks = synchronized(components) { components.filterKeys { it in hosted }.values.flatMap { it.sinks() } }
+        val listingSinks = synchronized(listings) { listings.filterKeys { it.path == manager.path }.values.flatMap { it.sinks() } }
+        return (componentSinks + listingSinks).toSet()
+    }
+
+    private fun report(event: RtcEvent) {
+        reporters.forEach { it.offer(event) }
+    }
+
+    /** Lists [manager] and its slaves (once: listings are cached), each recording the components it hosts. */
+    private suspend fun listManagers(manager: ManagerNode) {
+        val children = try { manager.children() } catch (e: RtcException) { return }
+        children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
     }
 
     private fun release(component: ComponentObject, monitor: ComponentMonitor, registration: ComponentMonitor.Registration) {
@@ -113,13 +179,15 @@ internal class Watcher(private val core: TreeCore) {
         stopping.forEach(ComponentMonitor::stop)
         stopping.forEach { it.awaitStopped(core.config.callTimeout + 1.seconds) }
         synchronized(listings) { listings.values.forEach(ListingMonitor::stop); listings.clear() }
+        reporters.forEach(EventSink::close)
     }
 
     private companion object {
         /** Events a read of the lifecycle states alone can produce. */
         val STATE_EVENTS = setOf(
             StateChanged::class.java, HeartbeatLost::class.java, BecameZombie::class.java,
-            Recovered::class.java, ComponentFinalized::class.java,
+            Recovered::class.java, ComponentFinalized::class.java, WatchMethodChanged::class.java,
+            ManagerDied::class.java, ManagerReturned::class.java,
         )
 
         val CONFIGURATION_EVENTS = setOf(

@@ -1,0 +1,42 @@
+package org.rtcoord.cli
+
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.withTimeoutOrNull
+import sun.misc.Signal
+import sun.misc.SignalHandler
+import kotlin.time.Duration
+
+/**
+ * SIGINT and SIGTERM as a request to stop, for commands that run until stopped: the command then ends
+ * as it does when its time is up (observers detached, a last line printed) and the process exits 0, as
+ * a service manager expects of a service it stopped. Without this the JVM would end through its shutdown
+ * hooks while the command still runs, with status 130 or 143, and a command racing those hooks fails
+ * (`removeShutdownHook` throws "Shutdown in progress"). A second signal ends the process the JVM's way.
+ */
+internal class StopSignals : AutoCloseable {
+    private val requested = CompletableDeferred<String>()
+    private val previous = HashMap<String, SignalHandler>()
+
+    init {
+        for (name in listOf("INT", "TERM")) {
+            try {
+                previous[name] = Signal.handle(Signal(name)) { signal ->
+                    requested.complete("SIG${signal.name}")
+                    close()
+                }
+            } catch (e: IllegalArgumentException) {
+                // The JVM keeps the signal for itself (-Xrs, or a platform without it): it ends the process as before.
+            }
+        }
+    }
+
+    /** Waits for a signal, at most [limit] (forever when null); returns the signal's name, or null when the time was up. */
+    suspend fun await(limit: Duration?): String? = withTimeoutOrNull(limit ?: Duration.INFINITE) { requested.await() }
+
+    /** Gives the signals back to the JVM. */
+    @Synchronized
+    override fun close() {
+        previous.forEach { (name, handler) -> Signal.handle(Signal(name), handler) }
+        previous.clear()
+    }
+}
