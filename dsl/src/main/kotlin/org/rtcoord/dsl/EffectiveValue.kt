@@ -36,12 +36,14 @@ internal class EffectiveValue(private val parameter: String) {
         if (!(event is ParameterChanged && event.name == parameter) && event !is ConfigurationSetActivated) return null
         val source = event.source as? ComponentNode ?: return null
         val configuration = source.snapshots.value?.configuration ?: return null
-        val now = configuration.sets[configuration.activeSet]?.get(parameter)
+        // With no set active (after a write, until one is activated) the component keeps the values it had.
+        val active = configuration.activeSet ?: return null
+        val now = configuration.sets[active]?.get(parameter)
         val before = seen.put(source.path.toString(), Seen(now))?.value ?: when (event) {
-            is ParameterChanged -> if (event.set == configuration.activeSet) event.old else now
+            is ParameterChanged -> if (event.set == active) event.old else now
             is ConfigurationSetActivated -> configuration.sets[event.old]?.get(parameter)
             else -> now
         }
-        return if (before != now) ParameterChanged(source, configuration.activeSet, parameter, before, now) else null
+        return if (before != now) ParameterChanged(source, active, parameter, before, now) else null
     }
 }

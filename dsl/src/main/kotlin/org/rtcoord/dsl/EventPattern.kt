@@ -72,7 +72,8 @@ internal object EventPatterns {
     }
 
     fun configSetActivated(target: ComponentRef) =
-        EventPattern("$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java) { true }
+        // A write leaves no set active until one is activated again (OpenRTM-aist's ConfigAdmin): only a set becoming active counts.
+        EventPattern("$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java) { it.new != null }
 
     fun rateChanged(target: ComponentRef) = EventPattern("$target rate changes", Target.Component(target), ContextRateChanged::class.java) { true }
 

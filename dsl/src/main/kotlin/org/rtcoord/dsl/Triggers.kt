@@ -41,9 +41,12 @@ public class ComponentTriggers internal constructor(
     public fun configParam(name: String, handler: suspend Reaction.(old: String?, new: String?) -> Unit): Unit =
         add(EventPatterns.configParam(target, name)) { handler(it.old, it.new) }
 
-    /** When another configuration set becomes active: `configSetActivated { old, new -> ... }` with the sets' ids. */
-    public fun configSetActivated(handler: suspend Reaction.(old: String, new: String) -> Unit): Unit =
-        add(EventPatterns.configSetActivated(target)) { handler(it.old, it.new) }
+    /**
+     * When a configuration set becomes active: `configSetActivated { old, new -> ... }` with the sets' ids;
+     * [old] is null when none was active (as after a write, until a set is activated again).
+     */
+    public fun configSetActivated(handler: suspend Reaction.(old: String?, new: String) -> Unit): Unit =
+        add(EventPatterns.configSetActivated(target)) { handler(it.old, checkNotNull(it.new)) }
 
     /** When the rate of one of its execution contexts changes. */
     public fun rateChanged(handler: suspend Reaction.(old: Double, new: Double) -> Unit): Unit =
