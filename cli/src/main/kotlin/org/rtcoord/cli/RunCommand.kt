@@ -18,7 +18,8 @@ import java.time.format.DateTimeFormatter
 
 /**
  * Runs a coordinator script against the live system until SIGINT/SIGTERM or `--for` elapses, logging
- * each rule firing, action and mode transition. On the way out the coordinator's observers are detached.
+ * each rule firing, action and mode transition. On the way out the coordinator's observers are detached
+ * and a summary says which actions failed, and whether each stopped its handler or was only attempted.
  */
 class RunCommand : TreeCommand("run") {
     override fun help(context: Context): String = "Run a coordinator (SCRIPT.coord.kts) until interrupted."
@@ -64,7 +65,12 @@ class RunCommand : TreeCommand("run") {
         Runtime.getRuntime().removeShutdownHook(hook)
         coordinator.close()
         val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events unconsumed" }
-        confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures$machines")
+        val failed = coordinator.failedActions.groupingBy { it }.eachCount()
+        confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures; ${failed.values.sum()} failed actions$machines")
+        for ((action, times) in failed) {
+            val effect = if (action.bestEffort) "attempted, went on" else "stopped its handler"
+            confirm("  failed: ${action.action}: ${action.reason} ($effect${if (times > 1) ", $times times" else ""})")
+        }
     }
 
     private companion object {
