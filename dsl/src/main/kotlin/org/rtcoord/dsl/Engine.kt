@@ -100,9 +100,9 @@ internal class Engine {
      */
     suspend fun actReversibly(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Undo?) {
         var line = what
-        fun line(node: ComponentNode) = (if (namesItself) what else "$what ${node.path}").also { line = it }
+        fun describe(node: ComponentNode) = (if (namesItself) what else "$what ${node.path}").also { line = it }
         val undo = recorded({ line }) {
-            withComponent(ref.selector, { log(line(it)) }, { log("${line(it)} (looked up again)") }, action)
+            withComponent(ref.selector, { log(describe(it)) }, { log("${describe(it)} (looked up again)") }, action)
         }
         currentCoroutineContext()[ActionJournal]?.record(line, undo)
     }
@@ -168,16 +168,17 @@ internal class Engine {
         (registeredAt(old.path) as? ComponentNode)?.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
 
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {
-        var line = "create $type${name?.let { " as $it" } ?: ""}"
+        val request = "create $type${name?.let { " as $it" } ?: ""}"
+        var line = request
         val created = recorded({ line }) {
             val manager = manager(ref)
-            line += " through ${manager.path}"
+            line = "$request through ${manager.path}"
             log(line)
             try {
                 manager.create(type, name)
             } catch (e: UnreachableException) {
                 val again = restarted(manager, e) ?: throw e
-                line = "create $type${name?.let { " as $it" } ?: ""} through ${again.path}"
+                line = "$request through ${again.path}"
                 log("$line (looked up again)")
                 again.create(type, name)
             }
@@ -214,7 +215,7 @@ internal class Engine {
         var line = "delete $instanceName"
         recorded({ line }) {
             val manager = manager(ref)
-            line += " through ${manager.path}"
+            line = "delete $instanceName through ${manager.path}"
             log(line)
             manager.delete(instanceName)
         }

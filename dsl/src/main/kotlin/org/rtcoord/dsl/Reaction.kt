@@ -129,7 +129,7 @@ public class Reaction internal constructor(
      * elsewhere (a mode's entry or exit action) it fails at once, naming where it may be used.
      */
     public fun onFailure(fallback: suspend Reaction.(ReactionFailure) -> Unit) {
-        checkNotNull(journal) { "onFailure works in rule handlers, timers and escalation handlers, not here" }
+        checkNotNull(journal) { "onFailure works in rule handlers, timers and escalation handlers, not in a mode's entry or exit action" }
         fallbacks += fallback
     }
 
