@@ -1,9 +1,17 @@
 // The paper's coordinator: when the laser fails, replace the laser-based localiser by one that uses
-// odometry and the gyro, created through the manager, connected and activated.
+// odometry and the gyro, created through the manager, connected and activated. The laser is reset if it
+// can be; a laser that stays broken cannot, and the switch goes on without it. A switch that fails half
+// way (the manager refuses to create the new localiser) is taken back: the laser localiser runs again,
+// connected as before, so some localiser always runs.
 val manager = manager()
 
 on(component("laser0.rtc")).state(ERROR) {
-    reset()
+    if (!attempt { reset() }) log("laser0 could not be reset: switching to odometry without it")
+    onFailure { failure ->
+        log("the switch to odometry failed (${failure.cause.message}): back to the laser localiser")
+        failure.undo()
+        attempt { activate() }
+    }
     component("laser_localise0.rtc").run { disconnectAll(); deactivate() }
     val localiser = manager.create("odo_localise")
     connect("odometry0.rtc:odo", localiser.port("odo"))

@@ -1,8 +1,9 @@
 // The paper's localisation as modes of the whole system. In "laser", the laser-based localiser runs
-// on the laser and odometry. When the laser fails, "degraded/odometry" resets it, creates the
-// localiser that uses odometry and the gyro (once), and declares the network it needs; the
-// coordinator brings the system there and reports done or failed. If that fails or takes over 10 s,
-// "degraded/safe" stops every localiser. Whenever the laser is active again, back to "laser".
+// on the laser and odometry. When the laser fails, "degraded/odometry" tries to reset it (a laser that
+// stays broken cannot be reset, and the mode goes on without it), creates the localiser that uses
+// odometry and the gyro (once), and declares the network it needs; the coordinator brings the system
+// there and reports done or failed. If that fails or takes over 10 s, "degraded/safe" stops every
+// localiser. Whenever the laser is active again, back to "laser".
 modes("localisation") {
     initial("laser")
 
@@ -24,7 +25,7 @@ modes("localisation") {
 
         mode("odometry") {
             entry {
-                component("laser0.rtc").reset()
+                attempt { component("laser0.rtc").reset() }
                 try {
                     component("odo_localise0.rtc").state()
                 } catch (absent: NotFoundException) {

@@ -3,7 +3,8 @@
 // restart together (restForOne) and the odometry is left alone. A component in ERROR is reset; one that
 // died is re-created through its manager, connected as it was and put back in its configuration set.
 // Past LIMIT restarts a minute (the first argument, 3 by default) the supervisor gives up and stops the
-// localiser for a person to look at.
+// laser localiser. A laser that stays broken (its resets keep failing) ends there too: the localisation
+// then goes on from odometry and the gyro, as in the paper, with a localiser created for it.
 val limit = args.firstOrNull()?.toInt() ?: 3
 
 supervise(component("odometry0.rtc"), component("laser0.rtc"), component("laser_localise0.rtc")) {
@@ -12,6 +13,14 @@ supervise(component("odometry0.rtc"), component("laser0.rtc"), component("laser_
     backoff = exponential(200.milliseconds, max = 10.seconds)
     onEscalation { escalation ->
         log("giving up: ${escalation.reason}")
-        component("laser_localise0.rtc").deactivate()
+        val laserLocaliser = component("laser_localise0.rtc")
+        attempt { laserLocaliser.disconnectAll() }
+        laserLocaliser.deactivate()
+        if (!escalation.component.endsWith("/laser0.rtc")) return@onEscalation
+        log("the laser cannot be restarted: localising from odometry and the gyro")
+        val localiser = manager().create("odo_localise")
+        connect("odometry0.rtc:odo", localiser.port("odo"))
+        connect("gyro0.rtc:gyro", localiser.port("gyro"))
+        localiser.activate()
     }
 }

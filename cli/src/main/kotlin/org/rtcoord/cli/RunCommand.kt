@@ -17,7 +17,8 @@ import java.time.format.DateTimeFormatter
 /**
  * Runs a coordinator script against the live system until SIGINT/SIGTERM or `--for` elapses, logging
  * how each component is watched, managers that die, each rule firing, action and mode transition. On
- * the way out the coordinator's observers are detached; a stop by signal is a clean exit (status 0).
+ * the way out the coordinator's observers are detached and a summary says which actions failed, and
+ * whether each stopped its handler or was only attempted; a stop by signal is a clean exit (status 0).
  */
 class RunCommand : TreeCommand("run") {
     override fun help(context: Context): String = "Run a coordinator (SCRIPT.coord.kts) until interrupted."
@@ -59,7 +60,12 @@ class RunCommand : TreeCommand("run") {
             coordinator.close()
             // Events the machine watched for that no transition took in the mode it was in (RunningMachine.unconsumed).
             val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events no transition took" }
-            confirm("${now()} stopped${signal?.let { " by $it" }.orEmpty()}; ${coordinator.failures} handler failures$machines")
+            val failed = coordinator.failedActions.groupingBy { it }.eachCount()
+            confirm("${now()} stopped${signal?.let { " by $it" }.orEmpty()}; ${coordinator.failures} handler failures; ${failed.values.sum()} failed actions$machines")
+            for ((action, times) in failed) {
+                val effect = if (action.bestEffort) "attempted, went on" else "stopped its handler"
+                confirm("  failed: ${action.action}: ${action.reason} ($effect${if (times > 1) ", $times times" else ""})")
+            }
         }
     }
 

@@ -118,7 +118,7 @@ class ScriptCommandsTest {
             for (line in listOf("mode gyro: starts in gyro/up", "mode gyro/up -> gyro/down on gyro0.rtc enters ERROR", "mode gyro/down -> gyro/up on done")) {
                 assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} ${Regex.escape(line)}\n""").containsMatchIn(result.stdout), result.stdout)
             }
-            assertTrue("stopped; 0 handler failures; gyro in gyro/up, 0 events no transition took" in result.stdout, result.stdout)
+            assertTrue("stopped; 0 handler failures; 0 failed actions; gyro in gyro/up, 0 events no transition took" in result.stdout, result.stdout)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, gyro.state)
         }
     }
@@ -147,6 +147,24 @@ class ScriptCommandsTest {
     }
 
     @Test
+    fun `run says which actions failed, and which only as a best effort`() {
+        Localisation().use { localisation ->
+            val gyro = localisation.system.component("gyro0")
+            val restart = script("broken.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) {\n    attempt { reset() }\n    reset()\n}\n")
+            val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "8s", restart.toString()) }
+            await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { gyro.observerIds.isNotEmpty() }
+
+            gyro.breakDown()
+            val result = run.get()
+            assertEquals(0, result.statusCode, result.stderr)
+            val path = localisation.path("gyro0.rtc")
+            assertTrue("stopped; 1 handler failures; 2 failed actions\n" in result.stdout, result.stdout)
+            assertTrue("  failed: reset $path: reset failed: RTC_ERROR (in context 0) (attempted, went on)\n" in result.stdout, result.stdout)
+            assertTrue("  failed: reset $path: reset failed: RTC_ERROR (in context 0) (stopped its handler)\n" in result.stdout, result.stdout)
+        }
+    }
+
+    @Test
     fun `run refuses a script that does not compile`() {
         val bad = script("bad.coord.kts", "on(component(\"x\")).state(ERRORR) { }\n")
         val result = runRtcoord("run", bad.toString())
@@ -160,6 +178,7 @@ class ScriptCommandsTest {
         assertEquals(0, result.statusCode, result.stderr)
         assertTrue("coordinator: create odo_localise through" in result.stdout, result.stdout)
         assertTrue(Regex("""Recovered \d+ ms after the laser failed""").containsMatchIn(result.stdout), result.stdout)
+        assertTrue("laser0 could not be reset (reset failed: RTC_ERROR (in context 0)): it stays in ERROR" in result.stdout, result.stdout)
     }
 
     /** What [run] printed so far, once it finished; empty while it runs (the harness hands it over at the end). */

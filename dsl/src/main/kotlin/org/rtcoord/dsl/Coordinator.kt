@@ -56,6 +56,9 @@ public class Coordinator(
     /** How many handler runs failed so far. */
     public val failures: Int get() = failureCount.get()
 
+    /** Every action that failed so far, in order: those that stopped a handler and the best efforts. */
+    public val failedActions: List<FailedAction> get() = coordination.engine.failedActions.toList()
+
     /** The coordination's mode machines as they run, in declaration order. */
     public val machines: List<RunningMachine> = interpreters.map { it.running }
 
@@ -86,7 +89,7 @@ public class Coordinator(
             scope.launch {
                 delay(timer.delay)
                 while (isActive) {
-                    run("timer ${timer.description}") { timer.action(Reaction(coordination.engine, null)) }
+                    run("timer ${timer.description}") { Reaction(coordination.engine, null).handle(timer.action) }
                     delay(timer.period ?: break)
                 }
             }
@@ -172,7 +175,7 @@ public class Coordinator(
 
     private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
         for (handler in supervision.escalationHandlers) {
-            run("escalation handler of ${escalation.supervisor}") { Reaction(coordination.engine, null).handler(escalation) }
+            run("escalation handler of ${escalation.supervisor}") { Reaction(coordination.engine, null).handle { handler(escalation) } }
         }
     }
 
@@ -180,7 +183,7 @@ public class Coordinator(
         val reaction = Reaction(coordination.engine, event)
         if (!rule.guards.all { guard -> reaction.guard(event) }) return
         log("rule '${rule.description}' fired: ${describe(event)}")
-        run("rule '${rule.description}'") { rule.handler(reaction, event) }
+        run("rule '${rule.description}'") { reaction.handle { rule.handler(this, event) } }
     }
 
     private suspend fun run(what: String, block: suspend () -> Unit) {

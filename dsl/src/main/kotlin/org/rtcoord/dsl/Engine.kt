@@ -1,8 +1,11 @@
 package org.rtcoord.dsl
 
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.AmbiguousNameException
 import org.rtcoord.ComponentNode
+import org.rtcoord.Connection
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.NodeFilters
@@ -14,6 +17,7 @@ import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.UnreachableException
 import java.util.concurrent.ConcurrentHashMap
+import java.util.concurrent.CopyOnWriteArrayList
 
 /**
  * Resolves a script's references against the live tree and performs their actions, logging each. A
@@ -80,13 +84,52 @@ internal class Engine {
         }
     }
 
+    /** Every action that failed so far, in order. */
+    val failedActions: MutableList<FailedAction> = CopyOnWriteArrayList()
+
     /**
      * Runs [action] on [ref]'s component, logged as [what] (followed by the component's path, unless
      * [what] names its objects itself); once more after a fresh lookup if the component stopped answering.
      */
-    suspend fun act(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Unit) {
-        fun line(node: ComponentNode) = if (namesItself) what else "$what ${node.path}"
-        withComponent(ref.selector, { log(line(it)) }, { log("${line(it)} (looked up again)") }, action)
+    suspend fun act(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Unit): Unit =
+        actReversibly(what, ref, namesItself) { action(it); null }
+
+    /**
+     * [act], for an action that returns how to undo it: the handler's journal, if it runs in one,
+     * records the action with its undo once it succeeded. A failure is recorded in [failedActions].
+     */
+    suspend fun actReversibly(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Undo?) {
+        var line = what
+        fun describe(node: ComponentNode) = (if (namesItself) what else "$what ${node.path}").also { line = it }
+        val undo = recorded({ line }) {
+            withComponent(ref.selector, { log(describe(it)) }, { log("${describe(it)} (looked up again)") }, action)
+        }
+        currentCoroutineContext()[ActionJournal]?.record(line, undo)
+    }
+
+    /** Runs [action], recording its failure as one of [what]'s. */
+    private suspend fun <T> recorded(what: () -> String, action: suspend () -> T): T = try {
+        action()
+    } catch (e: CancellationException) {
+        throw e
+    } catch (e: Exception) {
+        val reason = (e as? RtcException)?.reason ?: e.message ?: e.toString()
+        failedActions += FailedAction(what(), reason, bestEffort = currentCoroutineContext()[BestEffort] != null)
+        throw e
+    }
+
+    /**
+     * Makes [connection] again between the same ports, with its name and the properties a new connector
+     * can reuse; fails when one of its ports belongs to a component the tree does not know.
+     */
+    suspend fun reconnect(connection: Connection) {
+        val ports = connection.ports.map { end ->
+            portRef((end.path ?: throw NotFoundException(end.fullName, "its component is unknown here: cannot connect it again")).toString())
+        }
+        val first = ports.first()
+        act("connect again ${ports.joinToString(" to ")}", first.component, namesItself = true) { node ->
+            node.port(first.name).connect(ports.drop(1).map { it.port() }, reusableProperties(connection.properties), connection.name)
+        }
     }
 
     /**
@@ -125,17 +168,25 @@ internal class Engine {
         (registeredAt(old.path) as? ComponentNode)?.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
 
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {
-        val manager = manager(ref)
-        log("create $type${name?.let { " as $it" } ?: ""} through ${manager.path}")
-        val created = try {
-            manager.create(type, name)
-        } catch (e: UnreachableException) {
-            val again = restarted(manager, e) ?: throw e
-            log("create $type${name?.let { " as $it" } ?: ""} through ${again.path} (looked up again)")
-            again.create(type, name)
+        val request = "create $type${name?.let { " as $it" } ?: ""}"
+        var line = request
+        val created = recorded({ line }) {
+            val manager = manager(ref)
+            line = "$request through ${manager.path}"
+            log(line)
+            try {
+                manager.create(type, name)
+            } catch (e: UnreachableException) {
+                val again = restarted(manager, e) ?: throw e
+                line = "$request through ${again.path}"
+                log("$line (looked up again)")
+                again.create(type, name)
+            }
         }
         log("created ${created.path}")
-        return reference(created)
+        val reference = reference(created)
+        currentCoroutineContext()[ActionJournal]?.record("$line: ${created.path}") { reference.exit() }
+        return reference
     }
 
     /**
@@ -161,9 +212,14 @@ internal class Engine {
     }
 
     suspend fun delete(ref: ManagerRef, instanceName: String) {
-        val manager = manager(ref)
-        log("delete $instanceName through ${manager.path}")
-        manager.delete(instanceName)
+        var line = "delete $instanceName"
+        recorded({ line }) {
+            val manager = manager(ref)
+            line = "delete $instanceName through ${manager.path}"
+            log(line)
+            manager.delete(instanceName)
+        }
         resolved.keys.removeIf { it == instanceName || it.endsWith("/$instanceName.rtc") || it == "$instanceName.rtc" }
+        currentCoroutineContext()[ActionJournal]?.record(line, null)
     }
 }

@@ -1,15 +1,27 @@
 package org.rtcoord.dsl
 
+import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.TimeoutCancellationException
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
 import org.rtcoord.ComponentNode
 import org.rtcoord.RtcEvent
 import kotlin.time.Duration
 
 /**
- * What a rule's handler (or a timer) can do. Every action suspends until done and fails with an
- * [org.rtcoord.RtcException] the handler may catch; an uncaught failure is reported and the coordinator
- * keeps running.
+ * What a rule's handler (or a timer) can do. Every action suspends until done, is logged, and fails with
+ * an [org.rtcoord.RtcException] that stops the handler: the failure is reported and counted, and the
+ * coordinator keeps running. An action that may fail without stopping the handler goes in [attempt]; what
+ * to do when the handler stops half way (undo what it did, fall back) goes in [onFailure]:
+ *
+ * ```
+ * on(component("laser0.rtc")).state(ERROR) {
+ *     attempt { reset() }                     // a laser that stays broken cannot be reset: go on
+ *     onFailure { failure -> failure.undo() } // a switch that fails half way is taken back
+ *     component("laser_localise0.rtc").run { disconnectAll(); deactivate() }
+ *     manager().create("odo_localise").activate()
+ * }
+ * ```
  */
 @RtcDsl
 public class Reaction internal constructor(
@@ -45,20 +57,108 @@ public class Reaction internal constructor(
     /** Disconnects every port of the component that fired the rule. */
     public suspend fun disconnectAll(): Unit = source.disconnectAll()
 
-    /** Connects out-port [from] to in-port [to] (refs or `component:port` text), with connector [properties]. */
+    /**
+     * Connects out-port [from] to in-port [to] (refs or `component:port` text), with connector
+     * [properties]. Undone by removing that connection.
+     */
     public suspend fun connect(from: Any, to: Any, properties: Map<String, String> = emptyMap()) {
         val (out, into) = engine.portOf(from) to engine.portOf(to)
         val target = into.port()
-        engine.act("connect ${out.port().path} to ${target.path}", out.component, namesItself = true) { it.port(out.name).connect(listOf(target), properties) }
+        val what = "connect ${out.port().path} to ${target.path}"
+        engine.actReversibly(what, out.component, namesItself = true) { node ->
+            val made = node.port(out.name).connect(listOf(target), properties)
+            val undo: Undo = { engine.act("disconnect ${made.name} (${made.id})", out.component, namesItself = true) { it.port(out.name).disconnect(made.id) } }
+            undo
+        }
     }
 
-    /** Removes every connection between [a] and [b]. */
+    /** Removes every connection between [a] and [b]. Undone by making them again. */
     public suspend fun disconnect(a: Any, b: Any) {
         val (first, second) = engine.portOf(a) to engine.portOf(b)
-        engine.act("disconnect ${first.port().path} from ${second.port().path}", first.component, namesItself = true) { node ->
+        engine.actReversibly("disconnect ${first.port().path} from ${second.port().path}", first.component, namesItself = true) { node ->
             val port = node.port(first.name)
             val peer = second.port().path
-            port.connections().filter { connection -> connection.ports.any { it.path == peer } }.forEach { port.disconnect(it.id) }
+            val removed = port.connections().filter { connection -> connection.ports.any { it.path == peer } }
+            removed.forEach { port.disconnect(it.id) }
+            reconnecting(removed, engine)
+        }
+    }
+
+    /**
+     * Runs [block] as a best effort: if it fails, the failure is logged as a warning and the handler goes
+     * on. For the actions whose failure must not stop the rest, such as resetting a component whose fault
+     * may persist:
+     *
+     * ```
+     * on(component("laser0.rtc")).state(ERROR) {
+     *     if (!attempt { reset() }) log("the laser stays broken: switching to odometry without it")
+     *     ...
+     * }
+     * ```
+     *
+     * A failing action outside [attempt] still stops the handler. Failed actions, best efforts included,
+     * are listed by [Coordinator.failedActions].
+     *
+     * @return whether [block] completed.
+     */
+    public suspend fun attempt(block: suspend Reaction.() -> Unit): Boolean = try {
+        withContext(BestEffort.element) { block() }
+        true
+    } catch (e: CancellationException) {
+        throw e
+    } catch (e: Exception) {
+        engine.log("warning: ${e.message ?: e}; going on (attempt)")
+        false
+    }
+
+    /**
+     * Runs [fallback] if this handler fails after this point, before the failure is reported. It gets
+     * the failure, with the actions the handler completed so far ([ReactionFailure.done]), which
+     * [ReactionFailure.undo] takes back, newest first:
+     *
+     * ```
+     * onFailure { failure ->
+     *     log("switch failed (${failure.cause.message}): back to the laser localiser")
+     *     failure.undo()
+     *     attempt { component("laser0.rtc").activate() }
+     * }
+     * ```
+     *
+     * The fallback's own actions are not undone, and a failure inside it is logged as a warning. Several
+     * fallbacks run in the order they were given. Works in rule handlers, timers and escalation handlers;
+     * elsewhere (a mode's entry or exit action) it fails at once, naming where it may be used.
+     */
+    public fun onFailure(fallback: suspend Reaction.(ReactionFailure) -> Unit) {
+        checkNotNull(journal) { "onFailure works in rule handlers, timers and escalation handlers, not in a mode's entry or exit action" }
+        fallbacks += fallback
+    }
+
+    private var journal: ActionJournal? = null
+    private val fallbacks = java.util.concurrent.CopyOnWriteArrayList<suspend Reaction.(ReactionFailure) -> Unit>()
+
+    /**
+     * Runs [handler] as this reaction's handler: its actions are journaled, and if it fails its
+     * [onFailure] fallbacks run before the failure goes on to the caller.
+     */
+    internal suspend fun handle(handler: suspend Reaction.() -> Unit) {
+        val journal = ActionJournal().also { this.journal = it }
+        try {
+            withContext(journal) { handler() }
+        } catch (e: CancellationException) {
+            throw e
+        } catch (e: Exception) {
+            val failure = ReactionFailure(e, journal.done) { engine.log(it) }
+            for (fallback in fallbacks) {
+                try {
+                    fallback(failure)
+                } catch (c: CancellationException) {
+                    throw c
+                } catch (other: Exception) {
+                    engine.log("warning: an onFailure block failed: ${other.message ?: other}")
+                    e.addSuppressed(other)
+                }
+            }
+            throw e
         }
     }
 

@@ -20,12 +20,8 @@ internal class RecordedConnection(var id: String, val name: String, properties: 
         }
     }
 
-    /**
-     * The properties to connect with: the endpoints the ports published during the first connection
-     * (`dataport.corba_cdr.*` IORs, `port.*` service references) point at the dead component and would
-     * override the new ones.
-     */
-    val properties: Map<String, String> = properties.filterKeys { !it.startsWith("dataport.corba_cdr.") && !it.startsWith("port.") }
+    /** The properties to connect with (see [reusableProperties]). */
+    val properties: Map<String, String> = reusableProperties(properties)
 
     fun involves(child: SupervisedChild): Boolean = ends.any { it is End.Supervised && it.child === child }
 
@@ -34,3 +30,11 @@ internal class RecordedConnection(var id: String, val name: String, properties: 
 
     override fun toString(): String = ends.joinToString(" -> ")
 }
+
+/**
+ * The properties of connector [properties] a new connection between the same ports can reuse: the
+ * endpoints the ports published for the old one (`dataport.corba_cdr.*` IORs, `port.*` service
+ * references) may point at a dead component and would override the new ones.
+ */
+internal fun reusableProperties(properties: Map<String, String>): Map<String, String> =
+    properties.filterKeys { !it.startsWith("dataport.corba_cdr.") && !it.startsWith("port.") }

@@ -2,6 +2,7 @@ package org.rtcoord.dsl
 
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.Connection
 import org.rtcoord.LifeCycle
 import org.rtcoord.Port
 import org.rtcoord.RtcPath
@@ -31,11 +32,11 @@ public class ComponentRef internal constructor(
     /** What was last read of it. */
     public suspend fun snapshot(): ComponentSnapshot = node().snapshot()
 
-    /** Activates it and waits until it is ACTIVE. */
-    public suspend fun activate(): Unit = engine.act("activate", this) { it.activate() }
+    /** Activates it and waits until it is ACTIVE. Undone by a deactivation. */
+    public suspend fun activate(): Unit = engine.actReversibly("activate", this) { it.activate(); { deactivate() } }
 
-    /** Deactivates it and waits until it is INACTIVE. */
-    public suspend fun deactivate(): Unit = engine.act("deactivate", this) { it.deactivate() }
+    /** Deactivates it and waits until it is INACTIVE. Undone by an activation. */
+    public suspend fun deactivate(): Unit = engine.actReversibly("deactivate", this) { it.deactivate(); { activate() } }
 
     /** Resets it from ERROR and waits until it is INACTIVE. */
     public suspend fun reset(): Unit = engine.act("reset", this) { it.reset() }
@@ -43,8 +44,12 @@ public class ComponentRef internal constructor(
     /** Makes it exit. */
     public suspend fun exit(): Unit = engine.act("exit", this) { it.exit() }
 
-    /** Disconnects every connection of every port. */
-    public suspend fun disconnectAll(): Unit = engine.act("disconnect all", this) { it.disconnectAll() }
+    /** Disconnects every connection of every port. Undone by making the same connections again. */
+    public suspend fun disconnectAll(): Unit = engine.actReversibly("disconnect all", this) { node ->
+        val connections = node.snapshot().ports.flatMap { node.port(it.name).connections() }.distinctBy { it.id }
+        node.disconnectAll()
+        reconnecting(connections, engine)
+    }
 
     /**
      * Sets parameters of its active configuration set (or of `inSet(...)`'s set), all in one change:
@@ -69,8 +74,13 @@ public class ComponentRef internal constructor(
 public class PortRef internal constructor(public val component: ComponentRef, public val name: String, private val engine: Engine) {
     internal suspend fun port(): Port = component.node().port(name)
 
-    /** Disconnects every connection of this port. */
-    public suspend fun disconnectAll(): Unit = engine.act("disconnect all of $this", component) { it.port(name).disconnectAll() }
+    /** Disconnects every connection of this port. Undone by making the same connections again. */
+    public suspend fun disconnectAll(): Unit = engine.actReversibly("disconnect all of $this", component) { node ->
+        val port = node.port(name)
+        val connections = port.connections()
+        port.disconnectAll()
+        reconnecting(connections, engine)
+    }
 
     override fun toString(): String = "${component.selector}:$name"
 }
@@ -112,3 +122,6 @@ public class ConfigurationChanges internal constructor() {
 
     internal fun describe(): String = values.entries.joinToString { "${it.key}=${it.value}" } + (set?.let { " in $it" } ?: "")
 }
+
+/** How to undo the removal of [connections]: make each again. */
+internal fun reconnecting(connections: List<Connection>, engine: Engine): Undo = { connections.forEach { engine.reconnect(it) } }

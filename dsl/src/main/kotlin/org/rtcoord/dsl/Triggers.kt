@@ -13,7 +13,12 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
 
-/** A guard: the rule fires only when it returns true for the event. */
+/**
+ * A guard: the rule fires only when it returns true for the event. It runs when the rule's turn to
+ * handle the event comes, just before its handler, and what it reads of the system (a component's
+ * state, a parameter) is read then: the system as the handler will find it, which may have moved on
+ * since the event happened. What held at the event is in the event itself (its source, its new state).
+ */
 public typealias Guard = suspend Reaction.(RtcEvent) -> Boolean
 
 /** The events of a component a rule can react to: `on(component("laser0.rtc")).state(ERROR) { ... }`. */
@@ -23,7 +28,12 @@ public class ComponentTriggers internal constructor(
     private val target: ComponentRef,
     private val guards: List<Guard>,
 ) {
-    /** Narrows the rule to events for which [guard] holds. */
+    /**
+     * Narrows the rule to events for which [guard] holds:
+     * `on(component("laser0.rtc")).where { component("odo_localise0.rtc").state() != ACTIVE }.state(ERROR) { ... }`.
+     * The guard reads the system when the handler is about to run, not as it was when the event
+     * happened (see [Guard]); to act on the event's own facts, read the event.
+     */
     public fun where(guard: Guard): ComponentTriggers = ComponentTriggers(owner, target, guards + guard)
 
     /** When the component enters [state] (in any execution context). */
@@ -76,7 +86,7 @@ public class ComponentTriggers internal constructor(
 /** The events of one port: `on(port("gyro0.rtc:gyro")).disconnected { ... }`. */
 @RtcDsl
 public class PortTriggers internal constructor(private val owner: Coordination, private val target: PortRef, private val guards: List<Guard>) {
-    /** Narrows the rule to events for which [guard] holds. */
+    /** Narrows the rule to events for which [guard] holds, read when the handler is about to run (see [Guard]). */
     public fun where(guard: Guard): PortTriggers = PortTriggers(owner, target, guards + guard)
 
     /** When the port gets a connection. */
@@ -89,7 +99,7 @@ public class PortTriggers internal constructor(private val owner: Coordination, 
 /** What a manager does: `on(manager()).created { name -> ... }`. */
 @RtcDsl
 public class ManagerTriggers internal constructor(private val owner: Coordination, private val target: ManagerRef, private val guards: List<Guard>) {
-    /** Narrows the rule to events for which [guard] holds. */
+    /** Narrows the rule to events for which [guard] holds, read when the handler is about to run (see [Guard]). */
     public fun where(guard: Guard): ManagerTriggers = ManagerTriggers(owner, target, guards + guard)
 
     /** When the manager (or one of its slaves) creates a component. */
@@ -104,7 +114,7 @@ public class ManagerTriggers internal constructor(private val owner: Coordinatio
 /** Bindings appearing and vanishing in a naming context: `on(context("/localhost/host.host_cxt")).appeared { ... }`. */
 @RtcDsl
 public class ContextTriggers internal constructor(private val owner: Coordination, private val target: ContextRef, private val guards: List<Guard>) {
-    /** Narrows the rule to events for which [guard] holds. */
+    /** Narrows the rule to events for which [guard] holds, read when the handler is about to run (see [Guard]). */
     public fun where(guard: Guard): ContextTriggers = ContextTriggers(owner, target, guards + guard)
 
     /** When a binding appears in the context. */

@@ -82,13 +82,17 @@ class CoordinatorTest {
     @Test
     fun `guards narrow a rule`(): Unit = runBlocking {
         val fired = Collections.synchronizedList(mutableListOf<String>())
+        val guarded = AtomicInteger()
         coordinator {
-            on(component("laser0")).where { (component("laser_localise0").state() == org.rtcoord.LifeCycle.INACTIVE) }.state(ERROR) { fired += "guarded" }
+            on(component("laser0")).where {
+                (component("laser_localise0").state() == org.rtcoord.LifeCycle.INACTIVE).also { guarded.incrementAndGet() }
+            }.state(ERROR) { fired += "guarded" }
             on(component("laser0")).state(ERROR) { fired += "plain" }
         }.use { coordinator ->
             coordinator.start()
             system.component("laser0").fail()
-            await("the plain rule") { "plain" in fired }
+            // A guard reads the system when its rule's turn comes: wait for it before changing what it reads.
+            await("the plain rule, and the guard to have read the first time") { "plain" in fired && guarded.get() == 1 }
             tree.component("/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}/laser0.rtc").reset()
             tree.componentNamed("laser_localise0").deactivate()
             tree.componentNamed("laser0").activate()

@@ -5,11 +5,14 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.params.ParameterizedTest
+import org.junit.jupiter.params.provider.CsvSource
 import org.junit.jupiter.params.provider.EnumSource
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcPath
 import org.rtcoord.WatchMode
+import org.rtcoord.dsl.FailedAction
+import org.rtcoord.fixtures.FixtureComponent
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import kotlin.time.Duration.Companion.milliseconds
@@ -21,12 +24,18 @@ class ExamplesTest {
         POLL(EventOptions(WatchMode.POLL, pollPeriod = 100.milliseconds)),
     }
 
+    /** How the laser fails: once (a reset recovers it), or for good (its resets keep failing). */
+    enum class Fault(val laserAfter: LifeCycle, val inject: (FixtureComponent) -> Unit) {
+        TRANSIENT(LifeCycle.INACTIVE, FixtureComponent::fail),
+        PERSISTENT(LifeCycle.ERROR, FixtureComponent::breakDown),
+    }
+
     @ParameterizedTest
-    @EnumSource(Mode::class)
-    fun `localisation - the laser fails and the odometry-gyro localiser takes over`(mode: Mode): Unit = runBlocking {
+    @CsvSource("PUSH,TRANSIENT", "PUSH,PERSISTENT", "POLL,TRANSIENT", "POLL,PERSISTENT")
+    fun `localisation - the laser fails and the odometry-gyro localiser takes over`(mode: Mode, fault: Fault): Unit = runBlocking {
         ExampleSystem("localisation.coord.kts", mode.options).use { example ->
             example.coordinator.start()
-            example.system.component("laser0").fail()
+            fault.inject(example.system.component("laser0"))
 
             await("odo_localise0 to be ACTIVE") {
                 runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
@@ -42,8 +51,38 @@ class ExamplesTest {
             val old = example.witness.component(example.path("laser_localise0.rtc")).also { it.refresh() }.snapshot()
             assertEquals(LifeCycle.INACTIVE, old.state)
             assertTrue(old.ports.all { it.connectors.isEmpty() })
-            assertEquals(LifeCycle.INACTIVE, example.witness.component(example.path("laser0.rtc")).state())
+            assertEquals(fault.laserAfter, example.witness.component(example.path("laser0.rtc")).state())
             assertEquals(0, example.coordinator.failures)
+            val resetFailed = FailedAction("reset ${example.path("laser0.rtc")}", "reset failed: RTC_ERROR (in context 0)", bestEffort = true)
+            assertEquals(if (fault == Fault.PERSISTENT) listOf(resetFailed) else emptyList<FailedAction>(), example.coordinator.failedActions)
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Fault::class)
+    fun `localisation - a switch the manager refuses is taken back and the laser localiser runs again`(fault: Fault): Unit = runBlocking {
+        ExampleSystem("localisation.coord.kts", Mode.PUSH.options).use { example ->
+            example.system.master!!.remove_slave_manager(example.system.slave!!.ref)
+            example.coordinator.start()
+            val localiser = example.system.component("laser_localise0")
+            fault.inject(example.system.component("laser0"))
+
+            // The rule's failure is counted after its onFailure block finished.
+            await("the switch to fail and be taken back") { example.coordinator.failures == 1 }
+            assertTrue(example.log.any { it.startsWith("the switch to odometry failed") && it.endsWith("back to the laser localiser") })
+            await("the laser localiser to run again") { localiser.state == RTC.LifeCycleState.ACTIVE_STATE }
+            assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
+            assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
+            assertTrue(example.system.components.none { it.instanceName == "odo_localise0" })
+            if (fault == Fault.TRANSIENT) {
+                assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("laser0").state, "the laser, reset, runs again")
+                val before = localiser.latest("laser")
+                await("the laser's data to reach the localiser again") { localiser.latest("laser") !== before }
+            } else {
+                assertEquals(RTC.LifeCycleState.ERROR_STATE, example.system.component("laser0").state)
+                val before = localiser.latest("odo")
+                await("the odometry to reach the localiser again") { localiser.latest("odo") !== before }
+            }
         }
     }
 
@@ -74,22 +113,28 @@ class ExamplesTest {
         }
     }
 
-    @Test
-    fun `modes - the laser fails, the system runs on odometry, and back on the laser once it is active`(): Unit = runBlocking {
+    @ParameterizedTest
+    @EnumSource(Fault::class)
+    fun `modes - the laser fails, the system runs on odometry, and back on the laser once it is active`(fault: Fault): Unit = runBlocking {
         ExampleSystem("modes.coord.kts", Mode.PUSH.options).use { example ->
             example.coordinator.start()
             val machine = example.coordinator.machine("localisation")
             await("the laser mode's network") { example.log.any { it.startsWith("mode localisation/laser: network done (0 steps") } }
 
-            example.system.component("laser0").fail()
+            val laser = example.system.component("laser0")
+            fault.inject(laser)
             await("the odometry localiser to track", timeout = 30.seconds) { machine.mode.value == "localisation/degraded/odometry/tracking" }
-            assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("laser0").state, "reset on entry")
+            assertEquals(fault.laserAfter, example.witness.component(example.path("laser0.rtc")).state(), "reset on entry if it can be")
             assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("laser_localise0").state)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("odo_localise0").state)
             assertEquals(setOf("odometry0.odo"), example.peers("odo_localise0.rtc:odo"))
             assertEquals(setOf("gyro0.gyro"), example.peers("odo_localise0.rtc:gyro"))
             assertEquals(emptySet<String>(), example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"))
 
+            if (fault == Fault.PERSISTENT) {
+                laser.repair()
+                example.witness.component(example.path("laser0.rtc")).reset()
+            }
             example.witness.component(example.path("laser0.rtc")).activate()
             await("the laser mode's network again", timeout = 30.seconds) { example.log.count { it.startsWith("mode localisation/laser: network done") } == 2 }
             assertEquals("localisation/laser", machine.mode.value)
@@ -133,6 +178,28 @@ class ExamplesTest {
                     localiser.state == RTC.LifeCycleState.INACTIVE_STATE
             }
             assertEquals(RTC.LifeCycleState.ERROR_STATE, laser.state)
+            await("the localisation to go on from odometry") { example.system.components.any { it.instanceName == "odo_localise0" && it.state == RTC.LifeCycleState.ACTIVE_STATE } }
+            assertEquals(0, example.coordinator.failures)
+        }
+    }
+
+    @Test
+    fun `supervision - a laser that stays broken cannot be restarted, and the localisation goes on from odometry`(): Unit = runBlocking {
+        ExampleSystem("supervision.coord.kts", Mode.PUSH.options, args = listOf("2")).use { example ->
+            example.coordinator.start()
+            val (odometry, laser, localiser) = listOf("odometry0", "laser0", "laser_localise0").map(example.system::component)
+            laser.breakDown()
+
+            await("the supervisor to give up on the laser", timeout = 30.seconds) {
+                example.log.any { it.startsWith("giving up: ${example.path("laser0.rtc")}") }
+            }
+            await("the odometry localiser to run") { example.system.components.any { it.instanceName == "odo_localise0" && it.state == RTC.LifeCycleState.ACTIVE_STATE } }
+            assertEquals(setOf("odometry0.odo"), example.peers("odo_localise0.rtc:odo"))
+            assertEquals(setOf("gyro0.gyro"), example.peers("odo_localise0.rtc:gyro"))
+            assertEquals(RTC.LifeCycleState.INACTIVE_STATE, localiser.state)
+            assertEquals(emptySet<String>(), example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"))
+            assertEquals(RTC.LifeCycleState.ERROR_STATE, laser.state)
+            assertEquals(RTC.LifeCycleState.ACTIVE_STATE, odometry.state, "restForOne leaves the odometry alone")
             assertEquals(0, example.coordinator.failures)
         }
     }
