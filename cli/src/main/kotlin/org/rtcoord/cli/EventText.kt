@@ -34,7 +34,7 @@ internal fun RtcEvent.toJson(): Map<String, Any?> = mapOf(
 ) + fields()
 
 /** What happened, in a few words. */
-private fun RtcEvent.what(): String = when (this) {
+internal fun RtcEvent.what(): String = when (this) {
     is StateChanged -> "state in context $handle: $old -> $new"
     is ComponentFinalized -> "finalized"
     is PortConnected -> "port $port connected (connector ${connector.name}, id ${connector.id})"

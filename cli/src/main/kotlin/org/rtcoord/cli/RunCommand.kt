@@ -3,6 +3,8 @@ package org.rtcoord.cli
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.path
 import kotlinx.coroutines.CompletableDeferred
@@ -10,6 +12,8 @@ import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
+import org.rtcoord.cli.serve.LiveService
+import org.rtcoord.cli.serve.ServeOptions
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
@@ -32,6 +36,8 @@ class RunCommand : TreeCommand("run") {
     private val arguments by argument("ARGS", help = "Arguments the script reads as args.").multiple()
     private val duration by option("--for", metavar = "DURATION", help = "Stop after this long, e.g. 30s or 5m.").duration()
     private val poll by option("--poll", metavar = "PERIOD", help = "Poll components at this period instead of observing them.").duration()
+    private val serve by option("--serve", help = "Serve a live view of the system and the coordinator (see rtcoord serve).").flag()
+    private val serving by ServeOptions(prefix = "serve-")
 
     override suspend fun execute() {
         val coordination = try {
@@ -42,7 +48,11 @@ class RunCommand : TreeCommand("run") {
             fail(e.problems.last(), e)
         }
         val options = poll?.let { EventOptions(WatchMode.POLL, pollPeriod = it) }
-        val coordinator = Coordinator(tree, coordination, options) { echo("${LocalTime.now().format(TIME)} $it") }
+        var service: LiveService? = null
+        val coordinator = Coordinator(tree, coordination, options) { line ->
+            echo("${LocalTime.now().format(TIME)} $line")
+            service?.log("coordinator", line)
+        }
         try {
             coordinator.start()
         } catch (e: RtcException) {
@@ -51,17 +61,25 @@ class RunCommand : TreeCommand("run") {
         }
         confirm("${LocalTime.now().format(TIME)} coordinating:")
         coordination.description.forEach { confirm("  $it") }
+        if (serve) {
+            serving.settings().exposure()?.let { echo("rtcoord: warning: $it", err = true) }
+            val top = tree.nameServers.singleOrNull() ?: tree.root
+            service = LiveService.start(tree, top, coordinator, options ?: coordination.watching, serving.settings()) { echo("${LocalTime.now().format(TIME)} serve: $it") }
+                .also { confirm("${LocalTime.now().format(TIME)} serving ${top.path} on ${it.url}") }
+        }
 
         val stopped = CompletableDeferred<Unit>()
         // On SIGINT/SIGTERM the JVM runs this before exiting: detach observers while the ORB still works.
         val hook = Thread {
             stopped.complete(Unit)
+            service?.close()
             coordinator.close()
             session.close()
         }
         Runtime.getRuntime().addShutdownHook(hook)
         withTimeoutOrNull(duration ?: kotlin.time.Duration.INFINITE) { stopped.await() }
         Runtime.getRuntime().removeShutdownHook(hook)
+        service?.close()
         coordinator.close()
         val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events unconsumed" }
         confirm("${LocalTime.now().format(TIME)} stopped; ${coordinator.failures} handler failures$machines")

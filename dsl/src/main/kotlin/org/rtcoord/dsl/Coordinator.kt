@@ -53,6 +53,14 @@ public class Coordinator(
     /** How many handler runs failed so far. */
     public val failures: Int get() = failureCount.get()
 
+    private val ruleActivities = coordination.rules.associateWith { RuleActivity(it.description) }
+
+    /** What each rule has done, in declaration order. */
+    public val rules: List<RuleActivity> = ruleActivities.values.toList()
+
+    /** What each supervisor has done, in declaration order; empty until [start]. */
+    public val supervision: List<SupervisorActivity> get() = supervisors.map { it.activity }
+
     /** The coordination's mode machines as they run, in declaration order. */
     public val machines: List<RunningMachine> = interpreters.map { it.running }
 
@@ -156,16 +164,19 @@ public class Coordinator(
         val reaction = Reaction(coordination.engine, event)
         if (!rule.guards.all { guard -> reaction.guard(event) }) return
         log("rule '${rule.description}' fired: ${describe(event)}")
-        run("rule '${rule.description}'") { rule.handler(reaction, event) }
+        val activity = ruleActivities.getValue(rule)
+        activity.fired(describe(event))
+        run("rule '${rule.description}'", activity::failed) { rule.handler(reaction, event) }
     }
 
-    private suspend fun run(what: String, block: suspend () -> Unit) {
+    private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {
         try {
             block()
         } catch (e: CancellationException) {
             throw e
         } catch (e: Exception) {
             failed(what, e)
+            failedAs(e.message ?: e.toString())
         }
     }
 

@@ -69,6 +69,9 @@ internal class Supervisor(
     private val policy = TimeSource.Monotonic.markNow().let { start -> RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() } }
     @Volatile private var stopped = false
 
+    /** What it has done, for those who show it. */
+    val activity = SupervisorActivity(name, supervision.strategy.name)
+
     /** Resolves and watches the components, records what recovery needs, and starts handling failures. */
     suspend fun start() {
         lock.withLock {
@@ -81,6 +84,7 @@ internal class Supervisor(
             children.forEach { record(it, managers) }
             children.forEach { child -> child.node.snapshot().ports.filter { it.connectors.isNotEmpty() }.forEach { recordConnections(child, it.name) } }
         }
+        activity.children(children.map { it.toString() })
         log("$name: supervising ${children.joinToString()} (${supervision.strategy})")
         scope.launch {
             for (failure in failures) {
@@ -214,10 +218,12 @@ internal class Supervisor(
             is RestartPolicy.Decision.Escalate -> giveUp(child, failure, decision.restarts)
             is RestartPolicy.Decision.Restart -> {
                 if (decision.wait.isPositive()) {
+                    activity.waiting(decision.wait)
                     log("$name: restarting $child in ${decision.wait} (consecutive restart ${decision.attempt})")
                     delay(decision.wait)
                 }
                 lock.withLock { restart(child) }
+                activity.restarted(child.toString(), children.map { it.toString() })
             }
         }
     }
@@ -379,6 +385,7 @@ internal class Supervisor(
 
     private suspend fun giveUp(child: SupervisedChild, failure: Failure, restarts: Int) {
         val escalation = Escalation(name, child.node.path.toString(), failure.what, restarts, supervision.maxRestarts.period)
+        activity.escalated(escalation.reason)
         log("$name: escalation: ${escalation.reason}; the supervisor stops")
         close()
         escalate(escalation)
