@@ -3,12 +3,15 @@ package org.rtcoord.cli.serve
 import io.ktor.http.ContentType
 import io.ktor.http.HttpStatusCode
 import io.ktor.server.application.ApplicationCall
+import io.ktor.server.application.ApplicationCallPipeline
+import io.ktor.server.application.call
 import io.ktor.server.application.install
 import io.ktor.server.cio.CIO
 import io.ktor.server.engine.EmbeddedServer
 import io.ktor.server.engine.embeddedServer
 import io.ktor.server.http.content.staticResources
 import io.ktor.server.plugins.origin
+import io.ktor.server.request.path
 import io.ktor.server.response.header
 import io.ktor.server.response.respondText
 import io.ktor.server.routing.get
@@ -43,21 +46,23 @@ internal class LiveServer(
     suspend fun start(address: String, port: Int): Int {
         val started = embeddedServer(CIO, host = address, port = port) {
             install(SSE)
+            // Before routing, so that no API answer (an event stream least of all) starts without the token.
+            intercept(ApplicationCallPipeline.Plugins) {
+                if (call.request.path().startsWith("/api/") && !allowed(call)) finish()
+            }
             routing {
                 staticResources("/", "org/rtcoord/cli/serve", index = "index.html")
                 staticResources("/lib", "META-INF/resources/webjars")
                 get("/api/snapshot") {
-                    if (allowed(call)) call.respondText(toJson(view.snapshot(), pretty = false), ContentType.Application.Json)
+                    call.respondText(toJson(view.snapshot(), pretty = false), ContentType.Application.Json)
                 }
                 sse("/api/events") {
-                    if (!allowed(call)) return@sse
                     // A page that loses the server (restarted, say) tries again after this long.
                     send(data = "{}", event = "hello", retry = RETRY_MILLIS)
                     view.updates.onSubscription { send(data = toJson(view.snapshot(), pretty = false), event = "snapshot") }
                         .collect { send(data = it.json, event = it.kind) }
                 }
                 get("/api/component") {
-                    if (!allowed(call)) return@get
                     val path = call.request.queryParameters["path"]
                     val component = path?.let { component(it) }
                     if (component == null) {
@@ -72,7 +77,6 @@ internal class LiveServer(
                     }
                 }
                 post("/api/operate") {
-                    if (!allowed(call)) return@post
                     operate(call)
                 }
             }

@@ -6,6 +6,7 @@ import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.ZombieNode
 import org.rtcoord.cli.ComponentNetwork
+import org.rtcoord.cli.overallState
 
 /**
  * The system below [top] as the page draws it, from what the tree holds: naming contexts and name
@@ -42,7 +43,7 @@ internal class NetworkView(private val top: Node) {
             "contexts" to directories.map { directory ->
                 mapOf(
                     "id" to directory.path.toString(),
-                    "name" to directory.path.toString().takeIf { directory.path.names.size <= 1 } ?: directory.name,
+                    "name" to if (directory.path.names.isEmpty()) directory.path.toString() else directory.name,
                     "parent" to directory.path.parent?.takeIf { parent -> directories.any { it.path == parent } }?.toString(),
                     "reachable" to (directory.listed.value != null),
                 )
