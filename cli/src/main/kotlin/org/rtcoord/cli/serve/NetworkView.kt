@@ -54,7 +54,8 @@ internal class NetworkView(private val top: Node) {
                 mapOf(
                     "id" to manager.path.toString(),
                     "name" to manager.name,
-                    "parent" to manager.path.parent?.takeIf { parent -> directories.any { it.path == parent } }?.toString(),
+                    // A slave is drawn in the naming context of its master.
+                    "parent" to generateSequence(manager.path.parent) { it.parent }.firstOrNull { above -> directories.any { it.path == above } }?.toString(),
                     "hosts" to components.filter { it["hostedBy"] == manager.path.toString() }.map { it["id"] },
                 )
             },

@@ -85,9 +85,14 @@ class HeadlessChromium private constructor(private val process: Process, private
         return result["result"]!!.jsonObject["value"] ?: JsonObject(emptyMap())
     }
 
-    /** Waits until [expression] is true in the page, failing after [timeout] with [what]. */
+    /**
+     * Waits until [expression] is true in the page, failing after [timeout] with [what]. It may throw
+     * meanwhile (the page is still loading): that counts as false.
+     */
     fun await(what: String, timeout: Duration = 60.seconds, expression: String) {
-        awaitValue(what, timeout) { evaluate("Boolean($expression)").jsonPrimitive.content.toBooleanStrict().takeIf { it } }
+        awaitValue(what, timeout) {
+            evaluate("(() => { try { return Boolean($expression); } catch (e) { return false; } })()").jsonPrimitive.content.toBooleanStrict().takeIf { it }
+        }
     }
 
     /** Saves a PNG of the page to [file]. */

@@ -113,7 +113,7 @@ class ServeBrowserTest {
         service = serve(null, port).closedAfter()
         browser.await("the page to reconnect", expression = "rtcoord.snapshots === 2 && document.getElementById('connection').dataset.connected === 'true'")
 
-        val manager = runBlocking { tree.manager("$nameServer/manager.mgr") }
+        val manager = runBlocking { tree.manager(localisation.path("manager.mgr")) }
         runBlocking { manager.create("odo_localise") }
         val odo = localisation.path("odo_localise0.rtc")
         browser.await("odo_localise0 to appear", expression = "rtcoord.cy.getElementById(${js(odo)}).nonempty()")

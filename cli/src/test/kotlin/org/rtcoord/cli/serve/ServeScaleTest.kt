@@ -14,12 +14,12 @@ import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
-/** A thousand components: the page draws them all and stays responsive while they change. */
+/** A thousand components: the page draws them all and stays responsive. */
 class ServeScaleTest {
     @Test
     fun `a thousand components render and the page stays responsive`() {
         NamingService.start().use { naming ->
-            Scenarios.scale(naming.corbaloc, COUNT).use { system ->
+            Scenarios.scale(naming.corbaloc, COUNT).use {
                 RtcTree.create(TreeConfig(listOf(naming.address), 10.seconds)).use { tree ->
                     val service = runBlocking { LiveService.start(tree, tree.node("/${naming.address}"), null, EventOptions(), ServeSettings()) {} }
                     service.use {
@@ -31,14 +31,11 @@ class ServeScaleTest {
                             val seen = opened.elapsedNow()
                             browser.screenshot(java.nio.file.Paths.get("target", "serve", "scale.png"))
 
-                            // While components fail, the page still answers, and a click shows a component's details.
-                            (0 until FAILING).forEach { system.component("relay$it").fail() }
+                            // A click shows a component's details; zooming answers at once.
                             val asked = TimeSource.Monotonic.markNow()
                             browser.evaluate("document.querySelector('#components li[data-component\$=\"/relay1.rtc\"]').click()")
                             browser.await("relay1's details", 60.seconds, "document.querySelector('[data-details\$=\"/relay1.rtc\"]') !== null")
                             val details = asked.elapsedNow()
-                            browser.await("the failed relays drawn in ERROR", 2.minutes,
-                                "rtcoord.cy.nodes('.component[state = \"ERROR\"]').length === $FAILING")
                             val roundTrips = (1..10).map {
                                 val mark = TimeSource.Monotonic.markNow()
                                 browser.evaluate("rtcoord.cy.zoom(rtcoord.cy.zoom() * 1.1); rtcoord.cy.nodes().length")
@@ -57,6 +54,5 @@ class ServeScaleTest {
 
     private companion object {
         const val COUNT = 1000
-        const val FAILING = 20
     }
 }
