@@ -34,8 +34,12 @@ const cy = cytoscape({
   container: document.getElementById('graph'),
   wheelSensitivity: 0.3,
   minZoom: 0.05,
+  // A thousand components: draw at one device pixel, and skip labels too small to read (min-zoomed-font-size).
+  pixelRatio: 1,
+  textureOnViewport: true,
   style: [
-    { selector: 'node', style: { label: 'data(label)', 'font-size': 11, 'text-valign': 'center', 'text-halign': 'center', color: '#fff' } },
+    { selector: 'node', style: { label: 'data(label)', 'font-size': 11, 'text-valign': 'center', 'text-halign': 'center', color: '#fff',
+      'min-zoomed-font-size': 7 } },
     { selector: 'node.component', style: { shape: 'round-rectangle', width: 'label', height: 26, padding: 8, 'background-color': '#424242' } },
     { selector: 'node.component[state = "ACTIVE"]', style: { 'background-color': '#2e7d32' } },
     { selector: 'node.component[state = "INACTIVE"]', style: { 'background-color': '#1565c0' } },
@@ -50,7 +54,7 @@ const cy = cytoscape({
       'border-width': 1, 'border-style': 'dashed', color: '#455a64' } },
     { selector: 'node:selected', style: { 'border-width': 3, 'border-color': '#ffb300' } },
     { selector: 'edge', style: { width: 2, 'curve-style': 'bezier', 'line-color': '#546e7a', 'font-size': 9, color: '#37474f',
-      'text-background-color': '#fff', 'text-background-opacity': 0.8 } },
+      'text-background-color': '#fff', 'text-background-opacity': 0.8, 'min-zoomed-font-size': 7 } },
     { selector: 'edge.data', style: { 'target-arrow-shape': 'triangle', 'target-arrow-color': '#546e7a', label: 'data(label)' } },
     { selector: 'edge.service', style: { 'line-color': '#8d6e63', 'line-style': 'dotted' } },
     { selector: 'edge.hosts', style: { 'line-color': '#ce93d8', 'line-style': 'dashed', width: 1 } },
