@@ -16,7 +16,7 @@ import org.rtcoord.RtcPath
  */
 internal class ComponentNetwork(private val top: Node) {
     /** Every component below [top] once: under its naming context rather than under its manager. */
-    private val components: List<ComponentNode> = below(top).filter { it.snapshots.value != null }
+    val components: List<ComponentNode> = below(top).filter { it.snapshots.value != null }
         .sortedBy { component -> component.path.names.count { it.endsWith(".mgr") } }
         .fold(emptyList()) { kept, next -> if (kept.any { it.isSameComponent(next) }) kept else kept + next }
 

@@ -7,7 +7,7 @@ import org.rtcoord.LifeCycle
  * connection from out-port to in-port (service connections without direction). Ports the network
  * reaches outside itself are dashed boxes. Output is sorted, so the same system prints the same text.
  */
-internal class DotGraph(private val vertices: List<Vertex>, private val edges: List<Edge>) {
+internal class DotGraph(val vertices: List<Vertex>, val edges: List<Edge>) {
     /** A component ([state] known) or a port outside the network ([state] null). */
     data class Vertex(val id: String, val label: String, val state: LifeCycle?)
 

@@ -70,6 +70,7 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "del" to { DelCommand() },
     "watch" to { WatchCommand() },
     "graph" to { GraphCommand() },
+    "serve" to { ServeCommand() },
 )
 
 /**

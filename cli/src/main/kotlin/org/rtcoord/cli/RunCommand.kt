@@ -3,11 +3,15 @@ package org.rtcoord.cli
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.path
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
+import org.rtcoord.cli.serve.LiveService
+import org.rtcoord.cli.serve.ServeOptions
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
@@ -32,6 +36,8 @@ class RunCommand : TreeCommand("run") {
     private val arguments by argument("ARGS", help = "Arguments the script reads as args.").multiple()
     private val duration by option("--for", metavar = "DURATION", help = "Stop after this long, e.g. 30s or 5m.").duration()
     private val poll by option("--poll", metavar = "PERIOD", help = "Poll components at this period instead of observing them.").duration()
+    private val serve by option("--serve", help = "Serve a live view of the system and the coordinator (see rtcoord serve).").flag()
+    private val serving by ServeOptions(prefix = "serve-")
 
     override suspend fun execute() {
         val coordination = try {
@@ -43,7 +49,11 @@ class RunCommand : TreeCommand("run") {
         }
         val options = poll?.let { EventOptions(WatchMode.POLL, pollPeriod = it) }
         StopSignals().use { signals ->
-            val coordinator = Coordinator(tree, coordination, options) { echo("${now()} $it") }
+            var service: LiveService? = null
+            val coordinator = Coordinator(tree, coordination, options) { line ->
+                echo("${now()} $line")
+                service?.log("coordinator", line)
+            }
             // One line per component saying how it is watched (again when that changes), and one per manager that dies.
             tree.onWatching { event -> echo("${now()} ${event.path} ${event.what()}") }
             try {
@@ -54,8 +64,15 @@ class RunCommand : TreeCommand("run") {
             }
             confirm("${now()} coordinating:")
             coordination.description.forEach { confirm("  $it") }
+            if (serve) {
+                serving.settings().exposure()?.let { echo("rtcoord: warning: $it", err = true) }
+                val top = tree.nameServers.singleOrNull() ?: tree.root
+                service = LiveService.start(tree, top, coordinator, options ?: coordination.watching, serving.settings()) { echo("${now()} serve: $it") }
+                    .also { confirm("${now()} serving ${top.path} on ${it.url}") }
+            }
 
             val signal = signals.await(duration)
+            service?.close()
             // Detached while the ORB still works; after a signal, a second one ends the process at once.
             coordinator.close()
             // Events the machine watched for that no transition took in the mode it was in (RunningMachine.unconsumed).

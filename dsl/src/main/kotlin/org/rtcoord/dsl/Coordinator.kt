@@ -59,6 +59,14 @@ public class Coordinator(
     /** Every action that failed so far, in order: those that stopped a handler and the best efforts. */
     public val failedActions: List<FailedAction> get() = coordination.engine.failedActions.toList()
 
+    private val ruleActivities = coordination.rules.associateWith { RuleActivity(it.description) }
+
+    /** What each rule has done, in declaration order. */
+    public val rules: List<RuleActivity> = ruleActivities.values.toList()
+
+    /** What each supervisor has done, in declaration order; empty until [start]. */
+    public val supervision: List<SupervisorActivity> get() = supervisors.map { it.activity }
+
     /** The coordination's mode machines as they run, in declaration order. */
     public val machines: List<RunningMachine> = interpreters.map { it.running }
 
@@ -183,16 +191,19 @@ public class Coordinator(
         val reaction = Reaction(coordination.engine, event)
         if (!rule.guards.all { guard -> reaction.guard(event) }) return
         log("rule '${rule.description}' fired: ${describe(event)}")
-        run("rule '${rule.description}'") { reaction.handle { rule.handler(this, event) } }
+        val activity = ruleActivities.getValue(rule)
+        activity.fired(describe(event))
+        run("rule '${rule.description}'", activity::failed) { reaction.handle { rule.handler(this, event) } }
     }
 
-    private suspend fun run(what: String, block: suspend () -> Unit) {
+    private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {
         try {
             block()
         } catch (e: CancellationException) {
             throw e
         } catch (e: Exception) {
             failed(what, e)
+            failedAs(e.message ?: e.toString())
         }
     }
 

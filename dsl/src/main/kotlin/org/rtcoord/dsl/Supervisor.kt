@@ -74,6 +74,9 @@ internal class Supervisor(
     private val policy = TimeSource.Monotonic.markNow().let { start -> RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() } }
     @Volatile private var stopped = false
 
+    /** What it has done, for those who show it. */
+    val activity = SupervisorActivity(name, supervision.strategy.name)
+
     /** Resolves and watches the components, records what recovery needs, and starts handling failures. */
     suspend fun start() {
         lock.withLock {
@@ -86,6 +89,7 @@ internal class Supervisor(
             children.forEach { record(it, managers) }
             children.forEach { child -> child.node.snapshot().ports.filter { it.connectors.isNotEmpty() }.forEach { recordConnections(child, it.name) } }
         }
+        activity.children(children.map { it.toString() })
         log("$name: supervising ${children.joinToString()} (${supervision.strategy})")
         scope.launch {
             for (failure in failures) {
@@ -243,6 +247,7 @@ internal class Supervisor(
             is RestartPolicy.Decision.Restart -> {
                 val together = failed.keys.joinToString()
                 if (decision.wait.isPositive()) {
+                    activity.waiting(decision.wait)
                     log("$name: restarting $together in ${decision.wait} (consecutive restart ${decision.attempt})")
                     delay(decision.wait)
                 }
@@ -250,6 +255,7 @@ internal class Supervisor(
                 sequence.get().let { now -> failed.keys.forEach { covered[it] = now } }
                 if (failed.size > 1) log("$name: $together failed together: one restart")
                 lock.withLock { restart(failed.keys.toList()) }
+                activity.restarted(together, children.map { it.toString() })
             }
         }
     }
@@ -429,6 +435,7 @@ internal class Supervisor(
 
     private suspend fun giveUp(child: SupervisedChild, what: String, restarts: Int) {
         val escalation = Escalation(name, child.node.path.toString(), what, restarts, supervision.maxRestarts.period)
+        activity.escalated(escalation.reason)
         log("$name: escalation: ${escalation.reason}; the supervisor stops")
         close()
         escalate(escalation)

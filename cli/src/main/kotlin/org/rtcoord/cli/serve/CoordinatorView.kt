@@ -1,0 +1,55 @@
+package org.rtcoord.cli.serve
+
+import org.rtcoord.dsl.Coordinator
+
+/**
+ * What the page shows of a running [Coordinator]: each rule with its last firing and failures, each
+ * mode machine's active mode path and recent history, each supervisor's children, restarts and
+ * back-off. Read from the coordinator's observable state, never from its log.
+ */
+internal class CoordinatorView(private val coordinator: Coordinator) {
+    /** The view as JSON-ready maps. */
+    fun toJson(): Map<String, Any?> = mapOf(
+        "failures" to coordinator.failures,
+        "rules" to coordinator.rules.map { rule ->
+            val status = rule.status.value
+            mapOf(
+                "description" to rule.description,
+                "firings" to status.firings,
+                "lastFired" to status.lastFired?.toString(),
+                "lastEvent" to status.lastEvent,
+                "failures" to status.failures,
+                "lastFailure" to status.lastFailure,
+            )
+        },
+        "machines" to coordinator.machines.map { machine ->
+            mapOf(
+                "name" to machine.name,
+                "mode" to machine.mode.value,
+                "unconsumed" to machine.unconsumed,
+                "history" to machine.history.value.takeLast(HISTORY_SHOWN).map { move ->
+                    mapOf("from" to move.from, "to" to move.to, "trigger" to move.trigger, "at" to move.at.toString())
+                },
+            )
+        },
+        "supervisors" to coordinator.supervision.map { supervisor ->
+            val status = supervisor.status.value
+            mapOf(
+                "name" to supervisor.name,
+                "strategy" to supervisor.strategy,
+                "children" to status.children,
+                "restarts" to status.restarts,
+                "lastRestart" to status.lastRestart?.toString(),
+                "lastRestarted" to status.lastRestarted,
+                "backoffMillis" to status.backoff?.inWholeMilliseconds,
+                "waitingUntil" to status.waitingUntil?.toString(),
+                "escalation" to status.escalation,
+            )
+        },
+    )
+
+    private companion object {
+        /** Transitions the page lists per machine: the latest ones. */
+        const val HISTORY_SHOWN = 50
+    }
+}

@@ -1,0 +1,89 @@
+package org.rtcoord.cli.serve
+
+import org.rtcoord.ComponentNode
+import org.rtcoord.DirectoryNode
+import org.rtcoord.ManagerNode
+import org.rtcoord.Node
+import org.rtcoord.ZombieNode
+import org.rtcoord.cli.ComponentNetwork
+import org.rtcoord.cli.overallState
+
+/**
+ * The system below [top] as the page draws it, from what the tree holds: naming contexts and name
+ * servers as boxes around what they bind, components with their states, data and service connections
+ * (from [ComponentNetwork]), managers with the components they host, zombies, and directories that
+ * could not be listed. Every id is a whole path.
+ */
+internal class NetworkView(private val top: Node) {
+    /** Components below [top] the tree has not read yet: the view leaves them out until they are. */
+    fun unread(): List<ComponentNode> = walk(top).filterIsInstance<ComponentNode>().filter { it.snapshots.value == null }
+
+    /** The view as JSON-ready maps. */
+    suspend fun toJson(): Map<String, Any?> {
+        val network = ComponentNetwork(top)
+        val graph = network.graph()
+        val nodes = walk(top)
+        val managers = nodes.filterIsInstance<ManagerNode>()
+        val directories = nodes.filterIsInstance<DirectoryNode>().filter { it !is ManagerNode }
+        val components = network.components.map { component ->
+            val snapshot = component.snapshots.value!!
+            mapOf(
+                "id" to component.path.toString(),
+                "name" to snapshot.instanceName,
+                "type" to snapshot.typeName,
+                "parent" to component.path.parent?.toString(),
+                "state" to snapshot.overallState.name,
+                "hostedBy" to managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
+            )
+        }
+        val known = components.map { it["id"] }.toSet()
+        val vertices = graph.vertices.associate { vertex -> vertex.id to wholePath(vertex.id) }
+        return mapOf(
+            "top" to top.path.toString(),
+            "contexts" to directories.map { directory ->
+                mapOf(
+                    "id" to directory.path.toString(),
+                    "name" to if (directory.path.names.isEmpty()) directory.path.toString() else directory.name,
+                    "parent" to directory.path.parent?.takeIf { parent -> directories.any { it.path == parent } }?.toString(),
+                    "reachable" to (directory.listed.value != null),
+                )
+            },
+            "components" to components,
+            "external" to graph.vertices.filter { it.state == null }.map { mapOf("id" to vertices.getValue(it.id), "name" to it.label) },
+            "managers" to managers.map { manager ->
+                mapOf(
+                    "id" to manager.path.toString(),
+                    "name" to manager.name,
+                    // A slave is drawn in the naming context of its master.
+                    "parent" to generateSequence(manager.path.parent) { it.parent }.firstOrNull { above -> directories.any { it.path == above } }?.toString(),
+                    "hosts" to components.filter { it["hostedBy"] == manager.path.toString() }.map { it["id"] },
+                )
+            },
+            "zombies" to nodes.filterIsInstance<ZombieNode>().map { zombie ->
+                mapOf("id" to zombie.path.toString(), "name" to zombie.name, "parent" to zombie.path.parent?.toString(), "reason" to zombie.cause.reason)
+            },
+            "connections" to graph.edges.map { edge ->
+                mapOf(
+                    "source" to vertices.getValue(edge.from),
+                    "target" to vertices.getValue(edge.to),
+                    "sourcePort" to edge.tail,
+                    "targetPort" to edge.head,
+                    "label" to edge.label,
+                    "kind" to if (edge.directed) "data" else "service",
+                )
+            }.filter { it["source"] in known || it["target"] in known },
+        )
+    }
+
+    /** A vertex id of [ComponentNetwork]: a path below [top], or already whole. */
+    private fun wholePath(id: String): String = if (id.startsWith("/")) id else "${top.path.toString().trimEnd('/')}/$id"
+
+    private fun hosts(manager: ManagerNode, component: ComponentNode): Boolean =
+        manager.listed.value.orEmpty().any { it is ComponentNode && it.isSameComponent(component) }
+
+    /** [node] and everything the tree has listed below it. */
+    private fun walk(node: Node): List<Node> = listOf(node) + when (node) {
+        is DirectoryNode -> node.listed.value.orEmpty().flatMap(::walk)
+        else -> emptyList()
+    }
+}

@@ -1,0 +1,43 @@
+package org.rtcoord.dsl
+
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.update
+import java.time.Instant
+
+/**
+ * What one rule of a running [Coordinator] has done: how often it fired, when last, and how its
+ * handler failed. Safe to read from any thread; each change is a new [Status].
+ */
+public class RuleActivity internal constructor(
+    /** The rule as the script declared it, `component laser0.rtc: state ERROR`. */
+    public val description: String,
+) {
+    /** A rule's record at one moment. */
+    public data class Status(
+        /** How often its handler ran. */
+        val firings: Int = 0,
+        /** When its handler last started, null before the first firing. */
+        val lastFired: Instant? = null,
+        /** What fired it last: the event's type and source. */
+        val lastEvent: String? = null,
+        /** How many handler runs failed. */
+        val failures: Int = 0,
+        /** The last failure's message. */
+        val lastFailure: String? = null,
+    )
+
+    private val current = MutableStateFlow(Status())
+
+    /** The rule's record so far. */
+    public val status: StateFlow<Status> = current.asStateFlow()
+
+    internal fun fired(event: String) {
+        current.update { it.copy(firings = it.firings + 1, lastFired = Instant.now(), lastEvent = event) }
+    }
+
+    internal fun failed(message: String) {
+        current.update { it.copy(failures = it.failures + 1, lastFailure = message) }
+    }
+}
