@@ -69,6 +69,8 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "del" to { DelCommand() },
     "watch" to { WatchCommand() },
     "graph" to { GraphCommand() },
+    "help" to { HelpCommand() },
+    "completion" to { CompletionCommand() },
 )
 
 /**

@@ -88,9 +88,15 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     private fun thrownMessage(error: Throwable): String = "${error.javaClass.simpleName}: ${error.message ?: "(no message)"}"
 
     public companion object {
-        /** `$XDG_CACHE_HOME/rtcoord/scripts`, or `~/.cache/rtcoord/scripts`. */
-        public fun defaultCacheDirectory(): Path =
-            Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord", "scripts")
+        /**
+         * `scripts` in the cache the launcher uses too: `$RTCOORD_CACHE`, else `$XDG_CACHE_HOME/rtcoord`, else
+         * `~/.cache/rtcoord`.
+         */
+        public fun defaultCacheDirectory(): Path {
+            val cache = System.getenv("RTCOORD_CACHE")?.takeIf { it.isNotEmpty() }?.let { Paths.get(it) }
+                ?: Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord")
+            return cache.resolve("scripts")
+        }
 
         private fun cacheFile(directory: Path, source: SourceCode): File {
             val digest = MessageDigest.getInstance("SHA-256")
