@@ -71,6 +71,8 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "watch" to { WatchCommand() },
     "graph" to { GraphCommand() },
     "serve" to { ServeCommand() },
+    "help" to { HelpCommand() },
+    "completion" to { CompletionCommand() },
 )
 
 /**

@@ -110,24 +110,25 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
         }
     }
 
-    private companion object {
+    internal companion object {
         /**
          * Whether Mordant prints [text] as it is: it expands tabs and interprets escape sequences, and
          * leaves text without control characters (newlines apart) unchanged.
          */
-        fun printsAsIs(text: String): Boolean = text.none { it.isISOControl() && it != '\n' }
+        private fun printsAsIs(text: String): Boolean = text.none { it.isISOControl() && it != '\n' }
 
-        val NAME_SERVER_VARIABLES = listOf("RTCOORD_NAMESERVERS", "RTCTREE_NAMESERVERS")
-        val CWD_VARIABLES = listOf("RTCOORD_CWD", "RTCSH_CWD")
+        private val NAME_SERVER_VARIABLES = listOf("RTCOORD_NAMESERVERS", "RTCTREE_NAMESERVERS")
+        private val CWD_VARIABLES = listOf("RTCOORD_CWD", "RTCSH_CWD")
 
         /** [address] if it is `host`, `host:port` or a name server's `corbaloc:`; else [invalid] with why. */
-        inline fun nameServer(address: String, invalid: (String) -> Nothing): String = try {
+        private inline fun nameServer(address: String, invalid: (String) -> Nothing): String = try {
             RtcPath.nameServer(address)
             address
         } catch (e: RtcException) {
             invalid(e.message ?: "'$address' is not HOST[:PORT]")
         }
 
+        /** The project version the jar was built as. */
         fun version(): String = Rtcoord::class.java.getResourceAsStream("version.properties")
             ?.use { Properties().apply { load(it) }.getProperty("version") } ?: "unknown"
     }

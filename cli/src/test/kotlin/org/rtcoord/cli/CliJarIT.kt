@@ -125,7 +125,17 @@ class CliJarIT {
         val version = run(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory))
         assertEquals(0, version.status, version.stderr)
         assertEquals("rtcoord: building (first run)...\n", version.stderr)
-        assertEquals("-B -ntp -q -Dstyle.color=never install -DskipTests -pl cli -am\n", Files.readString(directory.resolve("maven-called")))
+        assertEquals("-B -ntp -q -Dstyle.color=never install -DskipTests -Drtcoord.dist.skip -pl cli -am\n", Files.readString(directory.resolve("maven-called")))
+    }
+
+    @Test
+    fun `a link to the launcher from elsewhere runs the checkout it points into`(@TempDir directory: Path) {
+        val tree = launcherTree(directory)
+        val link = Files.createDirectories(directory.resolve("home/bin")).resolve("rtcoord")
+        Files.createSymbolicLink(link, tree.resolve("rtcoord"))
+        val version = run(listOf(link.toString(), "--version"), fakeMaven(directory))
+        assertEquals(Run(0, "rtcoord ${version()}\n", "", version.millis), version)
+        assertTrue(Files.notExists(directory.resolve("maven-called")))
     }
 
     @Test
@@ -173,6 +183,8 @@ class CliJarIT {
     private fun launcherTree(directory: Path): Path {
         val tree = Files.createDirectories(directory.resolve("project"))
         Files.copy(root.resolve("rtcoord"), tree.resolve("rtcoord"))
+        val launcher = Files.createDirectories(tree.resolve("cli/src/dist/bin")).resolve("rtcoord")
+        Files.copy(root.resolve("cli/src/dist/bin/rtcoord"), launcher)
         Files.writeString(tree.resolve("pom.xml"), "")
         listOf("idl", "src-test-fixtures", "core", "dsl", "examples").forEach { Files.createDirectories(tree.resolve(it)) }
         Files.writeString(tree.resolve("examples/localisation.coord.kts"), "")

@@ -88,7 +88,7 @@ class ScriptCommandsTest {
         val unreachable = script("unreachable.coord.kts", "modes(\"gyro\") {\n    initial(\"up\")\n    mode(\"up\")\n    mode(\"down\")\n}\n")
         val result = runRtcoord("check", unreachable.toString())
         assertEquals(1, result.statusCode)
-        assertEquals("$unreachable:1:1: InvalidMachineException: machine 'gyro': mode 'gyro/down' is unreachable: no transition leads to it or into it\n", result.stderr)
+        assertEquals("$unreachable:1:1: machine 'gyro': mode 'gyro/down' is unreachable: no transition leads to it or into it\n", result.stderr)
     }
 
     @Test

@@ -154,7 +154,7 @@ class MachineValidationTest {
         val failure = assertThrows(ScriptFailure::class.java) { runBlocking { ScriptHost(directory.resolve("cache")).load(script) } }
         assertEquals(
             listOf(
-                "$script:3:1: InvalidMachineException: machine 'system': mode 'system/nominal': transition on laser0.rtc enters ERROR " +
+                "$script:3:1: machine 'system': mode 'system/nominal': transition on laser0.rtc enters ERROR " +
                     "goes to unknown mode 'degaded' (modes: nominal, degraded)",
             ),
             failure.problems,

@@ -62,12 +62,12 @@ class ScriptHostTest {
         )
         val pattern = script("pattern.coord.kts", "supervise(component(\"laser0.rtc\"), component(\"*_localise0\"))")
         assertEquals(
-            listOf("$pattern:1:1: IllegalArgumentException: cannot supervise '*_localise0': it is a pattern; name each component"),
+            listOf("$pattern:1:1: cannot supervise '*_localise0': it is a pattern; name each component"),
             assertThrows(ScriptFailure::class.java) { runBlocking { host.load(pattern) } }.problems,
         )
         val stranger = script("stranger.coord.kts", "supervise(component(\"laser0.rtc\")) { child(\"gyro0\", restart = transient) }")
         assertEquals(
-            listOf("$stranger:1:1: IllegalArgumentException: 'gyro0' is not supervised here (supervised: laser0.rtc)"),
+            listOf("$stranger:1:1: 'gyro0' is not supervised here (supervised: laser0.rtc)"),
             assertThrows(ScriptFailure::class.java) { runBlocking { host.load(stranger) } }.problems,
         )
     }
@@ -80,6 +80,26 @@ class ScriptHostTest {
         assertTrue(errors.single().startsWith("$file:2:5: "), errors.single())
         assertTrue(errors.single().contains("resett"), errors.single())
         assertEquals(errors, assertThrows(ScriptFailure::class.java) { runBlocking { host.load(file) } }.problems)
+    }
+
+    @Test
+    fun `the type errors newcomers meet first say what to write`(): Unit = runBlocking {
+        val timer = script("timer.coord.kts", "every(5) { log(\"tick\") }")
+        assertEquals(
+            listOf("$timer:1:7: Argument type mismatch: actual type is 'Int', but 'Duration' was expected (hint: a duration has a unit: 5.seconds, 500.milliseconds or 2.minutes)"),
+            host.check(timer),
+        )
+        val intensity = script("intensity.coord.kts", "supervise(component(\"odometry0\")) {\n    maxRestarts = 3\n}")
+        assertEquals(
+            listOf("$intensity:2:17: Assignment type mismatch: actual type is 'Int', but 'RestartIntensity' was expected (hint: write how many restarts within how long: maxRestarts = 3 within 60.seconds)"),
+            host.check(intensity),
+        )
+    }
+
+    @Test
+    fun `a bad name in a script is its line and the reason, without Java class names`(): Unit = runBlocking {
+        val file = script("port.coord.kts", "val odometry = component(\"odometry0\")\nval gyro = port(\"gyro0.rtc\")\n")
+        assertEquals(listOf("$file:2:1: not a port: 'gyro0.rtc' (write component:port)"), assertThrows(ScriptFailure::class.java) { runBlocking { host.load(file) } }.problems)
     }
 
     @Test

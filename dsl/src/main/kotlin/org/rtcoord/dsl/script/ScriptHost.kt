@@ -1,7 +1,9 @@
 package org.rtcoord.dsl.script
 
+import org.rtcoord.RtcException
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
+import org.rtcoord.dsl.InvalidMachineException
 import java.io.File
 import java.nio.file.Files
 import java.nio.file.Path
@@ -77,7 +79,7 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     private fun errors(script: Path, reports: List<ScriptDiagnostic>): List<String> =
         reports.filter { it.severity >= ScriptDiagnostic.Severity.ERROR }.map { report ->
             val start = report.location?.start
-            "${report.sourcePath ?: script}:${start?.line ?: 1}:${start?.col ?: 1}: ${report.exception?.let { thrownMessage(it) } ?: report.message}"
+            "${report.sourcePath ?: script}:${start?.line ?: 1}:${start?.col ?: 1}: ${report.exception?.let { thrownMessage(it) } ?: CompileHints.withHint(report.message)}"
         }.ifEmpty { listOf("$script:1:1: compilation failed") }
 
     private fun thrown(script: Path, error: Throwable): String {
@@ -85,12 +87,26 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
         return "$script:${frame?.lineNumber ?: 1}:1: ${thrownMessage(error)}"
     }
 
-    private fun thrownMessage(error: Throwable): String = "${error.javaClass.simpleName}: ${error.message ?: "(no message)"}"
+    /**
+     * What [error] says to a script's author: the message alone when the DSL or core threw it on purpose
+     * (a bad name, an invalid machine: `require` and `check` included); a programming error's class too.
+     */
+    private fun thrownMessage(error: Throwable): String {
+        val message = error.message
+        val meant = error is IllegalArgumentException || error is IllegalStateException || error is RtcException || error is InvalidMachineException
+        return if (meant && message != null) message else "${error.javaClass.simpleName}: ${message ?: "(no message)"}"
+    }
 
     public companion object {
-        /** `$XDG_CACHE_HOME/rtcoord/scripts`, or `~/.cache/rtcoord/scripts`. */
-        public fun defaultCacheDirectory(): Path =
-            Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord", "scripts")
+        /**
+         * `scripts` in the cache the launcher uses too: `$RTCOORD_CACHE`, else `$XDG_CACHE_HOME/rtcoord`, else
+         * `~/.cache/rtcoord`.
+         */
+        public fun defaultCacheDirectory(): Path {
+            val cache = System.getenv("RTCOORD_CACHE")?.takeIf { it.isNotEmpty() }?.let { Paths.get(it) }
+                ?: Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord")
+            return cache.resolve("scripts")
+        }
 
         private fun cacheFile(directory: Path, source: SourceCode): File {
             val digest = MessageDigest.getInstance("SHA-256")

@@ -1,0 +1,85 @@
+package org.rtcoord.cli
+
+import org.junit.jupiter.api.AfterAll
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.BeforeAll
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.TestInstance
+import org.junit.jupiter.api.io.TempDir
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
+import java.util.concurrent.TimeUnit
+
+/**
+ * The distribution archive as a user gets it: unpacked in a folder of its own, far from the source tree
+ * and the build, and run with nothing but a JDK on the PATH.
+ */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class DistributionIT {
+    private val localisation = Localisation()
+    private val jar: Path = Paths.get(System.getProperty("rtcoord.cli.jar"))
+    private val version = jar.fileName.toString().removePrefix("rtcoord-cli-").removeSuffix(".jar")
+
+    private lateinit var directory: Path
+    private lateinit var home: Path
+
+    @BeforeAll
+    fun unpack(@TempDir unpacked: Path) {
+        directory = unpacked
+        val archive = jar.resolveSibling("rtcoord-$version.tar.gz")
+        assertTrue(Files.isRegularFile(archive), "$archive was built")
+        assertEquals(0, run(listOf("tar", "-xzf", archive.toString(), "-C", directory.toString())).status)
+        home = directory.resolve("rtcoord-$version")
+    }
+
+    @AfterAll
+    fun stop() = localisation.close()
+
+    /** What a process printed and how it ended. */
+    data class Run(val status: Int, val stdout: String, val stderr: String)
+
+    private fun run(command: List<String>): Run {
+        val builder = ProcessBuilder(command)
+        builder.environment().remove("RTCTREE_NAMESERVERS")
+        builder.environment().remove("RTCOORD_NAMESERVERS")
+        builder.environment()["RTCOORD_CACHE"] = directory.resolve("cache").toString()
+        val process = builder.start()
+        val stdout = process.inputStream.bufferedReader().readText()
+        val stderr = process.errorStream.bufferedReader().readText()
+        assertTrue(process.waitFor(60, TimeUnit.SECONDS), "${command.joinToString(" ")} did not end")
+        return Run(process.exitValue(), stdout, stderr)
+    }
+
+    @Test
+    fun `bin rtcoord runs from the unpacked archive and lists the system as the command objects do`() {
+        assertEquals(Run(0, "rtcoord $version\n", ""), run(listOf(home.resolve("bin/rtcoord").toString(), "--version")))
+        val expected = runRtcoord("ls", "-l", localisation.host).ok()
+        val rtcoord = home.resolve("bin/rtcoord").toString()
+        assertEquals(Run(0, expected, ""), run(listOf(rtcoord, "ls", "-l", localisation.host)))
+        assertEquals(Run(0, expected, ""), run(listOf(rtcoord, "ls", "-l", localisation.host)), "again, with the class archive mapped")
+    }
+
+    @Test
+    fun `a link to bin rtcoord from elsewhere works`() {
+        val link = Files.createDirectories(directory.resolve("user/bin")).resolve("rtcoord")
+        Files.createSymbolicLink(link, home.resolve("bin/rtcoord"))
+        assertEquals(Run(0, "rtcoord $version\n", ""), run(listOf(link.toString(), "--version")))
+    }
+
+    @Test
+    fun `the archive carries the man page, completions and examples, and no test library`() {
+        val man = Files.readString(home.resolve("share/man/man1/rtcoord.1"))
+        assertTrue(man.startsWith(".TH RTCOORD 1 "), man.take(80))
+        for (command in SUBCOMMANDS.keys) assertTrue(""".SS "rtcoord $command"""" in man, "the man page has $command")
+        assertTrue(""".SS "rtcoord conf set"""" in man, "and subcommands")
+        assertEquals(runRtcoord("completion", "bash").ok(), Files.readString(home.resolve("share/bash-completion/completions/rtcoord")))
+        assertEquals(runRtcoord("completion", "zsh").ok(), Files.readString(home.resolve("share/zsh/site-functions/_rtcoord")))
+        assertTrue(Files.isRegularFile(home.resolve("share/rtcoord/examples/localisation.coord.kts")))
+        assertTrue(Files.isRegularFile(home.resolve("share/rtcoord/examples/rtcoord-coordinator.service")))
+        val libraries = Files.list(home.resolve("lib")).use { files -> files.map { it.fileName.toString() }.toList() }
+        assertTrue("rtcoord-cli.jar" in libraries, libraries.toString())
+        assertEquals(emptyList<String>(), libraries.filter { it.startsWith("junit") || it.startsWith("opentest4j") || it.startsWith("apiguardian") })
+    }
+}
