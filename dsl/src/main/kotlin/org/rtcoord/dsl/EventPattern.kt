@@ -71,9 +71,13 @@ internal object EventPatterns {
         ) { true }
     }
 
-    fun configSetActivated(target: ComponentRef) =
-        // A write leaves no set active until one is activated again (OpenRTM-aist's ConfigAdmin): only a set becoming active counts.
-        EventPattern("$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java) { it.new != null }
+    fun configSetActivated(target: ComponentRef): EventPattern<ConfigurationSetActivated> {
+        val active = ActiveSetSwitch()
+        return EventPattern(
+            "$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java,
+            watched = ConfigurationSetActivated::class.java, translate = active::switchOf, prepare = active::prepare,
+        ) { true }
+    }
 
     fun rateChanged(target: ComponentRef) = EventPattern("$target rate changes", Target.Component(target), ContextRateChanged::class.java) { true }
 

@@ -52,8 +52,9 @@ public class ComponentTriggers internal constructor(
         add(EventPatterns.configParam(target, name)) { handler(it.old, it.new) }
 
     /**
-     * When a configuration set becomes active: `configSetActivated { old, new -> ... }` with the sets' ids;
-     * [old] is null when none was active (as after a write, until a set is activated again).
+     * When another configuration set becomes active: `configSetActivated { old, new -> ... }` with the sets'
+     * ids. A write that leaves no set active until the same set is activated again is no switch; [old]
+     * is null only when no set was ever seen active.
      */
     public fun configSetActivated(handler: suspend Reaction.(old: String?, new: String) -> Unit): Unit =
         add(EventPatterns.configSetActivated(target)) { handler(it.old, checkNotNull(it.new)) }

@@ -1,0 +1,37 @@
+package org.rtcoord.dsl
+
+import org.rtcoord.ComponentNode
+import org.rtcoord.ConfigurationSetActivated
+import org.rtcoord.Node
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import java.util.concurrent.ConcurrentHashMap
+
+/**
+ * Follows which configuration set is active in each component watched, as a coordinator means it: a
+ * switch from one set to another. OpenRTM-aist's ConfigAdmin leaves no set active after every write
+ * until a set is activated again, so a write shows as `default -> none -> default`: that is no switch,
+ * and `default -> none -> precise` is one, from `default`.
+ */
+internal class ActiveSetSwitch {
+    /** The set last seen active, by component path. */
+    private val seen = ConcurrentHashMap<String, String>()
+
+    /** Reads [node]'s active set now, so that its first switch is measured from it. */
+    suspend fun prepare(node: Node) {
+        if (node !is ComponentNode) return
+        try {
+            node.configuration().activeSet?.let { seen[node.path.toString()] = it }
+        } catch (e: RtcException) {
+            // Measured from the first event instead.
+        }
+    }
+
+    /** [event] as a switch from the set last active; null when no set became active or the same one did again. */
+    fun switchOf(event: RtcEvent): ConfigurationSetActivated? {
+        if (event !is ConfigurationSetActivated) return null
+        val now = event.new ?: return null
+        val before = seen.put(event.source.path.toString(), now) ?: event.old
+        return if (before != now) ConfigurationSetActivated(event.source, before, now) else null
+    }
+}
