@@ -15,7 +15,8 @@ supervise(component("odometry0.rtc"), component("laser0.rtc"), component("laser_
         log("giving up: ${escalation.reason}")
         val laserLocaliser = component("laser_localise0.rtc")
         attempt { laserLocaliser.disconnectAll() }
-        laserLocaliser.deactivate()
+        // rest-for-one has left it stopped already when the laser could not be started.
+        if (laserLocaliser.state() == ACTIVE) laserLocaliser.deactivate()
         if (!escalation.component.endsWith("/laser0.rtc")) return@onEscalation
         log("the laser cannot be restarted: localising from odometry and the gyro")
         val localiser = manager().create("odo_localise")
