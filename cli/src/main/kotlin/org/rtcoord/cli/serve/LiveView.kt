@@ -24,6 +24,9 @@ import org.rtcoord.ContextRunningChanged
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.ManagerComponentChanged
+import org.rtcoord.ManagerDied
+import org.rtcoord.ManagerReturned
+import org.rtcoord.WatchMethodChanged
 import org.rtcoord.Node
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
@@ -172,8 +175,8 @@ internal class LiveView(
             is StateChanged, is ContextRunningChanged, is ContextRateChanged, is ContextAttachmentChanged, is ComponentFinalized -> "state"
             is PortConnected, is PortDisconnected -> "port"
             is ParameterChanged, is ConfigurationSetActivated, is ConfigurationSetAdded, is ConfigurationSetRemoved -> "configuration"
-            is HeartbeatLost, is BecameZombie, is Recovered -> "liveness"
-            is ManagerComponentChanged -> "manager"
+            is HeartbeatLost, is BecameZombie, is Recovered, is WatchMethodChanged -> "liveness"
+            is ManagerComponentChanged, is ManagerDied, is ManagerReturned -> "manager"
             is NodeAppeared, is NodeVanished -> "structure"
         }
     }
