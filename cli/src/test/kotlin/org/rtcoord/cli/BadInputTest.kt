@@ -192,7 +192,7 @@ class BadInputTest {
             Row("a script with a type error", run(type),
                 "rtcoord: $type:1:31: Argument type mismatch: actual type is 'String', but 'LifeCycle' was expected."),
             Row("a script calling what does not exist", run(unresolved), "rtcoord: $unresolved:2:5: Unresolved reference 'resett'."),
-            Row("a script that throws at start", run(throwing), "rtcoord: $throwing:2:1: IllegalStateException: no map loaded"),
+            Row("a script that throws at start", run(throwing), "rtcoord: $throwing:2:1: no map loaded"),
         )
     }
 
@@ -236,7 +236,7 @@ class BadInputTest {
         try {
             val log = runRtcoord("-n", ns, "run", "--for", "3s", handler).ok().lines()
             val created = log.single { "created " in it }.substringAfter("created ")
-            val failure = log.single { "failed:" in it }
+            val failure = log.single { "timer after 0s failed:" in it }
             assertTrue(
                 failure.endsWith(
                     "timer after 0s failed: ${localisation.path("gyro0.rtc:gyro")}: connect rejected: incompatible data types: " +
