@@ -103,7 +103,7 @@ class CliJarIT {
             printed += generateSequence { stdout.poll() }
             Run(process.exitValue(), printed.joinToString("\n"), stderr.get(), 0)
         }
-        val unclean = outcomes.filter { it.status != 0 || it.stderr.isNotEmpty() || it.stdout.lines().none { line -> line.endsWith("stopped by SIGTERM; 0 handler failures") } }
+        val unclean = outcomes.filter { it.status != 0 || it.stderr.isNotEmpty() || it.stdout.lines().none { line -> line.endsWith("stopped by SIGTERM; 0 handler failures; 0 failed actions") } }
         assertEquals(emptyList<Run>(), unclean, "of $SIGTERM_ROUNDS runs stopped by SIGTERM")
         assertEquals(emptySet<String>(), localisation.system.component("gyro0").observerIds)
     }
