@@ -74,7 +74,8 @@ class EventsTest {
         node.addConfigurationSet("spare", mapOf("fail" to "7"))
         assertEquals(ConfigurationSetAdded(node, "spare"), recorder.next<ConfigurationSetAdded>())
         node.activateConfigurationSet("spare")
-        assertEquals(ConfigurationSetActivated(node, "default", "spare"), recorder.next<ConfigurationSetActivated>())
+        // Adding a set leaves none active until default is activated again (OpenRTM-aist's ConfigAdmin): skip that passing state.
+        assertEquals(ConfigurationSetActivated(node, "default", "spare"), recorder.next<ConfigurationSetActivated> { it.old != null && it.new != null })
         node.setParameter("fail", "3")
         assertEquals(ParameterChanged(node, "spare", "fail", "7", "3"), recorder.next<ParameterChanged>())
         node.activateConfigurationSet("default")
