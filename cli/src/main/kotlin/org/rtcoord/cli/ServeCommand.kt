@@ -5,13 +5,10 @@ import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.default
 import com.github.ajalt.clikt.parameters.groups.provideDelegate
 import com.github.ajalt.clikt.parameters.options.option
-import kotlinx.coroutines.CompletableDeferred
-import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.EventOptions
 import org.rtcoord.WatchMode
 import org.rtcoord.cli.serve.LiveService
 import org.rtcoord.cli.serve.ServeOptions
-import kotlin.time.Duration
 
 /** `rtcoord serve`: the system as a live page in a browser. */
 class ServeCommand : TreeCommand("serve") {
@@ -41,17 +38,13 @@ class ServeCommand : TreeCommand("serve") {
         val top = if (everything) tree.nameServers.singleOrNull() ?: tree.root else node(path)
         serving.settings().exposure()?.let { echo("rtcoord: warning: $it", err = true) }
         val events = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
-        val stopped = CompletableDeferred<Unit>()
-        // Ctrl-C: detach the observers while the ORB still works, as watch does.
-        val hook = Thread {
-            stopped.complete(Unit)
+        StopSignals().use { signals ->
+            LiveService.start(tree, top, null, events, serving.settings()) { echo("serve: $it") }.use { service ->
+                confirm("serving ${top.path} on ${service.url}")
+                signals.await(duration)
+            }
+            // Detaches the observers while the ORB still works, as watch does.
             tree.close()
         }
-        LiveService.start(tree, top, null, events, serving.settings()) { echo("serve: $it") }.use { service ->
-            confirm("serving ${top.path} on ${service.url}")
-            Runtime.getRuntime().addShutdownHook(hook)
-            withTimeoutOrNull(duration ?: Duration.INFINITE) { stopped.await() }
-        }
-        runCatching { Runtime.getRuntime().removeShutdownHook(hook) }
     }
 }
