@@ -5,9 +5,12 @@ import RTM.Manager
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.orFail
 import org.rtcoord.internal.toMap
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
 
 /**
  * An OpenRTM manager daemon. Its children are its slave managers and the components it hosts itself
@@ -20,7 +23,7 @@ public class ManagerNode internal constructor(
     core: TreeCore,
     internal val ref: Manager,
     private val namingParent: NamingDirectory?,
-    /** The master this slave was listed under, if any: creation goes through it when this slave is gone. */
+    /** The master this slave was listed under, if any. */
     private val master: ManagerNode? = null,
 ) : DirectoryNode(path, core) {
     private val subject: String get() = path.toString()
@@ -73,25 +76,12 @@ public class ManagerNode internal constructor(
      * that context, else below the manager. The tree learns of it without a full re-read.
      *
      * The manager decides whether it can: it may load a module for the type, and a master places the
-     * component in one of its slaves or starts one. When the manager creates none, the error names it
-     * with its factories and loadable modules. A slave whose process is gone hands the request to its
-     * master, which places the component elsewhere.
+     * component in one of its slaves (a dead one is skipped) or starts one. When the manager creates
+     * none, the error names it with its factories and loadable modules. A name still held by a component
+     * that exited is free once its manager has cleaned it up, which this waits for.
      */
     public suspend fun create(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): ComponentNode {
-        val viaMaster = master ?: return createHere(type, instanceName, options)
-        return try {
-            createHere(type, instanceName, options)
-        } catch (e: UnreachableException) {
-            // Only when the request cannot have reached the slave: sending it on cannot create twice.
-            if (e.subject != subject || (e.cause !is org.omg.CORBA.TRANSIENT && e.cause !is org.omg.CORBA.OBJECT_NOT_EXIST)) throw e
-            viaMaster.create(type, instanceName, options)
-        }
-    }
-
-    private suspend fun createHere(type: String, instanceName: String?, options: Map<String, String>): ComponentNode {
-        if (instanceName != null && instanceName in hostedInstanceNames()) {
-            throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
-        }
+        if (instanceName != null) awaitNameFree(type, instanceName)
         val settings = buildList {
             instanceName?.let { add("instance_name=$it") }
             options.filterKeys { it != "manager_name" }.forEach { (key, value) -> add("$key=$value") }
@@ -108,6 +98,26 @@ public class ManagerNode internal constructor(
         return relist().filterIsInstance<ComponentNode>().firstOrNull { it.component === component }
             ?: findBelowSlaves(component)
             ?: ComponentNode(path.child(name), core, component)
+    }
+
+    /**
+     * Refuses [instanceName] if a live component holds it; waits while only an exited one does (its
+     * manager still lists it until its next clean-up, and would hand back the dead component).
+     */
+    private suspend fun awaitNameFree(type: String, instanceName: String) {
+        val deadline = TimeSource.Monotonic.markNow() + core.remote.defaultDeadline
+        while (instanceName in hostedInstanceNames()) {
+            if (hostOf(instanceName) != null) {
+                throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
+            }
+            if (deadline.hasPassedNow()) {
+                throw TimedOutException(
+                    subject, "create '$type' (the name '$instanceName' is still held by a component that exited)",
+                    core.remote.defaultDeadline.inWholeMilliseconds,
+                )
+            }
+            delay(20.milliseconds)
+        }
     }
 
     /**
