@@ -107,7 +107,7 @@ public class ManagerNode internal constructor(
     private suspend fun awaitNameFree(type: String, instanceName: String) {
         val deadline = TimeSource.Monotonic.markNow() + core.remote.defaultDeadline
         while (instanceName in hostedInstanceNames()) {
-            if (hostOf(instanceName) != null) {
+            if (hostOf(instanceName)?.second?.let { answers(it) } == true) {
                 throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
             }
             if (deadline.hasPassedNow()) {
@@ -203,6 +203,10 @@ public class ManagerNode internal constructor(
             manager.relist().firstOrNull { it is ComponentNode && it.name == "$instanceName.rtc" }?.let { manager to it as ComponentNode }
         }
     }
+
+    /** Whether [node]'s object still exists: an exited component's does not, though its manager may list it a while. */
+    private suspend fun answers(node: ComponentNode): Boolean =
+        reachable { !core.remote.call(node.path.toString(), "_non_existent") { node.component.ref._non_existent() } } ?: false
 
     private fun topMaster(): ManagerNode = master?.topMaster() ?: this
 
