@@ -24,6 +24,8 @@ public class ComponentNode internal constructor(
     path: RtcPath,
     core: TreeCore,
     internal val component: ComponentObject,
+    /** The naming context it is bound in at [path], if that is where the tree found it. */
+    private val namingParent: NamingDirectory? = null,
 ) : Node(path, core) {
     private val subject: String get() = path.toString()
 
@@ -83,9 +85,33 @@ public class ComponentNode internal constructor(
     public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
         transition("reset", context, LifeCycle.ERROR, LifeCycle.INACTIVE, deadline) { it.reset_component(component.ref) }
 
-    /** Asks the component to exit: it finalises, leaves its contexts and unbinds itself. */
+    /**
+     * Asks the component to exit: it finalises and leaves its contexts; returns once its manager has also
+     * unbound it from the naming context the tree found it in, which OpenRTM-aist does shortly after.
+     */
     public suspend fun exit() {
         core.remote.call(subject, "exit") { component.ref.exit() }.orFail(subject, "exit")
+        awaitUnbound("exit")
+    }
+
+    /**
+     * Waits until the component's name is no longer bound to it in its naming context (a manager unbinds
+     * an exited component at its next clean-up), then lists the context again. A component the tree found
+     * below a manager has no binding to wait for.
+     */
+    internal suspend fun awaitUnbound(operation: String) {
+        val context = namingParent ?: return
+        val limit = core.remote.defaultDeadline
+        val deadline = TimeSource.Monotonic.markNow() + limit
+        var pause = 5.milliseconds
+        while (context.binds(name, component)) {
+            if (deadline.hasPassedNow()) {
+                throw TimedOutException(subject, "$operation (the component finalised, but is still bound in naming)", limit.inWholeMilliseconds)
+            }
+            delay(pause)
+            pause = (pause * 2).coerceAtMost(50.milliseconds)
+        }
+        context.relist()
     }
 
     /** The port named [name] (without the instance prefix). */

@@ -5,20 +5,26 @@ import RTM.Manager
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.orFail
 import org.rtcoord.internal.toMap
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
 
 /**
- * An OpenRTM manager daemon. Its children are its slave managers and the components it hosts (the
- * same components its naming context shows, as the same live objects). A master forwards creation to
- * a slave; deletion goes to whichever manager hosts the component.
+ * An OpenRTM manager daemon. Its children are its slave managers and the components it hosts itself
+ * (the same components its naming context shows, as the same live objects); a master's own list of
+ * components includes its slaves', which are shown below the slaves only. A master forwards creation
+ * to a slave; deletion goes to whichever manager hosts the component.
  */
 public class ManagerNode internal constructor(
     path: RtcPath,
     core: TreeCore,
     internal val ref: Manager,
     private val namingParent: NamingDirectory?,
+    /** The master this slave was listed under, if any. */
+    private val master: ManagerNode? = null,
 ) : DirectoryNode(path, core) {
     private val subject: String get() = path.toString()
 
@@ -27,30 +33,36 @@ public class ManagerNode internal constructor(
     override suspend fun readChildren(previous: List<Node>): List<Node> = coroutineScope {
         val slaves = async { core.remote.call(subject, "get_slave_managers") { ref.get_slave_managers() } }
         val hosted = async { core.remote.call(subject, "get_components") { ref.get_components() } }
-        val slaveNodes = slaves.await().map { slave ->
+        val slaveListings = slaves.await().map { slave ->
             async {
                 // A slave whose process died has no name to show: it is left out, not the whole listing.
-                val profile = try {
-                    core.remote.call(subject, "get_profile") { slave.get_profile() }
-                } catch (e: UnreachableException) {
-                    return@async null
-                } catch (e: TimedOutException) {
-                    return@async null
+                val profile = async {
+                    try {
+                        core.remote.call(subject, "get_profile") { slave.get_profile() }
+                    } catch (e: TimedOutException) {
+                        null
+                    } catch (e: UnreachableException) {
+                        null
+                    }
                 }
-                val name = nameOf(profile.properties.toMap())
-                previous.filterIsInstance<ManagerNode>().firstOrNull { it.name == name && it.ref._is_equivalent(slave) }
-                    ?: ManagerNode(path.child(name), core, slave, null)
+                val components = async { reachable { core.remote.call(subject, "get_components") { slave.get_components() } } }
+                val name = nameOf((profile.await() ?: return@async null).properties.toMap())
+                val node = previous.filterIsInstance<ManagerNode>().firstOrNull { it.name == name && it.ref._is_equivalent(slave) }
+                    ?: ManagerNode(path.child(name), core, slave, null, this@ManagerNode)
+                node to components.await().orEmpty().map { core.components.objectFor(it) }
             }
-        }
-        val componentNodes = hosted.await().map { rtc ->
+        }.awaitAll().filterNotNull()
+        val ofSlaves = slaveListings.flatMap { it.second }.toSet()
+        val componentNodes = hosted.await().map { core.components.objectFor(it) }.filter { it !in ofSlaves }.map { component ->
             async {
-                val component = core.components.objectFor(rtc).also { it.hostedBy(this@ManagerNode) }
-                val name = "${component.instanceName(subject)}.rtc"
+                component.hostedBy(this@ManagerNode)
+                // Listed but gone: it exited and its manager has not cleaned it up yet.
+                val name = "${reachable { component.instanceName(subject) } ?: return@async null}.rtc"
                 previous.filterIsInstance<ComponentNode>().firstOrNull { it.component === component && it.name == name }
                     ?: ComponentNode(path.child(name), core, component)
             }
         }
-        slaveNodes.awaitAll().filterNotNull() + componentNodes.awaitAll()
+        slaveListings.map { it.first } + componentNodes.awaitAll().filterNotNull()
     }
 
     /** The manager's profile properties (`instance_name`, `pid`, ...). */
@@ -63,15 +75,14 @@ public class ManagerNode internal constructor(
      * Creates a component of [type] (named [instanceName], or as the manager names it) with the given
      * creation [options], and returns it as a node, placed where naming shows it when the tree knows
      * that context, else below the manager. The tree learns of it without a full re-read.
+     *
+     * The manager decides whether it can: it may load a module for the type, and a master places the
+     * component in one of its slaves (a dead one is skipped) or starts one. When the manager creates
+     * none, the error names it with its factories and loadable modules. A name still held by a component
+     * that exited is free once its manager has cleaned it up, which this waits for.
      */
     public suspend fun create(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): ComponentNode {
-        val factories = factories().mapNotNull { it["implementation_id"] ?: it["type_name"] }
-        if (factories.isNotEmpty() && type !in factories) {
-            throw NotFoundException(subject, "no factory for component type '$type' (types: ${factories.sorted().joinToString()})")
-        }
-        if (instanceName != null && instanceName in hostedInstanceNames()) {
-            throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
-        }
+        if (instanceName != null) awaitNameFree(type, instanceName)
         val settings = buildList {
             instanceName?.let { add("instance_name=$it") }
             options.filterKeys { it != "manager_name" }.forEach { (key, value) -> add("$key=$value") }
@@ -79,7 +90,7 @@ public class ManagerNode internal constructor(
         }
         val spec = if (settings.isEmpty()) type else "$type?${settings.joinToString("&")}"
         val created = core.remote.call(subject, "create_component") { ref.create_component(spec) }
-            ?: throw OperationFailedException(subject, "create '$spec'", "nil", "the manager returned no component")
+            ?: throw OperationFailedException(subject, "create '$spec'", "nil", "the manager created none; ${whatItCanCreate()}")
         val component = core.components.objectFor(created)
         val name = "${component.refresh(subject).instanceName}.rtc"
         namingParent?.let { parent ->
@@ -90,14 +101,49 @@ public class ManagerNode internal constructor(
             ?: ComponentNode(path.child(name), core, component)
     }
 
-    /** Deletes component [instanceName] through the manager (this one or a slave) that hosts it. */
+    /**
+     * Refuses [instanceName] if a live component holds it; waits while only an exited one does (its
+     * manager still lists it until its next clean-up, and would hand back the dead component).
+     */
+    private suspend fun awaitNameFree(type: String, instanceName: String) {
+        val deadline = TimeSource.Monotonic.markNow() + core.remote.defaultDeadline
+        while (instanceName in hostedInstanceNames()) {
+            if (hostOf(instanceName)?.second?.let { answers(it) } == true) {
+                throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
+            }
+            if (deadline.hasPassedNow()) {
+                throw TimedOutException(
+                    subject, "create '$type' (the name '$instanceName' is still held by a component that exited)",
+                    core.remote.defaultDeadline.inWholeMilliseconds,
+                )
+            }
+            delay(20.milliseconds)
+        }
+    }
+
+    /**
+     * The types this manager has factories for, each once (a master lists the composite type every
+     * manager registers once for itself and once per slave), and the modules it could load.
+     */
+    private suspend fun whatItCanCreate(): String = coroutineScope {
+        val types = async { factories().mapNotNull { it["implementation_id"] ?: it["type_name"] }.distinct().sorted() }
+        val modules = async { loadableModules().mapNotNull { it["module_file_name"] ?: it["module_file_path"] }.distinct().sorted() }
+        "factories: ${types.await().joinToString().ifEmpty { "none" }}; loadable modules: ${modules.await().joinToString().ifEmpty { "none" }}"
+    }
+
+    /**
+     * Deletes component [instanceName] through the manager (this one or a slave) that hosts it, and
+     * returns once it has gone from naming too (its manager unbinds it shortly after the component exits).
+     */
     public suspend fun delete(instanceName: String) {
-        val owner = hostOf(instanceName) ?: throw NotFoundException(subject, "no component '$instanceName' is hosted by this manager or its slaves")
+        val (owner, node) = hostOf(instanceName) ?: throw NotFoundException(subject, "no component '$instanceName' is hosted by this manager or its slaves")
         core.remote.call(owner.subject, "delete_component") { owner.ref.delete_component(instanceName) }
             .orFail(owner.subject, "delete '$instanceName'")
+        // The component's objects are gone now: its absence from the listings is the delete's success.
         owner.relist()
         if (owner !== this) relist()
-        namingParent?.relist()
+        val bound = topMaster().namingParent?.let { parent -> (parent.child(node.name) as? ComponentNode)?.takeIf { it.component === node.component } }
+        (bound ?: node).awaitUnbound("delete '$instanceName'")
     }
 
     /** Loads module [path] (calling [initFunction] in it, if the manager needs one). */
@@ -150,13 +196,20 @@ public class ManagerNode internal constructor(
         (own.await() + slaves.awaitAll().flatten()).toSet()
     }
 
-    private suspend fun hostOf(instanceName: String): ManagerNode? {
+    /** The manager hosting [instanceName] and the component as it lists it. */
+    private suspend fun hostOf(instanceName: String): Pair<ManagerNode, ComponentNode>? {
         val hosts = listOf(this) + children().filterIsInstance<ManagerNode>()
-        return hosts.firstOrNull { manager ->
+        return hosts.firstNotNullOfOrNull { manager ->
             // Below a manager a component is named after its instance name.
-            manager.relist().any { it is ComponentNode && it.name == "$instanceName.rtc" }
+            manager.relist().firstOrNull { it is ComponentNode && it.name == "$instanceName.rtc" }?.let { manager to it as ComponentNode }
         }
     }
+
+    /** Whether [node]'s object still exists: an exited component's does not, though its manager may list it a while. */
+    private suspend fun answers(node: ComponentNode): Boolean =
+        reachable { !core.remote.call(node.path.toString(), "_non_existent") { node.component.ref._non_existent() } } ?: false
+
+    private fun topMaster(): ManagerNode = master?.topMaster() ?: this
 
     private suspend fun findBelowSlaves(component: org.rtcoord.internal.ComponentObject): ComponentNode? =
         children().filterIsInstance<ManagerNode>().firstNotNullOfOrNull { slave ->
@@ -164,6 +217,13 @@ public class ManagerNode internal constructor(
         }
 
     private companion object {
+        /** [read]'s result, or null if the object did not answer: its process is gone. */
+        suspend fun <T> reachable(read: suspend () -> T): T? = try {
+            read()
+        } catch (e: UnreachableException) {
+            null
+        }
+
         fun nameOf(profile: Map<String, String>): String =
             profile["instance_name"]?.takeIf { it.isNotBlank() } ?: profile["name"]?.takeIf { it.isNotBlank() } ?: "manager"
     }

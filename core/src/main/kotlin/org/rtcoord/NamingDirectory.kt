@@ -31,6 +31,17 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
         relist()
     }
 
+    /** Whether [name] (`id.kind`) is bound in this context to [component], alive or not. */
+    internal suspend fun binds(name: String, component: org.rtcoord.internal.ComponentObject): Boolean {
+        val context = context()
+        val target = try {
+            core.remote.call(path.child(name).toString(), "resolve") { context.resolve(nameComponents(name)) }
+        } catch (e: NotFoundException) {
+            return false
+        }
+        return target._is_equivalent(component.ref)
+    }
+
     override suspend fun readChildren(previous: List<Node>): List<Node> {
         val context = context()
         val bindings = listAll(context)
@@ -74,7 +85,7 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
         return when (childPath.kind) {
             "rtc" -> {
                 val component = core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target))
-                (old as? ComponentNode)?.takeIf { it.component === component } ?: ComponentNode(childPath, core, component)
+                (old as? ComponentNode)?.takeIf { it.component === component } ?: ComponentNode(childPath, core, component, this)
             }
             "mgr" -> (old as? ManagerNode)?.takeIf { it.ref._is_equivalent(target) } ?: ManagerNode(childPath, core, ManagerHelper.unchecked_narrow(target), this)
             else -> UnknownNode(childPath, core, target)

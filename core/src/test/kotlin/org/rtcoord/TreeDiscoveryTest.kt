@@ -27,8 +27,17 @@ class TreeDiscoveryTest {
             .map { node -> node.path.names.joinToString("/") + if (node is DirectoryNode) "/" else "" }.toSet()
 
         val listing = runPeer("rtls", "-R", "/${localisation.naming.address}/").ok().output
-        assertEquals(rtlsPaths(listing), ours)
+        assertEquals(withoutMastersCopies(rtlsPaths(listing)), ours)
     }
+
+    /**
+     * [paths] without a master's copies of its slaves' components: a master's `get_components` includes
+     * its slaves', which rtls lists below both, the tree below the slave only.
+     */
+    private fun withoutMastersCopies(paths: Set<String>): Set<String> = paths.filterNot { path ->
+        path.endsWith(".rtc") && path.substringBeforeLast('/').endsWith(".mgr") &&
+            paths.any { it.startsWith(path.substringBeforeLast('/') + "/") && it.endsWith("/" + path.substringAfterLast('/')) && it != path }
+    }.toSet()
 
     @Test
     fun `snapshots carry service interfaces, contexts' properties and the parent, and the composition is read on demand`(): Unit = runBlocking {

@@ -11,6 +11,7 @@ import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import org.rtcoord.fixtures.runPeer
+import kotlin.time.Duration.Companion.seconds
 
 /** Every operation, checked by reading the result back through rtshell or a second tree. */
 class TreeOperationsTest {
@@ -182,8 +183,12 @@ class TreeOperationsTest {
         assertEquals("odo_localise0", master.create("odo_localise").snapshot().instanceName)
         assertEquals("odo_localise1", master.create("odo_localise").snapshot().instanceName)
         assertEquals("custom", master.create("odo_localise", instanceName = "custom").snapshot().instanceName)
-        val unknown = assertThrows(NotFoundException::class.java) { runBlocking { master.create("sonar") } }
-        assertTrue(unknown.message!!.contains("no factory for component type 'sonar'"), unknown.message)
+        val unknown = assertThrows(OperationFailedException::class.java) { runBlocking { master.create("sonar") } }
+        assertEquals(
+            "${path("manager.mgr")}: create 'sonar' failed: nil (the manager created none; " +
+                "factories: PeriodicECSharedComposite, gyro, laser, laser_localise, odo_localise, odometry; loadable modules: none)",
+            unknown.message,
+        )
 
         master.delete("odo_localise0")
         val names = (witness.node(localisation.host) as ContextNode).children().map { it.name }
@@ -191,13 +196,77 @@ class TreeOperationsTest {
         assertThrows(NotFoundException::class.java) { runBlocking { master.delete("odo_localise0") } }
 
         val slave = master.children().filterIsInstance<ManagerNode>().single()
-        slave.unloadModule("localisers.so")
+        slave.unloadModule("odo_localise.so")
         assertFalse(slave.factories().any { it["implementation_id"] == "odo_localise" })
-        assertEquals(listOf("sensors.so"), slave.loadedModules().map { it["file_path"] })
-        slave.loadModule("localisers.so")
+        assertEquals(listOf("sensors.so", "localisers.so"), slave.loadedModules().map { it["file_path"] })
+        slave.loadModule("odo_localise.so")
         assertTrue(slave.factories().any { it["implementation_id"] == "odo_localise" })
         assertThrows(BadParameterException::class.java) { runBlocking { slave.loadModule("missing.so") } }
-        assertEquals(setOf("sensors.so", "localisers.so"), slave.loadableModules().map { it["module_file_name"] }.toSet())
+        assertEquals(setOf("sensors.so", "localisers.so", "odo_localise.so"), slave.loadableModules().map { it["module_file_name"] }.toSet())
+    }
+
+    @Test
+    fun `a manager loads the module of a type it has no factory for yet`(): Unit = runBlocking {
+        val slave = tree.manager(path("manager.mgr/manager_slave"))
+        assertFalse(slave.factories().any { it["implementation_id"] == "odo_localise" })
+        assertEquals("odo_localise0", slave.create("odo_localise").snapshot().instanceName)
+        assertTrue("odo_localise.so" in slave.loadedModules().map { it["file_path"] })
+    }
+
+    @Test
+    fun `a manager that refuses is named, with its factories and loadable modules`(): Unit = runBlocking {
+        localisation.system.slave!!.set_configuration("manager.modules.search_auto", "NO")
+        val slave = tree.manager(path("manager.mgr/manager_slave"))
+        val refused = assertThrows(OperationFailedException::class.java) { runBlocking { slave.create("odo_localise") } }
+        assertEquals(
+            "${path("manager.mgr/manager_slave")}: create 'odo_localise' failed: nil (the manager created none; " +
+                "factories: PeriodicECSharedComposite, gyro, laser, laser_localise, odometry; " +
+                "loadable modules: localisers.so, odo_localise.so, sensors.so)",
+            refused.message,
+        )
+    }
+
+    @Test
+    fun `delete through the master goes to the hosting slave and returns once the name is gone`(): Unit = runBlocking {
+        val master = tree.manager(path("manager.mgr"))
+        val gyro = tree.component(path("gyro0.rtc"))
+        val fixture = localisation.system.component("gyro0")
+        master.delete("gyro0")
+        assertTrue(fixture.isExited)
+        // No zombie left behind: naming no longer has the name when delete returns.
+        val names = (witness.node(localisation.host) as ContextNode).children().map { it.name }
+        assertFalse("gyro0.rtc" in names, names.toString())
+        assertFalse(master.children().filterIsInstance<ManagerNode>().single().children().any { it.name == "gyro0.rtc" })
+        assertThrows(UnreachableException::class.java) { runBlocking { gyro.refresh() } }
+    }
+
+    @Test
+    fun `exit returns once the component's name has left naming`(): Unit = runBlocking {
+        tree.component(path("odometry0.rtc")).exit()
+        val names = (witness.node(localisation.host) as ContextNode).children().map { it.name }
+        assertFalse("odometry0.rtc" in names, names.toString())
+        val listed = (tree.node(localisation.host) as ContextNode).listed.value!!.map { it.name }
+        assertFalse("odometry0.rtc" in listed, listed.toString())
+    }
+
+    @Test
+    fun `a component re-created under its name right after it exited waits for the manager's clean-up`(): Unit = runBlocking {
+        val master = tree.manager(path("manager.mgr"))
+        localisation.system.runtime.cleanupDelay = 1.seconds
+        val old = localisation.system.component("gyro0")
+        // Straight to the component, as a crash or another tool would: the name lingers in the manager.
+        assertEquals(RTC.ReturnCode_t.RTC_OK, old.exit())
+        val again = master.create("gyro", "gyro0")
+        assertEquals("gyro0", again.snapshot().instanceName)
+        assertFalse(localisation.system.component("gyro0") === old)
+        assertThrows(BadParameterException::class.java) { runBlocking { master.create("gyro", "gyro0") } }
+    }
+
+    @Test
+    fun `exit says so when the name stays bound past the deadline`(): Unit = runBlocking {
+        localisation.system.runtime.cleanupDelay = kotlin.time.Duration.INFINITE
+        val stuck = assertThrows(TimedOutException::class.java) { runBlocking { tree.component(path("odometry0.rtc")).exit() } }
+        assertTrue(stuck.message!!.contains("finalised, but is still bound in naming"), stuck.message)
     }
 
     @Test
@@ -213,6 +282,27 @@ class TreeOperationsTest {
             assertEquals(listOf("manager_slave"), master.children().filterIsInstance<ManagerNode>().map { it.name })
             assertEquals("hosted0", master.create("laser_localise", "hosted0").snapshot().instanceName)
         }
+    }
+
+    @Test
+    fun `after a slave died, creating through the master places the component elsewhere`(): Unit = runBlocking {
+        val masterAddress = localisation.system.master!!.runtime.orb.corbaloc("manager")
+        val master = tree.manager(path("manager.mgr"))
+        val dead = FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--type", "gyro", "--master", masterAddress).use { process ->
+            val remote = master.children().filterIsInstance<ManagerNode>().single { it.name != "manager_slave" }
+            process.kill()
+            remote
+        }
+        // The slave is gone with its process; its master has the live slave load odo_localise.so.
+        assertThrows(UnreachableException::class.java) { runBlocking { dead.create("odo_localise") } }
+        assertEquals(path("odo_localise0.rtc"), master.create("odo_localise").path.toString())
+
+        // No slave can create it now: the master starts one with its manager_cmd.
+        localisation.system.slave!!.set_configuration("manager.modules.search_auto", "NO")
+        assertThrows(OperationFailedException::class.java) { runBlocking { master.create("relay") } }
+        localisation.system.startSlavesOnDemand(listOf(org.rtcoord.fixtures.FixtureModule("relays.so", listOf(org.rtcoord.fixtures.Scenarios.relay))))
+        assertEquals(path("relay0.rtc"), master.create("relay").path.toString())
+        assertEquals(listOf("relay0"), localisation.system.startedSlaves.single().runtime.components.map { it.instanceName })
     }
 
     @Test

@@ -7,8 +7,8 @@ import com.github.ajalt.clikt.parameters.arguments.multiple
 /** `rtcoord exit`: rtexit, checking every path before any component is asked to go. */
 class ExitCommand : TreeCommand("exit") {
     override fun help(context: Context): String =
-        "Ask components to exit: each finalises, leaves its execution contexts and unbinds itself. Every PATH is " +
-            "checked first (a live component): if one is not, no component is asked."
+        "Ask components to exit: each finalises and leaves its execution contexts; the command returns once its " +
+            "manager has unbound it from naming. Every PATH is checked first (a live component): if one is not, no component is asked."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord exit /localhost/host.host_cxt/laser_localise0.rtc" to "stop the laser localiser for good",

@@ -7,7 +7,8 @@ import com.github.ajalt.clikt.parameters.options.option
 /** `rtcoord mgr PATH create TYPE`: a new component through the manager. */
 class MgrCreateCommand(private val mgr: MgrCommand) : TreeCommand("create") {
     override fun help(context: Context): String =
-        "Create a component of TYPE (a factory's implementation id) and print its path. A master manager has a slave create it."
+        "Create a component of TYPE (a factory's implementation id) and print its path. The manager loads a module " +
+            "for TYPE if it needs one; a master manager has a slave create it. A refusal names the manager, its factories and loadable modules."
 
     private val type by argument("TYPE", help = "The component type.")
 

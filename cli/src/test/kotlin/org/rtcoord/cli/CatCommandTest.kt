@@ -121,7 +121,7 @@ class CatCommandTest {
         val shown = runRtcoord("cat", localisation.path("manager.mgr/manager_slave")).ok()
         assertTrue(shown.startsWith("manager_slave  slave\n  Profile\n"), shown)
         assertTrue("  Loaded modules\n    sensors.so\n    localisers.so\n  Loadable modules\n" in shown, shown)
-        assertTrue(Regex("""\n {4}odo_localise +rtcoord fixture component odo_localise\n""").containsMatchIn(shown), shown)
+        assertTrue(Regex("""\n {4}laser_localise +rtcoord fixture component laser_localise\n""").containsMatchIn(shown), shown)
     }
 
     @Test

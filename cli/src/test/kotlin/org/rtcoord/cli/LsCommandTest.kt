@@ -45,7 +45,20 @@ class LsCommandTest {
     fun `-l -R is rtls -l -R, headers and all`() {
         val ours = runRtcoord("ls", "-l", "-R", "/$address/").ok()
         assertTrue(ours.startsWith(".:\n-  -  -  -  -  ${FixtureRuntime.hostContext}\n\n./${FixtureRuntime.hostContext}:\n"), ours)
-        assertEquals(runPeer("rtls", "-l", "-R", "/$address/").ok().output, ours)
+        assertEquals(withoutSlavesComponentsUnderMaster(runPeer("rtls", "-l", "-R", "/$address/").ok().output), ours)
+    }
+
+    /**
+     * [listing] with the master's section holding only its slaves: a master's `get_components` includes its
+     * slaves' components, which rtls shows twice (below the master and below the slave), rtcoord once.
+     */
+    private fun withoutSlavesComponentsUnderMaster(listing: String): String {
+        val header = "./${FixtureRuntime.hostContext}/manager.mgr:\n"
+        val start = listing.indexOf(header) + header.length
+        val end = listing.indexOf("\n\n", start)
+        // Without the components' wider columns, the managers' dashes take rtls's narrowest padding.
+        val section = listing.substring(start, end).lines().filterNot { it.endsWith(".rtc") }.joinToString("\n") { it.replace(Regex(" {2,}"), "  ") }
+        return listing.substring(0, start) + section + listing.substring(end)
     }
 
     @Test
