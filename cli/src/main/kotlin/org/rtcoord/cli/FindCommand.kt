@@ -14,7 +14,8 @@ import org.rtcoord.NodeKind
 /** `rtcoord find`: rtfind, over a tree read concurrently. */
 class FindCommand : TreeCommand("find") {
     override fun help(context: Context): String =
-        "Print the paths of the objects below PATH (PATH included) that match every filter given."
+        "Print the paths of the objects below PATH (PATH included) that match every filter given. " +
+            "A slave manager's components are found below it, not a second time below its master as rtfind does."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord find /localhost --type component --state error" to "components in ERROR",

@@ -21,7 +21,8 @@ class LsCommand : TreeCommand("ls") {
     override fun help(context: Context): String =
         "List name servers, naming contexts, managers and components, as rtls does. Directories end in '/', " +
             "dead registrations (zombies) start with '*'. With no PATH, list the name servers given by -n or the environment. " +
-            "A name server that cannot be reached is reported on stderr, one line each, and the status is 1; what can be reached is listed."
+            "A name server that cannot be reached is reported on stderr, one line each, and the status is 1; what can be reached is listed. " +
+            "A slave manager's components are listed below it, not a second time below its master as rtls does."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord -n localhost ls" to "the name server's root context",

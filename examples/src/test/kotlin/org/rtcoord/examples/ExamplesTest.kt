@@ -17,6 +17,7 @@ import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
 
 class ExamplesTest {
     enum class Mode(val options: EventOptions) {
@@ -35,11 +36,13 @@ class ExamplesTest {
     fun `localisation - the laser fails and the odometry-gyro localiser takes over`(mode: Mode, fault: Fault): Unit = runBlocking {
         ExampleSystem("localisation.coord.kts", mode.options).use { example ->
             example.coordinator.start()
+            val faulted = TimeSource.Monotonic.markNow()
             fault.inject(example.system.component("laser0"))
 
             await("odo_localise0 to be ACTIVE") {
                 runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
             }
+            println("localisation example ($mode, $fault laser fault): fault to odo_localise0 ACTIVE in ${faulted.elapsedNow()}")
             val created = example.witness.component(example.path("odo_localise0.rtc")).also { it.refresh() }.snapshot()
             assertEquals(mapOf("odo" to 1, "gyro" to 1, "pose" to 0), created.ports.associate { it.name to it.connectors.size })
             val connections = example.witness.port(example.path("odo_localise0.rtc:odo")).connections() +
@@ -122,8 +125,10 @@ class ExamplesTest {
             await("the laser mode's network") { example.log.any { it.startsWith("mode localisation/laser: network done (0 steps") } }
 
             val laser = example.system.component("laser0")
+            val faulted = TimeSource.Monotonic.markNow()
             fault.inject(laser)
             await("the odometry localiser to track", timeout = 30.seconds) { machine.mode.value == "localisation/degraded/odometry/tracking" }
+            println("modes example ($fault laser fault): fault to odo_localise0 ACTIVE and tracking in ${faulted.elapsedNow()}")
             assertEquals(fault.laserAfter, example.witness.component(example.path("laser0.rtc")).state(), "reset on entry if it can be")
             assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("laser_localise0").state)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("odo_localise0").state)
@@ -188,18 +193,45 @@ class ExamplesTest {
         ExampleSystem("supervision.coord.kts", Mode.PUSH.options, args = listOf("2")).use { example ->
             example.coordinator.start()
             val (odometry, laser, localiser) = listOf("odometry0", "laser0", "laser_localise0").map(example.system::component)
+            val faulted = TimeSource.Monotonic.markNow()
             laser.breakDown()
 
             await("the supervisor to give up on the laser", timeout = 30.seconds) {
                 example.log.any { it.startsWith("giving up: ${example.path("laser0.rtc")}") }
             }
             await("the odometry localiser to run") { example.system.components.any { it.instanceName == "odo_localise0" && it.state == RTC.LifeCycleState.ACTIVE_STATE } }
+            println("supervision example (persistent laser fault, 2 restarts allowed): fault to odo_localise0 ACTIVE in ${faulted.elapsedNow()}")
             assertEquals(setOf("odometry0.odo"), example.peers("odo_localise0.rtc:odo"))
             assertEquals(setOf("gyro0.gyro"), example.peers("odo_localise0.rtc:gyro"))
             assertEquals(RTC.LifeCycleState.INACTIVE_STATE, localiser.state)
             assertEquals(emptySet<String>(), example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"))
             assertEquals(RTC.LifeCycleState.ERROR_STATE, laser.state)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, odometry.state, "restForOne leaves the odometry alone")
+            assertEquals(0, example.coordinator.failures)
+        }
+    }
+
+    @Test
+    fun `supervision - the slave manager hosting the pipeline is killed, and the master re-creates it in another slave, connected and active`(): Unit = runBlocking {
+        ExampleSystem("supervision.coord.kts", Mode.PUSH.options, pipeline = ExampleSystem.Pipeline.SEPARATE_PROCESS).use { example ->
+            example.coordinator.start()
+            val killed = TimeSource.Monotonic.markNow()
+            example.pipelineProcess!!.kill()
+
+            val pipeline = listOf("odometry0", "laser0", "laser_localise0").map { name ->
+                awaitValue("$name to be re-created through the master and active", 30.seconds) {
+                    example.system.runtime.components.firstOrNull { it.instanceName == name && !it.isExited && it.state == RTC.LifeCycleState.ACTIVE_STATE }
+                }
+            }
+            println("supervision example: slave manager SIGKILL to the pipeline ACTIVE again in another slave in ${killed.elapsedNow()}")
+            val localiser = pipeline.last()
+            await("the localiser to get laser and odometry data again") { localiser.latest("laser") != null && localiser.latest("odo") != null }
+            example.witness.refresh(RtcPath.parse(example.path("laser0.rtc")).parent!!, depth = 0)
+            assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
+            assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
+            assertEquals(1, example.log.count { it.endsWith("failed together: one restart") }, example.log.joinToString("\n"))
+            assertTrue(example.log.none { it.startsWith("giving up") }, example.log.joinToString("\n"))
+            assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("gyro0").state, "the gyro, in another process, is left alone")
             assertEquals(0, example.coordinator.failures)
         }
     }
