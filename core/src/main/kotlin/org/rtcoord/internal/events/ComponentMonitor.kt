@@ -1,8 +1,5 @@
 package org.rtcoord.internal.events
 
-import _SDOPackage.NameValue
-import _SDOPackage.SDOServiceHelper
-import _SDOPackage.ServiceProfile
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
@@ -10,7 +7,6 @@ import kotlinx.coroutines.async
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
-import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import org.rtcoord.BecameZombie
@@ -20,7 +16,6 @@ import org.rtcoord.ComponentSnapshot
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
-import org.rtcoord.ObserverFlavour
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
@@ -37,7 +32,6 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /**
  * Watches one component for every registration interested in it, with one pipeline whatever the
@@ -45,6 +39,11 @@ import kotlin.time.TimeSource
  * again; events are the differences between consecutive reads, lifecycle states reconciled with the
  * hints by a [StateTracker] per execution context. One coroutine does all of it, in order, so the
  * component's events come out in the order they happened; delivery to handlers is the sinks' job.
+ *
+ * It is longer than most files here because it is where reads, hints, timers and the observer meet, in
+ * that one coroutine. What has states of its own lives apart and is tested alone: whether the component
+ * answers ([ComponentLiveness]), its lifecycle per context ([StateTracker]), its observer
+ * ([ObserverLink]) and how it is watched ([decideWatchMethod]).
  */
 internal class ComponentMonitor(
     private val core: TreeCore,
@@ -73,7 +72,6 @@ internal class ComponentMonitor(
     private val subject = node.path.toString()
     private val registrations = CopyOnWriteArrayList<Registration>()
     private val work = Channel<Work>(Channel.UNLIMITED)
-    @Volatile private var lastSign = TimeSource.Monotonic.markNow()
 
     /** How the component is watched, once decided; set through [Watcher.announce]. */
     @Volatile var method: WatchMethod? = null
@@ -81,15 +79,12 @@ internal class ComponentMonitor(
     // Owned by the worker coroutine.
     private var last: ComponentSnapshot? = null
     private val trackers = HashMap<Int, StateTracker>()
-    private var observer: ObserverHost.Observer? = null
+    private val liveness = ComponentLiveness(now())
+    private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
     private var poller: Job? = null
     private var pollPeriod: Duration? = null
     private var watchdog: Job? = null
-    private var suspect = false
-    private var dead = false
-    private var finalizing = false
-    private var finished = false
 
     init {
         core.scope.launch { run() }
@@ -139,7 +134,7 @@ internal class ComponentMonitor(
             withContext(NonCancellable) {
                 poller?.cancel()
                 watchdog?.cancel()
-                detach()
+                link.detach()
                 ended(this@ComponentMonitor)
                 stopped.complete(Unit)
             }
@@ -157,14 +152,14 @@ internal class ComponentMonitor(
             when (item) {
                 is Received -> read = take(item.hint, hintedStates) || read
                 Read -> read = true
-                Tick -> if (registrations.all { it.statesOnly } && !dead) hintedStates += node.component.contexts.keys else read = true
+                Tick -> if (registrations.all { it.statesOnly } && liveness.state == ComponentLiveness.State.ANSWERING) hintedStates += node.component.contexts.keys else read = true
                 Liveness -> read = checkLiveness() || read
                 is Reconfigure -> Unit
             }
         }
         try {
             when {
-                finished -> return
+                liveness.state == ComponentLiveness.State.FINALIZED -> return
                 reconfigurations.isNotEmpty() -> reconfigure()
                 read -> readAndPublish()
                 hintedStates.isNotEmpty() -> readStates(hintedStates)
@@ -179,10 +174,10 @@ internal class ComponentMonitor(
      * is enough); returns whether anything else calls for reading the whole component.
      */
     private fun take(hint: Hint, hintedStates: MutableSet<Int>): Boolean {
-        lastSign = TimeSource.Monotonic.markNow()
+        liveness.hinted(now(), finalize = hint.isFinalize)
         when {
             hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT || hint.kind == HintKind.OTHER -> return false
-            hint.isFinalize -> finalizing = true
+            hint.isFinalize -> Unit
             hint.kind == HintKind.RTC_STATUS -> {
                 // A hint that names no state, or a context the component is not known to be in, is no
                 // transition: only reading the component tells what, if anything, happened.
@@ -200,7 +195,8 @@ internal class ComponentMonitor(
     private suspend fun readStates(handles: Set<Int>) {
         val previous = last ?: return readAndPublish()
         val contexts = node.component.contexts
-        if (handles.any { it !in contexts }) return readAndPublish()
+        // Only a whole read brings a silent or unreachable component back, observer and all.
+        if (handles.any { it !in contexts } || liveness.state != ComponentLiveness.State.ANSWERING) return readAndPublish()
         val states = try {
             coroutineScope {
                 handles.associateWith { handle ->
@@ -211,7 +207,7 @@ internal class ComponentMonitor(
             failed(e)
             return
         }
-        lastSign = TimeSource.Monotonic.markNow()
+        liveness.answered(now())
         val snapshot = previous.copy(contexts = previous.contexts.map { context -> states[context.handle]?.let { context.copy(state = it) } ?: context })
         node.component.publish(snapshot)
         last = snapshot
@@ -224,7 +220,7 @@ internal class ComponentMonitor(
         val events = mutableListOf<RtcEvent>()
         for (context in snapshot.contexts) {
             val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
-            tracker.reconcile(context.state, now(), GRACE_MILLIS, hintsExpected = observer != null).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
+            tracker.reconcile(context.state, now(), GRACE_MILLIS, hintsExpected = link.observer != null).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
         }
         trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
         if (trackers.values.any { it.awaitingConfirmation }) {
@@ -236,14 +232,12 @@ internal class ComponentMonitor(
         return events
     }
 
-    /** Whether the component has been silent too long; announces it, and asks for a read to decide. */
+    /** Whether the component must be read: it is probed while unreachable, and read once it went silent, which is announced. */
     private fun checkLiveness(): Boolean {
-        if (dead) return true
-        val push = pushRegistration() ?: return false
-        val silent = lastSign.elapsedNow()
-        if (observer == null || suspect || silent <= push.options.heartbeat * push.options.missedBeats) return false
-        suspect = true
-        publish(listOf(HeartbeatLost(node, silent.inWholeMilliseconds)))
+        if (liveness.state == ComponentLiveness.State.UNREACHABLE) return true
+        val limit = pushRegistration()?.options?.takeIf { link.observer != null }?.let { it.heartbeat * it.missedBeats }
+        val lost = liveness.checked(now(), limit?.inWholeMilliseconds) ?: return false
+        publish(listOf(HeartbeatLost(node, lost.silentMillis)))
         return true
     }
 
@@ -251,47 +245,34 @@ internal class ComponentMonitor(
         if (registrations.isEmpty()) {
             poller?.cancel().also { poller = null; pollPeriod = null }
             watchdog?.cancel().also { watchdog = null }
-            detach()
+            link.detach()
             return
         }
         readAndPublish()
-        if (finished) return
-        if (pushRegistration() != null && observer == null) {
-            attachment = if (dead) Attachment.Failed("it does not answer") else attach()
+        if (liveness.state == ComponentLiveness.State.FINALIZED) return
+        val push = pushRegistration()
+        if (push != null && link.observer == null) {
+            attachment = if (liveness.state == ComponentLiveness.State.UNREACHABLE) {
+                Attachment.Failed("it does not answer")
+            } else {
+                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat) { hint -> work.trySend(Received(hint)) }
+                    .also { if (it is Attachment.Attached) liveness.hinted(now()) }
+            }
             // A change between that read and the attachment sent its hint to nobody: read once more.
-            if (observer != null) readAndPublish()
+            if (link.observer != null) readAndPublish()
         }
         val method = decideWatchMethod(registrations.map { it.options }, attachment)
         schedulePolling(method?.pollPeriod)
         announce(method)
-        val push = pushRegistration()
         watchdog?.cancel()
-        watchdog = push?.let { registration ->
-            core.scope.launch {
-                while (isActive) {
-                    delay(registration.options.heartbeat / 2)
-                    work.trySend(Liveness)
-                }
-            }
-        }
+        watchdog = push?.let { core.scope.launchTicks(it.options.heartbeat / 2) { work.trySend(Liveness) } }
     }
 
     private fun schedulePolling(period: Duration?) {
         if (period == pollPeriod) return
         poller?.cancel()
         pollPeriod = period
-        poller = period?.let {
-            core.scope.launch {
-                // Ticks at a fixed rate: a slow read does not push the next tick back.
-                val start = TimeSource.Monotonic.markNow()
-                var tick = 1L
-                while (isActive) {
-                    delay(it * tick.toDouble() - start.elapsedNow())
-                    tick++
-                    work.trySend(Tick)
-                }
-            }
-        }
+        poller = period?.let { core.scope.launchTicks(it) { work.trySend(Tick) } }
     }
 
     private fun pushRegistration(): Registration? =
@@ -308,15 +289,12 @@ internal class ComponentMonitor(
             failed(e)
             return
         }
-        lastSign = TimeSource.Monotonic.markNow()
         val events = mutableListOf<RtcEvent>()
-        if (dead || suspect) {
+        if (liveness.answered(now()).isNotEmpty()) {
             log.info("{}: answers again", subject)
             events += Recovered(node)
-            dead = false
-            suspect = false
             // The component may have dropped an observer it could not reach, or restarted without it.
-            detach()
+            link.detach()
             if (pushRegistration() != null) work.trySend(Reconfigure())
         }
         val previous = last
@@ -327,80 +305,23 @@ internal class ComponentMonitor(
     }
 
     private fun failed(e: RtcException) {
-        val gone = e is UnreachableException && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST
-        if (gone || (finalizing && e is UnreachableException)) {
+        val unreachable = e is UnreachableException
+        val changes = liveness.failed(now(), gone = unreachable && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable)
+        if (ComponentLiveness.Change.Finalized in changes) {
             log.info("{}: finalized", subject)
-            finished = true
             poller?.cancel()
             watchdog?.cancel()
-            observer?.close()
-            observer = null
+            link.drop()
             publish(listOf(ComponentFinalized(node)))
             return
         }
-        if (dead) return
-        dead = true
+        if (changes.isEmpty()) return
         log.info("{}; probing until it answers again", e.message)
-        val events = mutableListOf<RtcEvent>()
-        if (!suspect) events += HeartbeatLost(node, lastSign.elapsedNow().inWholeMilliseconds)
-        events += BecameZombie(node, e)
-        publish(events)
-        // Keep probing while dead, even when only the observer watched it.
+        publish(changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, e) })
+        // Keep probing while unreachable, even when only the observer watched it.
         if (poller == null) schedulePolling(pushRegistration()?.options?.heartbeat)
         // Its manager may have died with it, and with every other component it hosted.
         core.watcher.componentSilent(node, pollPeriod ?: 1.seconds)
-    }
-
-    /** Attaches an observer of a flavour the component advertises (either, when it lists none); says how that went. */
-    private suspend fun attach(): Attachment {
-        val push = pushRegistration() ?: return Attachment.NotTried
-        val advertised = last?.properties?.get("sdo.service.consumer.available_services")
-            ?.split(',')?.map { it.trim() }?.filter { it.isNotEmpty() }
-        val flavours = ObserverFlavour.values().filter { advertised == null || it.repositoryId in advertised }
-        if (flavours.isEmpty()) return Attachment.NotOffered(advertised.orEmpty())
-        val configuration = try {
-            core.remote.call(subject, "get_configuration") { node.component.ref.get_configuration() }
-        } catch (e: RtcException) {
-            return Attachment.Failed("get_configuration: ${e.reason}")
-        }
-        removeStaleObservers(core, subject, node.component.ref, configuration)
-        val seconds = (push.options.heartbeat.inWholeMilliseconds / 1000.0).toString()
-        var failure: String? = null
-        for (flavour in flavours) {
-            val candidate = host.observer(flavour) { hint -> work.trySend(Received(hint)) }
-            val properties = mapOf(
-                "observed_status" to "ALL",
-                "heartbeat.enable" to "YES", "heartbeat.interval" to seconds,
-                "rtc_heartbeat.enable" to "YES", "rtc_heartbeat.interval" to seconds,
-            ).map { (name, value) -> NameValue(name, core.orb.orb.create_any().apply { insert_string(value) }) }
-            val profile = ServiceProfile(candidate.profileId, flavour.repositoryId, properties.toTypedArray(), SDOServiceHelper.unchecked_narrow(candidate.reference))
-            val accepted = try {
-                core.remote.call(subject, "add_service_profile") { configuration.add_service_profile(profile) }
-            } catch (e: RtcException) {
-                failure = failure ?: "add_service_profile (${flavour.label}): ${e.reason}"
-                false
-            }
-            if (accepted) {
-                observer = candidate
-                lastSign = TimeSource.Monotonic.markNow()
-                return Attachment.Attached(flavour)
-            }
-            candidate.close()
-        }
-        return failure?.let(Attachment::Failed) ?: Attachment.Refused(flavours)
-    }
-
-    private suspend fun detach() {
-        val attached = observer ?: return
-        observer = null
-        try {
-            val configuration = core.remote.call(subject, "get_configuration") { node.component.ref.get_configuration() }
-            core.remote.call(subject, "remove_service_profile") { configuration.remove_service_profile(attached.profileId) }
-        } catch (e: RtcException) {
-            log.debug("{}: could not detach observer: {}", subject, e.message)
-        } finally {
-            attached.close()
-        }
     }
 
     /** Tells each registration not yet told, and the tree's reporters when it changed, how the component is watched. */

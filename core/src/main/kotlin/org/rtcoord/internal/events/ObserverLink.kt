@@ -1,0 +1,89 @@
+package org.rtcoord.internal.events
+
+import _SDOPackage.NameValue
+import _SDOPackage.SDOServiceHelper
+import _SDOPackage.ServiceProfile
+import org.rtcoord.ObserverFlavour
+import org.rtcoord.RtcException
+import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.TreeCore
+import org.slf4j.LoggerFactory
+import kotlin.time.Duration
+
+/**
+ * The tree's observer on one component: attached in a flavour the component advertises, registered
+ * through its SDO configuration as a service profile, and removed the same way.
+ */
+internal class ObserverLink(
+    private val core: TreeCore,
+    private val host: ObserverHost,
+    private val subject: String,
+    private val component: ComponentObject,
+) {
+    private val log = LoggerFactory.getLogger(ObserverLink::class.java)
+
+    /** The attached observer, or null. */
+    var observer: ObserverHost.Observer? = null
+        private set
+
+    /**
+     * Attaches an observer of a flavour listed in [advertised] (the component's
+     * `sdo.service.consumer.available_services`; either flavour when it lists none) that passes its hints
+     * to [receive] and sends heartbeats every [heartbeat]; says how that went. Stale observers a crashed
+     * tree left behind are removed first.
+     */
+    suspend fun attach(advertised: String?, heartbeat: Duration, receive: (Hint) -> Unit): Attachment {
+        val offered = advertised?.split(',')?.map { it.trim() }?.filter { it.isNotEmpty() }
+        val flavours = ObserverFlavour.values().filter { offered == null || it.repositoryId in offered }
+        if (flavours.isEmpty()) return Attachment.NotOffered(offered.orEmpty())
+        val configuration = try {
+            core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
+        } catch (e: RtcException) {
+            return Attachment.Failed("get_configuration: ${e.reason}")
+        }
+        removeStaleObservers(core, subject, component.ref, configuration)
+        val seconds = (heartbeat.inWholeMilliseconds / 1000.0).toString()
+        val properties = mapOf(
+            "observed_status" to "ALL",
+            "heartbeat.enable" to "YES", "heartbeat.interval" to seconds,
+            "rtc_heartbeat.enable" to "YES", "rtc_heartbeat.interval" to seconds,
+        ).map { (name, value) -> NameValue(name, core.orb.orb.create_any().apply { insert_string(value) }) }.toTypedArray()
+        var failure: String? = null
+        for (flavour in flavours) {
+            val candidate = host.observer(flavour, receive)
+            val profile = ServiceProfile(candidate.profileId, flavour.repositoryId, properties, SDOServiceHelper.unchecked_narrow(candidate.reference))
+            val accepted = try {
+                core.remote.call(subject, "add_service_profile") { configuration.add_service_profile(profile) }
+            } catch (e: RtcException) {
+                failure = failure ?: "add_service_profile (${flavour.label}): ${e.reason}"
+                false
+            }
+            if (accepted) {
+                observer = candidate
+                return Attachment.Attached(flavour)
+            }
+            candidate.close()
+        }
+        return failure?.let(Attachment::Failed) ?: Attachment.Refused(flavours)
+    }
+
+    /** Removes the observer from the component, if one is attached; a component that cannot be asked keeps it. */
+    suspend fun detach() {
+        val attached = observer ?: return
+        observer = null
+        try {
+            val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
+            core.remote.call(subject, "remove_service_profile") { configuration.remove_service_profile(attached.profileId) }
+        } catch (e: RtcException) {
+            log.debug("{}: could not detach observer: {}", subject, e.message)
+        } finally {
+            attached.close()
+        }
+    }
+
+    /** Forgets the observer without asking the component: it is gone, and the observer with it. */
+    fun drop() {
+        observer?.close()
+        observer = null
+    }
+}
