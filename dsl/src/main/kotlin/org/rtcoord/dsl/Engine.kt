@@ -201,7 +201,7 @@ internal class Engine {
     }
 
     /** What is bound at [path] now, its parent listed again; null if nothing (reachable) is. */
-    private suspend fun registeredAt(path: RtcPath): Node? {
+    suspend fun registeredAt(path: RtcPath): Node? {
         val parent = path.parent ?: return null
         return try {
             tree.refresh(parent, depth = 0)

@@ -1,7 +1,9 @@
 package org.rtcoord.dsl
 
 import org.rtcoord.ComponentNode
+import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerNode
+import org.rtcoord.RtcException
 import org.rtcoord.Subscription
 
 /**
@@ -29,7 +31,23 @@ internal class SupervisedChild(val index: Int, val ref: ComponentRef, val restar
     /** Set once the supervisor let it go (a temporary or transient component that ended). */
     var left: Boolean = false
 
+    /** What the component answers when asked for its state now. */
+    suspend fun status(): ChildStatus = try {
+        ChildStatus.Up(node.state())
+    } catch (e: RtcException) {
+        ChildStatus.Gone(e.reason)
+    }
+
     override fun toString(): String = node.path.toString()
+}
+
+/** What a supervised component answers when asked for its state. */
+internal sealed class ChildStatus {
+    /** It answers, in [state]. */
+    class Up(val state: LifeCycle) : ChildStatus()
+
+    /** It does not answer, for [reason]. */
+    class Gone(val reason: String) : ChildStatus()
 }
 
 /** A configuration set id and its parameter values. */
