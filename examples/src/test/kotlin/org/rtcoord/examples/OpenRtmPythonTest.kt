@@ -1,0 +1,96 @@
+package org.rtcoord.examples
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.rtcoord.LifeCycle
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.FailedAction
+import org.rtcoord.fixtures.await
+import java.nio.file.Paths
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
+
+/**
+ * The paper's coordinator against real OpenRTM-aist-Python managers and components, where the
+ * fixtures' fidelity is put to the test: skipped unless `RTCOORD_OPENRTM_PYTHON` names an installation.
+ */
+class OpenRtmPythonTest {
+    @Test
+    fun `localisation - a laser that stays broken is replaced by the odometry-gyro localiser a real master creates`(): Unit = runBlocking {
+        OpenRtmPythonSystem.start().use { system ->
+            val log = CopyOnWriteArrayList<String>()
+            val config = TreeConfig(nameServers = listOf(system.naming))
+            val script = ExampleSystem.scripts.load(Paths.get("localisation.coord.kts"), emptyList(), config)
+            RtcTree.create(config).use { tree ->
+                Coordinator(tree, script) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
+                    coordinator.start()
+                    val laser = system.witness.component(system.path("laser0.rtc"))
+                    val broken = TimeSource.Monotonic.markNow()
+                    laser.setParameter("broken", "1")
+
+                    await("odo_localise0 to be ACTIVE", 30.seconds) {
+                        runBlocking { runCatching { system.witness.component(system.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
+                    }
+                    println("real OpenRTM-aist-Python: persistent laser fault to odo_localise0 ACTIVE in ${broken.elapsedNow()}")
+                    // OpenRTM's names of the ports at each connection's far end.
+                    val peers = listOf("odo", "gyro").associateWith { port ->
+                        system.witness.port(system.path("odo_localise0.rtc:$port")).connections().map { it.ports.first().fullName }
+                    }
+                    assertEquals(mapOf("odo" to listOf("odometry0.odo"), "gyro" to listOf("gyro0.gyro")), peers)
+                    val old = system.witness.component(system.path("laser_localise0.rtc"))
+                    assertEquals(LifeCycle.INACTIVE, old.state())
+                    assertTrue(listOf("laser", "odo").all { system.witness.port(system.path("laser_localise0.rtc:$it")).connections().isEmpty() })
+                    assertEquals(LifeCycle.ERROR, laser.state(), "the laser stays broken")
+                    assertEquals(
+                        listOf(FailedAction("reset ${system.path("laser0.rtc")}", "reset failed: RTC_ERROR (in context 0)", bestEffort = true)),
+                        coordinator.failedActions,
+                    )
+                    assertEquals(0, coordinator.failures, log.joinToString("\n"))
+                }
+            }
+        }
+    }
+
+    @Test
+    fun `supervision - the slave manager hosting the pipeline is killed, and a real master re-creates it in a slave it starts`(): Unit = runBlocking {
+        OpenRtmPythonSystem.start().use { system ->
+            val log = CopyOnWriteArrayList<String>()
+            val config = TreeConfig(nameServers = listOf(system.naming))
+            val script = ExampleSystem.scripts.load(Paths.get("supervision.coord.kts"), emptyList(), config)
+            RtcTree.create(config).use { tree ->
+                Coordinator(tree, script) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
+                    coordinator.start()
+                    val before = system.witness.component(system.path("laser0.rtc"))
+                    val killed = TimeSource.Monotonic.markNow()
+                    system.killSlave()
+
+                    for (name in listOf("odometry0", "laser0", "laser_localise0")) {
+                        await("$name to be re-created and ACTIVE", 60.seconds) {
+                            runBlocking {
+                                runCatching {
+                                    system.witness.refresh(system.witness.component(system.path("gyro0.rtc")).path.parent!!, depth = 0)
+                                    system.witness.component(system.path("$name.rtc")).state()
+                                }.getOrNull()
+                            } == LifeCycle.ACTIVE
+                        }
+                    }
+                    println("real OpenRTM-aist-Python: slave manager SIGKILL to the pipeline ACTIVE again in ${killed.elapsedNow()}")
+                    val laser = system.witness.component(system.path("laser0.rtc"))
+                    assertTrue(!laser.isSameComponent(before), "laser0 is a new component")
+                    val peers = listOf("laser", "odo").associateWith { port ->
+                        system.witness.port(system.path("laser_localise0.rtc:$port")).connections().map { it.ports.first().fullName }
+                    }
+                    assertEquals(mapOf("laser" to listOf("laser0.laser"), "odo" to listOf("odometry0.odo")), peers)
+                    assertEquals(1, log.count { it.endsWith("failed together: one restart") }, log.joinToString("\n"))
+                    assertTrue(log.none { it.startsWith("giving up") }, log.joinToString("\n"))
+                    assertEquals(0, coordinator.failures, log.joinToString("\n"))
+                }
+            }
+        }
+    }
+}
