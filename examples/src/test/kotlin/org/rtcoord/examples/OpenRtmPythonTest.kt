@@ -93,4 +93,38 @@ class OpenRtmPythonTest {
             }
         }
     }
+
+    @Test
+    fun `modes - with a laser that stays broken the system runs on odometry, and on the laser again once it is repaired`(): Unit = runBlocking {
+        OpenRtmPythonSystem.start().use { system ->
+            val log = CopyOnWriteArrayList<String>()
+            val config = TreeConfig(nameServers = listOf(system.naming))
+            val script = ExampleSystem.scripts.load(Paths.get("modes.coord.kts"), emptyList(), config)
+            RtcTree.create(config).use { tree ->
+                Coordinator(tree, script) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
+                    coordinator.start()
+                    val machine = coordinator.machine("localisation")
+                    await("the laser mode's network", 30.seconds) { log.any { it.startsWith("mode localisation/laser: network done") } }
+                    val laser = system.witness.component(system.path("laser0.rtc"))
+                    val broken = TimeSource.Monotonic.markNow()
+                    laser.setParameter("broken", "1")
+
+                    await("the odometry localiser to track", 30.seconds) { machine.mode.value == "localisation/degraded/odometry/tracking" }
+                    println("real OpenRTM-aist-Python: persistent laser fault to the odometry mode tracking in ${broken.elapsedNow()}")
+                    assertEquals(LifeCycle.ACTIVE, system.witness.component(system.path("odo_localise0.rtc")).state())
+                    assertEquals(LifeCycle.INACTIVE, system.witness.component(system.path("laser_localise0.rtc")).state())
+                    assertEquals(LifeCycle.ERROR, laser.state())
+
+                    laser.setParameter("broken", "0")
+                    await("the repaired laser to reset", 30.seconds) { runBlocking { runCatching { laser.reset() }.isSuccess } }
+                    laser.activate()
+                    await("the laser mode's network again", 30.seconds) { log.count { it.startsWith("mode localisation/laser: network done") } == 2 }
+                    assertEquals("localisation/laser", machine.mode.value)
+                    assertEquals(LifeCycle.ACTIVE, system.witness.component(system.path("laser_localise0.rtc")).state())
+                    assertEquals(LifeCycle.INACTIVE, system.witness.component(system.path("odo_localise0.rtc")).state())
+                    assertEquals(0, coordinator.failures, log.joinToString("\n"))
+                }
+            }
+        }
+    }
 }
