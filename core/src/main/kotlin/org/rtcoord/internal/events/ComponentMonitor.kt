@@ -177,6 +177,7 @@ internal class ComponentMonitor(
         liveness.hinted(now(), finalize = hint.isFinalize)
         when {
             hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT || hint.kind == HintKind.OTHER -> return false
+            // The read this asks for finds the component gone, and it is finalized.
             hint.isFinalize -> Unit
             hint.kind == HintKind.RTC_STATUS -> {
                 // A hint that names no state, or a context the component is not known to be in, is no
