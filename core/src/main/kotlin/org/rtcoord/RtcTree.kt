@@ -21,11 +21,13 @@ import java.util.concurrent.CopyOnWriteArrayList
  * to release its ORB (unless the host application supplied it).
  */
 public class RtcTree private constructor(public val config: TreeConfig) : AutoCloseable {
-    internal val core = TreeCore(config) { servers.firstOrNull()?.address?.substringBeforeLast(':') }
+    internal val core = TreeCore(config) { ArrayList(servers).firstOrNull()?.address?.substringBeforeLast(':') }
+    // Read through copies: toList() and firstOrNull() read the size, then the elements, and a name server
+    // removed in between fails them.
     private val servers = CopyOnWriteArrayList<NameServerNode>()
 
     /** The root node; its children are the name servers. */
-    public val root: RootNode = RootNode(core) { servers.toList() }
+    public val root: RootNode = RootNode(core) { ArrayList(servers) }
 
     init {
         config.nameServers.forEach(::addNameServer)
@@ -39,7 +41,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     public val missedPollTicks: Long get() = core.missedPollTicks.get()
 
     /** The name servers, in the order they were added. */
-    public val nameServers: List<NameServerNode> get() = servers.toList()
+    public val nameServers: List<NameServerNode> get() = ArrayList(servers)
 
     /** Adds a name server (`host`, `host:port` or `corbaloc:`), or returns it if the tree has it already. */
     public fun addNameServer(address: String): NameServerNode {
@@ -48,7 +50,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
             servers.firstOrNull { it.path == path }?.let { return it }
             return NameServerNode(path, core).also {
                 servers += it
-                root.show(servers.toList())
+                root.show(ArrayList(servers))
             }
         }
     }
@@ -57,7 +59,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     public fun removeNameServer(address: String): Boolean {
         val path = RtcPath.nameServer(address)
         synchronized(servers) {
-            return servers.removeIf { it.path == path }.also { root.show(servers.toList()) }
+            return servers.removeIf { it.path == path }.also { root.show(ArrayList(servers)) }
         }
     }
 

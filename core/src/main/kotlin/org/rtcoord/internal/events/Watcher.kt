@@ -175,7 +175,8 @@ internal class Watcher(private val core: TreeCore) {
      */
     fun close() {
         synchronized(components) { components.clear() }
-        val stopping = live.toList()
+        // Copied in one step: toList() reads the size and then the elements, which monitors ending meanwhile remove.
+        val stopping = ArrayList(live)
         stopping.forEach(ComponentMonitor::stop)
         stopping.forEach { it.awaitStopped(core.config.callTimeout + 1.seconds) }
         synchronized(listings) { listings.values.forEach(ListingMonitor::stop); listings.clear() }
