@@ -9,6 +9,8 @@ import org.junit.jupiter.api.assertThrows
 import org.junit.jupiter.api.io.TempDir
 import org.rtcoord.LifeCycle
 import org.rtcoord.LocalisationSystem
+import org.rtcoord.NotFoundException
+import org.rtcoord.RtcPath
 import org.rtcoord.fixtures.Peers
 import org.rtcoord.fixtures.runPeer
 import java.nio.file.Files
@@ -73,6 +75,51 @@ class SystemProfilesTest {
             assertTrue(reason in refused.message!! && '\n' !in refused.message!!, refused.message)
             assertEquals(before, shape(profiles.save()), "after refusing: ${refused.message}")
         }
+    }
+
+    @Test
+    fun `restore with creation makes a deleted component through its manager, then restores onto it`() = runBlocking {
+        val saved = profiles.save()
+        val localiserPath = system.path("laser_localise0.rtc")
+        system.tree.manager(system.path("manager.mgr")).delete("laser_localise0")
+        val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(saved) } }
+        assertEquals("required component $localiserPath is not running", refused.reason)
+
+        val report = profiles.restore(saved, createMissing = true)
+        assertEquals(listOf(localiserPath), report.created)
+        assertEquals("created $localiserPath (laser_localise) through ${system.path("manager.mgr")}", report.done.first())
+        assertEquals(2, report.done.count { it.startsWith("connected ") }, report.toString())
+        assertEquals(emptyList<ProfileDifference>(), profiles.check(saved, state = null))
+        assertEquals(shape(saved), shape(profiles.save()))
+        // The slave hosts it, as it hosted the one deleted: the master handed the creation down.
+        assertTrue(system.system.slave!!.get_components().any { it.get_component_profile().instance_name == "laser_localise0" })
+        val again = profiles.restore(saved, createMissing = true)
+        assertEquals(emptyList<String>(), again.done + again.created)
+    }
+
+    @Test
+    fun `creation is refused before anything is made without a manager, and undone when the restore is refused`() = runBlocking {
+        val saved = profiles.save()
+        val localiserPath = system.path("laser_localise0.rtc")
+        system.tree.manager(system.path("manager.mgr")).delete("laser_localise0")
+        val localiser = saved.components.single { it.instanceName == "laser_localise0" }
+        val elsewhere = localiser.copy(instanceName = "far0", pathUri = "${system.naming.address}/elsewhere.cxt/far0.rtc")
+        val noManager = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(saved.copy(components = saved.components + elsewhere), createMissing = true) } }
+        assertEquals("/${system.naming.address}/elsewhere.cxt/far0.rtc: no manager in its naming context or above it to create it", noManager.reason)
+        assertTrue(system.system.slave!!.get_components().none { it.get_component_profile().instance_name == "laser_localise0" }, "created before refusing")
+
+        val outOfRange = saved.copy(components = saved.components.map { c ->
+            if (c !== localiser) c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "default") it.copy(data = it.data + ("gain" to "99")) else it })
+        })
+        val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(outOfRange, createMissing = true) } }
+        assertTrue(refused.reason.startsWith("$localiserPath: configuration set 'default': '99' is outside 0<x<10"), refused.reason)
+        assertTrue(refused.reason.endsWith("; the components created for it were deleted again") && '\n' !in refused.reason, refused.reason)
+        system.tree.refresh(RtcPath.parse(system.host))
+        assertThrows<NotFoundException> { runBlocking { system.tree.component(localiserPath) } }
+
+        val unknownType = saved.copy(components = saved.components.map { if (it !== localiser) it else it.copy(id = "RTC:rtcoord:test:no_such_type:1.0") })
+        val notMade = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(unknownType, createMissing = true) } }
+        assertTrue(notMade.reason.startsWith("cannot create $localiserPath: ") && "the manager created none" in notMade.reason, notMade.reason)
     }
 
     @Test
