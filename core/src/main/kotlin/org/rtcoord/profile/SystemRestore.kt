@@ -29,7 +29,10 @@ public class ProfileRefusedException(
     public val reason: String,
 ) : Exception(reason)
 
-/** A profile's components resolved on the live system. */
+/**
+ * A profile's components resolved on the live system, each read afresh: a tree that has lived a while
+ * (a coordinator's) may hold snapshots older than the system, and a restore or check must not go by them.
+ */
 internal class ResolvedSystem(val profile: RtsProfile, val nodes: Map<String, ComponentNode>, val missing: List<ProfileComponent>) {
     fun node(target: TargetComponent): ComponentNode? = profile.component(target)?.let { nodes[it.instanceName] }
 
@@ -40,7 +43,7 @@ internal class ResolvedSystem(val profile: RtsProfile, val nodes: Map<String, Co
         }
 
         private suspend fun find(tree: RtcTree, c: ProfileComponent): ComponentNode? = try {
-            tree.component("/" + c.pathUri.removePrefix("/"))
+            tree.component("/" + c.pathUri.removePrefix("/")).also { it.refresh() }
         } catch (e: NotFoundException) {
             null
         } catch (e: RtcException) {
