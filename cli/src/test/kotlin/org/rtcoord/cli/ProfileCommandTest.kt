@@ -32,7 +32,7 @@ class ProfileCommandTest {
     }
 
     @Test
-    fun `restore --create makes a deleted component through its manager; without it, one line says what is missing`(@TempDir dir: Path) {
+    fun `restore --create makes a deleted component through its manager, and without it one line says what is missing`(@TempDir dir: Path) {
         val file = dir.resolve("sys.xml").toString()
         runRtcoord("-n", localisation.naming.address, "profile", "save", "-o", file).ok()
         runRtcoord("mgr", localisation.path("manager.mgr"), "delete", "laser_localise0").ok()
