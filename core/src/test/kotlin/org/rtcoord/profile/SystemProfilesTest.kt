@@ -1,5 +1,8 @@
 package org.rtcoord.profile
 
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -11,10 +14,16 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.LocalisationSystem
 import org.rtcoord.NotFoundException
 import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
 import org.rtcoord.fixtures.Peers
 import org.rtcoord.fixtures.runPeer
 import java.nio.file.Files
 import java.nio.file.Path
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
 
 /** Save, restore, check, ordered start and teardown on the fixtures' localisation system, and with rtshell. */
 class SystemProfilesTest {
@@ -144,6 +153,89 @@ class SystemProfilesTest {
         assertTrue(outcomes.getValue("odometry0").atMillis >= outcomes.getValue("laser0").atMillis + 300, outcomes.toString())
         assertTrue(outcomes.getValue("laser_localise0").atMillis >= outcomes.getValue("odometry0").atMillis, outcomes.toString())
         assertEquals(LifeCycle.ACTIVE, system.tree.component(system.path("laser_localise0.rtc")).state())
+    }
+
+    /** [saved] with an Activation block of [targets], each `(sequence, instance, condition)`. */
+    private fun activation(saved: RtsProfile, vararg targets: Triple<Int, String, Condition>): RtsProfile =
+        saved.copy(orderings = mapOf(OrderingKind.ACTIVATION to Ordering(targets.map { (sequence, name, condition) -> OrderedTarget(sequence, target(saved, name), condition) })))
+
+    private fun target(saved: RtsProfile, name: String) = saved.components.single { it.instanceName == name }.let { TargetComponent(it.id, it.instanceName, contextId = "0") }
+
+    private fun Map<String, StepOutcome>.at(name: String): Long = getValue(name).also { assertTrue(it.done, toString()) }.atMillis
+
+    /** Runs [action] with every component stopped first and [name]'s servant answering nothing until [released] ms into the run. */
+    private suspend fun startWithSlow(ordered: RtsProfile, name: String, released: Long, deadline: Duration = 10.seconds, tree: RtcTree = system.tree): Map<String, StepOutcome> =
+        coroutineScope {
+            profiles.run(ordered.copy(orderings = emptyMap()), OrderedAction.STOP).forEach { assertTrue(it.done, it.toString()) }
+            val slow = system.system.component(name)
+            slow.hang()
+            val release = launch {
+                delay(released)
+                slow.release()
+            }
+            try {
+                SystemProfiles(tree).run(ordered, OrderedAction.START, deadline).associateBy { it.step.component.substringAfterLast('/').removeSuffix(".rtc") }
+            } finally {
+                release.cancel()
+                slow.release()
+            }
+        }
+
+    @Test
+    fun `SYNC waits for the preceding component's transition, ASYNC only for its request, WaitTime for its time`() = runBlocking {
+        val saved = profiles.save()
+        val ordered = activation(
+            saved,
+            Triple(0, "laser0", Condition.None),
+            Triple(0, "odometry0", Condition.Preceding(listOf(target(saved, "laser0")), 0, "ASYNC")),
+            Triple(0, "gyro0", Condition.Preceding(listOf(target(saved, "laser0")), 10_000, "SYNC")),
+            Triple(1, "laser_localise0", Condition.WaitTime(300)),
+        )
+        val outcomes = startWithSlow(ordered, "laser0", released = 1000)
+        val laser = outcomes.at("laser0")
+        assertTrue(laser >= 1000, outcomes.toString())
+        assertTrue(outcomes.at("odometry0") < laser, "ASYNC went on once laser0's activation was sent: $outcomes")
+        assertTrue(outcomes.at("gyro0") >= laser, "SYNC waited for laser0 to be active: $outcomes")
+        assertTrue(outcomes.at("laser_localise0") >= maxOf(laser, outcomes.at("gyro0")) + 300, "WaitTime after sequence 0: $outcomes")
+        assertEquals(emptyList<ProfileDifference>(), profiles.check(saved))
+    }
+
+    @Test
+    fun `a Preceding timeout that expires, and the report says what was done and what was not, and why`() = runBlocking {
+        val saved = profiles.save()
+        val ordered = activation(
+            saved,
+            Triple(0, "laser0", Condition.None),
+            Triple(0, "gyro0", Condition.Preceding(listOf(target(saved, "laser0")), 300, "SYNC")),
+            Triple(1, "odometry0", Condition.None),
+        )
+        val outcomes = startWithSlow(ordered, "laser0", released = 1500)
+        assertTrue(outcomes.at("laser0") >= 1500, outcomes.toString())
+        val gyro = outcomes.getValue("gyro0")
+        assertEquals(false, gyro.done)
+        assertEquals("preceding laser0 not ACTIVE within 300 ms", gyro.detail)
+        assertTrue(gyro.atMillis in 300 until 1500, gyro.toString())
+        val odometry = outcomes.getValue("odometry0")
+        assertEquals("NOT done: 1 ${system.path("odometry0.rtc")} context 0: not done: ${system.path("gyro0.rtc")} before it was not done", odometry.toString())
+        assertEquals(LifeCycle.INACTIVE, system.tree.component(system.path("gyro0.rtc")).state())
+        assertEquals(LifeCycle.INACTIVE, system.tree.component(system.path("odometry0.rtc")).state())
+    }
+
+    @Test
+    fun `each step has its deadline, even against a servant that never answers`() = runBlocking {
+        // Calls of their own would wait for the ORB's 20 s: the step's deadline must end the wait.
+        RtcTree.create(TreeConfig(nameServers = listOf(system.naming.address), callTimeout = 20.seconds)).use { patient ->
+            val saved = profiles.save()
+            val ordered = activation(saved, Triple(0, "laser0", Condition.None), Triple(0, "odometry0", Condition.None), Triple(1, "gyro0", Condition.None))
+            val started = TimeSource.Monotonic.markNow()
+            val outcomes = startWithSlow(ordered, "laser0", released = 60_000, deadline = 500.milliseconds, tree = patient)
+            val laser = outcomes.getValue("laser0")
+            assertEquals("no result within its deadline", laser.detail, outcomes.toString())
+            assertTrue(laser.atMillis in 500 until 5000, laser.toString())
+            assertTrue(outcomes.getValue("odometry0").done, outcomes.toString())
+            assertEquals("not done: ${system.path("laser0.rtc")} before it was not done", outcomes.getValue("gyro0").detail)
+            assertTrue(started.elapsedNow() < 10.seconds, "the run returned after ${started.elapsedNow()}")
+        }
     }
 
     @Test
