@@ -79,11 +79,32 @@ class SystemProfilesTest {
         val incompatible = saved.copy(dataPortConnectors = saved.dataPortConnectors + saved.dataPortConnectors.first().let { c ->
             c.copy(connectorId = "", source = TargetComponent(gyro.id, "gyro0", "gyro0.gyro"))
         })
-        for ((profile, reason) in listOf(missing to "ghost0.rtc is not running", outOfRange to "'99' is outside 0<x<10", incompatible to "incompatible data types")) {
+        val notNumber = saved.copy(components = saved.components.map { c ->
+            if (c.instanceName != "laser_localise0") c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "precise") it.copy(data = it.data + ("gain" to "fast")) else it })
+        })
+        val noPort = saved.copy(dataPortConnectors = saved.dataPortConnectors.map { c -> if (c.source.instanceName != "laser0") c else c.copy(source = c.source.copy(portName = "laser0.scan")) })
+        val cases = listOf(
+            missing to "ghost0.rtc is not running", outOfRange to "'99' is outside 0<x<10", incompatible to "incompatible data types",
+            notNumber to "configuration set 'precise': 'fast' is not a number (constraint 0<x<10)", noPort to "laser0.rtc: no port 'scan'",
+        )
+        for ((profile, reason) in cases) {
             val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(profile) } }
             assertTrue(reason in refused.message!! && '\n' !in refused.message!!, refused.message)
             assertEquals(before, shape(profiles.save()), "after refusing: ${refused.message}")
         }
+    }
+
+    @Test
+    fun `a connection made with other properties than the profile's is refused before anything changes`() = runBlocking {
+        val saved = profiles.save()
+        val localiser = system.tree.component(system.path("laser_localise0.rtc"))
+        localiser.setParameter("gain", "3.0", "default")
+        localiser.activateConfigurationSet("default")
+        val before = shape(profiles.save())
+        val periodic = saved.copy(dataPortConnectors = saved.dataPortConnectors.map { it.copy(subscriptionType = "periodic", ext = it.ext.copy(properties = it.ext.properties - "dataport.subscription_type")) })
+        val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(periodic) } }
+        assertTrue("are connected with dataport.subscription_type=new, the profile wants dataport.subscription_type=periodic" in refused.reason && '\n' !in refused.reason, refused.reason)
+        assertEquals(before, shape(profiles.save()), "the gain the restore would have written is not")
     }
 
     @Test
