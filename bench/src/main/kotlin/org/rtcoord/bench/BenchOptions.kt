@@ -12,6 +12,7 @@ internal enum class Benchmark(val label: String) {
     ROUNDTRIP("roundtrip"),
     MEMORY("memory"),
     STARTUP("startup"),
+    PROFILE("profile"),
 }
 
 /**
@@ -40,6 +41,10 @@ internal data class BenchOptions(
     /** Profile reads for the discovery floor: one at a time, then all callers at once. */
     val floorCalls: Pair<Int, Int>,
     val startupRepetitions: Int,
+    /** Components in the system whose profile is restored (N - 1 connections). */
+    val profileSize: Int,
+    /** Timed restores of each kind. */
+    val profileRepetitions: Int,
     /** Whether to time the coordinator scripts (round trip, cached script start): they compile the script once. */
     val scripts: Boolean,
     val seed: Long = 9,
@@ -50,7 +55,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: discovery, reaction, monitoring, roundtrip, memory, startup
+  --only        some of: discovery, reaction, monitoring, roundtrip, memory, startup, profile
   --seconds S   the monitoring window (default 60, quick 10)"""
 
         /** What issue 9 asks for: N up to 1000 (10,000 for memory), 60 s monitoring windows. */
@@ -71,6 +76,8 @@ in the same run). Results are printed, never stored.
             memoryRepetitions = 3,
             floorCalls = 2000 to 20_000,
             startupRepetitions = 10,
+            profileSize = 200,
+            profileRepetitions = 10,
             scripts = true,
         )
 
@@ -89,6 +96,7 @@ in the same run). Results are printed, never stored.
             memoryRepetitions = 2,
             floorCalls = 1000 to 10_000,
             startupRepetitions = 3,
+            profileRepetitions = 3,
         )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
@@ -108,6 +116,8 @@ in the same run). Results are printed, never stored.
             memoryRepetitions = 1,
             floorCalls = 50 to 200,
             startupRepetitions = 1,
+            profileSize = 10,
+            profileRepetitions = 1,
             scripts = false,
         )
 

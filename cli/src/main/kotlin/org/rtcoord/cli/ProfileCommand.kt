@@ -21,6 +21,7 @@ class ProfileCommand : NoOpCliktCommand("profile") {
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord -n localhost profile save -o sys.xml" to "the running system, as rtcryo (add --connected for only connected components)",
         "rtcoord profile restore sys.xml" to "connections, configuration and rates back, as rtresurrect; once is enough",
+        "rtcoord profile restore --create sys.xml" to "the same, creating missing components through their managers first",
         "rtcoord profile check sys.xml" to "print the differences, exit 1 when there are any, as rtcheck",
         "rtcoord profile start --dry-run sys.xml" to "the activation plan, as rtstart --dry-run",
     )

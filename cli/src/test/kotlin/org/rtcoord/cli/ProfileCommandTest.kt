@@ -32,6 +32,19 @@ class ProfileCommandTest {
     }
 
     @Test
+    fun `restore --create makes a deleted component through its manager, and without it one line says what is missing`(@TempDir dir: Path) {
+        val file = dir.resolve("sys.xml").toString()
+        runRtcoord("-n", localisation.naming.address, "profile", "save", "-o", file).ok()
+        runRtcoord("mgr", localisation.path("manager.mgr"), "delete", "laser_localise0").ok()
+        val localiser = localisation.path("laser_localise0.rtc")
+        assertEquals("rtcoord: $file: nothing changed: required component $localiser is not running", runRtcoord("profile", "restore", file).failure())
+        val restored = runRtcoord("profile", "restore", "--create", file).ok().lines()
+        assertEquals("created $localiser (laser_localise) through ${localisation.path("manager.mgr")}", restored.first())
+        assertEquals(2, restored.count { it.startsWith("connected") }, restored.toString())
+        assertEquals("", runRtcoord("profile", "check", "--state", "any", file).ok())
+    }
+
+    @Test
     fun `a bad file is one line naming file and line, and start --dry-run prints the plan`(@TempDir dir: Path) {
         val bad = dir.resolve("bad.xml")
         Files.writeString(bad, "<?xml version=\"1.0\"?>\n<rts:RtsProfile xmlns:rts=\"http://www.openrtp.org/namespaces/rts\">\n</rts:RtsProfile>\n")

@@ -1,6 +1,9 @@
 package org.rtcoord.profile
 
+import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.async
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
@@ -63,21 +66,17 @@ internal class SystemOrdering(private val tree: RtcTree) {
         val start = TimeSource.Monotonic.markNow()
         coroutineScope {
             for (step in steps) launch {
-                val outcome = try {
+                // Earlier sequences' time is theirs: a step's deadline starts once they are done.
+                val failed = steps.filter { it.sequence < step.sequence }.firstOrNull { !finished.getValue(it).await() }
+                val outcome = if (failed != null) "not done: ${failed.component} before it was not done" else try {
                     withTimeout(stepDeadline + conditionTime(step.condition)) {
-                        val before = steps.filter { it.sequence < step.sequence }
-                        before.firstOrNull { !finished.getValue(it).await() }?.let { failed -> return@withTimeout "not done: ${failed.component} before it was not done" }
                         when (val c = step.condition) {
                             is Condition.WaitTime -> delay(c.milliseconds.milliseconds)
                             is Condition.Preceding -> awaitPreceding(c, action, steps, byInstance, nodes, issued, finished)?.let { return@withTimeout it }
                             Condition.None -> Unit
                         }
                         issued.getValue(step).complete(true)
-                        val node = nodes.getValue(step.component)
-                        val selector = ContextSelector.Handle(step.contextId)
-                        if (node.state(selector) != action.reaches) {
-                            if (action == OrderedAction.START) node.activate(selector, stepDeadline) else node.deactivate(selector, stepDeadline)
-                        }
+                        act(nodes.getValue(step.component), ContextSelector.Handle(step.contextId), action, stepDeadline)
                         null
                     }
                 } catch (e: TimeoutCancellationException) {
@@ -91,6 +90,25 @@ internal class SystemOrdering(private val tree: RtcTree) {
             }
         }
         return steps.map { outcomes.getValue(it) }
+    }
+
+    /**
+     * Brings [node]'s context to [action]'s state, unless it is there. The calls run in the tree's scope:
+     * one blocked in a socket read does not give way to cancellation, and the step's deadline must end
+     * the wait for it, not the ORB's; abandoned, it ends there within the tree's call deadline.
+     */
+    private suspend fun act(node: ComponentNode, selector: ContextSelector, action: OrderedAction, deadline: Duration) {
+        val call = tree.core.scope.async(CoroutineName("${action.name.lowercase()} ${node.path}")) {
+            if (node.state(selector) != action.reaches) {
+                if (action == OrderedAction.START) node.activate(selector, deadline) else node.deactivate(selector, deadline)
+            }
+        }
+        try {
+            call.await()
+        } catch (e: CancellationException) {
+            call.cancel()
+            throw e
+        }
     }
 
     /** Waits for the preceding components; returns why the step cannot go on, or null. */

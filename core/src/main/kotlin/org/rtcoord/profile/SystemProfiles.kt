@@ -31,8 +31,15 @@ public class SystemProfiles(private val tree: RtcTree) {
      * required component, a missing port, incompatible ports, a connection that exists with other
      * properties or a value out of range is a [ProfileRefusedException] before anything changes. Missing
      * optional components are reported. Restoring again changes nothing.
+     *
+     * With [createMissing], missing components (required or not) are first created through a manager:
+     * the one bound in the component's naming context or nearest above it (a master before a slave,
+     * which loads the type's module if it must), by the type in the component id and the profile's
+     * instance name. No manager for one of them refuses the restore before anything is created; a
+     * restore refused after creating deletes what it created.
      */
-    public suspend fun restore(profile: RtsProfile): RestoreReport = SystemRestore(tree).restore(profile)
+    public suspend fun restore(profile: RtsProfile, createMissing: Boolean = false): RestoreReport =
+        SystemRestore(tree).restore(profile, createMissing)
 
     /**
      * How the live system differs from [profile]: missing components, states other than [state] (not

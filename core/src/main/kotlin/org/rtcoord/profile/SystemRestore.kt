@@ -13,12 +13,14 @@ import org.rtcoord.ZombieNode
 
 /** What a restore did, kept as it was, and could not find. */
 public data class RestoreReport(
-    /** Changes made, one line each (`connected a:out to b:in`). */
+    /** Changes made, one line each (`connected a:out to b:in`), components created first. */
     val done: List<String>,
     /** Connections already there as the profile has them. */
     val kept: List<String>,
-    /** Optional components the system does not have, by path. */
+    /** Optional components the system does not have, by path (none when missing components were created). */
     val missingOptional: List<String>,
+    /** The components created through their managers, by path. */
+    val created: List<String> = emptyList(),
 )
 
 /** A profile that cannot be applied as a whole; nothing was changed. */
@@ -27,7 +29,10 @@ public class ProfileRefusedException(
     public val reason: String,
 ) : Exception(reason)
 
-/** A profile's components resolved on the live system. */
+/**
+ * A profile's components resolved on the live system, each read afresh: a tree that has lived a while
+ * (a coordinator's) may hold snapshots older than the system, and a restore or check must not go by them.
+ */
 internal class ResolvedSystem(val profile: RtsProfile, val nodes: Map<String, ComponentNode>, val missing: List<ProfileComponent>) {
     fun node(target: TargetComponent): ComponentNode? = profile.component(target)?.let { nodes[it.instanceName] }
 
@@ -38,7 +43,7 @@ internal class ResolvedSystem(val profile: RtsProfile, val nodes: Map<String, Co
         }
 
         private suspend fun find(tree: RtcTree, c: ProfileComponent): ComponentNode? = try {
-            tree.component("/" + c.pathUri.removePrefix("/"))
+            tree.component("/" + c.pathUri.removePrefix("/")).also { it.refresh() }
         } catch (e: NotFoundException) {
             null
         } catch (e: RtcException) {
@@ -52,8 +57,33 @@ internal class ResolvedSystem(val profile: RtsProfile, val nodes: Map<String, Co
 internal class SystemRestore(private val tree: RtcTree) {
     private class PlannedConnection(val connector: PortConnector, val from: Port, val to: Port, val properties: Map<String, String>)
 
-    suspend fun restore(profile: RtsProfile): RestoreReport {
-        val system = ResolvedSystem.of(tree, profile)
+    /**
+     * Restores [profile]; with [createMissing], its missing components are created first, and deleted
+     * again if the restore is then refused, so that a refusal still leaves the system as it was.
+     */
+    suspend fun restore(profile: RtsProfile, createMissing: Boolean): RestoreReport {
+        val found = ResolvedSystem.of(tree, profile)
+        if (!createMissing || found.missing.isEmpty()) return restore(found, emptyList())
+        val creation = MissingComponentCreation(tree)
+        val planned = creation.plan(found.missing)
+        val made = mutableListOf<MissingComponentCreation.Planned>()
+        val lines = mutableListOf<String>()
+        try {
+            for (p in planned) {
+                lines += creation.create(p)
+                made += p
+            }
+            val report = restore(ResolvedSystem.of(tree, profile), lines)
+            return report.copy(created = made.map { it.path })
+        } catch (e: ProfileRefusedException) {
+            val undone = made.reversed().mapNotNull { p -> try { creation.delete(p); null } catch (d: RtcException) { "${p.path} (${d.reason})" } }
+            val after = if (undone.isEmpty()) "the components created for it were deleted again" else "could not delete again ${undone.joinToString()}"
+            throw ProfileRefusedException(if (made.isEmpty()) e.reason else "${e.reason}; $after")
+        }
+    }
+
+    private suspend fun restore(system: ResolvedSystem, created: List<String>): RestoreReport {
+        val profile = system.profile
         system.missing.firstOrNull { it.isRequired }?.let { throw ProfileRefusedException("required component /${it.pathUri.removePrefix("/")} is not running") }
         val kept = mutableListOf<String>()
         val connections = (profile.dataPortConnectors + profile.servicePortConnectors).mapNotNull { plan(system, it, kept) }
@@ -65,7 +95,7 @@ internal class SystemRestore(private val tree: RtcTree) {
                 if (node.snapshot().context(handle) == null) throw ProfileRefusedException("${node.path}: no execution context $handle")
             }
         }
-        val done = mutableListOf<String>()
+        val done = created.toMutableList()
         for (c in connections) {
             c.from.connect(listOf(c.to), c.properties, c.connector.name.ifEmpty { null }, c.connector.connectorId)
             done += "connected ${c.from.path} to ${c.to.path}"

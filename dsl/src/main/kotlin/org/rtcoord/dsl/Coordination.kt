@@ -2,6 +2,8 @@ package org.rtcoord.dsl
 
 import org.rtcoord.EventOptions
 import org.rtcoord.TreeConfig
+import java.nio.file.Path
+import java.nio.file.Paths
 import kotlin.time.Duration
 
 /**
@@ -11,10 +13,16 @@ import kotlin.time.Duration
  *
  * @property args the arguments the script was started with.
  * @property host the tree configuration the host application runs the coordinator with.
+ * @property directory what the script's relative file names (profiles) are relative to: the script's own
+ *   directory when [org.rtcoord.dsl.script.ScriptHost] loads it, else the working directory.
  */
 @RtcDsl
-public open class Coordination(public val args: List<String>, public val host: TreeConfig) {
-    internal val engine = Engine()
+public open class Coordination(
+    public val args: List<String>,
+    public val host: TreeConfig,
+    public val directory: Path = Paths.get(""),
+) {
+    internal val engine = Engine(directory)
     internal val rules = mutableListOf<Rule<*>>()
     internal val timers = mutableListOf<Timer>()
     internal val supervisions = mutableListOf<Supervision>()

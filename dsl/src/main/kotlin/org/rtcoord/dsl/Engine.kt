@@ -16,6 +16,10 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.UnreachableException
+import org.rtcoord.profile.RtsProfile
+import org.rtcoord.profile.RtsProfiles
+import java.nio.file.Path
+import java.nio.file.Paths
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.CopyOnWriteArrayList
 
@@ -23,7 +27,7 @@ import java.util.concurrent.CopyOnWriteArrayList
  * Resolves a script's references against the live tree and performs their actions, logging each. A
  * component found once is remembered; when it stops answering (re-created, moved), it is looked up again.
  */
-internal class Engine {
+internal class Engine(private val directory: Path = Paths.get("")) {
     lateinit var tree: RtcTree
     var log: (String) -> Unit = {}
     private val resolved = ConcurrentHashMap<String, ComponentNode>()
@@ -105,6 +109,18 @@ internal class Engine {
             withComponent(ref.selector, { log(describe(it)) }, { log("${describe(it)} (looked up again)") }, action)
         }
         currentCoroutineContext()[ActionJournal]?.record(line, undo)
+    }
+
+    /** The RTSProfile in [file], relative to the script's directory; read anew at each call. */
+    fun profile(file: String): RtsProfile = RtsProfiles.read(directory.resolve(file))
+
+    /**
+     * Runs [action], one on the whole system (a profile's restore), logged as [what] and journaled
+     * without an undo; its failure is recorded as the others' are.
+     */
+    suspend fun <T> perform(what: String, action: suspend () -> T): T {
+        log(what)
+        return recorded({ what }, action).also { currentCoroutineContext()[ActionJournal]?.record(what, null) }
     }
 
     /** Runs [action], recording its failure as one of [what]'s. */

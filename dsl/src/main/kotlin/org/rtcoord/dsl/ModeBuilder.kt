@@ -66,7 +66,7 @@ public class ModeBuilder internal constructor(internal val name: String, private
      * all active modes (inner ones override outer ones), then raises [done] or [failed].
      */
     public fun network(declare: NetworkBuilder.() -> Unit) {
-        (network ?: NetworkBuilder().also { network = it }).declare()
+        (network ?: NetworkBuilder(engine::profile).also { network = it }).declare()
     }
 
     /** A component, by name or path. */

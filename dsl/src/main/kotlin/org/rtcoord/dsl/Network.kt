@@ -1,5 +1,7 @@
 package org.rtcoord.dsl
 
+import org.rtcoord.profile.ProfileFormatException
+import org.rtcoord.profile.RtsProfile
 import kotlin.time.Duration
 
 /** A data connection from out-port [from] to in-port [to], each `component:port` (plain names get `.rtc`). */
@@ -47,11 +49,12 @@ public class Network internal constructor(
 
 /**
  * Declares the network a mode needs: `network { active("laser0.rtc"); connected("laser0.rtc:laser",
- * "laser_localise0.rtc:laser"); configSet("laser_localise0.rtc", "default") }`. Components are named
- * as in `component(...)` (a name or a full path, not a pattern); ports as `component:port`.
+ * "laser_localise0.rtc:laser"); configSet("laser_localise0.rtc", "default") }`, or takes it from an
+ * RTSProfile: `network { profile("nav.xml") }`. Components are named as in `component(...)` (a name or a
+ * full path, not a pattern); ports as `component:port`.
  */
 @RtcDsl
-public class NetworkBuilder internal constructor() {
+public class NetworkBuilder internal constructor(private val readProfile: (String) -> RtsProfile) {
     private val components = linkedMapOf<String, Boolean>()
     private val connections = linkedMapOf<Link, Boolean>()
     private val configurationSets = linkedMapOf<String, String>()
@@ -88,6 +91,35 @@ public class NetworkBuilder internal constructor() {
         val name = component(component)
         configurationSets[name]?.takeIf { it != id }?.let { problems += "$name is given two configuration sets ($it, $id)" }
         configurationSets[name] = id
+    }
+
+    /**
+     * Everything the RTSProfile [file] (XML or YAML, relative to the script's directory) says of the
+     * network: its required components active (with [active] false their states are left alone), its
+     * connections made with the profile's connector properties, and each component's active
+     * configuration set. Components are named by the profile's paths (`pathUri`). Optional components
+     * (`isRequired` false) and their connections are left alone, as a restore leaves them. Configuration
+     * values are not written, only sets switched: `restoreProfile(file)` in an entry action writes them.
+     * The file is read when the script is evaluated; one that cannot be read is a problem of the machine.
+     */
+    public fun profile(file: String, active: Boolean = true) {
+        val profile = try {
+            readProfile(file)
+        } catch (e: ProfileFormatException) {
+            problems += "profile ${e.message}"
+            return
+        }
+        val required = profile.components.filter { it.isRequired }
+        val paths = required.associate { it.instanceName to "/" + it.pathUri.removePrefix("/") }
+        if (active) required.forEach { active(paths.getValue(it.instanceName)) }
+        for (connector in profile.dataPortConnectors + profile.servicePortConnectors) {
+            val from = profile.component(connector.source)?.let { paths[it.instanceName] } ?: continue
+            val to = profile.component(connector.target)?.let { paths[it.instanceName] } ?: continue
+            val fromPort = connector.source.shortPortName ?: continue
+            val toPort = connector.target.shortPortName ?: continue
+            connected("$from:$fromPort", "$to:$toPort", connector.connectionProperties())
+        }
+        required.filter { it.activeConfigurationSet.isNotEmpty() }.forEach { configSet(paths.getValue(it.instanceName), it.activeConfigurationSet) }
     }
 
     internal fun build(): Network = Network(components.toMap(), connections.toMap(), configurationSets.toMap(), stepDeadline, properties.toMap())

@@ -5,7 +5,11 @@ import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
 import org.rtcoord.ComponentNode
+import org.rtcoord.LifeCycle
 import org.rtcoord.RtcEvent
+import org.rtcoord.profile.ProfileDifference
+import org.rtcoord.profile.RestoreReport
+import org.rtcoord.profile.SystemProfiles
 import kotlin.time.Duration
 
 /**
@@ -161,6 +165,39 @@ public class Reaction internal constructor(
             throw e
         }
     }
+
+    /**
+     * Restores the RTSProfile [file] (XML or YAML, relative to the script's directory) onto the system,
+     * as `rtcoord profile restore` does: connections made (identical ones kept), configuration sets
+     * written and the profile's active set activated, execution context rates set; with [createMissing],
+     * missing components created through their managers first. Each change is logged. When the profile
+     * cannot be applied as a whole (a required component missing, incompatible ports, a value out of
+     * range) nothing is changed and the action fails with one line saying why, stopping the handler
+     * unless it runs in [attempt]. Restoring again changes nothing. Not undone by [ReactionFailure.undo].
+     *
+     * ```
+     * mode("navigation") { entry { restoreProfile("nav.xml") } }
+     * ```
+     *
+     * @return what was done, kept and found missing.
+     */
+    public suspend fun restoreProfile(file: String, createMissing: Boolean = false): RestoreReport =
+        engine.perform("restore profile $file") {
+            SystemProfiles(engine.tree).restore(engine.profile(file), createMissing).also { report -> report.done.forEach { engine.log("  $it") } }
+        }
+
+    /**
+     * How the live system differs from the RTSProfile [file] (relative to the script's directory), as
+     * `rtcoord profile check` reports it: missing components, states other than [state] (null: states not
+     * compared), missing or different connections, configuration and rates. Changes nothing; empty
+     * when the system matches:
+     *
+     * ```
+     * every(30.seconds) { checkProfile("nav.xml").takeIf { it.isNotEmpty() }?.let { log("drift: $it") } }
+     * ```
+     */
+    public suspend fun checkProfile(file: String, state: LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> =
+        engine.perform("check profile $file") { SystemProfiles(engine.tree).check(engine.profile(file), state) }
 
     /** Runs [block], failing with [TimedOut] if it takes longer than [timeout]. */
     public suspend fun <T> within(timeout: Duration, block: suspend () -> T): T = try {

@@ -9,6 +9,12 @@ import org.junit.jupiter.api.io.TempDir
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
+import org.rtcoord.profile.PortConnector
+import org.rtcoord.profile.ProfileComponent
+import org.rtcoord.profile.ProfileFormat
+import org.rtcoord.profile.RtsProfile
+import org.rtcoord.profile.RtsProfiles
+import org.rtcoord.profile.TargetComponent
 import java.nio.file.Files
 import java.nio.file.Path
 
@@ -70,6 +76,33 @@ class ScriptHostTest {
             listOf("$stranger:1:1: 'gyro0' is not supervised here (supervised: laser0.rtc)"),
             assertThrows(ScriptFailure::class.java) { runBlocking { host.load(stranger) } }.problems,
         )
+    }
+
+    @Test
+    fun `a network's profile is read beside the script, and one that cannot be read is the machine's problem`(): Unit = runBlocking {
+        val laser = ProfileComponent("RTC:AIST:sensor:laser:1.0", "127.0.0.1:2809/host.host_cxt/laser0.rtc", "laser0", "default", isRequired = true)
+        val localiser = ProfileComponent("RTC:AIST:nav:laser_localise:1.0", "127.0.0.1:2809/host.host_cxt/laser_localise0.rtc", "laser_localise0", "precise", isRequired = true)
+        val spare = ProfileComponent("RTC:AIST:sensor:gyro:1.0", "127.0.0.1:2809/host.host_cxt/gyro0.rtc", "gyro0")
+        val connector = PortConnector(
+            "c1", "scan", TargetComponent(laser.id, "laser0", "laser0.laser"), TargetComponent(localiser.id, "laser_localise0", "laser_localise0.laser"),
+            dataType = "IDL:RTC/TimedDoubleSeq:1.0", interfaceType = "corba_cdr", dataflowType = "push",
+        )
+        val profile = RtsProfile("RTSystem:test:nav:1.0", components = listOf(laser, localiser, spare), dataPortConnectors = listOf(connector))
+        Files.writeString(directory.resolve("nav.xml"), RtsProfiles.write(profile, ProfileFormat.XML))
+        val file = script("nav.coord.kts", "modes(\"m\") {\n    initial(\"a\")\n    mode(\"a\") { network { profile(\"nav.xml\") } }\n}\n")
+        val context = "/127.0.0.1:2809/host.host_cxt"
+        assertEquals(
+            listOf(
+                "modes m, initially a", "  mode a",
+                "    network: active $context/laser0.rtc, $context/laser_localise0.rtc",
+                "    network: connected $context/laser0.rtc:laser -> $context/laser_localise0.rtc:laser",
+                "    network: configuration sets $context/laser0.rtc=default, $context/laser_localise0.rtc=precise",
+            ),
+            host.load(file).description,
+        )
+        val absent = script("absent.coord.kts", "modes(\"m\") {\n    initial(\"a\")\n    mode(\"a\") { network { profile(\"none.xml\") } }\n}\n")
+        val problem = assertThrows(ScriptFailure::class.java) { runBlocking { host.load(absent) } }.problems.single()
+        assertTrue(problem.startsWith("$absent:") && ": machine 'm': mode 'm/a': network: profile ${directory.resolve("none.xml")}: cannot read" in problem, problem)
     }
 
     @Test

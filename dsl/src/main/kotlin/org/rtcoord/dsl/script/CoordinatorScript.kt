@@ -2,6 +2,7 @@ package org.rtcoord.dsl.script
 
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
+import java.nio.file.Path
 import kotlin.script.experimental.annotations.KotlinScript
 import kotlin.script.experimental.api.ScriptAcceptedLocation
 import kotlin.script.experimental.api.ScriptCompilationConfiguration
@@ -13,14 +14,15 @@ import kotlin.script.experimental.jvm.jvm
 
 /**
  * The script definition of `*.coord.kts` coordinators: the script body is a [Coordination], with the
- * core API, the DSL, lifecycle states (`ERROR`, `ACTIVE`, ...) and duration units imported.
+ * core API, the DSL, lifecycle states (`ERROR`, `ACTIVE`, ...) and duration units imported; [directory]
+ * is the script's own.
  */
 @KotlinScript(
     displayName = "rtcoord coordinator",
     fileExtension = "coord.kts",
     compilationConfiguration = CoordinatorScriptCompilation::class,
 )
-public abstract class CoordinatorScript(args: Array<String>, host: TreeConfig) : Coordination(args.toList(), host)
+public abstract class CoordinatorScript(args: Array<String>, host: TreeConfig, directory: Path) : Coordination(args.toList(), host, directory)
 
 /** How coordinator scripts compile: default imports, and the host's class path as the script's. */
 public object CoordinatorScriptCompilation : ScriptCompilationConfiguration({

@@ -51,7 +51,7 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
 
     /**
      * Compiles (or takes from the cache) and evaluates [script] with [args], the host running it on
-     * [host]: returns what it declared. Throws [ScriptFailure] when it does not compile or its body throws.
+     * [host]: returns what it declared. File names in the script are relative to the script's directory. Throws [ScriptFailure] when it does not compile or its body throws.
      */
     public suspend fun load(script: Path, args: List<String> = emptyList(), host: TreeConfig = TreeConfig()): Coordination {
         val compiled = when (val result = compile(script)) {
@@ -59,7 +59,7 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
             is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
         }
         val evaluation = ScriptEvaluationConfiguration {
-            constructorArgs(args.toTypedArray(), host)
+            constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent)
             jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
         }
         return when (val result = evaluator(compiled, evaluation)) {
