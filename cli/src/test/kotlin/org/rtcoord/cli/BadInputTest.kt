@@ -157,9 +157,9 @@ class BadInputTest {
             Row("a component for a manager in a script", run(wrongKind),
                 "rtcoord: $wrongKind: ${localisation.path("laser0.rtc")}: is a component, not a manager"),
             // Invalid connector properties.
-            Row("a dataflow type the port does not offer", listOf("con", laser, "$localiser:laser", "-p", "dataport.dataflow_type=telepathy"),
+            Row("a dataflow type the port does not offer", listOf("con", laser, "$localiser:laser", "--allow-duplicate", "-p", "dataport.dataflow_type=telepathy"),
                 "rtcoord: $laser: connect rejected: $laser does not offer dataport.dataflow_type=telepathy (offers push)"),
-            Row("an interface type the port does not offer", listOf("con", laser, "$localiser:laser", "-p", "dataport.interface_type=shm"),
+            Row("an interface type the port does not offer", listOf("con", laser, "$localiser:laser", "--allow-duplicate", "-p", "dataport.interface_type=shm"),
                 "rtcoord: $laser: connect rejected: $laser does not offer dataport.interface_type=shm (offers corba_cdr)"),
             // Incompatible ports.
             Row("different data types", listOf("con", gyro, "$localiser:laser"),

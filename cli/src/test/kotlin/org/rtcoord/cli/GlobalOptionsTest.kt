@@ -71,7 +71,7 @@ class GlobalOptionsTest {
     fun `-q leaves out confirmations`() {
         val laser = localisation.path("laser0.rtc:laser")
         val localiser = localisation.path("laser_localise0.rtc:laser")
-        assertEquals("", runRtcoord("-q", "con", laser, localiser, "--id", "quiet").ok())
+        assertEquals("", runRtcoord("-q", "con", laser, localiser, "--allow-duplicate", "--id", "quiet").ok())
         runRtcoord("dis", laser, "--id", "quiet").ok()
     }
 }
