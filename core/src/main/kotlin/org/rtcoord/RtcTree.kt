@@ -140,15 +140,18 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * Every node below [from] (included) for which [predicate] holds, in depth-first order, listing
      * directories as the walk reaches them. Unreachable branches are skipped.
      */
-    public fun find(from: RtcPath = RtcPath.ROOT, predicate: suspend (Node) -> Boolean = { true }): Flow<Node> = flow {
-        suspend fun walk(node: Node) {
+    public fun find(from: RtcPath = RtcPath.ROOT, predicate: suspend (Node) -> Boolean = { true }): Flow<Node> = find(from, Int.MAX_VALUE, predicate)
+
+    /** As [find], going at most [maxDepth] levels below [from] ([from] is level 0), as rtfind's `-m`. */
+    public fun find(from: RtcPath, maxDepth: Int, predicate: suspend (Node) -> Boolean): Flow<Node> = flow {
+        suspend fun walk(node: Node, depth: Int) {
             if (predicate(node)) emit(node)
-            if (node is DirectoryNode) {
+            if (node is DirectoryNode && depth < maxDepth) {
                 val children = try { node.children() } catch (e: RtcException) { emptyList() }
-                children.forEach { walk(it) }
+                children.forEach { walk(it, depth + 1) }
             }
         }
-        walk(node(from))
+        walk(node(from), 0)
     }
 
     /**

@@ -104,7 +104,8 @@ class SoakTest {
         var connections = 0
         var disconnections = 0
         private val contexts = HashMap<FixtureComponent, ExecutionContext>()
-        private val connected = ArrayList<Pair<FixtureComponent, String>>()
+        /** Each connection made and not removed yet: its out-port's component, its id, its in-port's component. */
+        private val connected = ArrayList<Triple<FixtureComponent, String, FixtureComponent>>()
 
         suspend fun run(length: kotlin.time.Duration): Churn {
             val end = TimeSource.Monotonic.markNow() + length
@@ -130,10 +131,12 @@ class SoakTest {
         private fun changeConnection() {
             if (connected.size < MAX_CONNECTIONS && (connected.isEmpty() || random.nextBoolean())) {
                 val (from, to) = List(2) { components[random.nextInt(components.size)] }
-                connected += from to connect("${from.instanceName}:out", "${to.instanceName}:in")
+                // OpenRTM-aist refuses a second connection between two ports, as the fixtures do.
+                if (connected.any { (source, _, target) -> source === from && target === to }) return
+                connected += Triple(from, connect("${from.instanceName}:out", "${to.instanceName}:in"), to)
                 connections++
             } else {
-                val (from, id) = connected.removeAt(random.nextInt(connected.size))
+                val (from, id, _) = connected.removeAt(random.nextInt(connected.size))
                 val port = from.ref.get_ports().first { it.get_port_profile().name == "${from.instanceName}.out" }
                 port.disconnect(id)
                 disconnections++

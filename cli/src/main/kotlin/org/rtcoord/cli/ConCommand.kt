@@ -3,19 +3,23 @@ package org.rtcoord.cli
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.options.convert
+import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.multiple
 import com.github.ajalt.clikt.parameters.options.option
+import org.rtcoord.PreconditionNotMetException
 
-/** `rtcoord con`: rtcon, refusing incompatible ports before anything changes. */
+/** `rtcoord con`: rtcon, refusing incompatible ports and a second connection of two ports before anything changes. */
 class ConCommand : TreeCommand("con") {
     override fun help(context: Context): String =
         "Connect two ports and print the new connector's id. Data ports get OpenRTM's usual properties (push, corba_cdr, " +
             "flush, the out-port's data type) unless --property says otherwise; ports whose data types or offered " +
-            "properties do not match are refused."
+            "properties do not match are refused, and so are ports connected already, as OpenRTM-aist refuses them " +
+            "(--allow-duplicate connects them again)."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord con /localhost/host.host_cxt/laser0.rtc:laser /localhost/host.host_cxt/laser_localise0.rtc:laser" to "a data connection",
         "rtcoord con A.rtc:out B.rtc:in -p dataport.subscription_type=new --name fast" to "with a property and a name",
+        "rtcoord con A.rtc:out B.rtc:in --allow-duplicate" to "a second connection of two connected ports",
     )
 
     private val from by argument("PATH:PORT", help = "One port.")
@@ -32,8 +36,28 @@ class ConCommand : TreeCommand("con") {
             key.trim() to value.trim()
         }.multiple()
 
+    private val allowDuplicate by option(
+        "--allow-duplicate",
+        help = "Connect ports that are connected already: OpenRTM-aist refuses that unless the connector carries " +
+            "$ALLOW_DUPLICATE=YES, which this sets.",
+    ).flag()
+
     override suspend fun execute() {
-        val connector = port(from).connect(listOf(port(to)), properties.toMap(), name, id.orEmpty())
+        val source = port(from)
+        val target = port(to)
+        val given = properties.toMap()
+        val duplicates = given[ALLOW_DUPLICATE].equals("YES", ignoreCase = true) || allowDuplicate
+        // A port given twice is refused by connect itself, with its own reason.
+        if (!duplicates && source.path != target.path) {
+            val existing = source.connectorsTo(target)
+            if (existing.isNotEmpty()) {
+                throw PreconditionNotMetException(
+                    source.path.toString(), "connect",
+                    "already connected to ${target.path} (connector ${existing.joinToString { it.id }}); --allow-duplicate connects them again",
+                )
+            }
+        }
+        val connector = source.connect(listOf(target), if (allowDuplicate) given + (ALLOW_DUPLICATE to "YES") else given, name, id.orEmpty())
         if (session.json) {
             echoJson(mapOf("id" to connector.id, "name" to connector.name, "properties" to connector.properties.toSortedMap()))
         } else {
@@ -41,3 +65,6 @@ class ConCommand : TreeCommand("con") {
         }
     }
 }
+
+/** The connector property with which OpenRTM-aist's ports accept a second connection between them. */
+private const val ALLOW_DUPLICATE = "dataport.allow_dup_connection"

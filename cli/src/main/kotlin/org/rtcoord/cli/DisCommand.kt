@@ -29,9 +29,7 @@ class DisCommand : TreeCommand("dis") {
         val doomed = when {
             to != null -> {
                 val other = port(to!!)
-                // By OpenRTM's port name: a connection names its far end by the first path the tree knows for it.
-                val otherName = other.snapshot().fullName
-                val between = port.connections().filter { connection -> connection.ports.any { it.fullName == otherName } }.map { it.id }
+                val between = port.connectorsTo(other).map { it.id }
                 if (between.isEmpty()) throw NotFoundException(port.path.toString(), "not connected to ${other.path}")
                 between.filter { id == null || it == id }
                     .ifEmpty { throw NotFoundException(port.path.toString(), "connector '$id' does not lead to ${other.path}") }

@@ -9,11 +9,11 @@ import org.rtcoord.Node
 import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * Reads [from] and everything below it again, concurrently (dead and hung objects become zombies):
- * whole components, or with [summaries] only what listings show of them. When that takes more than
- * half a second, [progress] (if any) shows how far it got.
+ * Reads [from] and everything below it again, [depth] levels down, concurrently (dead and hung objects
+ * become zombies): whole components, or with [summaries] only what listings show of them. When that
+ * takes more than half a second, [progress] (if any) shows how far it got.
  */
-internal suspend fun discover(from: Node, progress: StatusLine?, summaries: Boolean = false): Unit = coroutineScope {
+internal suspend fun discover(from: Node, progress: StatusLine?, summaries: Boolean = false, depth: Int = Int.MAX_VALUE): Unit = coroutineScope {
     val ticker = progress?.let { line ->
         launch {
             delay(PROGRESS_AFTER)
@@ -25,7 +25,7 @@ internal suspend fun discover(from: Node, progress: StatusLine?, summaries: Bool
         }
     }
     try {
-        if (summaries && from is DirectoryNode) from.survey() else from.refresh(Int.MAX_VALUE)
+        if (summaries && from is DirectoryNode) from.survey(depth) else from.refresh(depth)
     } finally {
         ticker?.cancel()
         progress?.clear()

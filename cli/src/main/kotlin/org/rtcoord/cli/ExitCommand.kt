@@ -14,7 +14,7 @@ class ExitCommand : TreeCommand("exit") {
         "rtcoord exit /localhost/host.host_cxt/laser_localise0.rtc" to "stop the laser localiser for good",
     )
 
-    private val paths by argument("PATH", help = "Components (name.rtc).").multiple(required = true)
+    private val paths by argument("PATH", help = "Components (name.rtc); anything else, a port path included, is refused.").multiple(required = true)
 
     override suspend fun execute() {
         val components = paths.map { text -> component(text).also { it.refresh() } }

@@ -32,7 +32,7 @@ abstract class LifecycleCommand(
     private val from: LifeCycle,
     private val to: LifeCycle,
 ) : TreeCommand(name) {
-    private val paths by argument("PATH", help = "Components (name.rtc).").multiple(required = true)
+    private val paths by argument("PATH", help = "Components (name.rtc); anything else, a port path included, is refused.").multiple(required = true)
 
     private val context by mutuallyExclusiveOptions(
         option("--context", metavar = "HANDLE", help = "The execution context with this handle (owned: 0.., participating: 1000..).")

@@ -10,6 +10,7 @@ import com.github.ajalt.clikt.parameters.options.option
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.Node
+import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.TimedOutException
 import org.rtcoord.UnreachableException
@@ -20,14 +21,17 @@ import org.rtcoord.ZombieNode
 class LsCommand : TreeCommand("ls") {
     override fun help(context: Context): String =
         "List name servers, naming contexts, managers and components, as rtls does. Directories end in '/', " +
-            "dead registrations (zombies) start with '*'. With no PATH, list the name servers given by -n or the environment. " +
-            "A name server that cannot be reached is reported on stderr, one line each, and the status is 1; what can be reached is listed. " +
+            "dead registrations (zombies) start with '*'. With no PATH, list the working directory as rtls does: RTCOORD_CWD " +
+            "(or RTCSH_CWD) when set, else the root context of each name server given by -n or the environment; '/' lists " +
+            "the name servers themselves. A name server that cannot be reached is reported on stderr, one line each, and " +
+            "the status is 1; what can be reached is listed. " +
             "A slave manager's components are listed below it, not a second time below its master as rtls does."
 
     override fun helpEpilog(context: Context): String = examples(
-        "rtcoord -n localhost ls" to "the name server's root context",
+        "rtcoord -n localhost ls -l" to "the name server's root context in the long form, as rtls -l /localhost/",
         "rtcoord ls -l /localhost/host.host_cxt" to "state and ports of every component in a context",
-        "rtcoord ls -R /localhost:2809" to "everything below a name server, directory by directory",
+        "rtcoord -n localhost ls -l -R" to "state and ports of everything the name server knows, directory by directory",
+        "rtcoord -n localhost ls host.host_cxt" to "a relative path starts at the first name server given",
         "rtcoord --json ls /localhost/host.host_cxt" to "the same entries as JSON",
     )
 
@@ -38,18 +42,36 @@ class LsCommand : TreeCommand("ls") {
     private val paths by argument("PATH", help = "What to list; '/' is every name server the run knows.").multiple()
 
     override suspend fun execute() {
-        val targets = paths.ifEmpty {
-            if (session.nameServers.isEmpty()) usage("no PATH and no name server: give a PATH, -n HOST[:PORT] or RTCOORD_NAMESERVERS")
-            listOf("/")
+        val targets = paths.ifEmpty { workingDirectories() }
+        val failures = mutableListOf<RtcException>()
+        val read = targets.flatMap { text ->
+            try {
+                listing(text, headed = targets.size > 1)
+            } catch (e: RtcException) {
+                // A name server's root that does not answer is one error line among the listings, as below.
+                if (e !is UnreachableException && e !is TimedOutException || !pathOf(text).isNameServer) throw e
+                failures += e
+                emptyList()
+            }
         }
-        val read = targets.flatMap { listing(it, headed = targets.size > 1) }
         // As rtls fails on a name server it cannot reach, rather than list it as a dead registration.
         val unreachable = read.flatMap { block -> block.entries.map { it.node }.filterIsInstance<ZombieNode>().filter { it.path.isNameServer } }
         val blocks = read.map { block -> Block(block.header, block.entries.filter { it.node !in unreachable }) }
         show(blocks)
-        if (unreachable.isEmpty()) return
-        unreachable.distinctBy { it.path }.forEach { echo(CommandFailed("${it.path}: ${it.cause.reason}").message, err = true) }
+        val errors = failures.map { explain(it) } + unreachable.distinctBy { it.path }.map { "${it.path}: ${it.cause.reason}" }
+        if (errors.isEmpty()) return
+        errors.forEach { echo(CommandFailed(it).message, err = true) }
         throw ProgramResult(1)
+    }
+
+    /**
+     * What `ls` without a PATH lists: the working directory the environment set, else each name server's
+     * root context (rtls lists its working directory, which rtshell users point at a name server).
+     */
+    private fun workingDirectories(): List<String> {
+        session.workingDirectory?.let { return listOf(it.toString()) }
+        if (session.nameServers.isEmpty()) fail(NO_NAME_SERVER)
+        return session.nameServers.map { "${RtcPath.nameServer(it)}/" }
     }
 
     private fun show(blocks: List<Block>) {

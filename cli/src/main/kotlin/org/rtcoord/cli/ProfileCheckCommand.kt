@@ -12,8 +12,8 @@ class ProfileCheckCommand : ProfileFileCommand("check") {
         "Compare the running system with a profile: components present, their state, connections, configuration and " +
             "rates. Prints each difference and exits 1 when there is any."
 
-    private val state by option("--state", help = "The state components should be in (default: active, as rtcheck).")
-        .choice("active", "inactive", "any").default("active")
+    private val state by option("--state", help = "The state components should be in, any case (default: active, as rtcheck).")
+        .choice("active", "inactive", "any", ignoreCase = true).default("active")
 
     override suspend fun execute() {
         val profile = profile()

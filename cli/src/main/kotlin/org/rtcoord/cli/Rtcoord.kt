@@ -48,17 +48,20 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
             "addressed by rtshell's paths (/host:port/context/name.rtc:port)."
 
     override fun helpEpilog(context: Context): String = examples(
-        "rtcoord -n localhost ls -l" to "state and ports of everything the name server on localhost:2809 knows",
-        "rtcoord ls -R /localhost:2809" to "everything below a name server",
+        "rtcoord -n localhost ls -l" to "the root context of the name server on localhost:2809, as rtls -l /localhost/ lists it",
+        "rtcoord -n localhost ls -l -R" to "state and ports of everything that name server knows",
+        "rtcoord -n localhost act host.host_cxt/laser0.rtc" to "a relative path starts at the first name server given",
         "rtcoord act /localhost/host.host_cxt/laser0.rtc" to "activate a component and wait until it is Active",
         "RTCOORD_NAMESERVERS='a;b:2810' rtcoord find / --state error" to "components in ERROR on two name servers",
-    ) + "\n\nRelative paths start from RTCOORD_CWD (or rtshell's RTCSH_CWD) when it is set."
+    ) + "\n\nRelative paths start from RTCOORD_CWD (or rtshell's RTCSH_CWD) when it is set, else at the first name server " +
+        "given (-n or RTCOORD_NAMESERVERS). A name that is not found is answered with the close ones that exist (did you mean)."
 
     private val nameServers by option(
         "-n", "--nameserver",
         metavar = "ADDRESS",
         help = "A name server to use, HOST or HOST:PORT (repeatable). Without it: RTCOORD_NAMESERVERS, else rtshell's " +
-            "RTCTREE_NAMESERVERS, both separated by ';'. Name servers named in a path are always used.",
+            "RTCTREE_NAMESERVERS, both separated by ';'. Name servers named in a path are always used. Relative paths " +
+            "start at the first one, unless RTCOORD_CWD says otherwise.",
     ).convert { address -> nameServer(address) { fail(it) } }.multiple()
 
     private val timeout by option(

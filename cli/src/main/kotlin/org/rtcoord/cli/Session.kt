@@ -20,11 +20,17 @@ class Session(
     val verbose: Boolean,
     /** Whether confirmations and progress are left out. */
     val quiet: Boolean,
-    /** Where relative paths start, or null when they are not allowed. */
+    /** The working directory the environment set (`RTCOORD_CWD`, `RTCSH_CWD`), or null. */
     val workingDirectory: RtcPath?,
     /** The one address the ORB listens on, or null for the one that reaches the first name server. */
     val listenAddress: String? = null,
 ) : AutoCloseable {
+    /**
+     * Where relative paths start: the [workingDirectory] the environment set, else the first name server
+     * given; null when there is neither.
+     */
+    val start: RtcPath? get() = workingDirectory ?: nameServers.firstOrNull()?.let(RtcPath::nameServer)
+
     private val lazyTree = lazy { RtcTree.create(treeConfig()) }
 
     /** A tree's configuration for [servers], with the run's deadline and listen address. */

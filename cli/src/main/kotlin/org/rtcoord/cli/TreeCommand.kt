@@ -6,8 +6,10 @@ import com.github.ajalt.clikt.core.UsageError
 import com.github.ajalt.clikt.core.requireObject
 import kotlinx.coroutines.runBlocking
 import org.rtcoord.ComponentNode
+import org.rtcoord.DirectoryNode
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
+import org.rtcoord.NotFoundException
 import org.rtcoord.Port
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
@@ -30,7 +32,13 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
 
     final override fun run() {
         try {
-            runBlocking { execute() }
+            runBlocking {
+                try {
+                    execute()
+                } catch (e: NotFoundException) {
+                    throw suggesting(e)
+                }
+            }
         } catch (e: CliktError) {
             throw e
         } catch (e: PartlyDone) {
@@ -75,22 +83,62 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
     internal fun progressLine(): StatusLine? =
         if (System.console() != null && !session.quiet) StatusLine { echo(it, trailingNewline = false, err = true) } else null
 
-    /** [text] read as a path, relative ones from the working directory. */
-    protected fun pathOf(text: String): RtcPath = RtcPath.parse(text, session.workingDirectory)
+    /**
+     * [text] read as a path, relative ones from the session's [start][Session.start]; with nothing to
+     * start from, a relative path fails saying how to give a start.
+     */
+    protected fun pathOf(text: String): RtcPath {
+        val start = session.start
+        if (start == null && !text.startsWith('/') && !text.startsWith("corbaloc:", ignoreCase = true)) {
+            fail("$text: a relative path needs a start: give -n HOST[:PORT] (relative paths start at the first name server) or set RTCOORD_CWD")
+        }
+        return RtcPath.parse(text, start)
+    }
 
-    /** The node at [text]; a port path is refused rather than read as its component. */
+    /**
+     * The node at [text]; a port path is refused rather than read as its component, and so is the root
+     * when no name server is configured (it would list nothing).
+     */
     protected suspend fun node(text: String): Node {
         val path = pathOf(text)
         if (path.port != null) throw WrongKindException(path.toString(), "component, manager or directory", "port")
+        if (path.isRoot && session.nameServers.isEmpty()) fail("$text: $NO_NAME_SERVER")
         return tree.node(path)
     }
 
-    /** The component at [text]. */
-    protected suspend fun component(text: String): ComponentNode = tree.component(text, session.workingDirectory)
+    /** The component at [text]; a port path is refused rather than read as its component. */
+    protected suspend fun component(text: String): ComponentNode = tree.component(objectPath(text, "component").toString())
 
-    /** The manager at [text]. */
-    protected suspend fun manager(text: String): ManagerNode = tree.manager(text, session.workingDirectory)
+    /** The manager at [text]; a port path is refused. */
+    protected suspend fun manager(text: String): ManagerNode = tree.manager(objectPath(text, "manager").toString())
 
     /** The port at [text] (`component.rtc:port`). */
-    protected suspend fun port(text: String): Port = tree.port(text, session.workingDirectory)
+    protected suspend fun port(text: String): Port = tree.port(pathOf(text).toString())
+
+    /** [text] as a path, refused if it names a port where a [kind] is wanted. */
+    private fun objectPath(text: String, kind: String): RtcPath =
+        pathOf(text).also { if (it.port != null) throw WrongKindException(it.toString(), kind, "port") }
+
+    /**
+     * [e] with the names close to the one not found, from where it was looked for: the directory that
+     * lacks a name, the component that lacks a port. [e] itself when nothing is close or it cannot tell.
+     */
+    private suspend fun suggesting(e: NotFoundException): NotFoundException {
+        val path = runCatching { RtcPath.parse(e.subject) }.getOrNull() ?: return e
+        val hint = runCatching {
+            val port = path.port
+            when {
+                port != null && e.reason.startsWith("no such port") ->
+                    didYouMean(port, tree.component(path.withPort(null).toString()).snapshot().ports.map { it.name })
+                port == null && e.reason == "not found" ->
+                    (path.parent?.let { tree.node(it) } as? DirectoryNode)?.let { directory -> didYouMean(path.name, directory.children().map { it.name }) }.orEmpty()
+                else -> ""
+            }
+        }.getOrDefault("")
+        return if (hint.isEmpty()) e else NotFoundException(e.subject, e.reason + hint)
+    }
 }
+
+/** What to say when a command needs a name server and none was given. */
+internal const val NO_NAME_SERVER =
+    "no name server configured: give -n HOST[:PORT], or set RTCOORD_NAMESERVERS (or rtshell's RTCTREE_NAMESERVERS), e.g. RTCOORD_NAMESERVERS=localhost"

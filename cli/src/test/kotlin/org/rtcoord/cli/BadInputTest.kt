@@ -134,12 +134,19 @@ class BadInputTest {
             Row("empty port name", listOf("con", localisation.path("laser0.rtc:"), "$localiser:laser"),
                 "rtcoord: ${localisation.path("laser0.rtc:")}: bad path: empty port name (segment 3)"),
             Row("relative path without a working directory", listOf("deact", "laser0.rtc"),
-                "rtcoord: laser0.rtc: bad path: relative path without a working directory (segment 1)"),
+                "rtcoord: laser0.rtc: a relative path needs a start: give -n HOST[:PORT] (relative paths start at the first name server) or set RTCOORD_CWD"),
             // Unknown names.
             Row("unknown component among several", listOf("deact", localisation.path("laser0.rtc"), localisation.path("sonar0.rtc")),
                 "rtcoord: ${localisation.path("sonar0.rtc")}: not found"),
             Row("unknown port", listOf("con", localisation.path("laser0.rtc:sonar"), "$localiser:laser"),
                 "rtcoord: ${localisation.path("laser0.rtc:sonar")}: no such port (ports: laser)"),
+            // Names close to one that exists.
+            Row("a mistyped component", listOf("act", localisation.path("lasr0.rtc")), "rtcoord: ${localisation.path("lasr0.rtc")}: not found; did you mean laser0.rtc?"),
+            Row("a component without its kind", listOf("cat", localisation.path("gyro0")), "rtcoord: ${localisation.path("gyro0")}: not found; did you mean gyro0.rtc?"),
+            Row("a mistyped port", listOf("con", localisation.path("laser0.rtc:lasr"), "$localiser:laser"),
+                "rtcoord: ${localisation.path("laser0.rtc:lasr")}: no such port (ports: laser); did you mean laser?"),
+            Row("a mistyped context", listOf("ls", "/$ns/${FixtureRuntime.hostContext.replace(".host_cxt", ".hst_cxt")}/"),
+                "rtcoord: /$ns/${FixtureRuntime.hostContext.replace(".host_cxt", ".hst_cxt")}: not found; did you mean ${FixtureRuntime.hostContext}?"),
             Row("unknown connector", listOf("dis", laser, "--id", "nope"), "rtcoord: $laser: no connector 'nope' (connectors: $connector)"),
             Row("unknown parameter", listOf("conf", localiser, "set", "nope", "1"),
                 "rtcoord: $localiser: no parameter 'nope' in configuration set 'default' (parameters: fail, gain)"),
@@ -157,9 +164,9 @@ class BadInputTest {
             Row("a component for a manager in a script", run(wrongKind),
                 "rtcoord: $wrongKind: ${localisation.path("laser0.rtc")}: is a component, not a manager"),
             // Invalid connector properties.
-            Row("a dataflow type the port does not offer", listOf("con", laser, "$localiser:laser", "-p", "dataport.dataflow_type=telepathy"),
+            Row("a dataflow type the port does not offer", listOf("con", laser, "$localiser:laser", "--allow-duplicate", "-p", "dataport.dataflow_type=telepathy"),
                 "rtcoord: $laser: connect rejected: $laser does not offer dataport.dataflow_type=telepathy (offers push)"),
-            Row("an interface type the port does not offer", listOf("con", laser, "$localiser:laser", "-p", "dataport.interface_type=shm"),
+            Row("an interface type the port does not offer", listOf("con", laser, "$localiser:laser", "--allow-duplicate", "-p", "dataport.interface_type=shm"),
                 "rtcoord: $laser: connect rejected: $laser does not offer dataport.interface_type=shm (offers corba_cdr)"),
             // Incompatible ports.
             Row("different data types", listOf("con", gyro, "$localiser:laser"),

@@ -16,8 +16,18 @@ class ConCommandTest {
     fun stop() = localisation.close()
 
     @Test
-    fun `connects two ports and prints the connector id`() {
-        val id = runRtcoord("con", laser, localiser, "--name", "second", "--id", "c2", "-p", "dataport.subscription_type=new").ok().trim()
+    fun `ports connected already are refused with one line, as OpenRTM-aist refuses them, and nothing changes`() {
+        val existing = localisation.system.component("laser0").ref.get_ports().single().get_connector_profiles().single().connector_id
+        val line = runRtcoord("con", laser, localiser).failure()
+        assertEquals("rtcoord: $laser: connect refused: already connected to $localiser (connector $existing); --allow-duplicate connects them again", line)
+        // The other way round, and with other properties, it is the same connection.
+        assertTrue("already connected" in runRtcoord("con", localiser, laser, "-p", "dataport.subscription_type=new").failure())
+        assertEquals(1, Regex("Connected to").findAll(runPeer("rtcat", "-l", localisation.path("laser0.rtc")).ok().output).count())
+    }
+
+    @Test
+    fun `--allow-duplicate connects connected ports again, with a name, an id and properties, and prints the connector id`() {
+        val id = runRtcoord("con", laser, localiser, "--allow-duplicate", "--name", "second", "--id", "c2", "-p", "dataport.subscription_type=new").ok().trim()
         assertEquals("c2", id)
         val shown = runRtcoord("cat", "-l", laser).ok()
         assertTrue(Regex("""connector +second\n +id +c2\n""").containsMatchIn(shown), shown)
@@ -27,7 +37,7 @@ class ConCommandTest {
 
     @Test
     fun `--json gives the connector`() {
-        val json = runRtcoord("--json", "con", laser, localiser, "--id", "c3").ok()
+        val json = runRtcoord("--json", "con", laser, localiser, "--allow-duplicate", "--id", "c3").ok()
         assertTrue(json.startsWith("{\n  \"id\": \"c3\",\n  \"name\": \"laser0.laser_laser_localise0.laser\",\n"), json)
     }
 

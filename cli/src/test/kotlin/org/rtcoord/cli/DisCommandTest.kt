@@ -24,7 +24,7 @@ class DisCommandTest {
 
     @Test
     fun `one connector by id, leaving the others`() {
-        runRtcoord("con", laser, localiser, "--id", "extra").ok()
+        runRtcoord("con", laser, localiser, "--allow-duplicate", "--id", "extra").ok()
         runRtcoord("dis", laser, "--id", "extra").ok()
         assertEquals(1, Regex("<-").findAll(runRtcoord("cat", localiser).ok()).count())
     }

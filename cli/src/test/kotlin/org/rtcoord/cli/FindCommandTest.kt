@@ -1,9 +1,12 @@
 package org.rtcoord.cli
 
+import RTC.LifeCycleState
 import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
+import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.runPeer
 
 /** `find` with each filter, alone and combined. */
@@ -18,6 +21,14 @@ class FindCommandTest {
 
     private fun find(vararg arguments: String): List<String> = runRtcoord("find", host, *arguments).ok().lines().filter { it.isNotEmpty() }
 
+    /**
+     * What rtfind finds below the host context, sorted, less the master's copies of its slaves' components: a master's
+     * `get_components` includes them, so rtfind finds each component a third time directly below the master; rtcoord
+     * lists a component below the manager that hosts it.
+     */
+    private fun rtfind(vararg arguments: String): List<String> =
+        runPeer("rtfind", "$host/", *arguments).ok().output.lines().filter { it.isNotEmpty() && !it.startsWith("${localisation.path("manager.mgr")}/") || it.startsWith(slave) }.sorted()
+
     @Test
     fun `by kind`() {
         assertEquals(listOf(localisation.path("manager.mgr"), slave), find("--type", "manager"))
@@ -28,10 +39,6 @@ class FindCommandTest {
 
     @Test
     fun `names and directories are found as rtfind finds them`() {
-        val master = localisation.path("manager.mgr")
-        // A master lists its slaves' components with its own; rtfind finds them below both, rtcoord below the slave.
-        fun rtfind(vararg arguments: String) = runPeer("rtfind", "$host/", *arguments).ok().output.lines()
-            .filter { it.isNotEmpty() && !(it.startsWith("$master/") && it.endsWith(".rtc") && '/' !in it.removePrefix("$master/")) }.sorted()
         // rtfind searches the whole path for the pattern: no need to write the `.rtc`.
         assertEquals(listOf("$slave/laser0.rtc", localisation.path("laser0.rtc")), find("--name", "laser0"))
         assertEquals(rtfind("-n", "laser0"), find("--name", "laser0").sorted())
@@ -51,9 +58,51 @@ class FindCommandTest {
     }
 
     @Test
+    fun `rtfind's short options work as in rtfind - -t with its letters, -n, -i and -m`() {
+        assertEquals(find("--type", "component"), find("-t", "c"))
+        assertEquals(find("--type", "directory"), find("-t", "d"))
+        assertEquals(rtfind("-t", "dmn"), find("-t", "dmn").sorted())
+        assertEquals(rtfind("-t", "cz"), find("-t", "cz").sorted())
+        assertEquals(rtfind("-n", "laser0"), find("-n", "laser0").sorted())
+        // Several -n: any may match, as in rtfind.
+        assertEquals(rtfind("-n", "laser0", "-n", "gyro0"), find("-n", "laser0", "-n", "gyro0").sorted())
+        assertEquals(rtfind("-i", "LASER0"), find("-i", "LASER0").sorted())
+        assertEquals(emptyList<String>(), find("-n", "LASER0"))
+        // -m counts levels below the start: the context's own entries, not what is below its manager.
+        assertEquals(rtfind("-m", "1"), find("-m", "1").sorted())
+        assertEquals(rtfind("-m", "1", "-t", "c"), find("-m", "1", "-t", "c").sorted())
+        assertEquals(listOf(host), find("-m", "0", "-t", "context"))
+        assertTrue("not a type" in runRtcoord("find", host, "-t", "x").usageError())
+    }
+
+    @Test
+    fun `states are read in any case`() {
+        localisation.system.component("gyro0").fail()
+        await("gyro0 in ERROR") { localisation.system.component("gyro0").state == LifeCycleState.ERROR_STATE }
+        try {
+            val inError = listOf("$slave/gyro0.rtc", localisation.path("gyro0.rtc"))
+            assertEquals(inError, find("--state", "error"))
+            assertEquals(inError, find("--state", "ERROR"))
+            assertEquals(inError, find("--state", "Error"))
+        } finally {
+            runRtcoord("reset", localisation.path("gyro0.rtc")).ok()
+            runRtcoord("act", localisation.path("gyro0.rtc")).ok()
+        }
+    }
+
+    @Test
     fun `--json gives paths and kinds`() {
         val json = runRtcoord("--json", "find", host, "--type", "context").ok()
         assertEquals("[\n  {\n    \"path\": \"$host\",\n    \"kind\": \"context\"\n  }\n]\n", json)
+    }
+
+    @Test
+    fun `with no name server configured, find from the root says so and how to give one, with status 1`() {
+        assertEquals(
+            "rtcoord: /: no name server configured: give -n HOST[:PORT], or set RTCOORD_NAMESERVERS (or rtshell's RTCTREE_NAMESERVERS), " +
+                "e.g. RTCOORD_NAMESERVERS=localhost",
+            runRtcoord("find", "/", "-t", "c").failure(),
+        )
     }
 
     @Test

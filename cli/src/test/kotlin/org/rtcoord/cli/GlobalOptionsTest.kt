@@ -45,9 +45,9 @@ class GlobalOptionsTest {
     fun `-n wins over RTCOORD_NAMESERVERS, which wins over RTCTREE_NAMESERVERS`() {
         val dead = deadNameServer()
         val both = mapOf("RTCOORD_NAMESERVERS" to address, "RTCTREE_NAMESERVERS" to dead)
-        assertEquals("$address/\n", runRtcoord("ls", environment = both).ok())
-        assertEquals("$address/\n", runRtcoord("-n", address, "ls", environment = mapOf("RTCOORD_NAMESERVERS" to dead)).ok())
-        val listed = runRtcoord("ls", environment = mapOf("RTCTREE_NAMESERVERS" to "$address;$dead"))
+        assertEquals("$address/\n", runRtcoord("ls", "/", environment = both).ok())
+        assertEquals("$address/\n", runRtcoord("-n", address, "ls", "/", environment = mapOf("RTCOORD_NAMESERVERS" to dead)).ok())
+        val listed = runRtcoord("ls", "/", environment = mapOf("RTCTREE_NAMESERVERS" to "$address;$dead"))
         assertEquals("$address/\n", listed.stdout)
         assertTrue(listed.stderr.startsWith("rtcoord: /$dead: unreachable"), listed.stderr)
         assertEquals(1, listed.statusCode)
@@ -71,7 +71,7 @@ class GlobalOptionsTest {
     fun `-q leaves out confirmations`() {
         val laser = localisation.path("laser0.rtc:laser")
         val localiser = localisation.path("laser_localise0.rtc:laser")
-        assertEquals("", runRtcoord("-q", "con", laser, localiser, "--id", "quiet").ok())
+        assertEquals("", runRtcoord("-q", "con", laser, localiser, "--allow-duplicate", "--id", "quiet").ok())
         runRtcoord("dis", laser, "--id", "quiet").ok()
     }
 }

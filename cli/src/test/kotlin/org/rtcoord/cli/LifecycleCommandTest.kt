@@ -44,6 +44,16 @@ class LifecycleCommandTest {
     }
 
     @Test
+    fun `a port path is refused as not a component, by every lifecycle command and exit`() {
+        val port = localisation.path("laser0.rtc:laser")
+        for (command in listOf("act", "deact", "reset", "exit")) {
+            assertEquals("rtcoord: $port: is a port, not a component", runRtcoord(command, port).failure(), command)
+        }
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
+        assertEquals(false, localisation.system.component("laser0").isExited)
+    }
+
+    @Test
     fun `one bad path among good ones changes nothing`() {
         val line = runRtcoord("deact", localisation.path("laser0.rtc"), localisation.path("sonar0.rtc"), localisation.path("gyro0.rtc")).failure()
         assertEquals("rtcoord: ${localisation.path("sonar0.rtc")}: not found", line)

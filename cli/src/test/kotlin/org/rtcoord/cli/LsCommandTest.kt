@@ -68,17 +68,45 @@ class LsCommandTest {
     }
 
     @Test
-    fun `with no path the name servers from -n or the environment are listed`() {
-        assertEquals("$address/\n", runRtcoord("-n", address, "ls").ok())
-        assertEquals("$address/\n", runRtcoord("ls", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok())
-        assertEquals("$address/\n", runRtcoord("ls", environment = mapOf("RTCTREE_NAMESERVERS" to " $address ;")).ok())
-        assertTrue(runRtcoord("ls").usageError().contains("no PATH and no name server"))
+    fun `with no path the root context of the name server from -n or the environment is listed, as rtls lists it`() {
+        val root = "${FixtureRuntime.hostContext}/\n"
+        assertEquals(root, runRtcoord("-n", address, "ls").ok())
+        assertEquals(root, runRtcoord("ls", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok())
+        assertEquals(root, runRtcoord("ls", environment = mapOf("RTCTREE_NAMESERVERS" to " $address ;")).ok())
+        // '/' lists the name servers themselves.
+        assertEquals("$address/\n", runRtcoord("-n", address, "ls", "/").ok())
+    }
+
+    @Test
+    fun `-n NS ls -l is rtls -l of the name server's root, and with -R everything it knows`() {
+        val ours = runRtcoord("-n", address, "ls", "-l").ok()
+        assertEquals("-  -  -  -  -  ${FixtureRuntime.hostContext}\n", ours)
+        assertEquals(runPeer("rtls", "-l", "/$address/").ok().output, ours)
+        assertEquals(runRtcoord("ls", "-l", "-R", "/$address/").ok(), runRtcoord("-n", address, "ls", "-l", "-R").ok())
+    }
+
+    @Test
+    fun `several name servers are listed each under its own header, an unreachable one an error line`() {
+        val dead = deadNameServer()
+        val listed = runRtcoord("-n", address, "-n", dead, "ls")
+        assertEquals("/$address/:\n${FixtureRuntime.hostContext}/\n", listed.stdout)
+        assertTrue(listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
+        assertEquals(1, listed.statusCode)
+    }
+
+    @Test
+    fun `with no name server configured, ls says so and how to give one, with status 1`() {
+        val expected = "rtcoord: no name server configured: give -n HOST[:PORT], or set RTCOORD_NAMESERVERS (or rtshell's RTCTREE_NAMESERVERS), " +
+            "e.g. RTCOORD_NAMESERVERS=localhost"
+        assertEquals(expected, runRtcoord("ls").failure())
+        assertEquals(expected.replace("rtcoord: ", "rtcoord: /: "), runRtcoord("ls", "/").failure())
+        assertEquals(expected.replace("rtcoord: ", "rtcoord: /: "), runRtcoord("ls", "-l", "-R", "/").failure())
     }
 
     @Test
     fun `a dead name server among live ones is an error line and status 1, the live ones still listed`() {
         val dead = deadNameServer()
-        val listed = runRtcoord("-n", address, "-n", dead, "ls", "-l")
+        val listed = runRtcoord("-n", address, "-n", dead, "ls", "-l", "/")
         assertEquals("-  -  -  -  -  $address\n", listed.stdout)
         assertTrue(listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
         assertEquals(1, listed.statusCode)
@@ -91,11 +119,11 @@ class LsCommandTest {
     @Test
     fun `each dead name server has its own line, under -R and --json too`() {
         val dead = listOf(deadNameServer(), deadNameServer())
-        val recursive = runRtcoord("-n", dead[0], "-n", address, "-n", dead[1], "ls", "-R")
+        val recursive = runRtcoord("-n", dead[0], "-n", address, "-n", dead[1], "ls", "-R", "/")
         assertEquals(1, recursive.statusCode)
         assertTrue(recursive.stdout.startsWith(".:\n$address/\n"), recursive.stdout)
         assertEquals(dead.map { "rtcoord: /$it" }, recursive.stderr.lines().filter { it.isNotEmpty() }.map { it.substringBefore(": unreachable") })
-        val json = runRtcoord("-n", dead[0], "--json", "ls")
+        val json = runRtcoord("-n", dead[0], "--json", "ls", "/")
         assertEquals(1, json.statusCode)
         assertEquals("[]\n", json.stdout)
         assertTrue(json.stderr.startsWith("rtcoord: /${dead[0]}: unreachable"), json.stderr)
@@ -156,5 +184,19 @@ class LsCommandTest {
     fun `relative paths start from RTCOORD_CWD or rtshell's RTCSH_CWD`() {
         assertEquals("gyro0.rtc\n", runRtcoord("ls", "gyro0.rtc", environment = mapOf("RTCOORD_CWD" to host)).ok())
         assertEquals("gyro0.rtc\n", runRtcoord("ls", "../${FixtureRuntime.hostContext}/gyro0.rtc", environment = mapOf("RTCSH_CWD" to "$host/")).ok())
+        // Without a path, the working directory is what ls lists, as rtls does.
+        assertEquals(runRtcoord("ls", host).ok(), runRtcoord("-n", address, "ls", environment = mapOf("RTCOORD_CWD" to host)).ok())
+    }
+
+    @Test
+    fun `relative paths start at the first name server given, else the error says how to give a start`() {
+        val hostContext = FixtureRuntime.hostContext
+        assertEquals("gyro0.rtc\n", runRtcoord("-n", address, "ls", "$hostContext/gyro0.rtc").ok())
+        assertEquals("gyro0.rtc\n", runRtcoord("-n", address, "-n", deadNameServer(), "ls", "$hostContext/gyro0.rtc").ok())
+        assertEquals("gyro0.rtc\n", runRtcoord("ls", "$hostContext/gyro0.rtc", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok())
+        assertEquals(
+            "rtcoord: $hostContext/gyro0.rtc: a relative path needs a start: give -n HOST[:PORT] (relative paths start at the first name server) or set RTCOORD_CWD",
+            runRtcoord("ls", "$hostContext/gyro0.rtc").failure(),
+        )
     }
 }
