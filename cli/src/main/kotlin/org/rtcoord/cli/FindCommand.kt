@@ -19,13 +19,9 @@ import org.rtcoord.NodeKind
 /** `rtcoord find`: rtfind, with its short options, over a tree read concurrently. */
 class FindCommand : TreeCommand("find") {
     override fun help(context: Context): String =
-<<<<<<< HEAD
-        "Print the paths of the objects below PATH (PATH included) that match every filter given. " +
-            "A slave manager's components are found below it, not a second time below its master as rtfind does."
-=======
         "Print the paths of the objects below PATH (PATH included) that match every filter given. rtfind's options work " +
-            "as they do there: -t, -n, -i, -m."
->>>>>>> habits
+            "as they do there: -t, -n, -i, -m. " +
+            "A slave manager's components are found below it, not a second time below its master as rtfind does."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord find /localhost -t c --state error" to "components in ERROR (--state takes any case: ERROR, error)",
