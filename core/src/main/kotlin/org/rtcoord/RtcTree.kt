@@ -1,9 +1,9 @@
 package org.rtcoord
 
-import RTM.ManagerHelper
 import OpenRTM.DataFlowComponentHelper
-import kotlinx.coroutines.flow.Flow
+import RTM.ManagerHelper
 import kotlinx.coroutines.channels.awaitClose
+import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.callbackFlow
 import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.toList
@@ -167,6 +167,13 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     /** [on] for a node already at hand. */
     public suspend fun <E : RtcEvent> on(node: Node, type: Class<E>, options: EventOptions = EventOptions(), handler: suspend (E) -> Unit): Subscription =
         core.watcher.watch(node, setOf(type), options) { event -> handler(type.cast(event)) }
+
+    /**
+     * [on] for the events of any of [types] from [node]: one registration for what would take several,
+     * which reads the node only for what [types] need.
+     */
+    public suspend fun on(node: Node, types: Set<Class<out RtcEvent>>, options: EventOptions = EventOptions(), handler: suspend (RtcEvent) -> Unit): Subscription =
+        core.watcher.watch(node, types, options, handler)
 
     /** [on] with the event type as a type argument: `tree.on<StateChanged>(path) { ... }`. */
     public suspend inline fun <reified E : RtcEvent> on(path: String, options: EventOptions = EventOptions(), noinline handler: suspend (E) -> Unit): Subscription =

@@ -13,12 +13,11 @@ import java.util.concurrent.ConcurrentHashMap
  * until a set is activated again, so a write shows as `default -> none -> default`: that is no switch,
  * and `default -> none -> precise` is one, from `default`.
  */
-internal class ActiveSetSwitch {
+internal class ActiveSetSwitch : EventReading<ConfigurationSetActivated> {
     /** The set last seen active, by component path. */
     private val seen = ConcurrentHashMap<String, String>()
 
-    /** Reads [node]'s active set now, so that its first switch is measured from it. */
-    suspend fun prepare(node: Node) {
+    override suspend fun prepare(node: Node) {
         if (node !is ComponentNode) return
         try {
             node.configuration().activeSet?.let { seen[node.path.toString()] = it }
@@ -28,7 +27,7 @@ internal class ActiveSetSwitch {
     }
 
     /** [event] as a switch from the set last active; null when no set became active or the same one did again. */
-    fun switchOf(event: RtcEvent): ConfigurationSetActivated? {
+    override fun translate(event: RtcEvent): ConfigurationSetActivated? {
         if (event !is ConfigurationSetActivated) return null
         val now = event.new ?: return null
         val before = seen.put(event.source.path.toString(), now) ?: event.old

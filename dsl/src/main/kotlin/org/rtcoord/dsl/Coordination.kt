@@ -2,6 +2,7 @@ package org.rtcoord.dsl
 
 import org.rtcoord.EventOptions
 import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.runtime.plan
 import java.nio.file.Path
 import java.nio.file.Paths
 import kotlin.time.Duration
@@ -9,7 +10,8 @@ import kotlin.time.Duration
 /**
  * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), mode machines
  * (`modes(...)`), supervisors (`supervise(...)`), name servers and how to watch. Evaluating a script
- * only builds this model; a [Coordinator] runs it.
+ * only declares; a [org.rtcoord.dsl.runtime.Coordinator] runs a [Plan] of what was declared, as many
+ * times as it is started.
  *
  * @property args the arguments the script was started with.
  * @property host the tree configuration the host application runs the coordinator with.
@@ -22,7 +24,6 @@ public open class Coordination(
     public val host: TreeConfig,
     public val directory: Path = Paths.get(""),
 ) {
-    internal val engine = Engine(directory)
     internal val rules = mutableListOf<Rule<*>>()
     internal val timers = mutableListOf<Timer>()
     internal val supervisions = mutableListOf<Supervision>()
@@ -41,13 +42,13 @@ public open class Coordination(
     }
 
     /** A component: a full path, a name found on any name server, or (for rules) a glob pattern. */
-    public fun component(name: String): ComponentRef = engine.componentRef(name)
+    public fun component(name: String): ComponentRef = ComponentRef(name)
 
     /** A port, as `component:port`. */
-    public fun port(path: String): PortRef = engine.portRef(path)
+    public fun port(path: String): PortRef = portRef(path)
 
     /** A manager, by name (found on any name server) or path. */
-    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name, engine)
+    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name)
 
     /** A naming context, by path. */
     public fun context(path: String): ContextRef = ContextRef(path)
@@ -81,7 +82,7 @@ public open class Coordination(
      * every problem, so a machine that cannot run never reaches a coordinator.
      */
     public fun modes(name: String, declare: ModeBuilder.() -> Unit): ModeMachine =
-        assemble(ModeBuilder(name, engine).apply(declare), machineList.map { it.name }).also { machineList += it }
+        assemble(ModeBuilder(name, directory).apply(declare), machineList.map { it.name }).also { machineList += it }
 
     /**
      * Supervises [components], restarting them as [configure] says: `supervise(component("a.rtc"),
@@ -101,4 +102,7 @@ public open class Coordination(
     internal fun add(rule: Rule<*>) {
         rules += rule
     }
+
+    /** What was declared so far, frozen: later declarations do not change it. */
+    internal fun plan(): Plan = Plan(rules.toList(), timers.toList(), supervisions.toList(), machineList.toList(), nameServers.toList(), watching, directory)
 }

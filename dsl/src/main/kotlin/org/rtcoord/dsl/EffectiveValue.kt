@@ -14,14 +14,13 @@ import java.util.concurrent.ConcurrentHashMap
  * change it. Judged from the component as last read, so two changes read at once (values set in a set,
  * then that set activated) are one change. Each event must be shown once, in order.
  */
-internal class EffectiveValue(private val parameter: String) {
+internal class EffectiveValue(private val parameter: String) : EventReading<ParameterChanged> {
     /** A value as last seen; [value] null: the active set does not hold the parameter. */
     private class Seen(val value: String?)
 
     private val seen = ConcurrentHashMap<String, Seen>()
 
-    /** Reads [node]'s value now, so that its first change is measured from it. */
-    suspend fun prepare(node: Node) {
+    override suspend fun prepare(node: Node) {
         if (node !is ComponentNode) return
         try {
             val configuration = node.configuration()
@@ -32,7 +31,7 @@ internal class EffectiveValue(private val parameter: String) {
     }
 
     /** [event] as a change of the effective value, named after the set now active; null when the value did not change. */
-    fun changeOf(event: RtcEvent): ParameterChanged? {
+    override fun translate(event: RtcEvent): ParameterChanged? {
         if (!(event is ParameterChanged && event.name == parameter) && event !is ConfigurationSetActivated) return null
         val source = event.source as? ComponentNode ?: return null
         val configuration = source.snapshots.value?.configuration ?: return null

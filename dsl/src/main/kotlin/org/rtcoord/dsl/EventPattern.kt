@@ -4,7 +4,6 @@ import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.ContextRateChanged
-import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerComponentChanged
@@ -17,41 +16,54 @@ import org.rtcoord.PortDisconnected
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcPath
-import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
-import org.rtcoord.Subscription
 
 /**
  * One kind of event of one target (a component entering ERROR, a port losing a connection): what rules
  * and mode transitions are triggered by. [description] is how scripts, logs and `check` name it.
- * Most patterns watch for events of their [type]; one that also reads other events ([watched] wider
- * than [type]) turns those into its [type] with [translate], or drops them.
+ * Most patterns take the events of their [type] as they come; one that follows a value reads events of
+ * a wider [watched] type through a [reading] of its own, which each run of a plan makes afresh.
  */
 internal class EventPattern<E : RtcEvent>(
     val description: String,
     val target: Target,
     val type: Class<E>,
     val watched: Class<out RtcEvent> = type,
-    private val translate: (RtcEvent) -> E? = { event -> if (type.isInstance(event)) type.cast(event) else null },
-    private val prepare: suspend (Node) -> Unit = {},
+    private val reading: (() -> EventReading<E>)? = null,
     val matches: (E) -> Boolean,
 ) {
     /** A rule running [handler] on these events when every guard holds. */
     fun rule(guards: List<Guard>, handler: suspend Reaction.(E) -> Unit): Rule<E> = Rule(this, guards, handler)
 
-    /** [event] as one of these, or null when it is not one. */
-    fun match(event: RtcEvent): E? = translate(event)?.takeIf(matches)
+    /** A matcher for one subscriber of one run: what it follows starts from nothing. */
+    fun matcher(): EventMatcher<E> = EventMatcher(this, reading?.invoke())
 
-    /** Whether [event] is one of these. */
-    fun accepts(event: RtcEvent): Boolean = match(event) != null
+    override fun toString(): String = description
+}
 
-    /**
-     * Hands every event this pattern reads from [node] to [deliver], once [others] watching with it (the
-     * same [watched] type) read what they follow of [node].
-     */
-    suspend fun watch(tree: RtcTree, node: Node, options: EventOptions, others: List<EventPattern<*>> = emptyList(), deliver: suspend (RtcEvent) -> Unit): Subscription {
-        (listOf(this) + others).distinct().forEach { it.prepare(node) }
-        return tree.on(node, watched, options) { deliver(it) }
+/**
+ * How a pattern that follows a value (a parameter's effective value, the active set) reads events: it
+ * reads a component's value before the first event, and turns each event into one of its kind, or drops it.
+ */
+internal interface EventReading<E : RtcEvent> {
+    /** Reads [node]'s value now, so that its first change is measured from it. */
+    suspend fun prepare(node: Node)
+
+    /** [event] as a change of the value followed; null when it changes nothing. */
+    fun translate(event: RtcEvent): E?
+}
+
+/** One subscriber's view of a [pattern]: each event must be matched once, in order, as a [reading] follows a value. */
+internal class EventMatcher<E : RtcEvent>(val pattern: EventPattern<E>, private val reading: EventReading<E>?) {
+    /** Reads what the pattern follows of [node], before [node]'s first event reaches [match]. */
+    suspend fun prepare(node: Node) {
+        reading?.prepare(node)
+    }
+
+    /** [event] as one of the pattern's, or null when it is not one. */
+    fun match(event: RtcEvent): E? {
+        val translated = if (reading != null) reading.translate(event) else event.takeIf(pattern.type::isInstance)?.let(pattern.type::cast)
+        return translated?.takeIf(pattern.matches)
     }
 }
 
@@ -64,18 +76,16 @@ internal object EventPatterns {
 
     /** Changes of the effective value of [name]: in the active set, or by a switch to a set that holds another value. */
     fun configParam(target: ComponentRef, name: String): EventPattern<ParameterChanged> {
-        val value = EffectiveValue(name)
         return EventPattern(
             "$target parameter $name changes", Target.Component(target), ParameterChanged::class.java,
-            watched = RtcEvent::class.java, translate = value::changeOf, prepare = value::prepare,
+            watched = RtcEvent::class.java, reading = { EffectiveValue(name) },
         ) { true }
     }
 
     fun configSetActivated(target: ComponentRef): EventPattern<ConfigurationSetActivated> {
-        val active = ActiveSetSwitch()
         return EventPattern(
             "$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java,
-            watched = ConfigurationSetActivated::class.java, translate = active::switchOf, prepare = active::prepare,
+            reading = ::ActiveSetSwitch,
         ) { true }
     }
 

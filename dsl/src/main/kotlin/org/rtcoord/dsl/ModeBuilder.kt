@@ -1,5 +1,6 @@
 package org.rtcoord.dsl
 
+import java.nio.file.Path
 import kotlin.time.Duration
 
 /**
@@ -20,7 +21,7 @@ import kotlin.time.Duration
  * coordinator moves between modes.
  */
 @RtcDsl
-public class ModeBuilder internal constructor(internal val name: String, private val engine: Engine) {
+public class ModeBuilder internal constructor(internal val name: String, private val directory: Path) {
     internal val children = mutableListOf<ModeBuilder>()
     internal val initials = mutableListOf<String>()
     internal val entryActions = mutableListOf<suspend Reaction.() -> Unit>()
@@ -48,7 +49,7 @@ public class ModeBuilder internal constructor(internal val name: String, private
 
     /** Declares sub-mode [name]. */
     public fun mode(name: String, declare: ModeBuilder.() -> Unit = {}) {
-        children += ModeBuilder(name, engine).apply(declare)
+        children += ModeBuilder(name, directory).apply(declare)
     }
 
     /** Runs [action] each time the mode is entered, after its parent's entry actions. */
@@ -66,17 +67,17 @@ public class ModeBuilder internal constructor(internal val name: String, private
      * all active modes (inner ones override outer ones), then raises [done] or [failed].
      */
     public fun network(declare: NetworkBuilder.() -> Unit) {
-        (network ?: NetworkBuilder(engine::profile).also { network = it }).declare()
+        (network ?: NetworkBuilder(directory::profile).also { network = it }).declare()
     }
 
     /** A component, by name or path. */
-    public fun component(name: String): ComponentRef = engine.componentRef(name)
+    public fun component(name: String): ComponentRef = ComponentRef(name)
 
     /** A port, as `component:port`. */
-    public fun port(path: String): PortRef = engine.portRef(path)
+    public fun port(path: String): PortRef = portRef(path)
 
     /** A manager, by name or path. */
-    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name, engine)
+    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name)
 
     /** A naming context, by path. */
     public fun context(path: String): ContextRef = ContextRef(path)

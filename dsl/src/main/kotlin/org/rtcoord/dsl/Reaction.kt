@@ -7,6 +7,10 @@ import kotlinx.coroutines.withTimeout
 import org.rtcoord.ComponentNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcEvent
+import org.rtcoord.dsl.runtime.ActionJournal
+import org.rtcoord.dsl.runtime.BestEffort
+import org.rtcoord.dsl.runtime.Engine
+import org.rtcoord.dsl.runtime.Undo
 import org.rtcoord.profile.ProfileDifference
 import org.rtcoord.profile.RestoreReport
 import org.rtcoord.profile.SystemProfiles
@@ -38,13 +42,13 @@ public class Reaction internal constructor(
             ?: throw IllegalStateException("this reaction has no source component (it did not come from a component event)")
 
     /** A component, by name, path or pattern. */
-    public fun component(name: String): ComponentRef = engine.componentRef(name)
+    public fun component(name: String): ComponentRef = ComponentRef(name)
 
     /** A port, as `component:port`. */
-    public fun port(path: String): PortRef = engine.portRef(path)
+    public fun port(path: String): PortRef = portRef(path)
 
     /** A manager. */
-    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name, engine)
+    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name)
 
     /** Activates the component that fired the rule. */
     public suspend fun activate(): Unit = source.activate()
@@ -66,7 +70,7 @@ public class Reaction internal constructor(
      * [properties]. Undone by removing that connection.
      */
     public suspend fun connect(from: Any, to: Any, properties: Map<String, String> = emptyMap()) {
-        val (out, into) = engine.portOf(from) to engine.portOf(to)
+        val (out, into) = portOf(from) to portOf(to)
         val target = into.port()
         val what = "connect ${out.port().path} to ${target.path}"
         engine.actReversibly(what, out.component, namesItself = true) { node ->
@@ -78,7 +82,7 @@ public class Reaction internal constructor(
 
     /** Removes every connection between [a] and [b]. Undone by making them again. */
     public suspend fun disconnect(a: Any, b: Any) {
-        val (first, second) = engine.portOf(a) to engine.portOf(b)
+        val (first, second) = portOf(a) to portOf(b)
         engine.actReversibly("disconnect ${first.port().path} from ${second.port().path}", first.component, namesItself = true) { node ->
             val port = node.port(first.name)
             val peer = second.port().path
@@ -101,7 +105,7 @@ public class Reaction internal constructor(
      * ```
      *
      * A failing action outside [attempt] still stops the handler. Failed actions, best efforts included,
-     * are listed by [Coordinator.failedActions].
+     * are listed by [org.rtcoord.dsl.runtime.Coordinator.failedActions].
      *
      * @return whether [block] completed.
      */
@@ -183,7 +187,7 @@ public class Reaction internal constructor(
      */
     public suspend fun restoreProfile(file: String, createMissing: Boolean = false): RestoreReport =
         engine.perform("restore profile $file") {
-            SystemProfiles(engine.tree).restore(engine.profile(file), createMissing).also { report -> report.done.forEach { engine.log("  $it") } }
+            SystemProfiles(engine.tree).restore(engine.directory.profile(file), createMissing).also { report -> report.done.forEach { engine.log("  $it") } }
         }
 
     /**
@@ -197,7 +201,7 @@ public class Reaction internal constructor(
      * ```
      */
     public suspend fun checkProfile(file: String, state: LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> =
-        engine.perform("check profile $file") { SystemProfiles(engine.tree).check(engine.profile(file), state) }
+        engine.perform("check profile $file") { SystemProfiles(engine.tree).check(engine.directory.profile(file), state) }
 
     /** Runs [block], failing with [TimedOut] if it takes longer than [timeout]. */
     public suspend fun <T> within(timeout: Duration, block: suspend () -> T): T = try {

@@ -1,6 +1,7 @@
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.CancellationException
+import org.rtcoord.dsl.runtime.ActionJournal
 
 /**
  * Why a handler stopped, as its [Reaction.onFailure] blocks see it: the failure and the actions the

@@ -6,49 +6,54 @@ import org.rtcoord.Connection
 import org.rtcoord.LifeCycle
 import org.rtcoord.Port
 import org.rtcoord.RtcPath
+import org.rtcoord.dsl.runtime.Engine
+import org.rtcoord.dsl.runtime.Undo
 
 /**
  * A component named in a script: a full path, a name searched on every name server, or a glob pattern
- * (`*_localise?.rtc`, rules only). Resolved when used, and again after the component is re-created, so
- * it never pins one CORBA reference for life. Its actions wait for their effect and log what they do.
+ * (`*_localise?.rtc`, rules only). A plain selector: the running coordinator resolves it when it is
+ * used, and again after the component is re-created, so it never pins one CORBA reference for life. Its
+ * actions run in a running coordinator's handlers; they wait for their effect and log what they do.
  */
 @RtcDsl
 public class ComponentRef internal constructor(
     /** What the script wrote. */
     public val selector: String,
-    private val engine: Engine,
 ) {
     /** Whether the selector is a pattern that may match several components. */
     public val isPattern: Boolean get() = selector.any { it == '*' || it == '?' }
 
-    internal suspend fun node(): ComponentNode = engine.component(selector)
+    internal suspend fun node(): ComponentNode = Engine.current().component(selector)
 
     /** The component's path, as resolved now. */
     public suspend fun path(): RtcPath = node().path
 
     /** Its state in its default execution context, read now (from the component answering to the name now). */
-    public suspend fun state(): LifeCycle = engine.withComponent(selector) { it.state() }
+    public suspend fun state(): LifeCycle = Engine.current().withComponent(selector) { it.state() }
 
     /** What was last read of it. */
     public suspend fun snapshot(): ComponentSnapshot = node().snapshot()
 
     /** Activates it and waits until it is ACTIVE. Undone by a deactivation. */
-    public suspend fun activate(): Unit = engine.actReversibly("activate", this) { it.activate(); { deactivate() } }
+    public suspend fun activate(): Unit = Engine.current().actReversibly("activate", this) { it.activate(); { deactivate() } }
 
     /** Deactivates it and waits until it is INACTIVE. Undone by an activation. */
-    public suspend fun deactivate(): Unit = engine.actReversibly("deactivate", this) { it.deactivate(); { activate() } }
+    public suspend fun deactivate(): Unit = Engine.current().actReversibly("deactivate", this) { it.deactivate(); { activate() } }
 
     /** Resets it from ERROR and waits until it is INACTIVE. */
-    public suspend fun reset(): Unit = engine.act("reset", this) { it.reset() }
+    public suspend fun reset(): Unit = Engine.current().act("reset", this) { it.reset() }
 
     /** Makes it exit. */
-    public suspend fun exit(): Unit = engine.act("exit", this) { it.exit() }
+    public suspend fun exit(): Unit = Engine.current().act("exit", this) { it.exit() }
 
     /** Disconnects every connection of every port. Undone by making the same connections again. */
-    public suspend fun disconnectAll(): Unit = engine.actReversibly("disconnect all", this) { node ->
-        val connections = node.snapshot().ports.flatMap { node.port(it.name).connections() }.distinctBy { it.id }
-        node.disconnectAll()
-        reconnecting(connections, engine)
+    public suspend fun disconnectAll() {
+        val engine = Engine.current()
+        engine.actReversibly("disconnect all", this) { node ->
+            val connections = node.snapshot().ports.flatMap { node.port(it.name).connections() }.distinctBy { it.id }
+            node.disconnectAll()
+            reconnecting(connections, engine)
+        }
     }
 
     /**
@@ -57,29 +62,32 @@ public class ComponentRef internal constructor(
      */
     public suspend fun configure(changes: ConfigurationChanges.() -> Unit) {
         val requested = ConfigurationChanges().apply(changes)
-        engine.act("configure ${requested.describe()}", this) { node -> node.setParameters(requested.values, requested.set) }
+        Engine.current().act("configure ${requested.describe()}", this) { node -> node.setParameters(requested.values, requested.set) }
     }
 
     /** Makes configuration set [id] the active one. */
-    public suspend fun activateConfigSet(id: String): Unit = engine.act("activate configuration set $id", this) { it.activateConfigurationSet(id) }
+    public suspend fun activateConfigSet(id: String): Unit = Engine.current().act("activate configuration set $id", this) { it.activateConfigurationSet(id) }
 
     /** Its port [name]. */
-    public fun port(name: String): PortRef = PortRef(this, name, engine)
+    public fun port(name: String): PortRef = PortRef(this, name)
 
     override fun toString(): String = selector
 }
 
 /** A port of a component: `component("gyro0.rtc").port("gyro")`, or `port("gyro0.rtc:gyro")`. */
 @RtcDsl
-public class PortRef internal constructor(public val component: ComponentRef, public val name: String, private val engine: Engine) {
+public class PortRef internal constructor(public val component: ComponentRef, public val name: String) {
     internal suspend fun port(): Port = component.node().port(name)
 
     /** Disconnects every connection of this port. Undone by making the same connections again. */
-    public suspend fun disconnectAll(): Unit = engine.actReversibly("disconnect all of $this", component) { node ->
-        val port = node.port(name)
-        val connections = port.connections()
-        port.disconnectAll()
-        reconnecting(connections, engine)
+    public suspend fun disconnectAll() {
+        val engine = Engine.current()
+        engine.actReversibly("disconnect all of $this", component) { node ->
+            val port = node.port(name)
+            val connections = port.connections()
+            port.disconnectAll()
+            reconnecting(connections, engine)
+        }
     }
 
     override fun toString(): String = "${component.selector}:$name"
@@ -87,12 +95,12 @@ public class PortRef internal constructor(public val component: ComponentRef, pu
 
 /** A manager named in a script (`manager.mgr` by default, searched like a component name or a full path). */
 @RtcDsl
-public class ManagerRef internal constructor(public val selector: String, private val engine: Engine) {
+public class ManagerRef internal constructor(public val selector: String) {
     /** Creates a component of [type] (named [name], or as the manager names it) and returns it. */
-    public suspend fun create(type: String, name: String? = null): ComponentRef = engine.create(this, type, name)
+    public suspend fun create(type: String, name: String? = null): ComponentRef = Engine.current().create(this, type, name)
 
     /** Deletes component [instanceName] through the manager that hosts it. */
-    public suspend fun delete(instanceName: String): Unit = engine.delete(this, instanceName)
+    public suspend fun delete(instanceName: String): Unit = Engine.current().delete(this, instanceName)
 
     override fun toString(): String = selector
 }
@@ -121,6 +129,20 @@ public class ConfigurationChanges internal constructor() {
     }
 
     internal fun describe(): String = values.entries.joinToString { "${it.key}=${it.value}" } + (set?.let { " in $it" } ?: "")
+}
+
+/** The port [path] names, as `component:port`. */
+internal fun portRef(path: String): PortRef {
+    val split = path.lastIndexOf(':')
+    require(split > 0 && split < path.length - 1) { "not a port: '$path' (write component:port)" }
+    return PortRef(ComponentRef(path.substring(0, split)), path.substring(split + 1))
+}
+
+/** [port] as a port: a [PortRef] or `component:port` text. */
+internal fun portOf(port: Any): PortRef = when (port) {
+    is PortRef -> port
+    is String -> portRef(port)
+    else -> throw IllegalArgumentException("not a port: $port (a port(...) or \"component:port\")")
 }
 
 /** How to undo the removal of [connections]: make each again. */

@@ -5,10 +5,29 @@ import kotlin.time.Duration
 
 /** What a rule watches: a component (or pattern), a port, a manager or a naming context. */
 internal sealed class Target {
-    class Component(val ref: ComponentRef) : Target()
-    class Port(val ref: PortRef) : Target()
-    class Manager(val ref: ManagerRef) : Target()
-    class Context(val ref: ContextRef) : Target()
+    /** The component this target's events come from when the script names one (not a pattern): the name a run follows. */
+    open val followedName: String? get() = null
+
+    /** What tells two targets apart: equal keys watch the same thing. */
+    abstract val key: String
+
+    class Component(val ref: ComponentRef) : Target() {
+        override val followedName: String? get() = ref.selector.takeUnless { ref.isPattern }
+        override val key: String get() = "component ${ref.selector}"
+    }
+
+    class Port(val ref: PortRef) : Target() {
+        override val followedName: String get() = ref.component.selector
+        override val key: String get() = "component ${ref.component.selector}"
+    }
+
+    class Manager(val ref: ManagerRef) : Target() {
+        override val key: String get() = "manager ${ref.selector}"
+    }
+
+    class Context(val ref: ContextRef) : Target() {
+        override val key: String get() = "context ${ref.path}"
+    }
 }
 
 /** A rule: on the events of [pattern] that pass every guard, run [handler]. */

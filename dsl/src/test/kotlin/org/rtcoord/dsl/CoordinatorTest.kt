@@ -12,6 +12,7 @@ import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
+import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
@@ -124,10 +125,12 @@ class CoordinatorTest {
     @Test
     fun `a reference and the rules on it follow a component re-created at its path`(): Unit = runBlocking {
         val reactions = AtomicInteger()
-        lateinit var gyro: ComponentRef
         coordinator {
-            gyro = component("gyro0")
-            on(gyro).state(ERROR) { reactions.incrementAndGet() }
+            val gyro = component("gyro0")
+            on(gyro).state(ERROR) {
+                gyro.reset()
+                reactions.incrementAndGet()
+            }
         }.use { coordinator ->
             coordinator.start()
             val host = "/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}"
@@ -136,12 +139,42 @@ class CoordinatorTest {
             RtcTree.create(config).use { other -> other.manager("$host/manager.mgr").create("gyro", "gyro0") }
             val new = system.component("gyro0")
 
-            assertEquals(org.rtcoord.LifeCycle.INACTIVE, gyro.state(), "the state of the new gyro0")
             await("the rule to watch the new gyro0") { new.observerIds.size == 1 }
             new.activate()
             new.fail()
-            await("the rule to fire on the new gyro0") { reactions.get() == 1 }
+            await("the rule to fire on the new gyro0 and reset it") { reactions.get() == 1 && new.state == RTC.LifeCycleState.INACTIVE_STATE }
+            assertEquals(1, coordinator.treeSubscriptions, "the rule's subscription moved to the new gyro0")
+            assertEquals(0, coordinator.failures, log.toString())
         }
+    }
+
+    @Test
+    fun `one plan runs twice at once, each run acting and logging on its own, and again after both ended`(): Unit = runBlocking {
+        val coordination = Coordination(emptyList(), config).apply {
+            on(component("gyro0")).state(ERROR) { event -> log("${event.source.name} failed; gyro0 is ${component("gyro0").state()}") }
+        }
+        val logs = List(3) { Collections.synchronizedList(mutableListOf<String>()) }
+        fun run(tree: RtcTree, log: MutableList<String>) = Coordinator(tree, coordination, EventOptions(WatchMode.PUSH)) { log += it }
+        fun reactions(log: List<String>) = log.count { it == "gyro0.rtc failed; gyro0 is ERROR" }
+        val gyro = system.component("gyro0")
+        RtcTree.create(config).use { otherTree ->
+            run(tree, logs[0]).use { first ->
+                run(otherTree, logs[1]).use { second ->
+                    first.start()
+                    second.start()
+                    gyro.fail()
+                    await("both runs to react") { reactions(logs[0]) == 1 && reactions(logs[1]) == 1 }
+                }
+            }
+        }
+        tree.componentNamed("gyro0").reset()
+        gyro.activate()
+        run(tree, logs[2]).use { third ->
+            third.start()
+            gyro.fail()
+            await("a third run to react") { reactions(logs[2]) == 1 }
+        }
+        assertEquals(listOf(1, 1, 1), logs.map(::reactions), logs.toString())
     }
 
     @Test

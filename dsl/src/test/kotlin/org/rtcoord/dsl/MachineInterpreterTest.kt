@@ -1,11 +1,21 @@
 package org.rtcoord.dsl
 
+import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.test.advanceTimeBy
 import kotlinx.coroutines.test.runCurrent
 import kotlinx.coroutines.test.runTest
+import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
+import org.rtcoord.EventOptions
+import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.runtime.Configurator
+import org.rtcoord.dsl.runtime.Engine
+import org.rtcoord.dsl.runtime.Identities
+import org.rtcoord.dsl.runtime.MachineInterpreter
+import org.rtcoord.dsl.runtime.ModeTransition
+import java.nio.file.Paths
 import java.time.Instant
 import kotlin.time.Duration.Companion.seconds
 
@@ -39,8 +49,9 @@ class MachineInterpreterTest {
                 }
             }
         }
+        val engine = engine(backgroundScope)
         val interpreter = MachineInterpreter(
-            machine, backgroundScope, Engine(), Configurator(Engine(), backgroundScope), log = {}, failed = { what, e -> failures += "$what: $e" },
+            machine, backgroundScope, engine, Configurator(engine, backgroundScope), log = {}, failed = { what, e -> failures += "$what: $e" },
             now = { Instant.ofEpochMilli(testScheduler.currentTime) },
         )
         interpreter.start()
@@ -80,11 +91,20 @@ class MachineInterpreterTest {
             mode("a") { after(1.seconds) goTo "b" }
             mode("b") { entry { error("cannot start b") } }
         }
-        val interpreter = MachineInterpreter(machine, backgroundScope, Engine(), Configurator(Engine(), backgroundScope), log = {}, failed = { what, e -> failures += "$what: ${e.message}" })
+        val engine = engine(backgroundScope)
+        val interpreter = MachineInterpreter(machine, backgroundScope, engine, Configurator(engine, backgroundScope), log = {}, failed = { what, e -> failures += "$what: ${e.message}" })
         interpreter.start()
         advanceTimeBy(2.seconds)
         runCurrent()
         assertEquals("m/b", interpreter.running.mode.value)
         assertEquals(listOf("entry of m/b: cannot start b"), failures)
     }
+
+    private val tree = RtcTree.create()
+
+    @AfterEach
+    fun closeTree() = tree.close()
+
+    /** An engine on a tree that knows no name server: these machines never act on the system. */
+    private fun engine(scope: CoroutineScope) = Engine(tree, Identities(tree, EventOptions(), scope, {}, emptyMap()), Paths.get(""), {})
 }

@@ -14,6 +14,8 @@ import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
+import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.runtime.RunningMachine
 import org.rtcoord.fixtures.Behaviour
 import org.rtcoord.fixtures.ComponentContext
 import org.rtcoord.fixtures.ComponentType

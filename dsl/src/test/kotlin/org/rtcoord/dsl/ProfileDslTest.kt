@@ -11,6 +11,7 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
+import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await

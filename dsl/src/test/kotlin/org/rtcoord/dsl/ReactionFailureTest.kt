@@ -10,6 +10,8 @@ import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
+import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.runtime.FailedAction
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService

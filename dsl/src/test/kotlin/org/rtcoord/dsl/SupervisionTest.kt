@@ -16,6 +16,7 @@ import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
+import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.fixtures.FixtureComponent
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.FixtureRuntime
@@ -121,6 +122,7 @@ class SupervisionTest {
                 on(component("laser_localise0")).state(ERROR) { event -> ruleSaw += event.source.path.toString() }
             }.use { coordinator ->
                 coordinator.start()
+                assertEquals(3, coordinator.treeSubscriptions, "one subscription per component: the rule on laser_localise0 shares the supervisor's")
                 // Changes after the start: a connection to odo_localise0 (not supervised) is made, the odometry's is removed.
                 witness.connect(path("laser_localise0.rtc:pose"), path("odo_localise0.rtc:odo"))
                 val odometry = witness.port(path("odometry0.rtc:odo"))
@@ -165,6 +167,7 @@ class SupervisionTest {
                 await("the supervisor to reset and reactivate the new component") { logged("reset ${path("laser_localise0.rtc")}") && localiser.state == LifeCycleState.ACTIVE_STATE }
                 assertSame(localiser, active("laser_localise0"), "reset, not re-created")
                 assertEquals(listOf(path("laser_localise0.rtc")), ruleSaw.toList())
+                assertEquals(3, coordinator.treeSubscriptions, "still one per component, on the re-created one")
                 assertEquals(0, coordinator.failures)
                 coordinator.close()
                 await("the observer on the new component to be detached") { localiser.observerIds.isEmpty() }

@@ -1,6 +1,7 @@
 package org.rtcoord.cli.serve
 
-import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.runtime.Coordinator
+
 
 /**
  * What the page shows of a running [Coordinator]: each rule with its last firing and failures, each

@@ -26,7 +26,6 @@ import org.rtcoord.HeartbeatLost
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
-import org.rtcoord.WatchMethodChanged
 import org.rtcoord.Node
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
@@ -40,10 +39,11 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
 import org.rtcoord.Subscription
+import org.rtcoord.WatchMethodChanged
 import org.rtcoord.cli.discover
 import org.rtcoord.cli.toJson
 import org.rtcoord.cli.what
-import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.runtime.Coordinator
 import java.time.Instant
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicLong

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineName
@@ -7,6 +7,9 @@ import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.async
 import kotlinx.coroutines.withTimeout
 import org.rtcoord.NotFoundException
+import org.rtcoord.dsl.Link
+import org.rtcoord.dsl.Network
+import org.rtcoord.dsl.portRef
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
@@ -79,7 +82,7 @@ internal class Configurator(private val engine: Engine, private val scope: Corou
 
     /** The ids of the connections joining the link's ports, recognised by path or by OpenRTM's `instance.port` name. */
     private suspend fun connectors(link: Link): List<String> {
-        val (from, to) = engine.portRef(link.from) to engine.portRef(link.to)
+        val (from, to) = portRef(link.from) to portRef(link.to)
         val (path, fullName) = engine.withComponent(to.component.selector) { node -> node.port(to.name).path to "${node.snapshot().instanceName}.${to.name}" }
         val connections = engine.withComponent(from.component.selector) { it.port(from.name).connections() }
         return connections.filter { connection -> connection.ports.any { it.path == path || it.fullName == fullName } }.map { it.id }

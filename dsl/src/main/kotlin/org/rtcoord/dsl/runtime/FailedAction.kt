@@ -1,4 +1,4 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 /**
  * An action of the coordinator that failed: [action] as the log wrote it, [reason] as the system

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.currentCoroutineContext
@@ -7,76 +7,39 @@ import org.rtcoord.AmbiguousNameException
 import org.rtcoord.ComponentNode
 import org.rtcoord.Connection
 import org.rtcoord.ManagerNode
-import org.rtcoord.Node
 import org.rtcoord.NodeFilters
 import org.rtcoord.NodeFilters.and
 import org.rtcoord.NodeKind
 import org.rtcoord.NotFoundException
 import org.rtcoord.RtcException
-import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.UnreachableException
-import org.rtcoord.profile.RtsProfile
-import org.rtcoord.profile.RtsProfiles
+import org.rtcoord.dsl.ComponentRef
+import org.rtcoord.dsl.ManagerRef
+import org.rtcoord.dsl.portRef
 import java.nio.file.Path
-import java.nio.file.Paths
-import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.coroutines.AbstractCoroutineContextElement
+import kotlin.coroutines.CoroutineContext
 
 /**
- * Resolves a script's references against the live tree and performs their actions, logging each. A
- * component found once is remembered; when it stops answering (re-created, moved), it is looked up again.
+ * Performs a running coordinator's actions on the live tree, logging each, and resolves what they name
+ * through the run's [identities]. It rides in the coroutine context of everything the run executes
+ * (handlers, timers, machines, supervisors), which is how a script's references, plain selectors, find
+ * the run they act in: one plan can run several times at once.
  */
-internal class Engine(private val directory: Path = Paths.get("")) {
-    lateinit var tree: RtcTree
-    var log: (String) -> Unit = {}
-    private val resolved = ConcurrentHashMap<String, ComponentNode>()
-
-    fun componentRef(name: String) = ComponentRef(name, this)
-
-    fun portRef(path: String): PortRef {
-        val split = path.lastIndexOf(':')
-        require(split > 0 && split < path.length - 1) { "not a port: '$path' (write component:port)" }
-        return PortRef(componentRef(path.substring(0, split)), path.substring(split + 1), this)
-    }
-
-    fun reference(node: ComponentNode): ComponentRef = ComponentRef(node.path.toString(), this).also { resolved[node.path.toString()] = node }
-
-    /** Told when references move to a re-created component, so that the rules watching it move too. */
-    var followed: suspend (old: ComponentNode, new: ComponentNode) -> Unit = { _, _ -> }
-
-    /** References that resolved to [old], a component since re-created as [new], resolve to [new] from now on. */
-    suspend fun follow(old: ComponentNode, new: ComponentNode) {
-        resolved.replaceAll { _, node -> if (node.isSameComponent(old)) new else node }
-        followed(old, new)
-    }
-
-    fun portOf(port: Any): PortRef = when (port) {
-        is PortRef -> port
-        is String -> portRef(port)
-        else -> throw IllegalArgumentException("not a port: $port (a port(...) or \"component:port\")")
-    }
-
+internal class Engine(
+    val tree: RtcTree,
+    val identities: Identities,
+    /** What the script's relative file names (profiles) are relative to. */
+    val directory: Path,
+    val log: (String) -> Unit,
+) : AbstractCoroutineContextElement(Engine) {
     /** The one component [selector] names. */
-    suspend fun component(selector: String): ComponentNode {
-        resolved[selector]?.let { return it }
-        val node = when {
-            selector.startsWith("/") || selector.startsWith("corbaloc:") -> tree.component(selector)
-            selector.any { it == '*' || it == '?' } -> components(selector).singleOrNull()
-                ?: throw AmbiguousNameException(selector, components(selector).map { it.path.toString() })
-            else -> tree.componentNamed(selector)
-        }
-        return node.also { resolved[selector] = it }
-    }
+    suspend fun component(selector: String): ComponentNode = identities.node(selector)
 
-    /** Every component [selector] names: one for a name or path, any number for a pattern. */
-    suspend fun components(selector: String): List<ComponentNode> {
-        if (selector.none { it == '*' || it == '?' }) return listOf(component(selector))
-        val pattern = if ('.' in selector) selector else "$selector.rtc"
-        return tree.find(predicate = NodeFilters.kind(NodeKind.COMPONENT) and NodeFilters.name(pattern)).toList()
-            .map { it as ComponentNode }
-            .fold(emptyList()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
-    }
+    /** A reference to [node], resolving to it. */
+    fun reference(node: ComponentNode): ComponentRef = ComponentRef(node.path.toString()).also { identities.remember(node) }
 
     suspend fun manager(ref: ManagerRef): ManagerNode {
         if (ref.selector.startsWith("/")) return tree.manager(ref.selector)
@@ -110,9 +73,6 @@ internal class Engine(private val directory: Path = Paths.get("")) {
         }
         currentCoroutineContext()[ActionJournal]?.record(line, undo)
     }
-
-    /** The RTSProfile in [file], relative to the script's directory; read anew at each call. */
-    fun profile(file: String): RtsProfile = RtsProfiles.read(directory.resolve(file))
 
     /**
      * Runs [action], one on the whole system (a profile's restore), logged as [what] and journaled
@@ -163,25 +123,11 @@ internal class Engine(private val directory: Path = Paths.get("")) {
         return try {
             action(node)
         } catch (e: UnreachableException) {
-            val other = successor(selector, node) ?: throw e
+            val other = identities.successor(selector, node) ?: throw e
             again(other)
             action(other)
         }
     }
-
-    /**
-     * The component that replaced [old], which stopped answering: the one bound at its path now, else
-     * the one [selector] finds now; references and rules follow it.
-     */
-    private suspend fun successor(selector: String, old: ComponentNode): ComponentNode? =
-        successorAt(old) ?: resolved.remove(selector).let { component(selector) }.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
-
-    /**
-     * The component registered now where [old] was, if it is a different one: [old] was re-created, and
-     * references and rules follow the new one. Only the binding's own context is read again.
-     */
-    suspend fun successorAt(old: ComponentNode): ComponentNode? =
-        (registeredAt(old.path) as? ComponentNode)?.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
 
     suspend fun create(ref: ManagerRef, type: String, name: String?): ComponentRef {
         val request = "create $type${name?.let { " as $it" } ?: ""}"
@@ -213,18 +159,7 @@ internal class Engine(private val directory: Path = Paths.get("")) {
     private suspend fun restarted(manager: ManagerNode, failure: UnreachableException): ManagerNode? {
         val cause = failure.cause
         if (cause !is org.omg.CORBA.TRANSIENT && cause !is org.omg.CORBA.OBJECT_NOT_EXIST) return null
-        return (registeredAt(manager.path) as? ManagerNode)?.takeUnless { it === manager }
-    }
-
-    /** What is bound at [path] now, its parent listed again; null if nothing (reachable) is. */
-    suspend fun registeredAt(path: RtcPath): Node? {
-        val parent = path.parent ?: return null
-        return try {
-            tree.refresh(parent, depth = 0)
-            tree.node(path)
-        } catch (e: RtcException) {
-            null
-        }
+        return (tree.registeredAt(manager.path) as? ManagerNode)?.takeUnless { it === manager }
     }
 
     suspend fun delete(ref: ManagerRef, instanceName: String) {
@@ -235,7 +170,13 @@ internal class Engine(private val directory: Path = Paths.get("")) {
             log(line)
             manager.delete(instanceName)
         }
-        resolved.keys.removeIf { it == instanceName || it.endsWith("/$instanceName.rtc") || it == "$instanceName.rtc" }
+        identities.forget(instanceName)
         currentCoroutineContext()[ActionJournal]?.record(line, null)
+    }
+
+    companion object Key : CoroutineContext.Key<Engine> {
+        /** The engine of the run the caller executes in. */
+        suspend fun current(): Engine = currentCoroutineContext()[Engine]
+            ?: throw IllegalStateException("a component, port or manager acts only while a coordinator runs: in a rule's handler, a timer, a mode's action or an escalation handler")
     }
 }

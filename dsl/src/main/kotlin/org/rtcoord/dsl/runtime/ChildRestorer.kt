@@ -1,4 +1,4 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import org.rtcoord.BadParameterException
 import org.rtcoord.ComponentNode
@@ -7,15 +7,18 @@ import org.rtcoord.OperationFailedException
 import org.rtcoord.Port
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
+import org.rtcoord.dsl.portOf
 
 /**
  * Brings a supervised component back when it is gone: re-creates it through the managers that hosted
  * it, then restores its configuration set and the connections the [record] holds for it.
  */
-internal class ChildRestorer(private val tree: RtcTree, private val engine: Engine, private val record: SupervisionRecord, private val log: RecoveryLog) {
+internal class ChildRestorer(private val engine: Engine, private val record: SupervisionRecord, private val log: RecoveryLog) {
+    private val tree: RtcTree get() = engine.tree
+
     /**
-     * Re-creates [child] through its managers and makes references follow the new component; returns
-     * it, or null if no manager made it. The caller watches it, then [restore]s it.
+     * Re-creates [child] through its managers and makes its names (and so whatever watches them) follow
+     * the new component; returns it, or null if no manager made it. The caller then [restore]s it.
      */
     suspend fun recreate(child: SupervisedChild, reason: String): ComponentNode? {
         val old = child.node
@@ -28,7 +31,7 @@ internal class ChildRestorer(private val tree: RtcTree, private val engine: Engi
         val node = placed(old, created)
         record.recreated(child, node, created.path)
         log.line("re-created ${old.path} as ${node.path}")
-        engine.follow(old, node)
+        engine.identities.follow(old, node)
         return node
     }
 
@@ -51,7 +54,7 @@ internal class ChildRestorer(private val tree: RtcTree, private val engine: Engi
     /** [created] as the naming context of [old] shows it (the path users know), else as its manager does. */
     private suspend fun placed(old: ComponentNode, created: ComponentNode): ComponentNode {
         val path = old.path.parent?.child(created.name) ?: return created
-        return (engine.registeredAt(path) as? ComponentNode)?.takeIf { it.isSameComponent(created) } ?: created
+        return (tree.registeredAt(path) as? ComponentNode)?.takeIf { it.isSameComponent(created) } ?: created
     }
 
     /** Restores [child]'s recorded configuration set and makes its recorded connections again. */

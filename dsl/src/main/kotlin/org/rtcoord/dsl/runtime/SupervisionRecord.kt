@@ -1,4 +1,4 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.ComponentNode

@@ -1,5 +1,7 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
+import org.rtcoord.dsl.Backoff
+import org.rtcoord.dsl.RestartIntensity
 import kotlin.time.Duration
 
 /**

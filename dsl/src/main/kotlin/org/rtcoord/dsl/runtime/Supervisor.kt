@@ -1,4 +1,4 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineScope
@@ -12,7 +12,6 @@ import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
 import org.rtcoord.ConfigurationSetActivated
-import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.Overlap
@@ -20,8 +19,11 @@ import org.rtcoord.ParameterChanged
 import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
 import org.rtcoord.RtcEvent
-import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
+import org.rtcoord.dsl.Escalation
+import org.rtcoord.dsl.RestartType
+import org.rtcoord.dsl.Strategy
+import org.rtcoord.dsl.Supervision
 import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.TimeSource
 
@@ -36,9 +38,7 @@ import kotlin.time.TimeSource
  */
 internal class Supervisor(
     private val supervision: Supervision,
-    private val tree: RtcTree,
     private val engine: Engine,
-    watching: EventOptions,
     private val scope: CoroutineScope,
     log: (String) -> Unit,
     private val escalate: suspend (Escalation) -> Unit,
@@ -48,11 +48,9 @@ internal class Supervisor(
 
     private val name = supervision.name
     private val say = RecoveryLog(name, log)
-    // A failure must never be dropped: whatever the script watches with, the supervisor queues its events.
-    private val options = EventOptions(watching.mode, watching.pollPeriod, Overlap.QUEUE, watching.heartbeat, watching.missedBeats)
     private val children = supervision.children.mapIndexed { index, ref -> SupervisedChild(index, ref, supervision.restartOf(ref)) }
-    private val record = SupervisionRecord(tree, children, say)
-    private val restorer = ChildRestorer(tree, engine, record, say)
+    private val record = SupervisionRecord(engine.tree, children, say)
+    private val restorer = ChildRestorer(engine, record, say)
     private val lock = Mutex()
     private val failures = Channel<Failure>(Channel.UNLIMITED)
     /** Numbers failures as they are reported, so a restart can tell which reports it already answered. */
@@ -100,11 +98,13 @@ internal class Supervisor(
         children.forEach { it.subscription?.cancel() }
     }
 
-    /** Watches [child]'s component, in place of the one watched before, if any. */
+    /**
+     * Watches [child]'s component, and the one that replaces it once re-created. A failure must never be
+     * dropped: whatever the script watches with, the supervisor queues its events.
+     */
     private suspend fun watch(child: SupervisedChild) {
-        val node = child.node
-        child.subscription?.cancel()
-        child.subscription = tree.on(node, RtcEvent::class.java, options) { event -> observe(child, node, event) }
+        val events = HandlerQueue(scope, Overlap.QUEUE) { event: RtcEvent -> (event.source as? ComponentNode)?.let { observe(child, it, event) } }
+        child.subscription = engine.identities.listen(child.ref.selector, setOf(RtcEvent::class.java), listener = events::offer)
     }
 
     private suspend fun observe(child: SupervisedChild, node: ComponentNode, event: RtcEvent) {
@@ -226,7 +226,6 @@ internal class Supervisor(
         when (val status = member.status()) {
             is ChildStatus.Gone -> {
                 restorer.recreate(member, status.reason) ?: return false
-                watch(member)
                 restorer.restore(member)
             }
             is ChildStatus.Up -> if (status.state == LifeCycle.ERROR) say.attempt("reset $member") { member.node.reset() } ?: return false

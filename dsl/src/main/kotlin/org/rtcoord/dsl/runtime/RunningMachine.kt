@@ -1,9 +1,10 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
+import org.rtcoord.dsl.ModeMachine
 import java.time.Instant
 import java.util.concurrent.atomic.AtomicInteger
 

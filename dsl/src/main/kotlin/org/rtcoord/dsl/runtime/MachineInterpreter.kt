@@ -1,4 +1,4 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineName
@@ -8,7 +8,17 @@ import kotlinx.coroutines.cancelAndJoin
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
+import org.rtcoord.Node
 import org.rtcoord.RtcEvent
+import org.rtcoord.dsl.EventPattern
+import org.rtcoord.dsl.Link
+import org.rtcoord.dsl.Mode
+import org.rtcoord.dsl.ModeMachine
+import org.rtcoord.dsl.Network
+import org.rtcoord.dsl.NetworkOutcome
+import org.rtcoord.dsl.Reaction
+import org.rtcoord.dsl.Transition
+import org.rtcoord.dsl.Trigger
 import org.slf4j.LoggerFactory
 import java.time.Instant
 import kotlin.time.TimeSource
@@ -54,7 +64,10 @@ internal class MachineInterpreter(
     private var generation = 0
 
     /** What the machine watches of its modes' networks. */
-    val networkWatch = NetworkWatch(engine, machine)
+    val networkWatch = NetworkWatch(machine)
+
+    /** How this run matches each transition's events: some follow a value from one event to the next. */
+    private val matchers = machine.eventPatterns.associateWith { it.matcher() }
 
     /** The network of the active modes, as last asked of the configurator. */
     private var network: Network? = null
@@ -86,11 +99,16 @@ internal class MachineInterpreter(
      */
     fun offer(event: RtcEvent, patterns: List<EventPattern<*>>) {
         if (networkWatch.owns(patterns)) {
-            if (patterns.any { it.accepts(event) }) inputs.trySend(Input.Watched(event, patterns))
+            if (networkWatch.accepts(event, patterns)) inputs.trySend(Input.Watched(event, patterns))
             return
         }
-        val matched = patterns.mapNotNull { pattern -> pattern.match(event)?.let { pattern to it } }.toMap()
+        val matched = patterns.mapNotNull { pattern -> matchers[pattern]?.match(event)?.let { pattern to it } }.toMap()
         if (matched.isNotEmpty()) inputs.trySend(Input.Event(matched))
+    }
+
+    /** Reads what [patterns] follow of [node] before its first event is offered. */
+    suspend fun prepare(patterns: List<EventPattern<*>>, node: Node) {
+        patterns.forEach { matchers[it]?.prepare(node) }
     }
 
     private suspend fun handle(received: Input) {

@@ -1,10 +1,12 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import org.rtcoord.ComponentNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerNode
 import org.rtcoord.RtcException
 import org.rtcoord.Subscription
+import org.rtcoord.dsl.ComponentRef
+import org.rtcoord.dsl.RestartType
 
 /**
  * What a supervisor knows of one of its components: where it is now ([node], replaced when it is

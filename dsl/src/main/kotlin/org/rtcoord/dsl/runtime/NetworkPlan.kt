@@ -1,6 +1,11 @@
-package org.rtcoord.dsl
+package org.rtcoord.dsl.runtime
 
 import org.rtcoord.LifeCycle
+import org.rtcoord.dsl.ComponentRef
+import org.rtcoord.dsl.Link
+import org.rtcoord.dsl.Network
+import org.rtcoord.dsl.Reaction
+import org.rtcoord.dsl.portRef
 
 /**
  * The live system as read for what a [Network] names: component states (null: absent), active sets (null:
@@ -14,19 +19,19 @@ internal sealed class Step(val description: String) {
     abstract suspend fun apply(engine: Engine)
 
     class Deactivate(private val component: String) : Step("deactivate $component") {
-        override suspend fun apply(engine: Engine) = engine.componentRef(component).deactivate()
+        override suspend fun apply(engine: Engine) = ComponentRef(component).deactivate()
     }
 
     /** Removes the connectors read as joining the link: one another client removed since was not planned for. */
     class Disconnect(private val link: Link, private val connectors: List<String>) : Step("disconnect ${link.from} from ${link.to}") {
         override suspend fun apply(engine: Engine) {
-            val from = engine.portRef(link.from)
+            val from = portRef(link.from)
             engine.act(description, from.component, namesItself = true) { node -> connectors.forEach { node.port(from.name).disconnect(it) } }
         }
     }
 
     class ActivateSet(private val component: String, private val id: String) : Step("activate configuration set $id of $component") {
-        override suspend fun apply(engine: Engine) = engine.componentRef(component).activateConfigSet(id)
+        override suspend fun apply(engine: Engine) = ComponentRef(component).activateConfigSet(id)
     }
 
     class Connect(private val link: Link, private val properties: Map<String, String>) : Step("connect ${link.from} to ${link.to}") {
@@ -34,7 +39,7 @@ internal sealed class Step(val description: String) {
     }
 
     class Activate(private val component: String) : Step("activate $component") {
-        override suspend fun apply(engine: Engine) = engine.componentRef(component).activate()
+        override suspend fun apply(engine: Engine) = ComponentRef(component).activate()
     }
 
     override fun toString(): String = description

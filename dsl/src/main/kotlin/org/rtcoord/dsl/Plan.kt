@@ -1,0 +1,26 @@
+package org.rtcoord.dsl
+
+import org.rtcoord.EventOptions
+import org.rtcoord.profile.RtsProfile
+import org.rtcoord.profile.RtsProfiles
+import java.nio.file.Path
+
+/**
+ * What a script declared, frozen when a coordinator is made: rules, timers, supervisors and mode
+ * machines, with plain selectors for what they name. It holds nothing of a run, so one plan can be
+ * started any number of times, one run after another or at once on different trees.
+ *
+ * @property directory what the script's relative file names (profiles) are relative to.
+ */
+internal class Plan(
+    val rules: List<Rule<*>>,
+    val timers: List<Timer>,
+    val supervisions: List<Supervision>,
+    val machines: List<ModeMachine>,
+    val nameServers: List<String>,
+    val watching: EventOptions,
+    val directory: Path,
+)
+
+/** The RTSProfile in [file], relative to this directory; read anew at each call. */
+internal fun Path.profile(file: String): RtsProfile = RtsProfiles.read(resolve(file))

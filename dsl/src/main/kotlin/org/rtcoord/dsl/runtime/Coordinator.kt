@@ -1,0 +1,241 @@
+package org.rtcoord.dsl.runtime
+
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.CoroutineExceptionHandler
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.isActive
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
+import org.rtcoord.ComponentNode
+import org.rtcoord.EventOptions
+import org.rtcoord.Node
+import org.rtcoord.NotFoundException
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcTree
+import org.rtcoord.Subscription
+import org.rtcoord.dsl.Coordination
+import org.rtcoord.dsl.Escalation
+import org.rtcoord.dsl.EventPattern
+import org.rtcoord.dsl.Reaction
+import org.rtcoord.dsl.Rule
+import org.rtcoord.dsl.Supervision
+import org.rtcoord.dsl.Target
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.atomic.AtomicInteger
+
+/**
+ * Runs a [Coordination]'s plan against a live system: subscribes its rules, starts its timers, mode
+ * machines and supervisors, and runs their handlers, one structured-concurrency scope for all of it. A
+ * failing handler is logged and counted and the coordinator keeps running; [close] cancels running
+ * handlers and detaches every observer. What the script names (not a pattern) is followed when it is
+ * re-created, by a supervisor, a rule or by hand, with one subscription per component however many
+ * rules, transitions and supervisors watch it. The plan is taken when the coordinator is made: several
+ * coordinators may run one coordination, one after another or at once.
+ *
+ * @param options how rules watch, overriding the script's own choice when given.
+ * @param log receives one line per rule firing, action, mode transition and failure.
+ */
+public class Coordinator(
+    private val tree: RtcTree,
+    coordination: Coordination,
+    options: EventOptions? = null,
+    private val log: (String) -> Unit = {},
+) : AutoCloseable {
+    private val plan = coordination.plan()
+
+    /** How rules, transitions and supervisors watch: the host's choice, else the script's. */
+    private val watching: EventOptions = options ?: plan.watching
+
+    private val job = SupervisorJob()
+    private val identities = Identities(tree, watching, CoroutineScope(job + CoroutineName("coordinator names")), log, watchedByName())
+    private val engine = Engine(tree, identities, plan.directory, log)
+    private val scope = CoroutineScope(job + CoroutineName("coordinator") + engine + CoroutineExceptionHandler { _, e -> failed("timer", e) })
+    private val interpreters = plan.machines.map { MachineInterpreter(it, scope, engine, Configurator(engine, scope), log, ::failed, ::watchNetwork) }
+    /** The listeners of followed names, and the subscriptions to nodes that are not followed. */
+    private val listeners = CopyOnWriteArrayList<Subscription>()
+    private val subscriptions = CopyOnWriteArrayList<Subscription>()
+    private val supervisors = CopyOnWriteArrayList<Supervisor>()
+    private val failureCount = AtomicInteger()
+
+    /** How many handler runs failed so far. */
+    public val failures: Int get() = failureCount.get()
+
+    /** Every action that failed so far, in order: those that stopped a handler and the best efforts. */
+    public val failedActions: List<FailedAction> get() = engine.failedActions.toList()
+
+    private val ruleActivities = plan.rules.associateWith { RuleActivity(it.description) }
+
+    /** What each rule has done, in declaration order. */
+    public val rules: List<RuleActivity> = ruleActivities.values.toList()
+
+    /** What each supervisor has done, in declaration order; empty until [start]. */
+    public val supervision: List<SupervisorActivity> get() = supervisors.map { it.activity }
+
+    /** The coordination's mode machines as they run, in declaration order. */
+    public val machines: List<RunningMachine> = interpreters.map { it.running }
+
+    /** How many subscriptions to the tree the coordinator holds now: one per followed component, one per other node watched. */
+    internal val treeSubscriptions: Int get() = identities.subscriptions + subscriptions.size
+
+    /** The running machine named [name]. */
+    public fun machine(name: String): RunningMachine = machines.firstOrNull { it.name == name }
+        ?: throw IllegalArgumentException("no machine named '$name' (machines: ${machines.joinToString { it.name }.ifEmpty { "none" }})")
+
+    /**
+     * Resolves every rule's target and subscribes it, and starts the supervisors; fails (with nothing
+     * left running) when a target does not exist or is ambiguous.
+     */
+    public suspend fun start() {
+        plan.nameServers.forEach(tree::addNameServer)
+        try {
+            plan.rules.forEach { subscribe(it) }
+            interpreters.forEach { machine ->
+                watch(machine, machine.machine.eventPatterns)
+                watchNetwork(machine)
+            }
+            plan.supervisions.forEach { supervision ->
+                supervisors += Supervisor(supervision, engine, scope, log) { escalated(supervision, it) }.also { it.start() }
+            }
+        } catch (e: Exception) {
+            close()
+            throw e
+        }
+        plan.timers.forEach { timer ->
+            scope.launch {
+                delay(timer.delay)
+                while (isActive) {
+                    run("timer ${timer.description}") { Reaction(engine, null).handle(timer.action) }
+                    delay(timer.period ?: break)
+                }
+            }
+        }
+        interpreters.forEach(MachineInterpreter::start)
+    }
+
+    /**
+     * The events the plan watches of each name it follows, so that each name's one subscription asks the
+     * tree for all of them and no more; a supervised component is watched for everything.
+     */
+    private fun watchedByName(): Map<String, Set<Class<out RtcEvent>>> {
+        val patterns = plan.rules.map { it.pattern } + plan.machines.flatMap { it.eventPatterns + NetworkWatch(it).patterns }
+        val named = patterns.mapNotNull { pattern -> pattern.target.followedName?.let { it to pattern.watched } } +
+            plan.supervisions.flatMap { supervision -> supervision.children.map { it.selector to RtcEvent::class.java } }
+        return named.groupBy({ it.first }, { it.second }).mapValues { it.value.toSet() }
+    }
+
+    private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>) {
+        val matcher = rule.pattern.matcher()
+        listen(rule.target, setOf(rule.pattern.watched), matcher::prepare) {
+            val handler = HandlerQueue(scope, watching.overlap) { event: E -> fire(rule, event) }
+            return@listen { event -> matcher.match(event)?.let(handler::offer) }
+        }
+    }
+
+    /** Subscribes [patterns], transitions or network watches of [machine], one listener per target. */
+    private suspend fun watch(machine: MachineInterpreter, patterns: List<EventPattern<*>>) {
+        for (grouped in patterns.groupBy { it.target.key }.values) {
+            listen(grouped.first().target, grouped.map { it.watched }.toSet(), { node -> machine.prepare(grouped, node) }) {
+                return@listen { event -> machine.offer(event, grouped) }
+            }
+        }
+    }
+
+    /**
+     * Subscribes what [machine]'s networks name that exists now and is not watched yet: at the start, and
+     * each time a network is done (a mode may create what its network names). Only the machine's own
+     * coroutine calls it once the machine runs.
+     */
+    private suspend fun watchNetwork(machine: MachineInterpreter) {
+        for (grouped in machine.networkWatch.unwatched().groupBy { it.target.key }.values) {
+            try {
+                watch(machine, grouped)
+                machine.networkWatch.watching(grouped)
+            } catch (e: NotFoundException) {
+                // Not there yet: watched once a network that makes it is done.
+            }
+        }
+    }
+
+    /**
+     * Hands the events of [types] from what [target] names to a listener [made] once per node: a component
+     * the script names is followed across re-creation, on its one subscription; each node a pattern,
+     * manager or naming context names now is watched by a subscription of its own. [prepare] reads each
+     * node before its first event reaches the listener.
+     */
+    private suspend fun listen(
+        target: Target,
+        types: Set<Class<out RtcEvent>>,
+        prepare: suspend (Node) -> Unit,
+        made: () -> suspend (RtcEvent) -> Unit,
+    ) {
+        val name = target.followedName
+        if (name != null) {
+            if (target is Target.Port) identities.node(name).port(target.ref.name)
+            listeners += identities.listen(name, types, prepare, made())
+            return
+        }
+        for (node in targets(target)) {
+            prepare(node)
+            val deliver = made()
+            subscriptions += tree.on(node, types, watching.queued()) { deliver(it) }
+        }
+    }
+
+    private suspend fun targets(target: Target): List<Node> = when (target) {
+        is Target.Component -> identities.nodes(target.ref.selector)
+        is Target.Port -> listOf(identities.node(target.ref.component.selector))
+        is Target.Manager -> listOf(engine.manager(target.ref))
+        is Target.Context -> listOf(tree.node(target.ref.path))
+    }
+
+    private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
+        for (handler in supervision.escalationHandlers) {
+            run("escalation handler of ${escalation.supervisor}") { Reaction(engine, null).handle { handler(escalation) } }
+        }
+    }
+
+    /** Runs [rule]'s handler on [event] if every guard holds; on the tree's threads, so the run's engine goes along. */
+    private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E): Unit = withContext(engine) {
+        val reaction = Reaction(engine, event)
+        if (!rule.guards.all { guard -> reaction.guard(event) }) return@withContext
+        log("rule '${rule.description}' fired: ${describe(event)}")
+        val activity = ruleActivities.getValue(rule)
+        activity.fired(describe(event))
+        run("rule '${rule.description}'", activity::failed) { reaction.handle { rule.handler(this, event) } }
+    }
+
+    private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {
+        try {
+            block()
+        } catch (e: CancellationException) {
+            throw e
+        } catch (e: Exception) {
+            failed(what, e)
+            failedAs(e.message ?: e.toString())
+        }
+    }
+
+    /** Logs the failure, then counts it: whoever sees the count can read the line. */
+    private fun failed(what: String, e: Throwable) {
+        log("$what failed: ${e.message ?: e}")
+        failureCount.incrementAndGet()
+    }
+
+    /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
+    override fun close() {
+        supervisors.forEach(Supervisor::close)
+        (listeners + subscriptions).forEach(Subscription::cancel)
+        listeners.clear()
+        subscriptions.clear()
+        identities.close()
+        job.cancel()
+    }
+
+    private companion object {
+        fun describe(event: RtcEvent): String = "${event.javaClass.simpleName} at ${(event.source as? ComponentNode)?.path ?: event.path}"
+    }
+}

@@ -1,0 +1,135 @@
+package org.rtcoord.dsl.runtime
+
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.flow.toList
+import org.rtcoord.AmbiguousNameException
+import org.rtcoord.ComponentNode
+import org.rtcoord.EventOptions
+import org.rtcoord.Node
+import org.rtcoord.NodeFilters
+import org.rtcoord.NodeFilters.and
+import org.rtcoord.NodeKind
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
+import org.rtcoord.Subscription
+import java.util.concurrent.ConcurrentHashMap
+
+/**
+ * The one owner of "which component is this" in a running coordinator: resolves what a script names
+ * (a path, a name found on any name server, or a pattern that matches one component) and follows each
+ * name to the component that replaces it when it is re-created, whoever re-creates it (a supervisor, a
+ * handler, someone by hand). Each name listened to has one subscription to the tree, shared by every
+ * rule, machine and supervisor that listens to it (see [FollowedComponent]).
+ *
+ * @param watched the events the plan listens to, by name: a name's subscription asks the tree for these
+ *   alone, so a component only rules on states watch is read for its states alone.
+ */
+internal class Identities(
+    val tree: RtcTree,
+    val options: EventOptions,
+    val scope: CoroutineScope,
+    val log: (String) -> Unit,
+    val watched: Map<String, Set<Class<out RtcEvent>>>,
+) : AutoCloseable {
+    private val names = ConcurrentHashMap<String, FollowedComponent>()
+
+    /** How many subscriptions to the tree the followed names hold now. */
+    val subscriptions: Int get() = names.values.count { it.subscribed }
+
+    /** The one component [selector] names, as resolved before or resolved now. */
+    suspend fun node(selector: String): ComponentNode = followed(selector).node
+
+    /** Every component [selector] names: one for a name or path, any number for a pattern (patterns are not followed). */
+    suspend fun nodes(selector: String): List<ComponentNode> =
+        if (isPattern(selector)) matching(selector) else listOf(node(selector))
+
+    /**
+     * Calls [listener] with every event of [types] from the component [selector] names, in order, and
+     * then from each component that replaces it. [prepare] reads what the listener follows of a component
+     * before that component's first event reaches it.
+     */
+    suspend fun listen(
+        selector: String,
+        types: Set<Class<out RtcEvent>>,
+        prepare: suspend (ComponentNode) -> Unit = {},
+        listener: suspend (RtcEvent) -> Unit,
+    ): Subscription = followed(selector).listen(types, prepare, listener)
+
+    /** Remembers [node] as what its path names, so that a reference made from it resolves to it. */
+    fun remember(node: ComponentNode) {
+        names.computeIfAbsent(node.path.toString()) { FollowedComponent(it, node, this) }
+    }
+
+    /** Every name that resolved to [old], a component since re-created as [new], names [new] from now on. */
+    suspend fun follow(old: ComponentNode, new: ComponentNode) {
+        for (name in names.values) if (name.node.isSameComponent(old)) name.moveTo(new)
+    }
+
+    /**
+     * The component that replaced [old], which stopped answering, and that [selector] names from now on:
+     * the one bound at [old]'s path now, else the one [selector] finds now; null if neither is another.
+     */
+    suspend fun successor(selector: String, old: ComponentNode): ComponentNode? {
+        successorAt(old)?.let { return it }
+        val again = try {
+            resolve(selector)
+        } catch (e: RtcException) {
+            return null
+        }
+        return again.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
+    }
+
+    /** The component registered now where [old] was, if it is another one: [old] was re-created, and its names follow it. */
+    suspend fun successorAt(old: ComponentNode): ComponentNode? =
+        (tree.registeredAt(old.path) as? ComponentNode)?.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
+
+    /** Forgets the names of component [instanceName], deleted: they resolve afresh when used again. */
+    fun forget(instanceName: String) {
+        names.entries.removeIf { (name, followed) ->
+            val gone = name == instanceName || name.endsWith("/$instanceName.rtc") || name == "$instanceName.rtc"
+            gone.also { if (it) followed.close() }
+        }
+    }
+
+    /** Stops every subscription and search. */
+    override fun close() {
+        names.values.forEach(FollowedComponent::close)
+        names.clear()
+    }
+
+    private suspend fun followed(selector: String): FollowedComponent {
+        names[selector]?.let { return it }
+        val node = resolve(selector)
+        return names.computeIfAbsent(selector) { FollowedComponent(it, node, this) }
+    }
+
+    private suspend fun resolve(selector: String): ComponentNode = when {
+        selector.startsWith("/") || selector.startsWith("corbaloc:") -> tree.component(selector)
+        isPattern(selector) -> matching(selector).singleOrNull() ?: throw AmbiguousNameException(selector, matching(selector).map { it.path.toString() })
+        else -> tree.componentNamed(selector)
+    }
+
+    private suspend fun matching(pattern: String): List<ComponentNode> {
+        val glob = if ('.' in pattern) pattern else "$pattern.rtc"
+        return tree.find(predicate = NodeFilters.kind(NodeKind.COMPONENT) and NodeFilters.name(glob)).toList()
+            .map { it as ComponentNode }
+            .fold(emptyList()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+    }
+
+    private companion object {
+        fun isPattern(selector: String) = selector.any { it == '*' || it == '?' }
+    }
+}
+
+/** What is bound at [path] now, its parent listed again; null if nothing (reachable) is. */
+internal suspend fun RtcTree.registeredAt(path: RtcPath): Node? {
+    val parent = path.parent ?: return null
+    return try {
+        refresh(parent, depth = 0)
+        node(path)
+    } catch (e: RtcException) {
+        null
+    }
+}
