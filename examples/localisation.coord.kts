@@ -2,10 +2,11 @@
 // odometry and the gyro, created through the manager, connected and activated. The laser is reset if it
 // can be; a laser that stays broken cannot, and the switch goes on without it. A switch that fails half
 // way (the manager refuses to create the new localiser) is taken back: the laser localiser runs again,
-// connected as before, so some localiser always runs.
+// connected as before, so some localiser always runs. A laser already in ERROR when the coordinator
+// starts (it was restarted after the fault) is handled the same way: includeCurrent.
 val manager = manager()
 
-on(component("laser0.rtc")).state(ERROR) {
+on(component("laser0.rtc")).state(ERROR, includeCurrent = true) {
     if (!attempt { reset() }) log("laser0 could not be reset: switching to odometry without it")
     onFailure { failure ->
         log("the switch to odometry failed (${failure.cause.message}): back to the laser localiser")

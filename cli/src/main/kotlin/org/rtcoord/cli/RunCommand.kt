@@ -1,12 +1,17 @@
 package org.rtcoord.cli
 
 import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.ProgramResult
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.groups.provideDelegate
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.path
+import kotlinx.coroutines.cancelChildren
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.first
+import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
@@ -23,6 +28,8 @@ import java.time.format.DateTimeFormatter
  * how each component is watched, managers that die, each rule firing, action and mode transition. On
  * the way out the coordinator's observers are detached and a summary says which actions failed, and
  * whether each stopped its handler or was only attempted; a stop by signal is a clean exit (status 0).
+ * With `--fail-on-handler-error` the first handler that fails stops the run with status 1, so that a
+ * service manager restarts it.
  */
 class RunCommand : TreeCommand("run") {
     override fun help(context: Context): String = "Run a coordinator (SCRIPT.coord.kts) until interrupted."
@@ -36,6 +43,11 @@ class RunCommand : TreeCommand("run") {
     private val arguments by argument("ARGS", help = "Arguments the script reads as args.").multiple()
     private val duration by option("--for", metavar = "DURATION", help = "Stop after this long, e.g. 30s or 5m.").duration()
     private val poll by option("--poll", metavar = "PERIOD", help = "Poll components at this period instead of observing them.").duration()
+    private val failOnHandlerError by option(
+        "--fail-on-handler-error",
+        help = "Stop at the first handler that fails, with status 1 (for a service manager to restart the coordinator); " +
+            "without it a failed handler is logged and counted, and the coordinator keeps running.",
+    ).flag()
     private val serve by option("--serve", help = "Serve a live view of the system and the coordinator (see rtcoord serve).").flag()
     private val serving by ServeOptions(prefix = "serve-")
 
@@ -71,7 +83,15 @@ class RunCommand : TreeCommand("run") {
                     .also { confirm("${now()} serving ${top.path} on ${it.url}") }
             }
 
-            val signal = signals.await(duration)
+            val signal = coroutineScope {
+                if (failOnHandlerError) {
+                    launch {
+                        coordinator.failureCounts.first { it > 0 }
+                        signals.stop(HANDLER_FAILED)
+                    }
+                }
+                signals.await(duration).also { coroutineContext.cancelChildren() }
+            }
             service?.close()
             // Detached while the ORB still works; after a signal, a second one ends the process at once.
             coordinator.close()
@@ -83,12 +103,14 @@ class RunCommand : TreeCommand("run") {
                 val effect = if (action.bestEffort) "attempted, went on" else "stopped its handler"
                 confirm("  failed: ${action.action}: ${action.reason} ($effect${if (times > 1) ", $times times" else ""})")
             }
+            if (signal == HANDLER_FAILED) throw ProgramResult(1)
         }
     }
 
     private fun now(): String = LocalTime.now().format(TIME)
 
     private companion object {
+        const val HANDLER_FAILED = "a handler that failed (--fail-on-handler-error)"
         val TIME: DateTimeFormatter = DateTimeFormatter.ofPattern("HH:mm:ss.SSS")
     }
 }

@@ -30,7 +30,12 @@ internal class StopSignals : AutoCloseable {
         }
     }
 
-    /** Waits for a signal, at most [limit] (forever when null); returns the signal's name, or null when the time was up. */
+    /** Stops the command as a signal would, for [reason] (what [await] returns). */
+    fun stop(reason: String) {
+        requested.complete(reason)
+    }
+
+    /** Waits for a signal or [stop], at most [limit] (forever when null); returns the signal's name or the reason, or null when the time was up. */
     suspend fun await(limit: Duration?): String? = withTimeoutOrNull(limit ?: Duration.INFINITE) { requested.await() }
 
     /** Gives the signals back to the JVM. */

@@ -264,6 +264,18 @@ class BadInputTest {
     }
 
     @Test
+    fun `run --fail-on-handler-error stops at the first failed handler with status 1, a plain run keeps going`() {
+        val failing = script("failing.coord.kts", "every(200.milliseconds) { error(\"the handler gives up\") }\n")
+        val stopped = runRtcoord("-n", ns, "run", "--for", "20s", "--fail-on-handler-error", failing)
+        assertEquals(1, stopped.statusCode, stopped.output)
+        assertTrue(stopped.output.contains("failed: the handler gives up"), stopped.output)
+        assertTrue(stopped.output.contains("stopped by a handler that failed (--fail-on-handler-error); 1 handler failures"), stopped.output)
+
+        val kept = runRtcoord("-n", ns, "run", "--for", "1s", failing).ok()
+        assertTrue(Regex("stopped; [2-9]\\d* handler failures").containsMatchIn(kept), kept)
+    }
+
+    @Test
     fun `a script configuring several parameters changes none when one of them is bad`() {
         val configure = script(
             "configure.coord.kts",

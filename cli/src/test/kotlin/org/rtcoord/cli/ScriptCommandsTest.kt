@@ -33,6 +33,28 @@ class ScriptCommandsTest {
     }
 
     @Test
+    fun `check with a name server reports each component, port and parameter the live system lacks, with line and column`() {
+        Localisation().use { localisation ->
+            val wrong = script(
+                "wrong.coord.kts",
+                "on(component(\"laser0.rtc\")).state(ERROR) { reset() }\n" +
+                    "on(component(\"lazer0.rtc\")).state(ERROR) { reset() }\n" +
+                    "on(port(\"laser0.rtc:scan\")).disconnected { }\n" +
+                    "on(component(\"laser_localise0.rtc\")).configParam(\"gian\") { _, _ -> }\n",
+            )
+            val result = runRtcoord("-n", localisation.naming.address, "check", wrong.toString())
+            assertEquals(1, result.statusCode, result.output)
+            val errors = result.stderr.lines().filter { it.isNotEmpty() }
+            assertEquals(listOf("$wrong:2:14: lazer0.rtc", "$wrong:3:9: laser0.rtc:scan", "$wrong:4:50: gian"), errors.map { it.substringBefore(": ", "").let { at -> "$at: " + it.removePrefix("$at: ").substringBefore(": ") } }, result.stderr)
+            assertTrue(errors[0].endsWith("did you mean laser0.rtc?"), errors[0])
+            assertTrue(errors[2].endsWith("has no parameter 'gian' (parameters: fail, gain)"), errors[2])
+
+            val good = script("good-live.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) { reset() }\n")
+            assertTrue(runRtcoord("-n", localisation.naming.address, "check", good.toString()).ok().contains("everything it names is there"))
+        }
+    }
+
+    @Test
     fun `run coordinates until --for elapses, then detaches its observers`() {
         Localisation().use { localisation ->
             val gyro = localisation.system.component("gyro0")

@@ -1,6 +1,7 @@
 package org.rtcoord.dsl
 
 import org.rtcoord.BecameZombie
+import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.ContextRateChanged
@@ -30,6 +31,10 @@ internal class EventPattern<E : RtcEvent>(
     val type: Class<E>,
     val watched: Class<out RtcEvent> = type,
     private val reading: (() -> EventReading<E>)? = null,
+    /** For a level-triggered pattern, the event a node's present condition amounts to (null: none); null for edge-triggered ones. */
+    val current: (suspend (Node) -> E?)? = null,
+    /** The configuration parameter the pattern is about, if any: what `check` looks for on the live component. */
+    val parameter: String? = null,
     val matches: (E) -> Boolean,
 ) {
     /** A rule running [handler] on these events when every guard holds. */
@@ -72,15 +77,25 @@ internal object EventPatterns {
     fun state(target: ComponentRef, state: LifeCycle) =
         EventPattern("$target enters $state", Target.Component(target), StateChanged::class.java) { it.new == state }
 
+    /** [state], and a component already in [state] when watched: a [StateChanged] from [state] to itself in its default context. */
+    fun inState(target: ComponentRef, state: LifeCycle) = EventPattern(
+        "$target is in or enters $state", Target.Component(target), StateChanged::class.java,
+        current = { node -> (node as? ComponentNode)?.state()?.takeIf { it == state }?.let { StateChanged(node, 0, it, it) } },
+    ) { it.new == state }
+
     fun stateChanged(target: ComponentRef) = EventPattern("$target changes state", Target.Component(target), StateChanged::class.java) { true }
 
     /** Changes of the effective value of [name]: in the active set, or by a switch to a set that holds another value. */
     fun configParam(target: ComponentRef, name: String): EventPattern<ParameterChanged> {
         return EventPattern(
             "$target parameter $name changes", Target.Component(target), ParameterChanged::class.java,
-            watched = RtcEvent::class.java, reading = { EffectiveValue(name) },
+            watched = RtcEvent::class.java, reading = { EffectiveValue(name) }, parameter = name,
         ) { true }
     }
+
+    /** Changes of [name] in any set, as the component reports them. */
+    fun configParamInAnySet(target: ComponentRef, name: String) =
+        EventPattern("$target parameter $name changes in any set", Target.Component(target), ParameterChanged::class.java, parameter = name) { it.name == name }
 
     fun configSetActivated(target: ComponentRef): EventPattern<ConfigurationSetActivated> {
         return EventPattern(

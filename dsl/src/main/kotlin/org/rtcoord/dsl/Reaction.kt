@@ -44,6 +44,14 @@ public class Reaction internal constructor(
     /** A component, by name, path or pattern. */
     public fun component(name: String): ComponentRef = ComponentRef(name)
 
+    /**
+     * Every component [pattern] names now: a glob such as `*_localise?.rtc` (a plain name gets `.rtc`),
+     * a name or a path, each component once. For acting on all of them:
+     * `components("*_localise?").forEach { it.deactivate() }`. Empty when none matches a glob; a name or
+     * path that names nothing fails.
+     */
+    public suspend fun components(pattern: String): List<ComponentRef> = engine.identities.nodes(pattern).map(engine::reference)
+
     /** A port, as `component:port`. */
     public fun port(path: String): PortRef = portRef(path)
 
@@ -212,6 +220,12 @@ public class Reaction internal constructor(
 
     /** Writes [message] to the coordinator's log. */
     public fun log(message: String): Unit = engine.log(message)
+
+    /**
+     * Writes [message] to the coordinator's log as a warning (`warning: ...`). To stop the handler as
+     * failed instead, throw: Kotlin's `error("...")` does, and the failure is logged and counted.
+     */
+    public fun warn(message: String): Unit = engine.log("warning: $message")
 }
 
 /** A [Reaction.within] block that ran out of time. */

@@ -36,8 +36,16 @@ public class ComponentTriggers internal constructor(
      */
     public fun where(guard: Guard): ComponentTriggers = ComponentTriggers(owner, target, guards + guard)
 
-    /** When the component enters [state] (in any execution context). */
-    public fun state(state: LifeCycle, handler: suspend Reaction.(StateChanged) -> Unit): Unit = add(EventPatterns.state(target, state), handler)
+    /**
+     * When the component enters [state] (in any execution context). Edge-triggered by default: a
+     * component already in [state] when the coordinator starts is left alone until it enters it again.
+     * With [includeCurrent], the rule is level-triggered at the start: a component already in [state]
+     * fires it once, as a [StateChanged] from [state] to [state], so a coordinator (re)started after a
+     * fault still reacts to it; so does a component re-created in [state]:
+     * `on(component("laser0.rtc")).state(ERROR, includeCurrent = true) { ... }`.
+     */
+    public fun state(state: LifeCycle, includeCurrent: Boolean = false, handler: suspend Reaction.(StateChanged) -> Unit): Unit =
+        add(if (includeCurrent) EventPatterns.inState(target, state) else EventPatterns.state(target, state), handler)
 
     /** On every lifecycle change. */
     public fun stateChanged(handler: suspend Reaction.(StateChanged) -> Unit): Unit = add(EventPatterns.stateChanged(target), handler)
@@ -50,6 +58,14 @@ public class ComponentTriggers internal constructor(
      */
     public fun configParam(name: String, handler: suspend Reaction.(old: String?, new: String?) -> Unit): Unit =
         add(EventPatterns.configParam(target, name)) { handler(it.old, it.new) }
+
+    /**
+     * When configuration parameter [name] changes in any set, active or not: `configParamInAnySet("gain")
+     * { set, old, new -> ... }` with the id of the set that changed. A switch of the active set is no
+     * change here (see [configParam] for the value the component uses).
+     */
+    public fun configParamInAnySet(name: String, handler: suspend Reaction.(set: String, old: String?, new: String?) -> Unit): Unit =
+        add(EventPatterns.configParamInAnySet(target, name)) { handler(it.set, it.old, it.new) }
 
     /**
      * When another configuration set becomes active: `configSetActivated { old, new -> ... }` with the sets'

@@ -19,6 +19,7 @@ import org.rtcoord.fixtures.naming.NamingService
 import java.util.Collections
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 
 /** The engine behind the DSL, driven by coordinations written directly in Kotlin. */
 class CoordinatorTest {
@@ -100,6 +101,61 @@ class CoordinatorTest {
             system.component("laser0").fail()
             await("both rules") { "guarded" in fired && fired.count { it == "plain" } == 2 }
             assertEquals(1, fired.count { it == "guarded" }, "the guard held only the second time")
+        }
+    }
+
+    @Test
+    fun `a component already in ERROR at the start fires the level-triggered rule once, not the edge-triggered one`(): Unit = runBlocking {
+        val fired = Collections.synchronizedList(mutableListOf<String>())
+        system.component("gyro0").fail()
+        await("gyro0 to be in ERROR before the coordinator starts") { system.component("gyro0").state == RTC.LifeCycleState.ERROR_STATE }
+        coordinator {
+            on(component("gyro0")).state(ERROR, includeCurrent = true) { event -> fired += "level ${event.old}->${event.new}" }
+            on(component("gyro0")).state(ERROR) { fired += "edge" }
+        }.use { coordinator ->
+            coordinator.start()
+            await("the level-triggered rule") { fired.isNotEmpty() }
+            tree.componentNamed("gyro0").reset()
+            tree.componentNamed("gyro0").activate()
+            system.component("gyro0").fail()
+            await("both rules on the next failure") { fired.size == 3 }
+            assertEquals(listOf("edge", "level ACTIVE->ERROR", "level ERROR->ERROR"), fired.sorted(), "the edge-triggered rule saw only the transition")
+        }
+    }
+
+    @Test
+    fun `components names every match of a pattern for a handler to act on, and warn logs a warning`(): Unit = runBlocking {
+        val found = Collections.synchronizedList(mutableListOf<String>())
+        coordinator {
+            after(0.seconds) {
+                components("laser*").forEach { found += it.path().name }
+                components("nothing*").let { if (it.isEmpty()) warn("no component matches nothing*") }
+                components("laser_localise0").single().deactivate()
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            await("the timer to run") { log.any { it == "warning: no component matches nothing*" } }
+            assertEquals(listOf("laser0.rtc", "laser_localise0.rtc"), found.sorted())
+            await("laser_localise0 to be deactivated") { system.component("laser_localise0").state == RTC.LifeCycleState.INACTIVE_STATE }
+            assertEquals(0, coordinator.failures, log.toString())
+        }
+    }
+
+    @Test
+    fun `configParam follows the value in use, configParamInAnySet every set's changes with the set's id`(): Unit = runBlocking {
+        val inUse = Collections.synchronizedList(mutableListOf<String>())
+        val anySet = Collections.synchronizedList(mutableListOf<String>())
+        coordinator {
+            on(component("laser_localise0")).configParam("gain") { old, new -> inUse += "$old->$new" }
+            on(component("laser_localise0")).configParamInAnySet("gain") { set, old, new -> anySet += "$set:$old->$new" }
+        }.use { coordinator ->
+            coordinator.start()
+            val localiser = tree.componentNamed("laser_localise0")
+            localiser.setParameter("gain", "0.25", "precise")
+            await("the change in the inactive set") { "precise:0.5->0.25" in anySet }
+            localiser.setParameter("gain", "3.0")
+            await("the change in the active set, seen by both") { inUse.any { it.endsWith("->3.0") } && anySet.any { it.startsWith("default:") && it.endsWith("->3.0") } }
+            assertEquals(1, inUse.size, "a set not in use changes nothing the component uses: $inUse")
         }
     }
 

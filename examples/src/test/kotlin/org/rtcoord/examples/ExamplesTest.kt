@@ -62,6 +62,20 @@ class ExamplesTest {
         }
     }
 
+    @Test
+    fun `localisation - a coordinator started after the laser broke still switches to odometry (includeCurrent)`(): Unit = runBlocking {
+        ExampleSystem("localisation.coord.kts", Mode.PUSH.options).use { example ->
+            example.system.component("laser0").breakDown()
+            await("laser0 to be in ERROR before the coordinator starts") { example.system.component("laser0").state == RTC.LifeCycleState.ERROR_STATE }
+            example.coordinator.start()
+            await("odo_localise0 to be ACTIVE") {
+                runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
+            }
+            assertTrue(example.log.any { it.contains("rule 'laser0.rtc is in or enters ERROR' fired") }, example.log.joinToString("\n"))
+            assertEquals(0, example.coordinator.failures)
+        }
+    }
+
     @ParameterizedTest
     @EnumSource(Fault::class)
     fun `localisation - a switch the manager refuses is taken back and the laser localiser runs again`(fault: Fault): Unit = runBlocking {

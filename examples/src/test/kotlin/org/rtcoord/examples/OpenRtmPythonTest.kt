@@ -46,10 +46,10 @@ class OpenRtmPythonTest {
                     assertEquals(LifeCycle.INACTIVE, old.state())
                     assertTrue(listOf("laser", "odo").all { system.witness.port(system.path("laser_localise0.rtc:$it")).connections().isEmpty() })
                     assertEquals(LifeCycle.ERROR, laser.state(), "the laser stays broken")
-                    assertEquals(
-                        listOf(FailedAction("reset ${system.path("laser0.rtc")}", "reset failed: RTC_ERROR (in context 0)", bestEffort = true)),
-                        coordinator.failedActions,
-                    )
+                    // A real manager's components are bound twice (naming context and manager): either path is laser0.
+                    val failed = coordinator.failedActions.single()
+                    assertTrue(failed.action.startsWith("reset /") && failed.action.endsWith("/laser0.rtc"), failed.action)
+                    assertEquals(FailedAction(failed.action, "reset failed: RTC_ERROR (in context 0)", bestEffort = true), failed)
                     assertEquals(0, coordinator.failures, log.joinToString("\n"))
                 }
             }

@@ -7,6 +7,10 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.delay
+import kotlinx.coroutines.flow.MutableStateFlow
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.asStateFlow
+import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
@@ -25,7 +29,6 @@ import org.rtcoord.dsl.Rule
 import org.rtcoord.dsl.Supervision
 import org.rtcoord.dsl.Target
 import java.util.concurrent.CopyOnWriteArrayList
-import java.util.concurrent.atomic.AtomicInteger
 
 /**
  * Runs a [Coordination]'s plan against a live system: subscribes its rules, starts its timers, mode
@@ -59,10 +62,13 @@ public class Coordinator(
     private val listeners = CopyOnWriteArrayList<Subscription>()
     private val subscriptions = CopyOnWriteArrayList<Subscription>()
     private val supervisors = CopyOnWriteArrayList<Supervisor>()
-    private val failureCount = AtomicInteger()
+    private val failureCount = MutableStateFlow(0)
 
     /** How many handler runs failed so far. */
-    public val failures: Int get() = failureCount.get()
+    public val failures: Int get() = failureCount.value
+
+    /** [failures] as it changes, for those who wait for the first: `failureCounts.first { it > 0 }`. */
+    public val failureCounts: StateFlow<Int> = failureCount.asStateFlow()
 
     /** Every action that failed so far, in order: those that stopped a handler and the best efforts. */
     public val failedActions: List<FailedAction> get() = engine.failedActions.toList()
@@ -129,17 +135,30 @@ public class Coordinator(
 
     private suspend fun <E : RtcEvent> subscribe(rule: Rule<E>) {
         val matcher = rule.pattern.matcher()
-        listen(rule.target, setOf(rule.pattern.watched), matcher::prepare) {
+        listen(rule.target, setOf(rule.pattern.watched)) {
             val handler = HandlerQueue(scope, watching.overlap) { event: E -> fire(rule, event) }
-            return@listen { event -> matcher.match(event)?.let(handler::offer) }
+            object : NodeListener {
+                override suspend fun prepare(node: Node) {
+                    matcher.prepare(node)
+                    rule.pattern.current?.invoke(node)?.let(handler::offer)
+                }
+
+                override suspend fun deliver(event: RtcEvent) {
+                    matcher.match(event)?.let(handler::offer)
+                }
+            }
         }
     }
 
     /** Subscribes [patterns], transitions or network watches of [machine], one listener per target. */
     private suspend fun watch(machine: MachineInterpreter, patterns: List<EventPattern<*>>) {
         for (grouped in patterns.groupBy { it.target.key }.values) {
-            listen(grouped.first().target, grouped.map { it.watched }.toSet(), { node -> machine.prepare(grouped, node) }) {
-                return@listen { event -> machine.offer(event, grouped) }
+            listen(grouped.first().target, grouped.map { it.watched }.toSet()) {
+                object : NodeListener {
+                    override suspend fun prepare(node: Node) = machine.prepare(grouped, node)
+
+                    override suspend fun deliver(event: RtcEvent) = machine.offer(event, grouped)
+                }
             }
         }
     }
@@ -161,28 +180,31 @@ public class Coordinator(
     }
 
     /**
-     * Hands the events of [types] from what [target] names to a listener [made] once per node: a component
+     * Hands the events of [types] from what [target] names to a listener [made] for each node: a component
      * the script names is followed across re-creation, on its one subscription; each node a pattern,
-     * manager or naming context names now is watched by a subscription of its own. [prepare] reads each
-     * node before its first event reaches the listener.
+     * manager or naming context names now is watched by a subscription of its own.
      */
-    private suspend fun listen(
-        target: Target,
-        types: Set<Class<out RtcEvent>>,
-        prepare: suspend (Node) -> Unit,
-        made: () -> suspend (RtcEvent) -> Unit,
-    ) {
+    private suspend fun listen(target: Target, types: Set<Class<out RtcEvent>>, made: () -> NodeListener) {
         val name = target.followedName
         if (name != null) {
             if (target is Target.Port) identities.node(name).port(target.ref.name)
-            listeners += identities.listen(name, types, prepare, made())
+            val listener = made()
+            listeners += identities.listen(name, types, listener::prepare, listener::deliver)
             return
         }
         for (node in targets(target)) {
-            prepare(node)
-            val deliver = made()
-            subscriptions += tree.on(node, types, watching.queued()) { deliver(it) }
+            val listener = made()
+            listener.prepare(node)
+            subscriptions += tree.on(node, types, watching.queued()) { listener.deliver(it) }
         }
+    }
+
+    /** What takes one node's events for a rule or a machine: it reads the node first, then takes its events in order. */
+    private interface NodeListener {
+        /** Reads [node] before its first event, and again when a component the script names is re-created. */
+        suspend fun prepare(node: Node)
+
+        suspend fun deliver(event: RtcEvent)
     }
 
     private suspend fun targets(target: Target): List<Node> = when (target) {
@@ -222,7 +244,7 @@ public class Coordinator(
     /** Logs the failure, then counts it: whoever sees the count can read the line. */
     private fun failed(what: String, e: Throwable) {
         log("$what failed: ${e.message ?: e}")
-        failureCount.incrementAndGet()
+        failureCount.update { it + 1 }
     }
 
     /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
