@@ -205,6 +205,27 @@ class CoordinatorTest {
     }
 
     @Test
+    fun `a rule on a component its handler deletes and creates again follows the new one`(): Unit = runBlocking {
+        val reactions = AtomicInteger()
+        coordinator {
+            on(component("gyro0")).state(ERROR) { reactions.incrementAndGet() }
+            after(0.seconds) {
+                manager().delete("gyro0")
+                manager().create("gyro", "gyro0")
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            await("gyro0 to be created again") { log.any { it.startsWith("created ") } }
+            val new = system.component("gyro0")
+            await("the rule to watch the new gyro0") { new.observerIds.size == 1 }
+            new.activate()
+            new.fail()
+            await("the rule to fire on the new gyro0") { reactions.get() == 1 }
+            assertEquals(0, coordinator.failures, log.toString())
+        }
+    }
+
+    @Test
     fun `one plan runs twice at once, each run acting and logging on its own, and again after both ended`(): Unit = runBlocking {
         val coordination = Coordination(emptyList(), config).apply {
             on(component("gyro0")).state(ERROR) { event -> log("${event.source.name} failed; gyro0 is ${component("gyro0").state()}") }

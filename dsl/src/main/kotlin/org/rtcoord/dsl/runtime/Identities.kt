@@ -85,10 +85,13 @@ internal class Identities(
     suspend fun successorAt(old: ComponentNode): ComponentNode? =
         (tree.registeredAt(old.path) as? ComponentNode)?.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
 
-    /** Forgets the names of component [instanceName], deleted: they resolve afresh when used again. */
+    /**
+     * Forgets the names of component [instanceName], deleted, so that they resolve afresh when used
+     * again; a name something listens to stays, and follows the component when it is created again.
+     */
     fun forget(instanceName: String) {
         names.entries.removeIf { (name, followed) ->
-            val gone = name == instanceName || name.endsWith("/$instanceName.rtc") || name == "$instanceName.rtc"
+            val gone = (name == instanceName || name.endsWith("/$instanceName.rtc") || name == "$instanceName.rtc") && !followed.subscribed
             gone.also { if (it) followed.close() }
         }
     }
