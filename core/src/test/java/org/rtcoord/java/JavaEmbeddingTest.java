@@ -137,14 +137,21 @@ class JavaEmbeddingTest {
 
         localiser.setParameter("gain", "2.5");
         assertEquals("2.5", localiser.configuration().value("gain"));
-        assertEquals("2.5", system.component("laser_localise0").parameter("gain"));
+        awaitGain("2.5");
 
         localiser.activateConfigurationSetAsync("precise").get(10, TimeUnit.SECONDS);
         assertEquals("precise", localiser.configuration().getActiveSet());
-        assertEquals("0.5", system.component("laser_localise0").parameter("gain"));
+        awaitGain("0.5");
 
         RtcException refused = assertThrows(RtcException.class, () -> localiser.setParameter("gain", "12"));
         assertTrue(refused.getMessage().contains("0<x<10"), refused.getMessage());
+    }
+
+    /** Waits until the component applies [gain]: as OpenRTM-aist, it does so on its execution thread, a cycle later. */
+    private void awaitGain(String gain) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!system.component("laser_localise0").parameter("gain").equals(gain) && System.nanoTime() < deadline) Thread.sleep(10);
+        assertEquals(gain, system.component("laser_localise0").parameter("gain"));
     }
 
     @Test
