@@ -74,14 +74,17 @@ public class ComponentNode internal constructor(
     }
 
     /** Activates the component in [context] and waits until it is ACTIVE. */
+    @JvmSynthetic
     public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
         transition("activate", context, LifeCycle.INACTIVE, LifeCycle.ACTIVE, deadline) { it.activate_component(component.ref) }
 
     /** Deactivates the component in [context] and waits until it is INACTIVE. */
+    @JvmSynthetic
     public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
         transition("deactivate", context, LifeCycle.ACTIVE, LifeCycle.INACTIVE, deadline) { it.deactivate_component(component.ref) }
 
     /** Resets the component from ERROR in [context] and waits until it is INACTIVE. */
+    @JvmSynthetic
     public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
         transition("reset", context, LifeCycle.ERROR, LifeCycle.INACTIVE, deadline) { it.reset_component(component.ref) }
 

@@ -2,6 +2,7 @@ package org.rtcoord
 
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
+import kotlin.time.toKotlinDuration
 
 /** Where events come from. */
 public enum class WatchMode {
@@ -36,18 +37,65 @@ public enum class Overlap {
  * @property overlap the callback's policy for events arriving while it runs.
  * @property heartbeat the ComponentObserver heartbeat interval asked for.
  * @property missedBeats how many heartbeats may be missed before the component is presumed dead.
+ *
+ * Java callers write `new EventOptions()` for the defaults, or use a [Builder].
  */
 public class EventOptions(
     public val mode: WatchMode = WatchMode.AUTO,
+    @get:JvmSynthetic
     public val pollPeriod: Duration = 1.seconds,
     public val overlap: Overlap = Overlap.QUEUE,
+    @get:JvmSynthetic
     public val heartbeat: Duration = 1.seconds,
     public val missedBeats: Int = 3,
 ) {
+    /** The defaults: push where possible, else polling every second; events queued; a one-second heartbeat. */
+    public constructor() : this(WatchMode.AUTO)
+
+    /** [pollPeriod] in milliseconds, for Java callers. */
+    public val pollPeriodMillis: Long get() = pollPeriod.inWholeMilliseconds
+
+    /** [heartbeat] in milliseconds, for Java callers. */
+    public val heartbeatMillis: Long get() = heartbeat.inWholeMilliseconds
+
     init {
         require(pollPeriod.isPositive()) { "pollPeriod must be positive, was $pollPeriod" }
         require(heartbeat.isPositive()) { "heartbeat must be positive, was $heartbeat" }
         require(missedBeats > 0) { "missedBeats must be positive, was $missedBeats" }
+    }
+
+    /** Builds [EventOptions] step by step, for Java callers: `EventOptions.builder().mode(WatchMode.POLL).build()`. */
+    public class Builder {
+        private var mode = WatchMode.AUTO
+        private var pollPeriod: Duration = 1.seconds
+        private var overlap = Overlap.QUEUE
+        private var heartbeat: Duration = 1.seconds
+        private var missedBeats = 3
+
+        /** Sets [EventOptions.mode]. */
+        public fun mode(mode: WatchMode): Builder = apply { this.mode = mode }
+
+        /** Sets [EventOptions.pollPeriod]. */
+        public fun pollPeriod(period: java.time.Duration): Builder = apply { pollPeriod = period.toKotlinDuration() }
+
+        /** Sets [EventOptions.overlap]. */
+        public fun overlap(overlap: Overlap): Builder = apply { this.overlap = overlap }
+
+        /** Sets [EventOptions.heartbeat]. */
+        public fun heartbeat(interval: java.time.Duration): Builder = apply { heartbeat = interval.toKotlinDuration() }
+
+        /** Sets [EventOptions.missedBeats]. */
+        public fun missedBeats(beats: Int): Builder = apply { missedBeats = beats }
+
+        /** The options; fails as the constructor does on a bad value. */
+        public fun build(): EventOptions = EventOptions(mode, pollPeriod, overlap, heartbeat, missedBeats)
+    }
+
+    /** How Java callers get a [Builder]. */
+    public companion object {
+        /** A [Builder] holding the defaults. */
+        @JvmStatic
+        public fun builder(): Builder = Builder()
     }
 }
 

@@ -7,9 +7,7 @@ import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.callbackFlow
 import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.toList
-import kotlinx.coroutines.future.future
 import org.rtcoord.internal.TreeCore
-import java.util.concurrent.CompletableFuture
 import java.util.concurrent.CopyOnWriteArrayList
 
 /**
@@ -18,7 +16,8 @@ import java.util.concurrent.CopyOnWriteArrayList
  *
  * Discovery is concurrent and bounded by [TreeConfig.concurrency]; every remote call has a deadline;
  * a dead, hung or unreachable object becomes a [ZombieNode] without holding up the rest. Close the tree
- * to release its ORB (unless the host application supplied it).
+ * to release its ORB (unless the host application supplied it). Java callers use it through
+ * [org.rtcoord.java.JavaTree].
  */
 public class RtcTree private constructor(public val config: TreeConfig) : AutoCloseable {
     internal val core = TreeCore(config) { ArrayList(servers).firstOrNull()?.address?.substringBeforeLast(':') }
@@ -193,16 +192,6 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         val subscription = on(path, RtcEvent::class.java, options) { send(it) }
         awaitClose { subscription.cancel() }
     }
-
-    /** [on] for Java callers: [listener] runs on the tree's threads. */
-    public fun <E : RtcEvent> subscribe(path: String, type: Class<E>, options: EventOptions, listener: EventListener<E>): CompletableFuture<Subscription> =
-        core.scope.future { on(path, type, options) { listener.onEvent(it) } }
-
-    /** [node] for Java callers. */
-    public fun nodeAsync(path: String): CompletableFuture<Node> = core.scope.future { node(path) }
-
-    /** [refresh] for Java callers. */
-    public fun refreshAsync(path: String): CompletableFuture<Unit> = core.scope.future { refresh(RtcPath.parse(path)) }
 
     /**
      * Detaches every observer the tree attached, stops its work and releases its ORB (unless the host

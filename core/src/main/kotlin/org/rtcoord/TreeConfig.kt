@@ -3,6 +3,7 @@ package org.rtcoord
 import org.rtcoord.internal.ListenAddress
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
+import kotlin.time.toKotlinDuration
 
 /**
  * How an [RtcTree] talks to the system.
@@ -18,14 +19,23 @@ import kotlin.time.Duration.Companion.seconds
  *   host or when there is none. Name servers added later must be able to reach that address (their
  *   components call observers back there); give an address explicitly when they cannot. `0.0.0.0`
  *   listens on every interface, and only when given.
+ *
+ * Java callers write `new TreeConfig(List.of("127.0.0.1:2809"))`, or use a [Builder].
  */
 public class TreeConfig(
     public val nameServers: List<String> = emptyList(),
+    @get:JvmSynthetic
     public val callTimeout: Duration = 3.seconds,
     public val concurrency: Int = 32,
     public val orb: org.omg.CORBA.ORB? = null,
     public val listenAddress: String? = null,
 ) {
+    /** A configuration with [nameServers] and the defaults for the rest. */
+    public constructor(nameServers: List<String>) : this(nameServers, 3.seconds)
+
+    /** [callTimeout] in milliseconds, for Java callers. */
+    public val callTimeoutMillis: Long get() = callTimeout.inWholeMilliseconds
+
     init {
         require(callTimeout.isPositive()) { "callTimeout must be positive, was $callTimeout" }
         require(concurrency > 0) { "concurrency must be positive, was $concurrency" }
@@ -33,7 +43,38 @@ public class TreeConfig(
         require(problem == null) { "listen address: $problem" }
     }
 
+    /** Builds a [TreeConfig] step by step, for Java callers: `TreeConfig.builder().nameServer("127.0.0.1").build()`. */
+    public class Builder {
+        private val nameServers = mutableListOf<String>()
+        private var callTimeout: Duration = 3.seconds
+        private var concurrency = 32
+        private var orb: org.omg.CORBA.ORB? = null
+        private var listenAddress: String? = null
+
+        /** Adds a name server (see [TreeConfig.nameServers]). */
+        public fun nameServer(address: String): Builder = apply { nameServers += address }
+
+        /** Sets [TreeConfig.callTimeout]. */
+        public fun callTimeout(timeout: java.time.Duration): Builder = apply { callTimeout = timeout.toKotlinDuration() }
+
+        /** Sets [TreeConfig.concurrency]. */
+        public fun concurrency(calls: Int): Builder = apply { concurrency = calls }
+
+        /** Sets [TreeConfig.orb]: an ORB the host application owns. */
+        public fun orb(orb: org.omg.CORBA.ORB?): Builder = apply { this.orb = orb }
+
+        /** Sets [TreeConfig.listenAddress]. */
+        public fun listenAddress(address: String?): Builder = apply { listenAddress = address }
+
+        /** The configuration; fails as the constructor does on a bad value. */
+        public fun build(): TreeConfig = TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress)
+    }
+
     public companion object {
+        /** A [Builder] holding the defaults. */
+        @JvmStatic
+        public fun builder(): Builder = Builder()
+
         /** Why a tree's ORB could not listen on [address], or null when it can: one of this host's addresses, or `0.0.0.0`. */
         @JvmStatic
         public fun listenAddressProblem(address: String): String? = ListenAddress.problem(address)

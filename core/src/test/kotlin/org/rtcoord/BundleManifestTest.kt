@@ -33,7 +33,7 @@ class BundleManifestTest {
     fun `core exports its API package and keeps the implementation private`() {
         val manifest = manifestOf(RtcTree::class.java)
         assertEquals("org.rtcoord.core", manifest.mainAttributes.getValue("Bundle-SymbolicName"))
-        assertEquals(setOf("org.rtcoord", "org.rtcoord.profile"), exported(manifest))
+        assertEquals(setOf("org.rtcoord", "org.rtcoord.java", "org.rtcoord.profile"), exported(manifest))
         val imports = manifest.mainAttributes.getValue("Import-Package")
         assertTrue(imports.contains("RTC") && imports.contains("kotlinx.coroutines"), imports)
     }

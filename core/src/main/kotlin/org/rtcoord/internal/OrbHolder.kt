@@ -12,7 +12,7 @@ import kotlin.time.Duration
  */
 internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeout: Duration) : AutoCloseable {
     val owned: Boolean = supplied == null
-    private val started = lazy { supplied ?: ORB.init(emptyArray(), jacorbProperties(listenAddress(), callTimeout)) }
+    private val started = lazy { supplied ?: withJacorbLoader { ORB.init(emptyArray(), jacorbProperties(listenAddress(), callTimeout)) } }
     val orb: ORB by started
 
     override fun close() {
@@ -22,6 +22,21 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
     }
 
     private companion object {
+        /**
+         * Runs [create] with the class loader that loaded this class as the thread's context loader: JacORB
+         * loads its ORB class and plug-ins through the context loader, which in an OSGi framework (an
+         * Eclipse plug-in) is the caller's bundle or none, and cannot see the JacORB this bundle holds.
+         */
+        fun <T> withJacorbLoader(create: () -> T): T {
+            val thread = Thread.currentThread()
+            val previous = thread.contextClassLoader
+            thread.contextClassLoader = OrbHolder::class.java.classLoader
+            try {
+                return create()
+            } finally {
+                thread.contextClassLoader = previous
+            }
+        }
 
         fun jacorbProperties(listenAddress: String, callTimeout: Duration) = Properties().apply {
             setProperty("org.omg.CORBA.ORBClass", "org.jacorb.orb.ORB")

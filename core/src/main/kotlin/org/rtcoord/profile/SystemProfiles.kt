@@ -56,6 +56,7 @@ public class SystemProfiles(private val tree: RtcTree) {
      * `WaitTime` and `Preceding` (SYNC or ASYNC, with timeout) conditions are honoured, and each step
      * has [stepDeadline] beyond its condition's own time. Returns every step's outcome.
      */
+    @JvmSynthetic
     public suspend fun run(profile: RtsProfile, action: OrderedAction, stepDeadline: Duration = 10.seconds): List<StepOutcome> =
         SystemOrdering(tree).run(profile, action, stepDeadline)
 

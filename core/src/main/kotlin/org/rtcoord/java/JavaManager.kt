@@ -1,0 +1,96 @@
+package org.rtcoord.java
+
+import org.rtcoord.ManagerNode
+import org.rtcoord.Node
+import org.rtcoord.RtcException
+import org.rtcoord.internal.JavaCalls
+import java.util.concurrent.CompletableFuture
+
+/** A [ManagerNode] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
+public class JavaManager(
+    /** The manager this facade drives. */
+    public val node: ManagerNode,
+) {
+    private val calls = JavaCalls(node.core.scope)
+
+    /** Its slave managers and the components it hosts itself, listed now if they never were. */
+    @Throws(RtcException::class)
+    public fun children(): List<Node> = calls.await { node.children() }
+
+    /** [children], when done. */
+    public fun childrenAsync(): CompletableFuture<List<Node>> = calls.future { node.children() }
+
+    /** The manager's profile properties (`instance_name`, `pid`, ...). */
+    @Throws(RtcException::class)
+    public fun profile(): Map<String, String> = calls.await { node.profile() }
+
+    /** [profile], when done. */
+    public fun profileAsync(): CompletableFuture<Map<String, String>> = calls.future { node.profile() }
+
+    /** Whether it is a master manager. */
+    @Throws(RtcException::class)
+    public fun isMaster(): Boolean = calls.await { node.isMaster() }
+
+    /** [isMaster], when done. */
+    public fun isMasterAsync(): CompletableFuture<Boolean> = calls.future { node.isMaster() }
+
+    /**
+     * Creates a component of [type], named [instanceName] (or as the manager names it when null), with
+     * creation [options] (see [ManagerNode.create]).
+     */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun create(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): JavaComponent =
+        calls.await { JavaComponent(node.create(type, instanceName, options)) }
+
+    /** [create], when done. */
+    @JvmOverloads
+    public fun createAsync(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): CompletableFuture<JavaComponent> =
+        calls.future { JavaComponent(node.create(type, instanceName, options)) }
+
+    /** Deletes component [instanceName] through the manager that hosts it (see [ManagerNode.delete]). */
+    @Throws(RtcException::class)
+    public fun delete(instanceName: String): Unit = calls.await { node.delete(instanceName) }
+
+    /** [delete], when done. */
+    public fun deleteAsync(instanceName: String): CompletableFuture<Void?> = calls.done { node.delete(instanceName) }
+
+    /** Loads module [path], calling [initFunction] in it if the manager needs one. */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun loadModule(path: String, initFunction: String = ""): Unit = calls.await { node.loadModule(path, initFunction) }
+
+    /** [loadModule], when done. */
+    @JvmOverloads
+    public fun loadModuleAsync(path: String, initFunction: String = ""): CompletableFuture<Void?> = calls.done { node.loadModule(path, initFunction) }
+
+    /** Unloads module [path]. */
+    @Throws(RtcException::class)
+    public fun unloadModule(path: String): Unit = calls.await { node.unloadModule(path) }
+
+    /** [unloadModule], when done. */
+    public fun unloadModuleAsync(path: String): CompletableFuture<Void?> = calls.done { node.unloadModule(path) }
+
+    /** Modules the manager could load, as their profile properties. */
+    @Throws(RtcException::class)
+    public fun loadableModules(): List<Map<String, String>> = calls.await { node.loadableModules() }
+
+    /** [loadableModules], when done. */
+    public fun loadableModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future { node.loadableModules() }
+
+    /** Modules the manager has loaded. */
+    @Throws(RtcException::class)
+    public fun loadedModules(): List<Map<String, String>> = calls.await { node.loadedModules() }
+
+    /** [loadedModules], when done. */
+    public fun loadedModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future { node.loadedModules() }
+
+    /** The component types the manager can create, as their factory profiles. */
+    @Throws(RtcException::class)
+    public fun factories(): List<Map<String, String>> = calls.await { node.factories() }
+
+    /** [factories], when done. */
+    public fun factoriesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future { node.factories() }
+
+    override fun toString(): String = node.toString()
+}

@@ -1,0 +1,65 @@
+package org.rtcoord.java
+
+import org.rtcoord.Connection
+import org.rtcoord.ConnectorSnapshot
+import org.rtcoord.Port
+import org.rtcoord.PortSnapshot
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
+import org.rtcoord.internal.JavaCalls
+import java.util.concurrent.CompletableFuture
+
+/** A [Port] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
+public class JavaPort(
+    /** The port this facade drives. */
+    public val port: Port,
+) {
+    private val calls = JavaCalls(port.component.core.scope)
+
+    /** Where the port is: `/host:port/ctx/name.rtc:port`. */
+    public val path: RtcPath get() = port.path
+
+    /** The port as last read. */
+    @Throws(RtcException::class)
+    public fun snapshot(): PortSnapshot = calls.await { port.snapshot() }
+
+    /** [snapshot], when done. */
+    public fun snapshotAsync(): CompletableFuture<PortSnapshot> = calls.future { port.snapshot() }
+
+    /**
+     * Connects this port to [others] with connector [properties] and [name] (made up when null), and
+     * returns the new connector (see [Port.connect]).
+     */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun connect(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: String? = null): ConnectorSnapshot =
+        calls.await { port.connect(others.map { it.port }, properties, name) }
+
+    /** [connect], when done. */
+    @JvmOverloads
+    public fun connectAsync(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: String? = null): CompletableFuture<ConnectorSnapshot> =
+        calls.future { port.connect(others.map { it.port }, properties, name) }
+
+    /** Removes the connection [connectorId] from this port and its peers. */
+    @Throws(RtcException::class)
+    public fun disconnect(connectorId: String): Unit = calls.await { port.disconnect(connectorId) }
+
+    /** [disconnect], when done. */
+    public fun disconnectAsync(connectorId: String): CompletableFuture<Void?> = calls.done { port.disconnect(connectorId) }
+
+    /** Removes every connection of this port. */
+    @Throws(RtcException::class)
+    public fun disconnectAll(): Unit = calls.await { port.disconnectAll() }
+
+    /** [disconnectAll], when done. */
+    public fun disconnectAllAsync(): CompletableFuture<Void?> = calls.done { port.disconnectAll() }
+
+    /** This port's connections, read now. */
+    @Throws(RtcException::class)
+    public fun connections(): List<Connection> = calls.await { port.connections() }
+
+    /** [connections], when done. */
+    public fun connectionsAsync(): CompletableFuture<List<Connection>> = calls.future { port.connections() }
+
+    override fun toString(): String = port.toString()
+}

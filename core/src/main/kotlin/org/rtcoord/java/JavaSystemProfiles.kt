@@ -1,0 +1,72 @@
+package org.rtcoord.java
+
+import org.rtcoord.LifeCycle
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
+import org.rtcoord.internal.JavaCalls
+import org.rtcoord.profile.OrderedAction
+import org.rtcoord.profile.ProfileDifference
+import org.rtcoord.profile.RestoreReport
+import org.rtcoord.profile.RtsProfile
+import org.rtcoord.profile.StepOutcome
+import org.rtcoord.profile.SystemProfiles
+import java.time.Duration
+import java.util.concurrent.CompletableFuture
+import kotlin.time.toKotlinDuration
+
+/** [SystemProfiles] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
+public class JavaSystemProfiles(
+    /** The tree whose system is saved, restored, checked and run. */
+    tree: JavaTree,
+) {
+    private val profiles = SystemProfiles(tree.tree)
+    private val calls = JavaCalls(tree.tree.core.scope)
+
+    /** The running system below [below] as a profile (see [SystemProfiles.save]). */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun save(below: String = "/", onlyConnected: Boolean = false): RtsProfile = calls.await { profiles.save(RtcPath.parse(below), onlyConnected) }
+
+    /** [save], when done. */
+    @JvmOverloads
+    public fun saveAsync(below: String = "/", onlyConnected: Boolean = false): CompletableFuture<RtsProfile> =
+        calls.future { profiles.save(RtcPath.parse(below), onlyConnected) }
+
+    /** Restores [profile] onto the running system (see [SystemProfiles.restore]). */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun restore(profile: RtsProfile, createMissing: Boolean = false): RestoreReport = calls.await { profiles.restore(profile, createMissing) }
+
+    /** [restore], when done. */
+    @JvmOverloads
+    public fun restoreAsync(profile: RtsProfile, createMissing: Boolean = false): CompletableFuture<RestoreReport> =
+        calls.future { profiles.restore(profile, createMissing) }
+
+    /** How the live system differs from [profile], components compared against [state] when not null (see [SystemProfiles.check]). */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun check(profile: RtsProfile, state: LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> = calls.await { profiles.check(profile, state) }
+
+    /** [check], when done. */
+    @JvmOverloads
+    public fun checkAsync(profile: RtsProfile, state: LifeCycle? = LifeCycle.ACTIVE): CompletableFuture<List<ProfileDifference>> =
+        calls.future { profiles.check(profile, state) }
+
+    /** Runs [action] in the profile's order, each step within [stepDeadline] beyond its condition (see [SystemProfiles.run]). */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun run(profile: RtsProfile, action: OrderedAction, stepDeadline: Duration = Duration.ofSeconds(10)): List<StepOutcome> =
+        calls.await { profiles.run(profile, action, stepDeadline.toKotlinDuration()) }
+
+    /** [run], when done. */
+    @JvmOverloads
+    public fun runAsync(profile: RtsProfile, action: OrderedAction, stepDeadline: Duration = Duration.ofSeconds(10)): CompletableFuture<List<StepOutcome>> =
+        calls.future { profiles.run(profile, action, stepDeadline.toKotlinDuration()) }
+
+    /** Removes the connections [profile] names; returns what was removed. */
+    @Throws(RtcException::class)
+    public fun teardown(profile: RtsProfile): List<String> = calls.await { profiles.teardown(profile) }
+
+    /** [teardown], when done. */
+    public fun teardownAsync(profile: RtsProfile): CompletableFuture<List<String>> = calls.future { profiles.teardown(profile) }
+}

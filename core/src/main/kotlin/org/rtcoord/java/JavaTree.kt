@@ -1,0 +1,203 @@
+package org.rtcoord.java
+
+import kotlinx.coroutines.asCoroutineDispatcher
+import kotlinx.coroutines.flow.toList
+import kotlinx.coroutines.withContext
+import org.rtcoord.ConnectorSnapshot
+import org.rtcoord.DirectoryNode
+import org.rtcoord.EventListener
+import org.rtcoord.EventOptions
+import org.rtcoord.NamingDirectory
+import org.rtcoord.Node
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
+import org.rtcoord.Subscription
+import org.rtcoord.TreeConfig
+import org.rtcoord.WrongKindException
+import org.rtcoord.label
+import org.rtcoord.internal.JavaCalls
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.Executor
+import java.util.function.Predicate
+
+/**
+ * An [RtcTree] for Java callers: every operation as a blocking call (which throws the [RtcException]
+ * the operation failed with) and as a [CompletableFuture] (`...Async`), paths as strings, events
+ * delivered on an [Executor] the caller chooses. Nodes come back as the tree's own [Node]s; operate on
+ * them through [JavaComponent], [JavaManager] and [JavaPort]. Closing it closes the tree.
+ *
+ * ```java
+ * try (JavaTree tree = JavaTree.create(new TreeConfig(List.of("127.0.0.1:2809")))) {
+ *     JavaComponent laser = tree.component("/127.0.0.1:2809/host.host_cxt/laser0.rtc");
+ *     laser.deactivate();
+ * }
+ * ```
+ */
+public class JavaTree(
+    /** The tree this facade drives; Kotlin code shares it with the suspend API. */
+    public val tree: RtcTree,
+) : AutoCloseable {
+    private val calls = JavaCalls(tree.core.scope)
+
+    /** The node at [path] (absolute; a name server it names is added). */
+    @Throws(RtcException::class)
+    public fun node(path: String): Node = calls.await { tree.node(path) }
+
+    /** [node], when done. */
+    public fun nodeAsync(path: String): CompletableFuture<Node> = calls.future { tree.node(path) }
+
+    /** The children of the naming context, name server, manager or root at [path], listed now if they never were. */
+    @Throws(RtcException::class)
+    public fun children(path: String): List<Node> = calls.await { directory(path).children() }
+
+    /** [children], when done. */
+    public fun childrenAsync(path: String): CompletableFuture<List<Node>> = calls.future { directory(path).children() }
+
+    /** The component at [path]. */
+    @Throws(RtcException::class)
+    public fun component(path: String): JavaComponent = calls.await { JavaComponent(tree.component(path)) }
+
+    /** [component], when done. */
+    public fun componentAsync(path: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.component(path)) }
+
+    /** The component named [name] (`laser0.rtc` or `laser0`) wherever it is registered (see [RtcTree.componentNamed]). */
+    @Throws(RtcException::class)
+    public fun componentNamed(name: String): JavaComponent = calls.await { JavaComponent(tree.componentNamed(name)) }
+
+    /** [componentNamed], when done. */
+    public fun componentNamedAsync(name: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.componentNamed(name)) }
+
+    /** The manager at [path]. */
+    @Throws(RtcException::class)
+    public fun manager(path: String): JavaManager = calls.await { JavaManager(tree.manager(path)) }
+
+    /** [manager], when done. */
+    public fun managerAsync(path: String): CompletableFuture<JavaManager> = calls.future { JavaManager(tree.manager(path)) }
+
+    /** The port at `component.rtc:port`. */
+    @Throws(RtcException::class)
+    public fun port(path: String): JavaPort = calls.await { JavaPort(tree.port(path)) }
+
+    /** [port], when done. */
+    public fun portAsync(path: String): CompletableFuture<JavaPort> = calls.future { JavaPort(tree.port(path)) }
+
+    /** Connects the ports at [from] and [to] with connector [properties] (see [RtcTree.connect]). */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun connect(from: String, to: String, properties: Map<String, String> = emptyMap()): ConnectorSnapshot =
+        calls.await { tree.connect(from, to, properties) }
+
+    /** [connect], when done. */
+    @JvmOverloads
+    public fun connectAsync(from: String, to: String, properties: Map<String, String> = emptyMap()): CompletableFuture<ConnectorSnapshot> =
+        calls.future { tree.connect(from, to, properties) }
+
+    /**
+     * Reads the naming context, name server, manager or root at [path] and everything below it down to
+     * [depth] levels, concurrently (see [DirectoryNode.survey]).
+     */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun survey(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { directory(path).survey(depth) }
+
+    /** [survey], when done. */
+    @JvmOverloads
+    public fun surveyAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> = calls.done { directory(path).survey(depth) }
+
+    /** Removes the binding at [path] from its naming context, whatever it is bound to, dead or alive (as `rtdel`). */
+    @Throws(RtcException::class)
+    public fun unbind(path: String): Unit = calls.await { unbindAt(path) }
+
+    /** [unbind], when done. */
+    public fun unbindAsync(path: String): CompletableFuture<Void?> = calls.done { unbindAt(path) }
+
+    /** Reads the subtree at [path] again, [depth] levels deep (the whole of it by default). */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun refresh(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { tree.refresh(RtcPath.parse(path), depth) }
+
+    /** [refresh], when done. */
+    @JvmOverloads
+    public fun refreshAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> =
+        calls.done { tree.refresh(RtcPath.parse(path), depth) }
+
+    /**
+     * Every node below [from] (included), at most [maxDepth] levels down, that [filter] accepts, in
+     * depth-first order; unreachable branches are skipped (see [RtcTree.find]). [filter] sees each node
+     * as it was last read.
+     */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun find(from: String, filter: Predicate<Node>, maxDepth: Int = Int.MAX_VALUE): List<Node> =
+        calls.await { findAll(from, filter, maxDepth) }
+
+    /** [find], when done. */
+    @JvmOverloads
+    public fun findAsync(from: String, filter: Predicate<Node>, maxDepth: Int = Int.MAX_VALUE): CompletableFuture<List<Node>> =
+        calls.future { findAll(from, filter, maxDepth) }
+
+    /**
+     * Calls [listener] on [executor] with every event of [type] from the node at [path] (see [RtcTree.on]),
+     * one event at a time: the next waits until the listener has returned, so [EventOptions.overlap] holds.
+     * A UI passes its toolkit's executor (SWT: `display::asyncExec`) and touches its widgets in the listener.
+     * Returns once the node is watched; close the [Subscription] to stop.
+     */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun <E : RtcEvent> subscribe(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions = EventOptions()): Subscription =
+        calls.await { on(path, type, executor, listener, options) }
+
+    /** [subscribe], when the node is watched. */
+    @JvmOverloads
+    public fun <E : RtcEvent> subscribeAsync(
+        path: String,
+        type: Class<E>,
+        executor: Executor,
+        listener: EventListener<E>,
+        options: EventOptions = EventOptions(),
+    ): CompletableFuture<Subscription> = calls.future { on(path, type, executor, listener, options) }
+
+    /**
+     * Calls [listener] on [executor] with how the tree watches each watched component and with managers
+     * that die or return (see [RtcTree.onWatching]). Close the [Subscription] to stop.
+     */
+    public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription {
+        val dispatcher = executor.asCoroutineDispatcher()
+        return tree.onWatching { event -> withContext(dispatcher) { listener.onEvent(event) } }
+    }
+
+    /** Closes the tree (see [RtcTree.close]). */
+    override fun close() {
+        tree.close()
+    }
+
+    private suspend fun directory(path: String): DirectoryNode = when (val node = tree.node(path)) {
+        is DirectoryNode -> node
+        else -> throw WrongKindException(node.path.toString(), "directory", node.kind.label())
+    }
+
+    private suspend fun unbindAt(path: String) {
+        val parsed = RtcPath.parse(path)
+        val parent = parsed.parent?.let { tree.node(it) }
+        if (parent !is NamingDirectory) throw WrongKindException(path, "binding in a naming context", "child of ${parent?.kind?.label() ?: "nothing"}")
+        parent.unbind(parsed.name)
+    }
+
+    private suspend fun findAll(from: String, filter: Predicate<Node>, maxDepth: Int): List<Node> =
+        tree.find(RtcPath.parse(from), maxDepth) { filter.test(it) }.toList()
+
+    private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription {
+        val dispatcher = executor.asCoroutineDispatcher()
+        return tree.on(path, type, options) { event -> withContext(dispatcher) { listener.onEvent(event) } }
+    }
+
+    /** How Java callers get a [JavaTree]. */
+    public companion object {
+        /** A tree configured by [config], with its facade. */
+        @JvmStatic
+        @JvmOverloads
+        public fun create(config: TreeConfig = TreeConfig()): JavaTree = JavaTree(RtcTree.create(config))
+    }
+}

@@ -1,0 +1,209 @@
+package org.rtcoord.java;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.rtcoord.ConnectorSnapshot;
+import org.rtcoord.EventOptions;
+import org.rtcoord.LifeCycle;
+import org.rtcoord.Node;
+import org.rtcoord.NodeKind;
+import org.rtcoord.NotFoundException;
+import org.rtcoord.ParameterChanged;
+import org.rtcoord.PreconditionNotMetException;
+import org.rtcoord.RtcException;
+import org.rtcoord.StateChanged;
+import org.rtcoord.Subscription;
+import org.rtcoord.TreeConfig;
+import org.rtcoord.WatchMode;
+import org.rtcoord.fixtures.FixtureRuntime;
+import org.rtcoord.fixtures.RtSystem;
+import org.rtcoord.fixtures.Scenarios;
+import org.rtcoord.fixtures.naming.NamingService;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Collectors;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * What a Java tool embedding rtcoord does (RTSystemEditor's operations), written in Java against the
+ * fixtures' localisation system: if this compiles and passes, the API reads and works from Java.
+ */
+class JavaEmbeddingTest {
+    private NamingService naming;
+    private RtSystem system;
+    private JavaTree tree;
+    private String host;
+
+    @BeforeEach
+    void start() {
+        naming = NamingService.Companion.start(0, null, "127.0.0.1");
+        system = Scenarios.INSTANCE.localisation(naming.getCorbaloc(), "127.0.0.1");
+        TreeConfig config = TreeConfig.builder()
+                .nameServer(naming.getAddress())
+                .callTimeout(Duration.ofSeconds(5))
+                .build();
+        tree = JavaTree.create(config);
+        host = "/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext();
+    }
+
+    @AfterEach
+    void stop() {
+        tree.close();
+        system.close();
+        naming.close();
+    }
+
+    private String path(String name) {
+        return host + "/" + name;
+    }
+
+    @Test
+    void configuresATreeAsJavaWritesIt() {
+        TreeConfig plain = new TreeConfig(List.of("127.0.0.1:2810"));
+        assertEquals(List.of("127.0.0.1:2810"), plain.getNameServers());
+        assertEquals(3000, plain.getCallTimeoutMillis());
+        assertEquals(5000, tree.getTree().getConfig().getCallTimeoutMillis());
+        EventOptions options = EventOptions.builder().mode(WatchMode.POLL).pollPeriod(Duration.ofMillis(200)).build();
+        assertEquals(200, options.getPollPeriodMillis());
+        assertEquals(1000, new EventOptions().getHeartbeatMillis());
+        IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
+                () -> TreeConfig.builder().callTimeout(Duration.ZERO).build());
+        assertEquals("callTimeout must be positive, was 0s", bad.getMessage());
+    }
+
+    @Test
+    void listsTheSystem() throws RtcException {
+        Set<String> names = tree.children(host).stream().map(Node::getName).collect(Collectors.toSet());
+        assertTrue(names.containsAll(Set.of("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc", "manager.mgr")), names.toString());
+
+        List<Node> components = tree.find("/", node -> node.getKind() == NodeKind.COMPONENT && node.getPath().toString().startsWith(host + "/"));
+        assertEquals(Set.of("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"),
+                components.stream().map(Node::getName).collect(Collectors.toSet()));
+
+        NotFoundException missing = assertThrows(NotFoundException.class, () -> tree.component(path("sonar0.rtc")));
+        assertEquals(path("sonar0.rtc") + ": not found", missing.getMessage());
+    }
+
+    @Test
+    void activatesAndDeactivatesBlockingAndAsync() throws Exception {
+        JavaComponent laser = tree.component(path("laser0.rtc"));
+        assertEquals(LifeCycle.ACTIVE, laser.state());
+        laser.deactivate();
+        assertEquals(LifeCycle.INACTIVE, laser.state());
+        assertThrows(PreconditionNotMetException.class, laser::deactivate);
+
+        laser.activateAsync().get(10, TimeUnit.SECONDS);
+        assertEquals(LifeCycle.ACTIVE, laser.stateAsync().get(10, TimeUnit.SECONDS));
+        assertEquals(LifeCycle.ACTIVE, laser.snapshot().getState());
+    }
+
+    @Test
+    void disconnectsAndConnectsPorts() throws RtcException {
+        JavaPort out = tree.port(path("laser0.rtc:laser"));
+        JavaPort in = tree.port(path("laser_localise0.rtc:laser"));
+        assertEquals(1, out.connections().size());
+
+        out.disconnectAll();
+        assertEquals(List.of(), out.connections());
+        assertEquals(List.of(), in.snapshot().getConnectors());
+
+        ConnectorSnapshot made = out.connect(List.of(in), Map.of("dataport.subscription_type", "new"), "from_java");
+        assertEquals("from_java", made.getName());
+        assertEquals("new", made.getProperties().get("dataport.subscription_type"));
+        assertEquals(List.of(made.getId()), in.connections().stream().map(c -> c.getId()).collect(Collectors.toList()));
+
+        in.disconnect(made.getId());
+        assertEquals(List.of(), out.connections());
+    }
+
+    @Test
+    void readsAndChangesConfiguration() throws Exception {
+        JavaComponent localiser = tree.component(path("laser_localise0.rtc"));
+        assertEquals("1.0", localiser.configuration().value("gain"));
+
+        localiser.setParameter("gain", "2.5");
+        assertEquals("2.5", localiser.configuration().value("gain"));
+        awaitGain("2.5");
+
+        localiser.activateConfigurationSetAsync("precise").get(10, TimeUnit.SECONDS);
+        assertEquals("precise", localiser.configuration().getActiveSet());
+        awaitGain("0.5");
+
+        RtcException refused = assertThrows(RtcException.class, () -> localiser.setParameter("gain", "12"));
+        assertTrue(refused.getMessage().contains("0<x<10"), refused.getMessage());
+    }
+
+    /** Waits until the component applies [gain]: as OpenRTM-aist, it does so on its execution thread, a cycle later. */
+    private void awaitGain(String gain) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!system.component("laser_localise0").parameter("gain").equals(gain) && System.nanoTime() < deadline) Thread.sleep(10);
+        assertEquals(gain, system.component("laser_localise0").parameter("gain"));
+    }
+
+    @Test
+    void createsAndDeletesAComponentThroughAManager() throws RtcException {
+        JavaManager master = tree.manager(path("manager.mgr"));
+        assertTrue(master.isMaster());
+        JavaComponent created = master.create("odo_localise", "from_java");
+        assertEquals("from_java", created.snapshot().getInstanceName());
+        assertEquals(LifeCycle.INACTIVE, created.state());
+        assertTrue(tree.children(host).stream().anyMatch(node -> node.getName().equals("from_java.rtc")));
+
+        master.delete("from_java");
+        tree.refresh(host);
+        assertFalse(tree.children(host).stream().anyMatch(node -> node.getName().equals("from_java.rtc")));
+    }
+
+    @Test
+    void deliversEventsOnTheCallersExecutor() throws Exception {
+        ExecutorService ui = Executors.newSingleThreadExecutor(runnable -> new Thread(runnable, "ui thread"));
+        try {
+            BlockingQueue<String> seen = new LinkedBlockingQueue<>();
+            Subscription states = tree.subscribe(path("gyro0.rtc"), StateChanged.class, ui,
+                    event -> seen.add(threadKind() + ": " + event.getOld() + " -> " + event.getNew()));
+            Subscription parameters = tree.subscribeAsync(path("laser_localise0.rtc"), ParameterChanged.class, ui,
+                    event -> seen.add(threadKind() + ": " + event.getName() + "=" + event.getNew()),
+                    EventOptions.builder().mode(WatchMode.POLL).pollPeriod(Duration.ofMillis(100)).build()).get(10, TimeUnit.SECONDS);
+
+            tree.component(path("gyro0.rtc")).deactivate();
+            assertEquals("ui thread: ACTIVE -> INACTIVE", seen.poll(10, TimeUnit.SECONDS));
+            tree.component(path("laser_localise0.rtc")).setParameter("gain", "3");
+            assertEquals("ui thread: gain=3", seen.poll(10, TimeUnit.SECONDS));
+
+            states.close();
+            parameters.close();
+            tree.component(path("gyro0.rtc")).activate();
+            assertEquals(null, seen.poll(300, TimeUnit.MILLISECONDS));
+        } finally {
+            ui.shutdownNow();
+        }
+    }
+
+    /** Whether the caller runs on the test's "UI" thread (coroutine debugging may append to thread names). */
+    private static String threadKind() {
+        return Thread.currentThread().getName().startsWith("ui thread") ? "ui thread" : "another thread";
+    }
+
+    @Test
+    void failuresAreTheOperationsOwnExceptions() throws Exception {
+        JavaComponent gyro = tree.component(path("gyro0.rtc"));
+        var failed = gyro.activateAsync();
+        var thrown = assertThrows(java.util.concurrent.ExecutionException.class, () -> failed.get(10, TimeUnit.SECONDS));
+        assertTrue(thrown.getCause() instanceof PreconditionNotMetException, thrown.getCause().toString());
+        assertNotNull(tree.node(path("gyro0.rtc")));
+    }
+}

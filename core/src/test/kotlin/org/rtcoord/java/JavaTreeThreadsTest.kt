@@ -1,0 +1,39 @@
+package org.rtcoord.java
+
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Test
+import org.rtcoord.StateChanged
+import org.rtcoord.TreeConfig
+import org.rtcoord.fixtures.FixtureProcess
+import org.rtcoord.fixtures.FixtureRuntime
+import java.util.concurrent.Executor
+
+/**
+ * A tool that closes its [JavaTree] leaves no thread behind: its ORB's threads and the tree's work end.
+ * The system runs in another process so that every thread started here is the tree's.
+ */
+class JavaTreeThreadsTest {
+    @Test
+    fun `closing a tree ends every thread it started`() {
+        FixtureProcess.start("--scenario", "localisation").use { system ->
+            val before = Thread.getAllStackTraces().keys
+            JavaTree.create(TreeConfig(listOf(system.address))).use { tree ->
+                tree.survey("/")
+                val gyro = "/${system.address}/${FixtureRuntime.hostContext}/gyro0.rtc"
+                tree.subscribe(gyro, StateChanged::class.java, Executor(Runnable::run), { }).use {
+                    tree.component(gyro).deactivate()
+                }
+            }
+            // The coroutine dispatchers' pools belong to the whole process and outlive any one tree.
+            val deadline = System.nanoTime() + 10_000_000_000
+            var left: List<String>
+            do {
+                left = Thread.getAllStackTraces().keys.filter { it !in before && it.isAlive }.map { it.name }
+                    .filterNot { it.startsWith("DefaultDispatcher") || it.startsWith("kotlinx.coroutines") }
+                if (left.isEmpty()) break
+                Thread.sleep(50)
+            } while (System.nanoTime() < deadline)
+            assertEquals(emptyList<String>(), left)
+        }
+    }
+}

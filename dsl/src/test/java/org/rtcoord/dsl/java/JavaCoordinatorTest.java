@@ -1,0 +1,76 @@
+package org.rtcoord.dsl.java;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.rtcoord.LifeCycle;
+import org.rtcoord.TreeConfig;
+import org.rtcoord.dsl.script.ScriptFailure;
+import org.rtcoord.fixtures.FixtureRuntime;
+import org.rtcoord.fixtures.RtSystem;
+import org.rtcoord.fixtures.Scenarios;
+import org.rtcoord.fixtures.naming.NamingService;
+import org.rtcoord.java.JavaComponent;
+import org.rtcoord.java.JavaTree;
+
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** A Java tool runs a coordinator script given as text, sees it act on the system, and stops it. */
+class JavaCoordinatorTest {
+    private NamingService naming;
+    private RtSystem system;
+    private JavaTree tree;
+
+    @BeforeEach
+    void start() {
+        naming = NamingService.Companion.start(0, null, "127.0.0.1");
+        system = Scenarios.INSTANCE.localisation(naming.getCorbaloc(), "127.0.0.1");
+        tree = JavaTree.create(new TreeConfig(List.of(naming.getAddress())));
+    }
+
+    @AfterEach
+    void stop() {
+        tree.close();
+        system.close();
+        naming.close();
+    }
+
+    @Test
+    void runsAScriptGivenAsTextAndStopsIt() throws Exception {
+        BlockingQueue<String> log = new LinkedBlockingQueue<>();
+        String script = "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n";
+        JavaComponent gyro = tree.component("/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext() + "/gyro0.rtc");
+        try (JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "reset.coord.kts", script, List.of(), log::add)) {
+            coordinator.start();
+            system.component("gyro0").fail();
+            String fired = log.poll(20, TimeUnit.SECONDS);
+            assertTrue(fired != null && fired.startsWith("rule 'gyro0.rtc enters ERROR' fired"), String.valueOf(fired));
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (gyro.state() != LifeCycle.INACTIVE && System.nanoTime() < deadline) Thread.sleep(20);
+            assertEquals(LifeCycle.INACTIVE, gyro.state());
+            assertEquals(0, coordinator.getCoordinator().getFailures());
+        }
+        // Stopped: a new failure is left alone.
+        log.clear();
+        gyro.activate();
+        system.component("gyro0").fail();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (gyro.state() != LifeCycle.ERROR && System.nanoTime() < deadline) Thread.sleep(20);
+        assertEquals(LifeCycle.ERROR, gyro.state());
+        assertEquals(null, log.poll(500, TimeUnit.MILLISECONDS));
+    }
+
+    @Test
+    void aBrokenScriptIsOneLinePerProblem() {
+        ScriptFailure failure = assertThrows(ScriptFailure.class,
+                () -> JavaCoordinator.fromText(tree, "broken.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) {\n    resett()\n}\n"));
+        assertTrue(failure.getMessage().startsWith("broken.coord.kts:2:5: "), failure.getMessage());
+    }
+}
