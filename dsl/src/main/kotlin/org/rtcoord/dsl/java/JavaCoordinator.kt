@@ -56,7 +56,8 @@ public class JavaCoordinator private constructor(
     /** How Java callers load a coordinator. */
     public companion object {
         private val host by lazy { ScriptHost() }
-        private val loading = JavaCalls(CoroutineScope(Dispatchers.Default + CoroutineName("java coordinator loading")))
+        // A supervisor: a script that fails to load must not cancel the loads after it.
+        private val loading = JavaCalls(CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator loading")))
 
         /**
          * Compiles (or takes from the cache) and evaluates the script at [script] with [args], for [tree];
