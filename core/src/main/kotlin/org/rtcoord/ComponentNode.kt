@@ -1,16 +1,11 @@
 package org.rtcoord
 
-import RTC.ExecutionContext
-import RTC.ReturnCode_t
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.withContext
+import org.rtcoord.internal.ComponentCalls
 import org.rtcoord.internal.ComponentObject
-import org.rtcoord.internal.ComponentReader
-import org.rtcoord.internal.ConfigurationWriter
+import org.rtcoord.internal.LifecycleOperation
 import org.rtcoord.internal.TreeCore
-import org.rtcoord.internal.name
-import org.rtcoord.internal.orFail
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
@@ -28,6 +23,9 @@ public class ComponentNode internal constructor(
     private val namingParent: NamingDirectory? = null,
 ) : Node(path, core) {
     private val subject: String get() = path.toString()
+
+    /** Where its remote calls are made. */
+    internal val calls: ComponentCalls get() = ComponentCalls(core, subject, component)
 
     init {
         component.knownAt(path)
@@ -61,39 +59,35 @@ public class ComponentNode internal constructor(
      * Whether the component is a composite and whether it is part of one, read now: snapshots leave it
      * out, since it costs two calls and OpenRTM-aist composites are rare.
      */
-    public suspend fun composition(): Composition =
-        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, component.ref).readComposition() }
+    public suspend fun composition(): Composition = calls.composition()
 
     /** Whether this and [other] are the same component, reached by different paths or not. */
     public fun isSameComponent(other: ComponentNode): Boolean = component === other.component
 
     /** The component's state in [context], read now. */
-    public suspend fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle {
-        val (_, ec) = resolve(context)
-        return LifeCycle.of(core.remote.call(subject, "get_component_state") { ec.get_component_state(component.ref) })
-    }
+    public suspend fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle = calls.state(context)
 
     /** Activates the component in [context] and waits until it is ACTIVE. */
     @JvmSynthetic
     public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
-        transition("activate", context, LifeCycle.INACTIVE, LifeCycle.ACTIVE, deadline) { it.activate_component(component.ref) }
+        calls.perform(LifecycleOperation.ACTIVATE, context, deadline)
 
     /** Deactivates the component in [context] and waits until it is INACTIVE. */
     @JvmSynthetic
     public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
-        transition("deactivate", context, LifeCycle.ACTIVE, LifeCycle.INACTIVE, deadline) { it.deactivate_component(component.ref) }
+        calls.perform(LifecycleOperation.DEACTIVATE, context, deadline)
 
     /** Resets the component from ERROR in [context] and waits until it is INACTIVE. */
     @JvmSynthetic
     public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
-        transition("reset", context, LifeCycle.ERROR, LifeCycle.INACTIVE, deadline) { it.reset_component(component.ref) }
+        calls.perform(LifecycleOperation.RESET, context, deadline)
 
     /**
      * Asks the component to exit: it finalises and leaves its contexts; returns once its manager has also
      * unbound it from the naming context the tree found it in, which OpenRTM-aist does shortly after.
      */
     public suspend fun exit() {
-        core.remote.call(subject, "exit") { component.ref.exit() }.orFail(subject, "exit")
+        calls.exit()
         awaitUnbound("exit")
     }
 
@@ -134,8 +128,8 @@ public class ComponentNode internal constructor(
 
     /** The execution context [context] of this component. */
     public suspend fun executionContext(context: ContextSelector = ContextSelector.DEFAULT): ExecutionContextView {
-        val (handle, ec) = resolve(context)
-        return ExecutionContextView(this, handle, ec)
+        val (handle, ec) = calls.context(context)
+        return ExecutionContextView(this, handle, calls.onContext(handle, ec))
     }
 
     /**
@@ -153,77 +147,25 @@ public class ComponentNode internal constructor(
      * A component with no active set needs [set] named.
      */
     public suspend fun setParameters(values: Map<String, String>, set: String? = null) {
-        configurationWriter().setValues(values, set)
+        calls.configuration().setValues(values, set)
         refresh()
     }
 
     /** Makes configuration set [id] the active one; this works on a component that has no active set too. */
     public suspend fun activateConfigurationSet(id: String) {
-        configurationWriter().activate(id)
+        calls.configuration().activate(id)
         refresh()
     }
 
     /** Adds configuration set [id] holding [values]; the active set stays active. */
     public suspend fun addConfigurationSet(id: String, values: Map<String, String>) {
-        configurationWriter().add(id, values)
+        calls.configuration().add(id, values)
         refresh()
     }
 
     /** Removes configuration set [id] (one added at run time, not the active one); the active set stays active. */
     public suspend fun removeConfigurationSet(id: String) {
-        configurationWriter().remove(id)
+        calls.configuration().remove(id)
         refresh()
-    }
-
-    private fun configurationWriter() = ConfigurationWriter(core.remote, core.orb.orb, subject, component.ref)
-
-    internal suspend fun resolve(selector: ContextSelector): Pair<Int, ExecutionContext> {
-        val snapshot = snapshot()
-        val handle = when (selector) {
-            is ContextSelector.Handle -> selector.handle
-            is ContextSelector.Index -> {
-                val ordered = snapshot.contexts.filter { it.owned } + snapshot.contexts.filter { !it.owned }
-                ordered.getOrNull(selector.index)?.handle
-                    ?: throw NotFoundException(subject, "no execution context at index ${selector.index} (it has ${ordered.size})")
-            }
-        }
-        val context = component.contexts[handle]
-            ?: throw NotFoundException(subject, "no execution context with handle $handle (handles: ${component.contexts.keys.sorted().joinToString()})")
-        return handle to context
-    }
-
-    private suspend fun transition(
-        operation: String,
-        selector: ContextSelector,
-        from: LifeCycle,
-        to: LifeCycle,
-        deadline: Duration?,
-        call: (ExecutionContext) -> ReturnCode_t,
-    ) {
-        val (handle, ec) = resolve(selector)
-        val code = core.remote.call(subject, operation, deadline) { call(ec) }
-        if (code == ReturnCode_t.PRECONDITION_NOT_MET) {
-            val now = runCatching { state(ContextSelector.Handle(handle)) }.getOrDefault(LifeCycle.UNKNOWN)
-            code.orFail(subject, operation, "the component is $now in context $handle, not $from")
-        }
-        code.orFail(subject, operation, "in context $handle")
-        val reached = awaitState(operation, ec, handle, to, deadline ?: core.remote.defaultDeadline)
-        component.snapshot.value?.let { snapshot ->
-            component.publish(snapshot.copy(contexts = snapshot.contexts.map { if (it.handle == handle) it.copy(state = reached) else it }))
-        }
-    }
-
-    /** Polls the state until it is [target], fails at once if the component fell into ERROR instead. */
-    private suspend fun awaitState(operation: String, ec: ExecutionContext, handle: Int, target: LifeCycle, limit: Duration): LifeCycle {
-        val deadline = TimeSource.Monotonic.markNow() + limit
-        var pause = 1.milliseconds
-        while (true) {
-            val state = LifeCycle.of(core.remote.call(subject, "get_component_state") { ec.get_component_state(component.ref) })
-            if (state == target) return state
-            if (state == LifeCycle.ERROR) throw OperationFailedException(subject, operation, ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
-            if (deadline.hasPassedNow()) throw TimedOutException(subject, "$operation (waiting for $target, still $state)", limit.inWholeMilliseconds)
-            delay(pause)
-            pause = (pause * 2).coerceAtMost(20.milliseconds)
-        }
     }
 }

@@ -23,6 +23,9 @@ public data class ComponentSnapshot(
     /** The state in the execution context with handle 0 (the first owned one), as tools show it. */
     val state: LifeCycle get() = context(0)?.state ?: contexts.firstOrNull()?.state ?: LifeCycle.UNKNOWN
 
+    /** The state over all its execution contexts (see [ComponentSummary.overallState]). */
+    val overallState: LifeCycle get() = summary.overallState
+
     /** The execution context with [handle], or null. */
     public fun context(handle: Int): ContextSnapshot? = contexts.firstOrNull { it.handle == handle }
 

@@ -10,7 +10,17 @@ public data class ComponentSummary(
     /** The component's state in each execution context, by its handle for the context (owned ones first). */
     val states: Map<Int, LifeCycle>,
     val ports: List<PortSnapshot>,
-)
+) {
+    /**
+     * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over
+     * ACTIVE over INACTIVE, else CREATED; UNKNOWN only without any context.
+     */
+    val overallState: LifeCycle
+        get() {
+            if (states.isEmpty()) return LifeCycle.UNKNOWN
+            return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states.values } ?: LifeCycle.CREATED
+        }
+}
 
 /** The summary of what this snapshot holds. */
 public val ComponentSnapshot.summary: ComponentSummary

@@ -70,9 +70,8 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     private suspend fun buryIfDead(child: Node, read: suspend () -> Unit) {
         try {
             read()
-        } catch (e: UnreachableException) {
-            bury(child, e)
-        } catch (e: TimedOutException) {
+        } catch (e: RtcException) {
+            if (!e.meansDead) throw e
             bury(child, e)
         }
     }

@@ -1,7 +1,6 @@
 package org.rtcoord
 
-import RTC.ExecutionContext
-import org.rtcoord.internal.orFail
+import org.rtcoord.internal.ContextCalls
 
 /** One execution context of a component, as that component knows it (by [handle]). */
 public class ExecutionContextView internal constructor(
@@ -9,33 +8,30 @@ public class ExecutionContextView internal constructor(
     public val component: ComponentNode,
     /** The component's handle for the context. */
     public val handle: Int,
-    private val context: ExecutionContext,
+    private val calls: ContextCalls,
 ) {
-    private val subject get() = "${component.path} context $handle"
-    private val remote get() = component.core.remote
-
     /** The rate in Hz. */
-    public suspend fun rate(): Double = remote.call(subject, "get_rate") { context.get_rate() }
+    public suspend fun rate(): Double = calls.rate()
 
     /** Sets the rate to [hz]. */
     public suspend fun setRate(hz: Double) {
-        remote.call(subject, "set_rate") { context.set_rate(hz) }.orFail(subject, "set rate to $hz")
+        calls.setRate(hz)
         component.refresh()
     }
 
     /** Whether the context is running. */
-    public suspend fun isRunning(): Boolean = remote.call(subject, "is_running") { context.is_running() }
+    public suspend fun isRunning(): Boolean = calls.isRunning()
 
     /** Makes [participant] take part in this context. */
     public suspend fun add(participant: ComponentNode) {
-        remote.call(subject, "add_component") { context.add_component(participant.component.ref) }.orFail(subject, "add ${participant.path}")
+        calls.add(participant.component, participant.path.toString())
         participant.refresh()
         component.refresh()
     }
 
     /** Removes [participant] from this context. */
     public suspend fun remove(participant: ComponentNode) {
-        remote.call(subject, "remove_component") { context.remove_component(participant.component.ref) }.orFail(subject, "remove ${participant.path}")
+        calls.remove(participant.component, participant.path.toString())
         participant.refresh()
         component.refresh()
     }

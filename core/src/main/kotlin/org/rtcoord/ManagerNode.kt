@@ -1,14 +1,14 @@
 package org.rtcoord
 
-import RTC.ReturnCode_t
 import RTM.Manager
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
+import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.ManagerCalls
+import org.rtcoord.internal.ManagerCalls.Companion.reachable
 import org.rtcoord.internal.TreeCore
-import org.rtcoord.internal.orFail
-import org.rtcoord.internal.toMap
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
 
@@ -28,25 +28,21 @@ public class ManagerNode internal constructor(
 ) : DirectoryNode(path, core) {
     private val subject: String get() = path.toString()
 
+    /** Where its remote calls are made. */
+    private val calls: ManagerCalls get() = ManagerCalls(core, subject, ref)
+
     override val kind: NodeKind get() = NodeKind.MANAGER
 
     override suspend fun readChildren(previous: List<Node>): List<Node> = coroutineScope {
-        val slaves = async { core.remote.call(subject, "get_slave_managers") { ref.get_slave_managers() } }
-        val hosted = async { core.remote.call(subject, "get_components") { ref.get_components() } }
+        val calls = calls
+        val slaves = async { calls.slaves() }
+        val hosted = async { calls.components() }
         val slaveListings = slaves.await().map { slave ->
             async {
                 // A slave whose process died has no name to show: it is left out, not the whole listing.
-                val profile = async {
-                    try {
-                        core.remote.call(subject, "get_profile") { slave.get_profile() }
-                    } catch (e: TimedOutException) {
-                        null
-                    } catch (e: UnreachableException) {
-                        null
-                    }
-                }
-                val components = async { reachable { core.remote.call(subject, "get_components") { slave.get_components() } } }
-                val name = nameOf((profile.await() ?: return@async null).properties.toMap())
+                val slaveName = async { calls.nameOf(slave) }
+                val components = async { calls.componentsOf(slave) }
+                val name = slaveName.await() ?: return@async null
                 val node = previous.filterIsInstance<ManagerNode>().firstOrNull { it.name == name && it.ref._is_equivalent(slave) }
                     ?: ManagerNode(path.child(name), core, slave, null, this@ManagerNode)
                 node to components.await().orEmpty().map { core.components.objectFor(it) }
@@ -66,10 +62,10 @@ public class ManagerNode internal constructor(
     }
 
     /** The manager's profile properties (`instance_name`, `pid`, ...). */
-    public suspend fun profile(): Map<String, String> = core.remote.call(subject, "get_profile") { ref.get_profile() }.properties.toMap()
+    public suspend fun profile(): Map<String, String> = calls.profile()
 
     /** Whether it is a master manager. */
-    public suspend fun isMaster(): Boolean = core.remote.call(subject, "is_master") { ref.is_master() }
+    public suspend fun isMaster(): Boolean = calls.isMaster()
 
     /**
      * Creates a component of [type] (named [instanceName], or as the manager names it) with the given
@@ -89,7 +85,7 @@ public class ManagerNode internal constructor(
             options["manager_name"]?.let { add("manager_name=$it") }
         }
         val spec = if (settings.isEmpty()) type else "$type?${settings.joinToString("&")}"
-        val created = core.remote.call(subject, "create_component") { ref.create_component(spec) }
+        val created = calls.create(spec)
             ?: throw OperationFailedException(subject, "create '$spec'", "nil", "the manager created none; ${whatItCanCreate()}")
         val component = core.components.objectFor(created)
         val name = "${component.refresh(subject).instanceName}.rtc"
@@ -107,7 +103,7 @@ public class ManagerNode internal constructor(
      */
     private suspend fun awaitNameFree(type: String, instanceName: String) {
         val deadline = TimeSource.Monotonic.markNow() + core.remote.defaultDeadline
-        while (instanceName in hostedInstanceNames()) {
+        while (instanceName in calls.hostedInstanceNames()) {
             if (hostOf(instanceName)?.second?.let { answers(it) } == true) {
                 throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
             }
@@ -137,8 +133,7 @@ public class ManagerNode internal constructor(
      */
     public suspend fun delete(instanceName: String) {
         val (owner, node) = hostOf(instanceName) ?: throw NotFoundException(subject, "no component '$instanceName' is hosted by this manager or its slaves")
-        core.remote.call(owner.subject, "delete_component") { owner.ref.delete_component(instanceName) }
-            .orFail(owner.subject, "delete '$instanceName'")
+        owner.calls.delete(instanceName)
         // The component's objects are gone now: its absence from the listings is the delete's success.
         owner.relist()
         if (owner !== this) relist()
@@ -148,53 +143,28 @@ public class ManagerNode internal constructor(
 
     /** Loads module [path] (calling [initFunction] in it, if the manager needs one). */
     public suspend fun loadModule(path: String, initFunction: String = "") {
-        val code = core.remote.call(subject, "load_module") { ref.load_module(path, initFunction) }
-        if (code == ReturnCode_t.BAD_PARAMETER) {
+        if (!calls.loadModule(path, initFunction)) {
             val loadable = loadableModules().mapNotNull { it["module_file_name"] ?: it["module_file_path"] }.sorted()
             throw BadParameterException(subject, "load module '$path'", "BAD_PARAMETER (loadable: ${loadable.joinToString().ifEmpty { "none" }})")
         }
-        code.orFail(subject, "load module '$path'")
     }
 
     /** Unloads module [path]. */
     public suspend fun unloadModule(path: String) {
-        val code = core.remote.call(subject, "unload_module") { ref.unload_module(path) }
-        if (code == ReturnCode_t.BAD_PARAMETER) {
+        if (!calls.unloadModule(path)) {
             val loaded = loadedModules().mapNotNull { it["file_path"] ?: it["module_file_path"] }.sorted()
             throw BadParameterException(subject, "unload module '$path'", "BAD_PARAMETER (loaded: ${loaded.joinToString().ifEmpty { "none" }})")
         }
-        code.orFail(subject, "unload module '$path'")
     }
 
     /** Modules the manager could load, as their profile properties. */
-    public suspend fun loadableModules(): List<Map<String, String>> =
-        core.remote.call(subject, "get_loadable_modules") { ref.get_loadable_modules() }.map { it.properties.toMap() }
+    public suspend fun loadableModules(): List<Map<String, String>> = calls.loadableModules()
 
     /** Modules the manager has loaded. */
-    public suspend fun loadedModules(): List<Map<String, String>> =
-        core.remote.call(subject, "get_loaded_modules") { ref.get_loaded_modules() }.map { it.properties.toMap() }
+    public suspend fun loadedModules(): List<Map<String, String>> = calls.loadedModules()
 
     /** The component types the manager can create, as their factory profiles. */
-    public suspend fun factories(): List<Map<String, String>> =
-        core.remote.call(subject, "get_factory_profiles") { ref.get_factory_profiles() }.map { it.properties.toMap() }
-
-    /**
-     * The instance names of the components this manager and its slaves host, read now. A slave that does
-     * not answer hosts nothing any more (its process is gone), so its names are free again.
-     */
-    private suspend fun hostedInstanceNames(): Set<String> = coroutineScope {
-        val own = async { core.remote.call(subject, "get_component_profiles") { ref.get_component_profiles() }.map { it.instance_name } }
-        val slaves = core.remote.call(subject, "get_slave_managers") { ref.get_slave_managers() }.map { slave ->
-            async {
-                try {
-                    core.remote.call(subject, "get_component_profiles") { slave.get_component_profiles() }.map { it.instance_name }
-                } catch (e: UnreachableException) {
-                    emptyList()
-                }
-            }
-        }
-        (own.await() + slaves.awaitAll().flatten()).toSet()
-    }
+    public suspend fun factories(): List<Map<String, String>> = calls.factories()
 
     /** The manager hosting [instanceName] and the component as it lists it. */
     private suspend fun hostOf(instanceName: String): Pair<ManagerNode, ComponentNode>? {
@@ -207,24 +177,12 @@ public class ManagerNode internal constructor(
 
     /** Whether [node]'s object still exists: an exited component's does not, though its manager may list it a while. */
     private suspend fun answers(node: ComponentNode): Boolean =
-        reachable { !core.remote.call(node.path.toString(), "_non_existent") { node.component.ref._non_existent() } } ?: false
+        reachable { !node.calls.nonExistent() } ?: false
 
     private fun topMaster(): ManagerNode = master?.topMaster() ?: this
 
-    private suspend fun findBelowSlaves(component: org.rtcoord.internal.ComponentObject): ComponentNode? =
+    private suspend fun findBelowSlaves(component: ComponentObject): ComponentNode? =
         children().filterIsInstance<ManagerNode>().firstNotNullOfOrNull { slave ->
             slave.relist().filterIsInstance<ComponentNode>().firstOrNull { it.component === component }
         }
-
-    private companion object {
-        /** [read]'s result, or null if the object did not answer: its process is gone. */
-        suspend fun <T> reachable(read: suspend () -> T): T? = try {
-            read()
-        } catch (e: UnreachableException) {
-            null
-        }
-
-        fun nameOf(profile: Map<String, String>): String =
-            profile["instance_name"]?.takeIf { it.isNotBlank() } ?: profile["name"]?.takeIf { it.isNotBlank() } ?: "manager"
-    }
 }

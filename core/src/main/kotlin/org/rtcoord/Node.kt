@@ -3,7 +3,12 @@ package org.rtcoord
 import org.rtcoord.internal.TreeCore
 
 /** What a node of the tree stands for. */
-public enum class NodeKind { ROOT, NAME_SERVER, CONTEXT, COMPONENT, MANAGER, ZOMBIE, UNKNOWN }
+public enum class NodeKind {
+    ROOT, NAME_SERVER, CONTEXT, COMPONENT, MANAGER, ZOMBIE, UNKNOWN;
+
+    /** The kind in words, for messages: `component`, `name server`, `zombie`... */
+    public val label: String get() = name.lowercase().replace('_', ' ')
+}
 
 /**
  * A node of an [RtcTree]: the root, a name server, a naming context, a component, a manager, a dead

@@ -1,16 +1,11 @@
 package org.rtcoord
 
-import RTC.ConnectorProfile
-import RTC.ConnectorProfileHolder
-import RTC.PortService
-import _SDOPackage.NameValue
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import org.rtcoord.internal.ComponentObject
-import org.rtcoord.internal.orFail
-import org.rtcoord.internal.toMap
+import org.rtcoord.internal.PortCalls
 
 /** A port of a component, addressed as `component.rtc:name`. */
 public class Port internal constructor(
@@ -23,7 +18,9 @@ public class Port internal constructor(
     public val path: RtcPath get() = component.path.withPort(name)
 
     private val subject: String get() = path.toString()
-    private val core get() = component.core
+
+    /** Where its remote calls are made. */
+    private val calls: PortCalls get() = PortCalls(component.core, subject, component.component, component.path.toString(), name)
 
     /** The port as last read. */
     public suspend fun snapshot(): PortSnapshot =
@@ -42,20 +39,10 @@ public class Port internal constructor(
     ): ConnectorSnapshot {
         val merged = connectable(others, properties)
         val ports = listOf(this) + others
-        val references = ports.map { it.reference() }
-        val holder = ConnectorProfileHolder(
-            ConnectorProfile(
-                name ?: ports.joinToString("_") { "${it.component.name.substringBeforeLast('.')}.${it.name}" },
-                id,
-                references.toTypedArray(),
-                merged.map { (key, value) -> NameValue(key, core.orb.orb.create_any().apply { insert_string(value) }) }.toTypedArray(),
-            ),
-        )
-        core.remote.call(subject, "connect") { references.first().connect(holder) }
-            .orFail(subject, "connect", "to ${others.joinToString { it.path.toString() }}")
+        val connectorName = name ?: ports.joinToString("_") { "${it.component.name.substringBeforeLast('.')}.${it.name}" }
+        val made = calls.connect(others.map { it.calls }, merged, connectorName, id, others.joinToString { it.path.toString() })
         refreshAll(ports)
-        val made = holder.value
-        return ConnectorSnapshot(made.connector_id, made.name, made.properties.toMap())
+        return made
     }
 
     /**
@@ -73,58 +60,20 @@ public class Port internal constructor(
 
     /** Removes the connection [connectorId] from this port and its peers. */
     public suspend fun disconnect(connectorId: String) {
-        refreshAfter(disconnectFromPeers(connectorId))
+        refreshAfter(calls.disconnect(connectorId))
     }
 
     /** Removes every connection of this port, then reads each component involved once. */
     public suspend fun disconnectAll() {
-        refreshAfter(snapshot().connectors.flatMap { disconnectFromPeers(it.id) })
+        refreshAfter(snapshot().connectors.flatMap { calls.disconnect(it.id) })
     }
 
     /** This port's connections, each with its ports resolved to tree paths where the tree knows them. */
-    public suspend fun connections(): List<Connection> = coroutineScope {
-        val port = reference()
-        val profiles = core.remote.call(subject, "get_connector_profiles") { port.get_connector_profiles() }
-        profiles.map { profile ->
-            async {
-                Connection(profile.connector_id, profile.name, profile.properties.toMap(), profile.ports.map { peer -> async { describe(peer) } }.awaitAll())
-            }
-        }.awaitAll()
-    }
-
-    private suspend fun describe(peer: PortService): Connection.End {
-        val profile = runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
-            ?: return Connection.End("?", null)
-        val owner = profile.owner?.let { core.components.objectFor(it) }
-        val instance = profile.name.substringBefore('.')
-        val path = owner?.knownPaths?.firstOrNull()?.withPort(profile.name.removePrefix("$instance."))
-        return Connection.End(profile.name, path)
-    }
-
-    /** Removes connection [connectorId]; returns the components at its other ends (those that answer). */
-    private suspend fun disconnectFromPeers(connectorId: String): List<ComponentObject> {
-        val port = reference()
-        val profile = core.remote.call(subject, "get_connector_profile") { port.get_connector_profile(connectorId) }
-        val peers = coroutineScope { profile.ports.map { async { owner(it) } }.awaitAll() }.filterNotNull()
-        core.remote.call(subject, "disconnect") { port.disconnect(connectorId) }
-            .orFail(subject, "disconnect", "connector '$connectorId'")
-        return peers
-    }
+    public suspend fun connections(): List<Connection> = calls.connections()
 
     /** Reads this component and [peers] again, each once. */
     private suspend fun refreshAfter(peers: List<ComponentObject>) = coroutineScope {
         (peers + component.component).distinct().forEach { peer -> launch { runCatching { peer.refresh(subject) } } }
-    }
-
-    /** The component owning [peer], if it answers. */
-    private suspend fun owner(peer: PortService): ComponentObject? =
-        runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
-            ?.owner?.let { core.components.objectFor(it) }
-
-    internal suspend fun reference(): PortService {
-        component.component.ports[name]?.let { return it }
-        component.refresh()
-        return component.component.ports[name] ?: throw NotFoundException(subject, "no such port")
     }
 
     private fun defaults(first: PortSnapshot): Map<String, String> = buildMap {

@@ -11,7 +11,13 @@ public sealed class RtcException(
     /** Why, in a few words. */
     public val reason: String,
     cause: Throwable? = null,
-) : Exception("$subject: $reason", cause)
+) : Exception("$subject: $reason", cause) {
+    /**
+     * Whether the object this failed on is taken for dead: unreachable or hung. A directory shows such
+     * a child as a [ZombieNode]; a tool reading one component can mark it dead the same way.
+     */
+    public val meansDead: Boolean get() = this is UnreachableException || this is TimedOutException
+}
 
 /** A path that does not follow the grammar; [position] is the index of the offending segment. */
 public class BadPathException(path: String, public val position: Int, reason: String) :

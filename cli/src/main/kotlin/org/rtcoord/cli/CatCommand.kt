@@ -49,7 +49,7 @@ class CatCommand : TreeCommand("cat") {
             is ComponentNode -> ComponentReport.read(node, withConfiguration = long).let { Report({ it.lines(long) }, it::toJson) }
             is ManagerNode -> ManagerReport.read(node).let { Report({ it.lines(long) }, it::toJson) }
             is ZombieNode -> throw node.cause
-            else -> throw WrongKindException(node.path.toString(), "component, port or manager", node.kindLabel)
+            else -> throw WrongKindException(node.path.toString(), "component, port or manager", node.kind.label)
         }
     }
 

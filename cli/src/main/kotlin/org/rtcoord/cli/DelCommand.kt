@@ -37,7 +37,7 @@ class DelCommand : TreeCommand("del") {
         return when (val node = context.children().firstOrNull { it.name == path.name }) {
             null -> throw NotFoundException(path.toString())
             is ZombieNode -> node
-            else -> throw WrongKindException(path.toString(), "zombie", "live ${node.kindLabel}")
+            else -> throw WrongKindException(path.toString(), "zombie", "live ${node.kind.label}")
         }
     }
 }

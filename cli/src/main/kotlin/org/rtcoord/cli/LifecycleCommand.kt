@@ -1,5 +1,6 @@
 package org.rtcoord.cli
 
+import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.groups.default
@@ -21,7 +22,8 @@ import org.rtcoord.RtcException
  * checking goes: every path must be a live component, with the chosen execution context, in the state
  * the transition starts from (or already in the one it leads to), before any component is changed.
  * Each transition then waits until the state is reached; if one fails, the error says which components
- * were changed before it and which were not attempted.
+ * were changed before it and which were not attempted. The commands differ only in what they are
+ * given here.
  */
 abstract class LifecycleCommand(
     name: String,
@@ -31,7 +33,20 @@ abstract class LifecycleCommand(
     private val done: String,
     private val from: LifeCycle,
     private val to: LifeCycle,
+    /** What the command does, in the help's first sentence. */
+    private val does: String,
+    /** The state it starts from, in the help's words (`Inactive`, `in Error`). */
+    private val fromWords: String,
+    /** Example command lines, each with what it does. */
+    private val usage: List<Pair<String, String>>,
+    /** Performs the transition on one component. */
+    private val transition: suspend ComponentNode.(ContextSelector) -> Unit,
 ) : TreeCommand(name) {
+    override fun help(context: Context): String =
+        "$does Every PATH is checked first (a live component, $fromWords or already ${stateLabel(to)}): if one is not, nothing changes."
+
+    override fun helpEpilog(context: Context): String = examples(*usage.toTypedArray())
+
     private val paths by argument("PATH", help = "Components (name.rtc); anything else, a port path included, is refused.").multiple(required = true)
 
     private val context by mutuallyExclusiveOptions(
@@ -40,9 +55,6 @@ abstract class LifecycleCommand(
         option("--index", "-e", metavar = "N", help = "The Nth execution context, owned ones first (rtshell's -e).")
             .int().convert { ContextSelector.Index(it) },
     ).single().default(ContextSelector.DEFAULT)
-
-    /** Performs the transition on one component. */
-    protected abstract suspend fun ComponentNode.transition(context: ContextSelector)
 
     override suspend fun execute() {
         val pending = paths.map { checked(it) }.filter { (_, state) -> state != to }.map { (component, _) -> component }

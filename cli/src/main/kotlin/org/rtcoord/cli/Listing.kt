@@ -1,21 +1,20 @@
 package org.rtcoord.cli
 
 import org.rtcoord.ComponentNode
-import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ComponentSummary
 import org.rtcoord.DirectoryNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.Node
 import org.rtcoord.PortKind
 import org.rtcoord.ZombieNode
-import org.rtcoord.summary
 
 /**
- * One node as a listing shows it. [summary] is what was read of a component; a component that could
- * not be read is [dead] and shows like a zombie.
+ * One node as a listing shows it. [summary] is what was read of a component. Dead registrations (shown
+ * with `*`) are the [ZombieNode]s of a directory, and a component [foundDead] when read on its own
+ * (see [org.rtcoord.RtcException.meansDead]).
  */
-internal class Entry(val node: Node, val summary: ComponentSummary?) {
-    val dead: Boolean get() = node is ZombieNode || (node is ComponentNode && summary == null)
+internal class Entry(val node: Node, val summary: ComponentSummary?, foundDead: Boolean = false) {
+    val dead: Boolean = foundDead || node is ZombieNode
 
     /** The short form: directories end in `/`, dead registrations start with `*`, as in rtls. */
     val shortName: String
@@ -85,21 +84,5 @@ internal fun shortLines(entries: List<Entry>, width: Int?): List<String> {
     return rows.map { row -> row.mapIndexed { c, name -> name.padEnd(widths[c]) }.joinToString(" ".repeat(gap)).trimEnd() }
 }
 
-/**
- * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over
- * ACTIVE over INACTIVE, else CREATED; UNKNOWN only without any context.
- */
-internal val ComponentSnapshot.overallState: LifeCycle get() = summary.overallState
-
-/** [ComponentSnapshot.overallState] for what a listing read. */
-internal val ComponentSummary.overallState: LifeCycle
-    get() {
-        if (states.isEmpty()) return LifeCycle.UNKNOWN
-        return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states.values } ?: LifeCycle.CREATED
-    }
-
 /** A state as rtshell prints it: `Active`, `Inactive`, `Error`, `Created`, `Unknown`. */
 internal fun stateLabel(state: LifeCycle): String = state.name.lowercase().replaceFirstChar { it.uppercase() }
-
-/** What the node is, in words for messages: `component`, `name server`, `zombie`... */
-internal val Node.kindLabel: String get() = kind.name.lowercase().replace('_', ' ')

@@ -12,8 +12,6 @@ import org.rtcoord.DirectoryNode
 import org.rtcoord.Node
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
-import org.rtcoord.TimedOutException
-import org.rtcoord.UnreachableException
 import org.rtcoord.WrongKindException
 import org.rtcoord.ZombieNode
 
@@ -49,7 +47,7 @@ class LsCommand : TreeCommand("ls") {
                 listing(text, headed = targets.size > 1)
             } catch (e: RtcException) {
                 // A name server's root that does not answer is one error line among the listings, as below.
-                if (e !is UnreachableException && e !is TimedOutException || !pathOf(text).isNameServer) throw e
+                if (!e.meansDead || !pathOf(text).isNameServer) throw e
                 failures += e
                 emptyList()
             }
@@ -93,7 +91,7 @@ class LsCommand : TreeCommand("ls") {
         val path = pathOf(text)
         val node = node(text)
         if (node !is DirectoryNode) {
-            if (path.isDirectory) throw WrongKindException(path.toString(), "directory", node.kindLabel)
+            if (path.isDirectory) throw WrongKindException(path.toString(), "directory", node.kind.label)
             return listOf(Block(null, listOf(readNow(node))))
         }
         if (!recursive) {
@@ -123,10 +121,9 @@ class LsCommand : TreeCommand("ls") {
         return try {
             node.refresh()
             entryOf(node)
-        } catch (e: UnreachableException) {
-            Entry(node, null)
-        } catch (e: TimedOutException) {
-            Entry(node, null)
+        } catch (e: RtcException) {
+            if (!e.meansDead) throw e
+            Entry(node, null, foundDead = true)
         }
     }
 

@@ -5,6 +5,7 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
 import RTC.RTObjectHelper
+import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import org.omg.CosNaming.NamingContextExtHelper
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.FixtureRuntime
@@ -59,8 +60,7 @@ class ScriptCommandsTest {
         Localisation().use { localisation ->
             val gyro = localisation.system.component("gyro0")
             val restart = script("restart.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) {\n    reset()\n    activate()\n}\n")
-            val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "8s", restart.toString()) }
-            await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { gyro.observerIds.isNotEmpty() }
+            val run = runWatchingGyro(localisation, restart)
 
             gyro.fail()
             await("the rule to bring gyro0 back") { run.isDone || (gyro.state == RTC.LifeCycleState.ACTIVE_STATE && "activate" in runLog(run)) }
@@ -131,8 +131,7 @@ class ScriptCommandsTest {
                 }
                 """.trimIndent(),
             )
-            val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "8s", modes.toString()) }
-            await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { gyro.observerIds.isNotEmpty() }
+            val run = runWatchingGyro(localisation, modes)
 
             gyro.fail()
             val result = run.get()
@@ -173,8 +172,7 @@ class ScriptCommandsTest {
         Localisation().use { localisation ->
             val gyro = localisation.system.component("gyro0")
             val restart = script("broken.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) {\n    attempt { reset() }\n    reset()\n}\n")
-            val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "8s", restart.toString()) }
-            await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { gyro.observerIds.isNotEmpty() }
+            val run = runWatchingGyro(localisation, restart)
 
             gyro.breakDown()
             val result = run.get()
@@ -206,4 +204,11 @@ class ScriptCommandsTest {
     /** What [run] printed so far, once it finished; empty while it runs (the harness hands it over at the end). */
     private fun runLog(run: CompletableFuture<com.github.ajalt.clikt.testing.CliktCommandTestResult>): String =
         if (run.isDone) run.get().stdout else ""
+
+    /** Starts `rtcoord run --for 8s SCRIPT` in the background and waits until the coordinator observes gyro0. */
+    private fun runWatchingGyro(localisation: Localisation, script: Path): CompletableFuture<CliktCommandTestResult> {
+        val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "8s", script.toString()) }
+        await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { localisation.system.component("gyro0").observerIds.isNotEmpty() }
+        return run
+    }
 }

@@ -1,7 +1,6 @@
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.runBlocking
-import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -10,35 +9,17 @@ import org.rtcoord.AmbiguousNameException
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcTree
-import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
 import java.util.Collections
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
 /** The engine behind the DSL, driven by coordinations written directly in Kotlin. */
-class CoordinatorTest {
-    private val naming = NamingService.start()
-    private val system = Scenarios.localisation(naming.corbaloc)
-    private val config = TreeConfig(nameServers = listOf(naming.address))
-    private val tree = RtcTree.create(config)
-    private val log = Collections.synchronizedList(mutableListOf<String>())
-
-    @AfterEach
-    fun stop() {
-        tree.close()
-        system.close()
-        naming.close()
-    }
-
-    private fun coordinator(declare: Coordination.() -> Unit): Coordinator =
-        Coordinator(tree, Coordination(emptyList(), config).apply(declare), EventOptions(WatchMode.PUSH)) { log += it }
-
+class CoordinatorTest : CoordinatedSystem() {
     @Test
     fun `a failing handler is reported and the coordinator keeps reacting`(): Unit = runBlocking {
         var calls = 0

@@ -2,7 +2,6 @@ package org.rtcoord.dsl
 
 import RTC.LifeCycleState
 import kotlinx.coroutines.runBlocking
-import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
@@ -10,9 +9,7 @@ import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ACTIVE
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.ParameterChanged
-import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
-import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.dsl.runtime.RunningMachine
@@ -20,37 +17,16 @@ import org.rtcoord.fixtures.Behaviour
 import org.rtcoord.fixtures.ComponentContext
 import org.rtcoord.fixtures.ComponentType
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
 
 /** Mode machines driving the localisation system over IIOP; results are read back through the fixtures and a second tree. */
-class ModesTest {
-    private val naming = NamingService.start()
-    private val system = Scenarios.localisation(naming.corbaloc)
-    private val config = TreeConfig(nameServers = listOf(naming.address))
-    private val tree = RtcTree.create(config)
-    private val witness = RtcTree.create(config)
-    // Copy-on-write: the tests iterate them while the coordinator appends.
-    private val log = CopyOnWriteArrayList<String>()
+class ModesTest : CoordinatedSystem() {
+    // Copy-on-write: the tests iterate it while the coordinator appends.
     private val trace = CopyOnWriteArrayList<String>()
-
-    @AfterEach
-    fun stop() {
-        tree.close()
-        witness.close()
-        system.close()
-        naming.close()
-    }
-
-    private fun coordinator(options: EventOptions = EventOptions(WatchMode.PUSH), declare: Coordination.() -> Unit): Coordinator =
-        Coordinator(tree, Coordination(emptyList(), config).apply(declare), options) { log += it }
-
-    private fun path(port: String) = "/${naming.address}/${FixtureRuntime.hostContext}/$port"
 
     private suspend fun peers(port: String): Set<String> =
         witness.port(path(port)).connections().flatMap { connection -> connection.ports.map { it.fullName } }.filter { !it.startsWith(port.substringBefore(".rtc")) }.toSet()

@@ -1,21 +1,12 @@
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.runBlocking
-import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
-import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle
-import org.rtcoord.RtcTree
-import org.rtcoord.TreeConfig
-import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
 import org.rtcoord.profile.ProfileDifference
 import org.rtcoord.profile.ProfileFormat
 import org.rtcoord.profile.RtsProfile
@@ -27,26 +18,11 @@ import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.milliseconds
 
 /** RTSProfiles in scripts: a mode's network from a profile, and restoring and checking a profile as actions. */
-class ProfileDslTest {
-    private val naming = NamingService.start()
-    private val system = Scenarios.localisation(naming.corbaloc)
-    private val config = TreeConfig(nameServers = listOf(naming.address))
-    private val tree = RtcTree.create(config)
-    private val witness = RtcTree.create(config)
-    private val log = CopyOnWriteArrayList<String>()
-
+class ProfileDslTest : CoordinatedSystem() {
     @TempDir
     lateinit var directory: Path
 
-    @AfterEach
-    fun stop() {
-        tree.close()
-        witness.close()
-        system.close()
-        naming.close()
-    }
-
-    private fun path(name: String) = "/${naming.address}/${FixtureRuntime.hostContext}/$name"
+    override val scriptDirectory: Path get() = directory
 
     /** The running system saved as [name] in the script's directory. */
     private suspend fun saved(name: String, change: (RtsProfile) -> RtsProfile = { it }): RtsProfile {
@@ -54,9 +30,6 @@ class ProfileDslTest {
         Files.writeString(directory.resolve(name), RtsProfiles.write(profile, ProfileFormat.of(name, "")))
         return profile
     }
-
-    private fun coordinator(declare: Coordination.() -> Unit): Coordinator =
-        Coordinator(tree, Coordination(emptyList(), config, directory).apply(declare), EventOptions(WatchMode.PUSH)) { log += it }
 
     @Test
     fun `a mode's network taken from a profile brings back its states, connections and active sets`(): Unit = runBlocking {

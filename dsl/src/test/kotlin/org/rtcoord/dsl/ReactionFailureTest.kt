@@ -1,40 +1,17 @@
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.runBlocking
-import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ERROR
-import org.rtcoord.RtcTree
-import org.rtcoord.TreeConfig
-import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.dsl.runtime.FailedAction
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
 import java.util.Collections
 
 /** Best-effort actions, and what a handler that fails half way does about what it already changed. */
-class ReactionFailureTest {
-    private val naming = NamingService.start()
-    private val system = Scenarios.localisation(naming.corbaloc)
-    private val config = TreeConfig(nameServers = listOf(naming.address))
-    private val tree = RtcTree.create(config)
-    private val log = Collections.synchronizedList(mutableListOf<String>())
-    private val laserPath = "/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}/laser0.rtc"
-
-    @AfterEach
-    fun stop() {
-        tree.close()
-        system.close()
-        naming.close()
-    }
-
-    private fun coordinator(declare: Coordination.() -> Unit): Coordinator =
-        Coordinator(tree, Coordination(emptyList(), config).apply(declare), EventOptions(WatchMode.PUSH)) { log += it }
+class ReactionFailureTest : CoordinatedSystem() {
+    private val laserPath = path("laser0.rtc")
 
     @Test
     fun `an attempted reset of a component that stays broken is a warning, and the handler goes on`(): Unit = runBlocking {

@@ -2,7 +2,6 @@ package org.rtcoord.dsl
 
 import RTC.LifeCycleState
 import kotlinx.coroutines.runBlocking
-import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertSame
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -13,17 +12,13 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcPath
-import org.rtcoord.RtcTree
-import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.fixtures.FixtureComponent
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
-import org.rtcoord.fixtures.naming.NamingService
 import org.rtcoord.fixtures.rtSystem
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
@@ -37,38 +32,23 @@ import kotlin.time.TimeSource
  * that master, fed by the laser and the odometry, so that SIGKILL takes the component and its manager
  * down together, as it would a robot's process.
  */
-class SupervisionTest {
-    private val naming = NamingService.start()
-    private val system = rtSystem(naming.corbaloc) {
-        manager(*Scenarios.localisationModules.toTypedArray())
-        component(Scenarios.laser)
-        component(Scenarios.odometry)
-        component(Scenarios.gyro)
-        component(Scenarios.odoLocalise)
-        activate("laser0", "odometry0", "gyro0")
-    }
-    private val config = TreeConfig(nameServers = listOf(naming.address))
-    private val tree = RtcTree.create(config)
-    private val witness = RtcTree.create(config)
-    private val log = CopyOnWriteArrayList<String>()
-    private val options = EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds)
-    private val host = "/${naming.address}/${FixtureRuntime.hostContext}"
-
-    @AfterEach
-    fun stop() {
-        tree.close()
-        witness.close()
-        system.close()
-        naming.close()
-    }
-
-    private fun coordinator(declare: Coordination.() -> Unit): Coordinator =
-        Coordinator(tree, Coordination(emptyList(), config).apply(declare), options) { line ->
-            log += line
-            println("coordinator: $line")
+class SupervisionTest : CoordinatedSystem(
+    { naming ->
+        rtSystem(naming) {
+            manager(*Scenarios.localisationModules.toTypedArray())
+            component(Scenarios.laser)
+            component(Scenarios.odometry)
+            component(Scenarios.gyro)
+            component(Scenarios.odoLocalise)
+            activate("laser0", "odometry0", "gyro0")
         }
-
-    private fun path(name: String) = "$host/$name"
+    },
+    EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds),
+) {
+    override fun onLogLine(line: String) {
+        super.onLogLine(line)
+        println("coordinator: $line")
+    }
 
     private fun active(name: String): FixtureComponent? =
         system.runtime.components.firstOrNull { it.instanceName == name && !it.isExited && it.state == LifeCycleState.ACTIVE_STATE }

@@ -20,111 +20,96 @@ import kotlin.time.TimeSource
  * fixtures' fidelity is put to the test: skipped unless `RTCOORD_OPENRTM_PYTHON` names an installation.
  */
 class OpenRtmPythonTest {
-    @Test
-    fun `localisation - a laser that stays broken is replaced by the odometry-gyro localiser a real master creates`(): Unit = runBlocking {
+    /** Runs [script] on a tree of a freshly started OpenRTM-aist-Python system while [test] runs, then closes all. */
+    private fun coordinating(script: String, test: suspend (OpenRtmPythonSystem, Coordinator, List<String>) -> Unit): Unit = runBlocking {
         OpenRtmPythonSystem.start().use { system ->
             val log = CopyOnWriteArrayList<String>()
             val config = TreeConfig(nameServers = listOf(system.naming))
-            val script = ExampleSystem.scripts.load(Paths.get("localisation.coord.kts"), emptyList(), config)
+            val coordination = ExampleSystem.scripts.load(Paths.get(script), emptyList(), config)
             RtcTree.create(config).use { tree ->
-                Coordinator(tree, script) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
+                Coordinator(tree, coordination) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
                     coordinator.start()
-                    val laser = system.witness.component(system.path("laser0.rtc"))
-                    val broken = TimeSource.Monotonic.markNow()
-                    laser.setParameter("broken", "1")
-
-                    await("odo_localise0 to be ACTIVE", 30.seconds) {
-                        runBlocking { runCatching { system.witness.component(system.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
-                    }
-                    println("real OpenRTM-aist-Python: persistent laser fault to odo_localise0 ACTIVE in ${broken.elapsedNow()}")
-                    // OpenRTM's names of the ports at each connection's far end.
-                    val peers = listOf("odo", "gyro").associateWith { port ->
-                        system.witness.port(system.path("odo_localise0.rtc:$port")).connections().map { it.ports.first().fullName }
-                    }
-                    assertEquals(mapOf("odo" to listOf("odometry0.odo"), "gyro" to listOf("gyro0.gyro")), peers)
-                    val old = system.witness.component(system.path("laser_localise0.rtc"))
-                    assertEquals(LifeCycle.INACTIVE, old.state())
-                    assertTrue(listOf("laser", "odo").all { system.witness.port(system.path("laser_localise0.rtc:$it")).connections().isEmpty() })
-                    assertEquals(LifeCycle.ERROR, laser.state(), "the laser stays broken")
-                    // A real manager's components are bound twice (naming context and manager): either path is laser0.
-                    val failed = coordinator.failedActions.single()
-                    assertTrue(failed.action.startsWith("reset /") && failed.action.endsWith("/laser0.rtc"), failed.action)
-                    assertEquals(FailedAction(failed.action, "reset failed: RTC_ERROR (in context 0)", bestEffort = true), failed)
-                    assertEquals(0, coordinator.failures, log.joinToString("\n"))
+                    test(system, coordinator, log)
                 }
             }
         }
     }
 
     @Test
-    fun `supervision - the slave manager hosting the pipeline is killed, and a real master re-creates it in a slave it starts`(): Unit = runBlocking {
-        OpenRtmPythonSystem.start().use { system ->
-            val log = CopyOnWriteArrayList<String>()
-            val config = TreeConfig(nameServers = listOf(system.naming))
-            val script = ExampleSystem.scripts.load(Paths.get("supervision.coord.kts"), emptyList(), config)
-            RtcTree.create(config).use { tree ->
-                Coordinator(tree, script) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
-                    coordinator.start()
-                    val before = system.witness.component(system.path("laser0.rtc"))
-                    val killed = TimeSource.Monotonic.markNow()
-                    system.killSlave()
+    fun `localisation - a laser that stays broken is replaced by the odometry-gyro localiser a real master creates`(): Unit = coordinating("localisation.coord.kts") { system, coordinator, log ->
+        val laser = system.witness.component(system.path("laser0.rtc"))
+        val broken = TimeSource.Monotonic.markNow()
+        laser.setParameter("broken", "1")
 
-                    for (name in listOf("odometry0", "laser0", "laser_localise0")) {
-                        await("$name to be re-created and ACTIVE", 60.seconds) {
-                            runBlocking {
-                                runCatching {
-                                    system.witness.refresh(system.witness.component(system.path("gyro0.rtc")).path.parent!!, depth = 0)
-                                    system.witness.component(system.path("$name.rtc")).state()
-                                }.getOrNull()
-                            } == LifeCycle.ACTIVE
-                        }
-                    }
-                    println("real OpenRTM-aist-Python: slave manager SIGKILL to the pipeline ACTIVE again in ${killed.elapsedNow()}")
-                    val laser = system.witness.component(system.path("laser0.rtc"))
-                    assertTrue(!laser.isSameComponent(before), "laser0 is a new component")
-                    val peers = listOf("laser", "odo").associateWith { port ->
-                        system.witness.port(system.path("laser_localise0.rtc:$port")).connections().map { it.ports.first().fullName }
-                    }
-                    assertEquals(mapOf("laser" to listOf("laser0.laser"), "odo" to listOf("odometry0.odo")), peers)
-                    assertEquals(1, log.count { it.endsWith("failed together: one restart") }, log.joinToString("\n"))
-                    assertTrue(log.none { it.startsWith("giving up") }, log.joinToString("\n"))
-                    assertEquals(0, coordinator.failures, log.joinToString("\n"))
-                }
-            }
+        await("odo_localise0 to be ACTIVE", 30.seconds) {
+            runBlocking { runCatching { system.witness.component(system.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
         }
+        println("real OpenRTM-aist-Python: persistent laser fault to odo_localise0 ACTIVE in ${broken.elapsedNow()}")
+        // OpenRTM's names of the ports at each connection's far end.
+        val peers = listOf("odo", "gyro").associateWith { port ->
+            system.witness.port(system.path("odo_localise0.rtc:$port")).connections().map { it.ports.first().fullName }
+        }
+        assertEquals(mapOf("odo" to listOf("odometry0.odo"), "gyro" to listOf("gyro0.gyro")), peers)
+        val old = system.witness.component(system.path("laser_localise0.rtc"))
+        assertEquals(LifeCycle.INACTIVE, old.state())
+        assertTrue(listOf("laser", "odo").all { system.witness.port(system.path("laser_localise0.rtc:$it")).connections().isEmpty() })
+        assertEquals(LifeCycle.ERROR, laser.state(), "the laser stays broken")
+        // A real manager's components are bound twice (naming context and manager): either path is laser0.
+        val failed = coordinator.failedActions.single()
+        assertTrue(failed.action.startsWith("reset /") && failed.action.endsWith("/laser0.rtc"), failed.action)
+        assertEquals(FailedAction(failed.action, "reset failed: RTC_ERROR (in context 0)", bestEffort = true), failed)
+        assertEquals(0, coordinator.failures, log.joinToString("\n"))
     }
 
     @Test
-    fun `modes - with a laser that stays broken the system runs on odometry, and on the laser again once it is repaired`(): Unit = runBlocking {
-        OpenRtmPythonSystem.start().use { system ->
-            val log = CopyOnWriteArrayList<String>()
-            val config = TreeConfig(nameServers = listOf(system.naming))
-            val script = ExampleSystem.scripts.load(Paths.get("modes.coord.kts"), emptyList(), config)
-            RtcTree.create(config).use { tree ->
-                Coordinator(tree, script) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
-                    coordinator.start()
-                    val machine = coordinator.machine("localisation")
-                    await("the laser mode's network", 30.seconds) { log.any { it.startsWith("mode localisation/laser: network done") } }
-                    val laser = system.witness.component(system.path("laser0.rtc"))
-                    val broken = TimeSource.Monotonic.markNow()
-                    laser.setParameter("broken", "1")
+    fun `supervision - the slave manager hosting the pipeline is killed, and a real master re-creates it in a slave it starts`(): Unit = coordinating("supervision.coord.kts") { system, coordinator, log ->
+        val before = system.witness.component(system.path("laser0.rtc"))
+        val killed = TimeSource.Monotonic.markNow()
+        system.killSlave()
 
-                    await("the odometry localiser to track", 30.seconds) { machine.mode.value == "localisation/degraded/odometry/tracking" }
-                    println("real OpenRTM-aist-Python: persistent laser fault to the odometry mode tracking in ${broken.elapsedNow()}")
-                    assertEquals(LifeCycle.ACTIVE, system.witness.component(system.path("odo_localise0.rtc")).state())
-                    assertEquals(LifeCycle.INACTIVE, system.witness.component(system.path("laser_localise0.rtc")).state())
-                    assertEquals(LifeCycle.ERROR, laser.state())
-
-                    laser.setParameter("broken", "0")
-                    await("the repaired laser to reset", 30.seconds) { runBlocking { runCatching { laser.reset() }.isSuccess } }
-                    laser.activate()
-                    await("the laser mode's network again", 30.seconds) { log.count { it.startsWith("mode localisation/laser: network done") } == 2 }
-                    assertEquals("localisation/laser", machine.mode.value)
-                    assertEquals(LifeCycle.ACTIVE, system.witness.component(system.path("laser_localise0.rtc")).state())
-                    assertEquals(LifeCycle.INACTIVE, system.witness.component(system.path("odo_localise0.rtc")).state())
-                    assertEquals(0, coordinator.failures, log.joinToString("\n"))
-                }
+        for (name in listOf("odometry0", "laser0", "laser_localise0")) {
+            await("$name to be re-created and ACTIVE", 60.seconds) {
+                runBlocking {
+                    runCatching {
+                        system.witness.refresh(system.witness.component(system.path("gyro0.rtc")).path.parent!!, depth = 0)
+                        system.witness.component(system.path("$name.rtc")).state()
+                    }.getOrNull()
+                } == LifeCycle.ACTIVE
             }
         }
+        println("real OpenRTM-aist-Python: slave manager SIGKILL to the pipeline ACTIVE again in ${killed.elapsedNow()}")
+        val laser = system.witness.component(system.path("laser0.rtc"))
+        assertTrue(!laser.isSameComponent(before), "laser0 is a new component")
+        val peers = listOf("laser", "odo").associateWith { port ->
+            system.witness.port(system.path("laser_localise0.rtc:$port")).connections().map { it.ports.first().fullName }
+        }
+        assertEquals(mapOf("laser" to listOf("laser0.laser"), "odo" to listOf("odometry0.odo")), peers)
+        assertEquals(1, log.count { it.endsWith("failed together: one restart") }, log.joinToString("\n"))
+        assertTrue(log.none { it.startsWith("giving up") }, log.joinToString("\n"))
+        assertEquals(0, coordinator.failures, log.joinToString("\n"))
+    }
+
+    @Test
+    fun `modes - with a laser that stays broken the system runs on odometry, and on the laser again once it is repaired`(): Unit = coordinating("modes.coord.kts") { system, coordinator, log ->
+        val machine = coordinator.machine("localisation")
+        await("the laser mode's network", 30.seconds) { log.any { it.startsWith("mode localisation/laser: network done") } }
+        val laser = system.witness.component(system.path("laser0.rtc"))
+        val broken = TimeSource.Monotonic.markNow()
+        laser.setParameter("broken", "1")
+
+        await("the odometry localiser to track", 30.seconds) { machine.mode.value == "localisation/degraded/odometry/tracking" }
+        println("real OpenRTM-aist-Python: persistent laser fault to the odometry mode tracking in ${broken.elapsedNow()}")
+        assertEquals(LifeCycle.ACTIVE, system.witness.component(system.path("odo_localise0.rtc")).state())
+        assertEquals(LifeCycle.INACTIVE, system.witness.component(system.path("laser_localise0.rtc")).state())
+        assertEquals(LifeCycle.ERROR, laser.state())
+
+        laser.setParameter("broken", "0")
+        await("the repaired laser to reset", 30.seconds) { runBlocking { runCatching { laser.reset() }.isSuccess } }
+        laser.activate()
+        await("the laser mode's network again", 30.seconds) { log.count { it.startsWith("mode localisation/laser: network done") } == 2 }
+        assertEquals("localisation/laser", machine.mode.value)
+        assertEquals(LifeCycle.ACTIVE, system.witness.component(system.path("laser_localise0.rtc")).state())
+        assertEquals(LifeCycle.INACTIVE, system.witness.component(system.path("odo_localise0.rtc")).state())
+        assertEquals(0, coordinator.failures, log.joinToString("\n"))
     }
 }

@@ -6,7 +6,6 @@ import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.ZombieNode
 import org.rtcoord.cli.ComponentNetwork
-import org.rtcoord.cli.overallState
 
 /**
  * The system below [top] as the page draws it, from what the tree holds: naming contexts and name

@@ -1,3 +1,5 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl.java
 
 import kotlinx.coroutines.CoroutineName
@@ -5,18 +7,17 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
-import kotlinx.coroutines.future.future
 import org.rtcoord.EventOptions
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.RtcException
 import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
+import org.rtcoord.internal.JavaCalls
 import org.rtcoord.java.JavaTree
 import java.nio.file.Files
 import java.nio.file.Path
-import java.util.concurrent.CancellationException
 import java.util.concurrent.CompletableFuture
-import java.util.concurrent.ExecutionException
 import java.util.function.Consumer
 
 /**
@@ -35,15 +36,16 @@ public class JavaCoordinator private constructor(
     public val coordinator: Coordinator,
 ) : AutoCloseable {
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator"))
+    private val calls = JavaCalls(scope)
 
     /** Subscribes the rules and starts timers, machines and supervisors (see [Coordinator.start]). */
     @Throws(RtcException::class)
     public fun start() {
-        await(startAsync())
+        calls.await { coordinator.start() }
     }
 
     /** [start], when done. */
-    public fun startAsync(): CompletableFuture<Void?> = scope.future { coordinator.start(); null }
+    public fun startAsync(): CompletableFuture<Void?> = calls.done { coordinator.start() }
 
     /** Stops the coordinator: cancels its handlers and detaches its observers. Idempotent. */
     override fun close() {
@@ -54,6 +56,8 @@ public class JavaCoordinator private constructor(
     /** How Java callers load a coordinator. */
     public companion object {
         private val host by lazy { ScriptHost() }
+        // A supervisor: a script that fails to load must not cancel the loads after it.
+        private val loading = JavaCalls(CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator loading")))
 
         /**
          * Compiles (or takes from the cache) and evaluates the script at [script] with [args], for [tree];
@@ -63,13 +67,13 @@ public class JavaCoordinator private constructor(
         @JvmOverloads
         @Throws(ScriptFailure::class)
         public fun load(tree: JavaTree, script: Path, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): JavaCoordinator =
-            await(loadAsync(tree, script, args, log))
+            loading.await(loadAsync(tree, script, args, log))
 
         /** [load], when done. */
         @JvmStatic
         @JvmOverloads
         public fun loadAsync(tree: JavaTree, script: Path, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): CompletableFuture<JavaCoordinator> =
-            CoroutineScope(Dispatchers.Default).future {
+            loading.future {
                 val coordination = host.load(script, args, tree.tree.config)
                 JavaCoordinator(Coordinator(tree.tree, coordination, null as EventOptions?) { log.accept(it) })
             }
@@ -94,19 +98,6 @@ public class JavaCoordinator private constructor(
             } finally {
                 Files.delete(script)
                 Files.delete(directory)
-            }
-        }
-
-        /** Waits for [running] and throws what it failed with, unwrapped; an interrupt cancels it. */
-        private fun <T> await(running: CompletableFuture<T>): T {
-            try {
-                return running.get()
-            } catch (e: ExecutionException) {
-                throw e.cause ?: e
-            } catch (e: InterruptedException) {
-                running.cancel(true)
-                Thread.currentThread().interrupt()
-                throw CancellationException("interrupted while waiting for the coordinator").apply { initCause(e) }
             }
         }
     }

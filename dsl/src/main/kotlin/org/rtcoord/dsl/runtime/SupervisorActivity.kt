@@ -27,6 +27,7 @@ public class SupervisorActivity internal constructor(
         val lastRestart: Instant? = null,
         val lastRestarted: String? = null,
         /** The back-off it is waiting out before the next restart, and until when; null when not waiting. */
+        @get:JvmName("getBackoff")
         val backoff: Duration? = null,
         val waitingUntil: Instant? = null,
         /** Why it gave up, once it escalated. */

@@ -1,0 +1,121 @@
+package org.rtcoord.internal
+
+import RTC.ExecutionContext
+import RTC.RTObject
+import RTC.ReturnCode_t
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.withContext
+import org.rtcoord.Composition
+import org.rtcoord.ContextSelector
+import org.rtcoord.LifeCycle
+import org.rtcoord.NotFoundException
+import org.rtcoord.OperationFailedException
+import org.rtcoord.TimedOutException
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
+
+/** A lifecycle operation, with the state it starts from, the one it leads to, and its call on a context. */
+internal enum class LifecycleOperation(val verb: String, val from: LifeCycle, val to: LifeCycle, val call: (ExecutionContext, RTObject) -> ReturnCode_t) {
+    ACTIVATE("activate", LifeCycle.INACTIVE, LifeCycle.ACTIVE, { ec, component -> ec.activate_component(component) }),
+    DEACTIVATE("deactivate", LifeCycle.ACTIVE, LifeCycle.INACTIVE, { ec, component -> ec.deactivate_component(component) }),
+    RESET("reset", LifeCycle.ERROR, LifeCycle.INACTIVE, { ec, component -> ec.reset_component(component) }),
+}
+
+/**
+ * The remote calls a [org.rtcoord.ComponentNode] makes besides reading ([ComponentReader]) and
+ * configuring ([ConfigurationWriter]): choosing an execution context, lifecycle operations that wait for
+ * their effect, and exit. Each call has the tree's deadline and every return code is checked.
+ */
+internal class ComponentCalls(private val core: TreeCore, private val subject: String, private val component: ComponentObject) {
+    /** The component's handle for the context [selector] names, and the context. */
+    suspend fun context(selector: ContextSelector): Pair<Int, ExecutionContext> {
+        val snapshot = component.loaded(subject)
+        val handle = when (selector) {
+            is ContextSelector.Handle -> selector.handle
+            is ContextSelector.Index -> {
+                val ordered = snapshot.contexts.filter { it.owned } + snapshot.contexts.filter { !it.owned }
+                ordered.getOrNull(selector.index)?.handle
+                    ?: throw NotFoundException(subject, "no execution context at index ${selector.index} (it has ${ordered.size})")
+            }
+        }
+        val context = component.contexts[handle]
+            ?: throw NotFoundException(subject, "no execution context with handle $handle (handles: ${component.contexts.keys.sorted().joinToString()})")
+        return handle to context
+    }
+
+    /** The component's state in [selector]'s context, read now. */
+    suspend fun state(selector: ContextSelector): LifeCycle = state(context(selector).second)
+
+    private suspend fun state(ec: ExecutionContext): LifeCycle =
+        LifeCycle.of(core.remote.call(subject, "get_component_state") { ec.get_component_state(component.ref) })
+
+    /** Whether the component is a composite and whether it is part of one, read now. */
+    suspend fun composition(): Composition =
+        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, component.ref).readComposition() }
+
+    /**
+     * Performs [operation] in [selector]'s context, waits until the component is in the state it leads to
+     * (within [deadline], else the tree's), and publishes that state.
+     */
+    suspend fun perform(operation: LifecycleOperation, selector: ContextSelector, deadline: Duration?) {
+        val (handle, ec) = context(selector)
+        val code = core.remote.call(subject, operation.verb, deadline) { operation.call(ec, component.ref) }
+        if (code == ReturnCode_t.PRECONDITION_NOT_MET) {
+            val now = runCatching { state(ec) }.getOrDefault(LifeCycle.UNKNOWN)
+            code.orFail(subject, operation.verb, "the component is $now in context $handle, not ${operation.from}")
+        }
+        code.orFail(subject, operation.verb, "in context $handle")
+        val reached = awaitState(operation.verb, ec, handle, operation.to, deadline ?: core.remote.defaultDeadline)
+        component.snapshot.value?.let { snapshot ->
+            component.publish(snapshot.copy(contexts = snapshot.contexts.map { if (it.handle == handle) it.copy(state = reached) else it }))
+        }
+    }
+
+    /** Polls the state until it is [target], fails at once if the component fell into ERROR instead. */
+    private suspend fun awaitState(operation: String, ec: ExecutionContext, handle: Int, target: LifeCycle, limit: Duration): LifeCycle {
+        val deadline = TimeSource.Monotonic.markNow() + limit
+        var pause = 1.milliseconds
+        while (true) {
+            val state = state(ec)
+            if (state == target) return state
+            if (state == LifeCycle.ERROR) throw OperationFailedException(subject, operation, ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
+            if (deadline.hasPassedNow()) throw TimedOutException(subject, "$operation (waiting for $target, still $state)", limit.inWholeMilliseconds)
+            delay(pause)
+            pause = (pause * 2).coerceAtMost(20.milliseconds)
+        }
+    }
+
+    /** Asks the component to exit. */
+    suspend fun exit() {
+        core.remote.call(subject, "exit") { component.ref.exit() }.orFail(subject, "exit")
+    }
+
+    /** Whether the object no longer exists, as its ORB answers. */
+    suspend fun nonExistent(): Boolean = core.remote.call(subject, "_non_existent") { component.ref._non_existent() }
+
+    /** Changes the component's configuration (see [ConfigurationWriter]). */
+    fun configuration(): ConfigurationWriter = ConfigurationWriter(core.remote, core.orb.orb, subject, component.ref)
+
+    /** The calls on the execution context with [handle], [ec]. */
+    fun onContext(handle: Int, ec: ExecutionContext): ContextCalls = ContextCalls(core.remote, "$subject context $handle", ec)
+}
+
+/** The remote calls on one execution context: rate, running, participants. */
+internal class ContextCalls(private val remote: Remote, val subject: String, private val context: ExecutionContext) {
+    suspend fun rate(): Double = remote.call(subject, "get_rate") { context.get_rate() }
+
+    suspend fun setRate(hz: Double) {
+        remote.call(subject, "set_rate") { context.set_rate(hz) }.orFail(subject, "set rate to $hz")
+    }
+
+    suspend fun isRunning(): Boolean = remote.call(subject, "is_running") { context.is_running() }
+
+    suspend fun add(participant: ComponentObject, name: String) {
+        remote.call(subject, "add_component") { context.add_component(participant.ref) }.orFail(subject, "add $name")
+    }
+
+    suspend fun remove(participant: ComponentObject, name: String) {
+        remote.call(subject, "remove_component") { context.remove_component(participant.ref) }.orFail(subject, "remove $name")
+    }
+}
