@@ -83,7 +83,7 @@ in the same run). Results are printed, never stored.
             startupRepetitions = 10,
             profileSize = 200,
             profileRepetitions = 10,
-            microIterations = 3 to 5,
+            microIterations = 5 to 5,
             microIteration = 2.seconds,
             scripts = true,
         )
@@ -104,7 +104,7 @@ in the same run). Results are printed, never stored.
             floorCalls = 1000 to 10_000,
             startupRepetitions = 3,
             profileRepetitions = 3,
-            microIterations = 2 to 3,
+            microIterations = 4 to 3,
             microIteration = 1.seconds,
         )
 

@@ -39,7 +39,8 @@ internal class MicroBench(private val options: BenchOptions, private val report:
                         .forks(1)
                         .warmupIterations(warmups).warmupTime(TimeValue.milliseconds(options.microIteration.inWholeMilliseconds))
                         .measurementIterations(measured).measurementTime(TimeValue.milliseconds(options.microIteration.inWholeMilliseconds))
-                        .jvmArgsAppend(
+                        // Only these: not the bench JVM's flags, which would load an agent the environment gives (JAVA_TOOL_OPTIONS) twice.
+                        .jvmArgs(
                             "-Drtcoord.bench.naming=${fixtures.address}",
                             "-Drtcoord.bench.component=${node.path.names.joinToString("/")}",
                             "-Drtcoord.bench.fixtures.pid=${fixtures.pid}",

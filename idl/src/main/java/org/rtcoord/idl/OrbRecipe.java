@@ -31,12 +31,16 @@ public final class OrbRecipe {
     // The deadline of every call, kept by the waiting thread itself. A RELATIVE_RT_TIMEOUT policy would
     // do the same at three times the cost per call: JacORB arms a timer for each request.
     properties.setProperty("jacorb.connection.client.pending_reply_timeout", timeout);
-    // One pool of request threads for every POA of the ORB, large enough for every caller a tree or a
-    // bench keeps in flight (32 each) with room to spare: an exhausted pool queues requests behind it
-    // and warns once per request.
+    // One pool of request threads for every POA of the ORB, all started with the first request. JacORB
+    // starts a missing thread while holding the pool's lock, which every thread that finished a request
+    // needs to go back to the pool: under load the pool emptied itself, started threads up to the
+    // limit and warned "thread pool exhausted" for every request (a fixture serving 1000 components:
+    // 104 of 128 request threads blocked returning to the pool). Started at once, none is ever started
+    // under that lock. 64: a tree keeps at most 32 calls in flight (TreeConfig.concurrency), and a
+    // component's hung execution context holds a thread per call until the caller's deadline.
     properties.setProperty("jacorb.poa.thread_pool_shared", "on");
-    properties.setProperty("jacorb.poa.thread_pool_min", "4");
-    properties.setProperty("jacorb.poa.thread_pool_max", "128");
+    properties.setProperty("jacorb.poa.thread_pool_min", "64");
+    properties.setProperty("jacorb.poa.thread_pool_max", "64");
     // Requests beyond what the threads take wait for room rather than failing TRANSIENT: a busy ORB
     // answers late, it never refuses. Observer hints, which a single thread takes in order, would
     // otherwise be lost (a oneway sender never sees the TRANSIENT).

@@ -1,6 +1,5 @@
 package org.rtcoord.internal.events
 
-import kotlinx.coroutines.Job
 import org.rtcoord.internal.TreeCore
 import kotlin.time.Duration
 
@@ -16,7 +15,7 @@ internal class MonitorTimers(private val core: TreeCore, private val tick: (done
         private set
 
     private val member = PollSchedule.Member { done -> if (!tick(done)) done() }
-    private var watchdog: Job? = null
+    private var watchdog: Pair<Duration, () -> Unit>? = null
 
     /** When the last heartbeat arrived, in [now]'s milliseconds. */
     @Volatile var heardAt: Long = now()
@@ -36,10 +35,12 @@ internal class MonitorTimers(private val core: TreeCore, private val tick: (done
 
     /** Checks, every half [heartbeat], whether a beat is overdue; no more when null. */
     fun watch(heartbeat: Duration?) {
-        watchdog?.cancel()
+        watchdog?.let { (period, overdue) -> core.watcher.watchdogs.remove(period, overdue) }
         watchdog = heartbeat?.let {
             val beat = it.inWholeMilliseconds
-            core.scope.launchTicks(it / 2) { if (now() - heardAt >= beat) check() }
+            val overdue = { if (now() - heardAt >= beat) check() }
+            core.watcher.watchdogs.add(it / 2, overdue)
+            it / 2 to overdue
         }
     }
 

@@ -9,6 +9,8 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Semaphore
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicBoolean
+import kotlin.coroutines.CoroutineContext
+import kotlin.coroutines.EmptyCoroutineContext
 import kotlin.time.Duration
 import kotlin.time.DurationUnit
 import kotlin.time.TimeSource
@@ -20,7 +22,8 @@ import kotlin.time.TimeSource
  * is then read at the same, lower rate, and [slow] is told once (after [SLOW_ROUNDS] slow rounds in a row)
  * what that rate is. Ticks a round could
  * not serve in time count as [missed] (a member whose previous read still waits, a hung component, is
- * passed over in that round rather than holding the others up).
+ * passed over in that round rather than holding the others up). Its rounds run in [context]: on the
+ * dispatcher the members read on, a tick and its read pass from one to the other without waking a thread.
  */
 internal class PollSchedule(
     scope: CoroutineScope,
@@ -29,6 +32,7 @@ internal class PollSchedule(
     private val missed: (Long) -> Unit,
     private val slow: (members: Int, achieved: Duration) -> Unit,
     private val time: TimeSource = TimeSource.Monotonic,
+    context: CoroutineContext = EmptyCoroutineContext,
 ) {
     /** One polled component: [tick] asks it to read, and it calls `done` once the read has ended (or failed). */
     fun interface Member {
@@ -44,11 +48,12 @@ internal class PollSchedule(
     private val permits = Semaphore(inFlight)
     private var warned = false
     private var overdue = 0.0
-    /** Rounds in a row that overran, and how long they took together. */
+    /** Rounds in a row that overran with as many members, and how long they took together. */
     private var slowRounds = 0
     private var slowTime = Duration.ZERO
+    private var lastMembers = 0
 
-    private val rounds: Job = scope.launch {
+    private val rounds: Job = scope.launch(context) {
         while (isActive) {
             val members = slots.toList()
             if (members.isEmpty()) {
@@ -101,7 +106,9 @@ internal class PollSchedule(
         val late = overdue.toLong()
         overdue -= late
         if (late + passedOver > 0) missed(late + passedOver)
-        if (took <= period * SLOW) {
+        // Only a schedule that stays slow with the same members says so: not one still being filled.
+        if (took <= period * SLOW || members.size != lastMembers) {
+            lastMembers = members.size
             slowRounds = 0
             slowTime = Duration.ZERO
             return
@@ -118,8 +125,8 @@ internal class PollSchedule(
         /** How much longer than its period a round may take before the schedule says it cannot keep up. */
         const val SLOW = 1.2
 
-        /** Slow rounds in a row that make it say so: one slow round is a hiccup (a collection, a new member's first read). */
-        const val SLOW_ROUNDS = 3
+        /** Slow rounds in a row that make it say so: a few slow rounds are a hiccup (a collection, the JIT warming up), and the rate said is their mean. */
+        const val SLOW_ROUNDS = 10
     }
 }
 

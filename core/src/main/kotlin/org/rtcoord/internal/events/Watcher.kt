@@ -47,6 +47,9 @@ internal class Watcher(private val core: TreeCore) {
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
     private val polls = HashMap<Duration, PollSchedule>()
 
+    /** The heartbeat watchdogs of every component watched by push. */
+    val watchdogs = Watchdogs(core.scope)
+
     /**
      * Delivers the events of [types] (all when null) from [target] to [handler]: a component's own
      * events, or for a directory its listing's events and those of every component below it, including
@@ -139,12 +142,13 @@ internal class Watcher(private val core: TreeCore) {
     fun poll(period: Duration, member: PollSchedule.Member) {
         synchronized(polls) {
             polls.getOrPut(period) {
-                PollSchedule(core.scope, period, POLLS_IN_FLIGHT, { core.missedPollTicks.addAndGet(it) }, slow = { members, achieved ->
+                val slow = { members: Int, achieved: Duration ->
                     log.warn(
                         "polling {} components every {} cannot keep up: each is read every {} ({}) instead",
                         members, period, achieved.inWholeMilliseconds.milliseconds, achieved.asRate(),
                     )
-                })
+                }
+                PollSchedule(core.scope, period, POLLS_IN_FLIGHT, { core.missedPollTicks.addAndGet(it) }, slow, context = core.remote.dispatcher)
             }.add(member)
         }
     }
@@ -219,15 +223,17 @@ internal class Watcher(private val core: TreeCore) {
         stopping.forEach { it.awaitStopped(core.config.callTimeout + 1.seconds) }
         synchronized(listings) { listings.values.forEach(ListingMonitor::stop); listings.clear() }
         synchronized(polls) { polls.values.forEach(PollSchedule::stop); polls.clear() }
+        watchdogs.close()
         reporters.forEach(EventSink::close)
     }
 
     private companion object {
         /**
-         * Poll reads pending at once, whatever the number of components: measured with `scripts/bench`
-         * (bench/README.md), more only queue up in the ORBs and cost more CPU per read.
+         * Poll reads pending at once, whatever the number of components. Measured polling 1000 fixtures at
+         * 10 Hz (bench/README.md, "where the time goes"): 2 to 4 in flight read as many components a second
+         * as 32 for less CPU per read (96 against 118 us); 16 made JacORB's request pool thrash.
          */
-        const val POLLS_IN_FLIGHT = 8
+        const val POLLS_IN_FLIGHT = 4
 
         /** Events a read of the lifecycle states alone can produce. */
         val STATE_EVENTS = setOf(
