@@ -2,6 +2,7 @@ package org.rtcoord.internal.events
 
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.ExperimentalCoroutinesApi
+import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.test.TestScope
@@ -34,13 +35,13 @@ class PollScheduleTest {
     private fun TestScope.poll(count: Int, period: Duration, inFlight: Int, readTime: Duration, window: Duration): Run {
         var missed = 0L
         val warnings = mutableListOf<Pair<Int, Duration>>()
-        val reads = CoroutineScope(coroutineContext + kotlinx.coroutines.Job())
+        val reads = CoroutineScope(coroutineContext + Job())
         val schedule = PollSchedule(backgroundScope, period, inFlight, { missed += it }, { members, achieved -> warnings += members to achieved }, testScheduler.timeSource)
         val components = List(count) { Component(reads, readTime) { testScheduler.currentTime } }
         components.forEach(schedule::add)
         testScheduler.advanceTimeBy(window)
         schedule.stop()
-        reads.coroutineContext[kotlinx.coroutines.Job]!!.cancel()
+        reads.coroutineContext[Job]!!.cancel()
         return Run(components, missed, warnings)
     }
 
@@ -79,7 +80,7 @@ class PollScheduleTest {
     @Test
     fun `a component whose read hangs is passed over without holding the others up`() = runTest {
         var missed = 0L
-        val reads = CoroutineScope(coroutineContext + kotlinx.coroutines.Job())
+        val reads = CoroutineScope(coroutineContext + Job())
         val schedule = PollSchedule(backgroundScope, 100.milliseconds, 8, { missed += it }, { _, _ -> }, testScheduler.timeSource)
         val hung = object : PollSchedule.Member {
             var ticks = 0
@@ -90,7 +91,7 @@ class PollScheduleTest {
         healthy.forEach(schedule::add)
         testScheduler.advanceTimeBy(5.seconds)
         schedule.stop()
-        reads.coroutineContext[kotlinx.coroutines.Job]!!.cancel()
+        reads.coroutineContext[Job]!!.cancel()
 
         assertEquals(1, hung.ticks)
         healthy.forEach { assertTrue(it.reads.size in 49..50, "reads: ${it.reads.size}") }
