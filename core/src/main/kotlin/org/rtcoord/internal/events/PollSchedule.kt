@@ -20,10 +20,10 @@ import kotlin.time.TimeSource
  * their reads spread evenly over the period (member i of n at i/n of it) rather than all at once, with at
  * most [inFlight] reads pending. When the reads cannot keep up, a round simply takes longer: every member
  * is then read at the same, lower rate, and [slow] is told once (after [SLOW_ROUNDS] slow rounds in a row)
- * what that rate is. Ticks a round could
- * not serve in time count as [missed] (a member whose previous read still waits, a hung component, is
- * passed over in that round rather than holding the others up). Its rounds run in [context]: on the
- * dispatcher the members read on, a tick and its read pass from one to the other without waking a thread.
+ * what that rate is. Ticks a round could not serve in time count as [missed] (a member whose previous
+ * read still waits, a hung component, is passed over in that round rather than holding the others up).
+ * Its rounds run in [context]: on the dispatcher the members read on, a tick and its read pass from one
+ * to the other without waking a thread.
  */
 internal class PollSchedule(
     scope: CoroutineScope,
@@ -48,6 +48,7 @@ internal class PollSchedule(
     private val permits = Semaphore(inFlight)
     private var warned = false
     private var overdue = 0.0
+
     /** Rounds in a row that overran with as many members, and how long they took together. */
     private var slowRounds = 0
     private var slowTime = Duration.ZERO
