@@ -33,9 +33,9 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     }
 
     /**
-     * How many poll ticks the tree missed since it was created: ticks that came while the component's
-     * previous tick was still waiting to be served, so one read stood for several periods. Nonzero means
-     * the tree polls more than it can read at the periods asked for.
+     * How many poll ticks the tree missed since it was created: reads due at the periods asked for that
+     * it could not make in time. When it cannot keep up, it reads every polled component at the same,
+     * lower rate (and logs that rate once), so the missed ticks are spread evenly over the components.
      */
     public val missedPollTicks: Long get() = core.missedPollTicks.get()
 

@@ -16,6 +16,7 @@ internal class Bench(private val options: BenchOptions, private val installation
         for (benchmark in options.benchmarks) {
             try {
                 when (benchmark) {
+                    Benchmark.MICRO -> MicroBench(options, report).run()
                     Benchmark.DISCOVERY -> DiscoveryBench(options, installation, report).run()
                     Benchmark.REACTION -> ReactionBench(options, report).run()
                     Benchmark.MONITORING -> MonitoringBench(options, report).run()

@@ -6,6 +6,7 @@ import kotlin.time.Duration.Companion.seconds
 
 /** The benchmarks, by the names `--only` takes, in the order a run does them. */
 internal enum class Benchmark(val label: String) {
+    MICRO("micro"),
     DISCOVERY("discovery"),
     REACTION("reaction"),
     MONITORING("monitoring"),
@@ -45,6 +46,10 @@ internal data class BenchOptions(
     val profileSize: Int,
     /** Timed restores of each kind. */
     val profileRepetitions: Int,
+    /** JMH iterations of each microbenchmark: warm-up, measured. */
+    val microIterations: Pair<Int, Int>,
+    /** How long one JMH iteration runs. */
+    val microIteration: Duration,
     /** Whether to time the coordinator scripts (round trip, cached script start): they compile the script once. */
     val scripts: Boolean,
     val seed: Long = 9,
@@ -55,7 +60,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: discovery, reaction, monitoring, roundtrip, memory, startup, profile
+  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile
   --seconds S   the monitoring window (default 60, quick 10)"""
 
         /** What issue 9 asks for: N up to 1000 (10,000 for memory), 60 s monitoring windows. */
@@ -78,6 +83,8 @@ in the same run). Results are printed, never stored.
             startupRepetitions = 10,
             profileSize = 200,
             profileRepetitions = 10,
+            microIterations = 5 to 5,
+            microIteration = 2.seconds,
             scripts = true,
         )
 
@@ -97,6 +104,8 @@ in the same run). Results are printed, never stored.
             floorCalls = 1000 to 10_000,
             startupRepetitions = 3,
             profileRepetitions = 3,
+            microIterations = 4 to 3,
+            microIteration = 1.seconds,
         )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
@@ -118,6 +127,8 @@ in the same run). Results are printed, never stored.
             startupRepetitions = 1,
             profileSize = 10,
             profileRepetitions = 1,
+            microIterations = 1 to 1,
+            microIteration = 200.milliseconds,
             scripts = false,
         )
 

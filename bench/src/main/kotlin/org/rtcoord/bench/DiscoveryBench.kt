@@ -124,7 +124,11 @@ internal class DiscoveryBench(private val options: BenchOptions, private val ins
     private fun reportFloor(floor: DiscoveryFloor) {
         report.section("discovery floor: N x loopback round trip of one profile read / achieved concurrency")
         report.row("get_component_profile round trip, one at a time", floor.roundTrip)
-        report.value("achieved concurrency (${floor.threads} callers)", floor.concurrency, "calls", "${figure(floor.callsPerSecond)} profile reads/s")
+        report.value("achieved concurrency (${floor.threads} callers)", floor.concurrency, "calls", "${figure(floor.callsPerSecond)} profile reads/s; target: at least 1.5")
+        val single = floor.byCallers.getValue(1)
+        for ((callers, perSecond) in floor.byCallers) {
+            report.value("profile reads/s, $callers callers", perSecond, "calls/s", "${figure(perSecond / single)}x one caller")
+        }
         for ((n, measured) in library) {
             val estimate = floor.estimate(n)
             report.value("floor N=$n", estimate * 1000, "ms", "library median is ${figure(measured.median / estimate)}x the floor")

@@ -20,7 +20,7 @@ import java.util.concurrent.atomic.AtomicInteger
  * such reads overlap when [threads] callers issue them at once ([concurrency] = throughput x round trip).
  * Discovering N components cannot take less than N profile reads at that rate.
  */
-internal class DiscoveryFloor(val roundTrip: Samples, val threads: Int, val callsPerSecond: Double) {
+internal class DiscoveryFloor(val roundTrip: Samples, val threads: Int, val callsPerSecond: Double, val byCallers: Map<Int, Double>) {
     val concurrency: Double get() = callsPerSecond * roundTrip.median / 1e6
 
     /**
@@ -46,9 +46,13 @@ internal class DiscoveryFloor(val roundTrip: Samples, val threads: Int, val call
                 }
                 concurrently(refs, threads, parallel / 10)
                 val elapsed = concurrently(refs, threads, parallel)
-                return DiscoveryFloor(Samples(roundTrips, "us"), threads, parallel / (elapsed / 1e9))
+                // Throughput by callers in flight: where adding callers stops paying (a per-endpoint limit).
+                val byCallers = CALLERS.associateWith { callers -> parallel / 2 / (concurrently(refs, callers, parallel / 2) / 1e9) }
+                return DiscoveryFloor(Samples(roundTrips, "us"), threads, parallel / (elapsed / 1e9), byCallers)
             }
         }
+
+        private val CALLERS = listOf(1, 2, 4, 8, 16)
 
         /** [calls] profile reads spread over [refs] by [threads] callers; nanoseconds. */
         private suspend fun concurrently(refs: List<RTObject>, threads: Int, calls: Int): Long {

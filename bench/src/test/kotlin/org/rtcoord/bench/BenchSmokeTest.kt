@@ -19,7 +19,7 @@ class BenchSmokeTest {
         println(printed)
 
         val sections = listOf(
-            "discovery, whole process, N=10", "discovery, library in a warm JVM, N=10", "discovery floor",
+            "one call and one notification", "discovery, whole process, N=10", "discovery, library in a warm JVM, N=10", "discovery floor",
             "reaction:", "monitoring cost:", "coordinator round trip:", "memory:", "start-up, whole processes", "start-up breakdown",
             "profile restore, N=10",
         )

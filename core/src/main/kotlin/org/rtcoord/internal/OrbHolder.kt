@@ -1,7 +1,7 @@
 package org.rtcoord.internal
 
 import org.omg.CORBA.ORB
-import java.util.Properties
+import org.rtcoord.idl.OrbRecipe
 import kotlin.time.Duration
 
 /**
@@ -38,24 +38,8 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
             }
         }
 
-        fun jacorbProperties(listenAddress: String, callTimeout: Duration) = Properties().apply {
-            setProperty("org.omg.CORBA.ORBClass", "org.jacorb.orb.ORB")
-            setProperty("org.omg.CORBA.ORBSingletonClass", "org.jacorb.orb.ORBSingleton")
-            // Binds the listener to this address alone, and it is the only one the references carry.
-            setProperty("OAIAddr", listenAddress)
-            // A refused connection fails at once (default: five retries, 2.5 s); a host that never completes
-            // the TCP handshake fails at the call deadline instead of after 90 s.
-            setProperty("jacorb.retries", "0")
-            setProperty("jacorb.connection.client.connect_timeout", callTimeout.inWholeMilliseconds.toString())
-            // The deadline of every call. A RELATIVE_RT_TIMEOUT policy would do the same at three times the
-            // cost per call (JacORB arms a timer for each request): measured 380 us against 115 us on loopback.
-            setProperty("jacorb.connection.client.pending_reply_timeout", callTimeout.inWholeMilliseconds.toString())
-            setProperty("jacorb.iiop.enable_loopback", "off")
-            // Observer hints queue up behind the one thread that takes them, in order. A full queue would
-            // reject the next ones (TRANSIENT, which a oneway sender never sees): a lost transition. Waiting
-            // for room slows the senders down instead.
-            setProperty("jacorb.poa.queue_wait", "on")
-            setProperty("jacorb.poa.queue_max", "1000")
-        }
+        /** rtcoord's one ORB recipe ([OrbRecipe], shared with the fixtures) on [listenAddress], any port. */
+        fun jacorbProperties(listenAddress: String, callTimeout: Duration) =
+            OrbRecipe.properties(listenAddress, 0, callTimeout.inWholeMilliseconds)
     }
 }

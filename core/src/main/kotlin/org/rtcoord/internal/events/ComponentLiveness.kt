@@ -53,9 +53,9 @@ internal class ComponentLiveness(now: Long) {
 
     private var lastSign = now
 
-    /** A hint arrived at [now]: the component lives, though only a read can bring it back from [State.UNREACHABLE]. */
+    /** A hint arrived at [now] (a time earlier than the last sign changes nothing): the component lives, though only a read can bring it back from [State.UNREACHABLE]. */
     fun hinted(now: Long, finalize: Boolean = false) {
-        lastSign = now
+        lastSign = maxOf(lastSign, now)
         if (finalize) finalizing = true
     }
 

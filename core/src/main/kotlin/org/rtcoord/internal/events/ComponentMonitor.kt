@@ -1,7 +1,6 @@
 package org.rtcoord.internal.events
 
 import kotlinx.coroutines.CompletableDeferred
-import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.async
 import kotlinx.coroutines.channels.Channel
@@ -13,16 +12,13 @@ import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
-import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
-import org.rtcoord.StateChanged
 import org.rtcoord.UnreachableException
 import org.rtcoord.WatchMethod
-import org.rtcoord.WatchMethodChanged
 import org.rtcoord.WatchMode
 import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
@@ -37,13 +33,10 @@ import kotlin.time.Duration.Companion.seconds
  * Watches one component for every registration interested in it, with one pipeline whatever the
  * source: an observer hint, a poll tick or a liveness check only asks the monitor to read the component
  * again; events are the differences between consecutive reads, lifecycle states reconciled with the
- * hints by a [StateTracker] per execution context. One coroutine does all of it, in order, so the
- * component's events come out in the order they happened; delivery to handlers is the sinks' job.
- *
- * It is longer than most files here because it is where reads, hints, timers and the observer meet, in
- * that one coroutine. What has states of its own lives apart and is tested alone: whether the component
- * answers ([ComponentLiveness]), its lifecycle per context ([StateTracker]), its observer
- * ([ObserverLink]) and how it is watched ([decideWatchMethod]).
+ * hints per execution context ([ContextStates]). One coroutine does all of it, in order, so the
+ * component's events come out in the order they happened; delivery to handlers is the sinks' job. What
+ * has states of its own lives apart: whether it answers ([ComponentLiveness]), its observer
+ * ([ObserverLink]), its timers ([MonitorTimers]) and how it is watched ([decideWatchMethod]).
  */
 internal class ComponentMonitor(
     private val core: TreeCore,
@@ -51,26 +44,18 @@ internal class ComponentMonitor(
     val node: ComponentNode,
     private val ended: (ComponentMonitor) -> Unit,
 ) {
-    /**
-     * One registration's needs: [configuration] when it wants configuration events, [statesOnly] when it
-     * wants nothing but lifecycle and liveness events (then a poll tick reads only the states).
-     */
-    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean, val statesOnly: Boolean) {
-        /** How the component is watched, as this registration was last told; owned by the monitor's coroutine. */
-        var told: WatchMethod? = null
-    }
-
     private sealed interface Work
     private class Received(val hint: Hint) : Work
     private object Read : Work
-    private object Tick : Work
+    /** A poll tick; [done] tells the tree's [PollSchedule] once it has been served. */
+    private class Tick(val done: () -> Unit) : Work
     private object Liveness : Work
     /** Registrations changed; [done] completes once the monitor watches as they ask. */
     private class Reconfigure(val done: CompletableDeferred<Unit>? = null) : Work
 
     private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
     private val subject = node.path.toString()
-    private val registrations = CopyOnWriteArrayList<Registration>()
+    private val registrations = CopyOnWriteArrayList<MonitorRegistration>()
     private val work = Channel<Work>(Channel.UNLIMITED)
 
     /** How the component is watched, once decided; set through [Watcher.announce]. */
@@ -78,27 +63,26 @@ internal class ComponentMonitor(
 
     // Owned by the worker coroutine.
     private var last: ComponentSnapshot? = null
-    private val trackers = HashMap<Int, StateTracker>()
+    private val states = ContextStates(node)
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
-    private var poller: Job? = null
-    private var pollPeriod: Duration? = null
-    private var watchdog: Job? = null
+    private val timers = MonitorTimers(core, { done -> work.trySend(Tick(done)).isSuccess }) { work.trySend(Liveness) }
 
     init {
-        core.scope.launch { run() }
+        // On the dispatcher of remote calls, which its reads then make without changing threads.
+        core.scope.launch(core.remote.dispatcher) { run() }
     }
 
     /** Adds [registration] and returns once the component was read and, if asked for, observed. */
-    suspend fun add(registration: Registration) {
+    suspend fun add(registration: MonitorRegistration) {
         registrations += registration
         val ready = CompletableDeferred<Unit>()
         if (work.trySend(Reconfigure(ready)).isSuccess) ready.await()
     }
 
     /** Removes [registration]; returns whether none is left (the caller then [stop]s the monitor). */
-    fun remove(registration: Registration): Boolean {
+    fun remove(registration: MonitorRegistration): Boolean {
         registrations -= registration
         work.trySend(Reconfigure())
         return registrations.isEmpty()
@@ -116,11 +100,8 @@ internal class ComponentMonitor(
      * the calling thread: the tree is closing. Call [stop] first.
      */
     fun awaitStopped(timeout: Duration) {
-        try {
-            stopped.get(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS)
-        } catch (e: TimeoutException) {
-            log.warn("{}: observer not detached within {}", subject, timeout)
-        }
+        val done = runCatching { stopped.get(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS) }
+        if (done.exceptionOrNull() is TimeoutException) log.warn("{}: observer not detached within {}", subject, timeout)
     }
 
     private suspend fun run() {
@@ -132,8 +113,7 @@ internal class ComponentMonitor(
             }
         } finally {
             withContext(NonCancellable) {
-                poller?.cancel()
-                watchdog?.cancel()
+                timers.stop()
                 link.detach()
                 ended(this@ComponentMonitor)
                 stopped.complete(Unit)
@@ -145,14 +125,11 @@ internal class ComponentMonitor(
         var read = false
         val hintedStates = HashSet<Int>()
         val reconfigurations = batch.filterIsInstance<Reconfigure>()
-        // Ticks that queued up behind a slow read are served by one read: all but one were missed.
-        val ticks = batch.count { it === Tick }
-        if (ticks > 1) core.missedPollTicks.addAndGet(ticks - 1L)
         for (item in batch) {
             when (item) {
                 is Received -> read = take(item.hint, hintedStates) || read
                 Read -> read = true
-                Tick -> if (registrations.all { it.statesOnly } && liveness.state == ComponentLiveness.State.ANSWERING) hintedStates += node.component.contexts.keys else read = true
+                is Tick -> if (registrations.all { it.statesOnly } && liveness.state == ComponentLiveness.State.ANSWERING) hintedStates += node.component.contexts.keys else read = true
                 Liveness -> read = checkLiveness() || read
                 is Reconfigure -> Unit
             }
@@ -166,6 +143,7 @@ internal class ComponentMonitor(
             }
         } finally {
             reconfigurations.forEach { it.done?.complete(Unit) }
+            batch.forEach { if (it is Tick) it.done() }
         }
     }
 
@@ -175,21 +153,13 @@ internal class ComponentMonitor(
      */
     private fun take(hint: Hint, hintedStates: MutableSet<Int>): Boolean {
         liveness.hinted(now(), finalize = hint.isFinalize)
-        when {
-            hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT || hint.kind == HintKind.OTHER -> return false
+        return when {
+            hint.isHeartbeat || hint.kind == HintKind.OTHER -> false
             // The read this asks for finds the component gone, and it is finalized.
-            hint.isFinalize -> Unit
-            hint.kind == HintKind.RTC_STATUS -> {
-                // A hint that names no state, or a context the component is not known to be in, is no
-                // transition: only reading the component tells what, if anything, happened.
-                val (state, handle) = hint.lifeCycle() ?: return true
-                val tracker = trackers[handle] ?: return true
-                tracker.hint(state)
-                hintedStates += handle
-                return false
-            }
+            hint.isFinalize -> true
+            hint.kind == HintKind.RTC_STATUS -> states.hinted(hint)?.also { hintedStates += it } == null
+            else -> true
         }
-        return true
     }
 
     /** Reads only the states of the contexts [handles] and reconciles them with the hints. */
@@ -198,12 +168,11 @@ internal class ComponentMonitor(
         val contexts = node.component.contexts
         // Only a whole read brings a silent or unreachable component back, observer and all.
         if (handles.any { it !in contexts } || liveness.state != ComponentLiveness.State.ANSWERING) return readAndPublish()
+        suspend fun state(handle: Int) = LifeCycle.of(core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) })
         val states = try {
-            coroutineScope {
-                handles.associateWith { handle ->
-                    async { LifeCycle.of(core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) }) }
-                }.mapValues { it.value.await() }
-            }
+            // One context, the common case, is read without a coroutine per read.
+            handles.singleOrNull()?.let { mapOf(it to state(it)) }
+                ?: coroutineScope { handles.associateWith { async { state(it) } }.mapValues { it.value.await() } }
         } catch (e: RtcException) {
             failed(e)
             return
@@ -217,24 +186,14 @@ internal class ComponentMonitor(
 
     /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read where hints and reads disagree. */
     private fun stateEvents(snapshot: ComponentSnapshot): List<RtcEvent> {
-        val previous = last
-        val events = mutableListOf<RtcEvent>()
-        for (context in snapshot.contexts) {
-            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
-            tracker.reconcile(context.state, now(), GRACE_MILLIS, hintsExpected = link.observer != null).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
-        }
-        trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
-        if (trackers.values.any { it.awaitingConfirmation }) {
-            core.scope.launch {
-                delay(GRACE_MILLIS)
-                work.trySend(Read)
-            }
-        }
+        val events = states.read(last, snapshot, now(), GRACE_MILLIS, hintsExpected = link.observer != null)
+        if (states.awaitingConfirmation) core.scope.launch { delay(GRACE_MILLIS); work.trySend(Read) }
         return events
     }
 
     /** Whether the component must be read: it is probed while unreachable, and read once it went silent, which is announced. */
     private fun checkLiveness(): Boolean {
+        liveness.hinted(timers.heardAt)
         if (liveness.state == ComponentLiveness.State.UNREACHABLE) return true
         val limit = pushRegistration()?.options?.takeIf { link.observer != null }?.let { it.heartbeat * it.missedBeats }
         val lost = liveness.checked(now(), limit?.inWholeMilliseconds) ?: return false
@@ -244,8 +203,7 @@ internal class ComponentMonitor(
 
     private suspend fun reconfigure() {
         if (registrations.isEmpty()) {
-            poller?.cancel().also { poller = null; pollPeriod = null }
-            watchdog?.cancel().also { watchdog = null }
+            timers.stop()
             link.detach()
             return
         }
@@ -256,27 +214,27 @@ internal class ComponentMonitor(
             attachment = if (liveness.state == ComponentLiveness.State.UNREACHABLE) {
                 Attachment.Failed("it does not answer")
             } else {
-                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat) { hint -> work.trySend(Received(hint)) }
-                    .also { if (it is Attachment.Attached) liveness.hinted(now()) }
+                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat, ::received)
+                    .also { if (it is Attachment.Attached) liveness.hinted(now()).also { timers.heard() } }
             }
             // A change between that read and the attachment sent its hint to nobody: read once more.
             if (link.observer != null) readAndPublish()
         }
         val method = decideWatchMethod(registrations.map { it.options }, attachment)
-        schedulePolling(method?.pollPeriod)
-        announce(method)
-        watchdog?.cancel()
-        watchdog = push?.let { core.scope.launchTicks(it.options.heartbeat / 2) { work.trySend(Liveness) } }
+        timers.poll(method?.pollPeriod)
+        if (method != null) {
+            if (method != this.method) log.debug("{}: watched by {}", subject, method)
+            core.watcher.announce(this, method, registrations)
+        }
+        timers.watch(push?.options?.heartbeat)
     }
 
-    private fun schedulePolling(period: Duration?) {
-        if (period == pollPeriod) return
-        poller?.cancel()
-        pollPeriod = period
-        poller = period?.let { core.scope.launchTicks(it) { work.trySend(Tick) } }
+    /** What the observer received; a heartbeat only says when (see [MonitorTimers]). */
+    private fun received(hint: Hint) {
+        if (hint.isHeartbeat) timers.heard() else work.trySend(Received(hint))
     }
 
-    private fun pushRegistration(): Registration? =
+    private fun pushRegistration(): MonitorRegistration? =
         registrations.filter { it.options.mode != WatchMode.POLL }.minByOrNull { it.options.heartbeat }
 
     private suspend fun readAndPublish() {
@@ -310,8 +268,7 @@ internal class ComponentMonitor(
         val changes = liveness.failed(now(), gone = unreachable && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable)
         if (ComponentLiveness.Change.Finalized in changes) {
             log.info("{}: finalized", subject)
-            poller?.cancel()
-            watchdog?.cancel()
+            timers.stop()
             link.drop()
             publish(listOf(ComponentFinalized(node)))
             return
@@ -320,21 +277,9 @@ internal class ComponentMonitor(
         log.info("{}; probing until it answers again", e.message)
         publish(changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, e) })
         // Keep probing while unreachable, even when only the observer watched it.
-        if (poller == null) schedulePolling(pushRegistration()?.options?.heartbeat)
+        if (timers.pollPeriod == null) timers.poll(pushRegistration()?.options?.heartbeat)
         // Its manager may have died with it, and with every other component it hosted.
-        core.watcher.componentSilent(node, pollPeriod ?: 1.seconds)
-    }
-
-    /** Tells each registration not yet told, and the tree's reporters when it changed, how the component is watched. */
-    private fun announce(method: WatchMethod?) {
-        if (method == null) return
-        if (method != this.method) log.debug("{}: watched by {}", subject, method)
-        core.watcher.announce(this, method)
-        for (registration in registrations) {
-            if (registration.told == method) continue
-            registration.sink.offer(WatchMethodChanged(node, registration.told, method))
-            registration.told = method
-        }
+        core.watcher.componentSilent(node, timers.pollPeriod ?: 1.seconds)
     }
 
     /** Where the registrations' events go. */
@@ -349,6 +294,6 @@ internal class ComponentMonitor(
         /** How long hints and reads may disagree before a read decides: hints late under load still count. */
         const val GRACE_MILLIS = 500L
 
-        fun now(): Long = System.nanoTime() / 1_000_000
+        fun now(): Long = MonitorTimers.now()
     }
 }

@@ -20,6 +20,9 @@ internal class Hint(val kind: HintKind, val text: String) {
         return state to handle
     }
 
+    /** Whether it is a heartbeat, the component's or an execution context's: a sign of life and nothing else. */
+    val isHeartbeat: Boolean get() = kind == HintKind.HEARTBEAT || kind == HintKind.EC_HEARTBEAT
+
     /** Whether it is OpenRTM's `FINALIZE:0`, sent when the component exits. */
     val isFinalize: Boolean get() = kind == HintKind.RTC_STATUS && parts()?.first == "FINALIZE"
 

@@ -1,0 +1,39 @@
+package org.rtcoord.internal.events
+
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.StateChanged
+
+/**
+ * One watched component's lifecycle in each of its execution contexts: a [StateTracker] per context
+ * handle, fed the lifecycle hints and the reads, and the [StateChanged] events they agree on.
+ */
+internal class ContextStates(private val node: ComponentNode) {
+    private val trackers = HashMap<Int, StateTracker>()
+
+    /** Whether hints and reads disagree somewhere, and a read after the grace period must decide. */
+    val awaitingConfirmation: Boolean get() = trackers.values.any { it.awaitingConfirmation }
+
+    /**
+     * Takes an RTC_STATUS [hint]; returns the handle of the context whose state is then worth reading,
+     * or null when the hint names no state or a context the component is not known to be in: only
+     * reading the whole component tells what, if anything, happened.
+     */
+    fun hinted(hint: Hint): Int? {
+        val (state, handle) = hint.lifeCycle() ?: return null
+        val tracker = trackers[handle] ?: return null
+        tracker.hint(state)
+        return handle
+    }
+
+    /** Reconciles each context's state in [snapshot] (read after [previous]) with the hints: the transitions to publish. */
+    fun read(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, graceMillis: Long, hintsExpected: Boolean): List<StateChanged> {
+        val events = mutableListOf<StateChanged>()
+        for (context in snapshot.contexts) {
+            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
+            tracker.reconcile(context.state, now, graceMillis, hintsExpected).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
+        }
+        trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
+        return events
+    }
+}

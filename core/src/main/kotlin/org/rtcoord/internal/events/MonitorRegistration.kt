@@ -1,0 +1,14 @@
+package org.rtcoord.internal.events
+
+import org.rtcoord.EventOptions
+import org.rtcoord.WatchMethod
+
+/**
+ * One registration's needs of a [ComponentMonitor]: [configuration] when it wants configuration events,
+ * [statesOnly] when it wants nothing but lifecycle and liveness events (then a poll tick reads only the
+ * states).
+ */
+internal class MonitorRegistration(val sink: EventSink, val options: EventOptions, val configuration: Boolean, val statesOnly: Boolean) {
+    /** How the component is watched, as this registration was last told; owned by the monitor's coroutine. */
+    var told: WatchMethod? = null
+}
