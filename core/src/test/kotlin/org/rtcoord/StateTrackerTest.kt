@@ -1,6 +1,8 @@
 package org.rtcoord
 
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertFalse
+import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle.ACTIVE
 import org.rtcoord.LifeCycle.ERROR
@@ -26,6 +28,24 @@ class StateTrackerTest {
         tracker.hint(INACTIVE)
         tracker.hint(ERROR)
         assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 1, grace, hintsExpected = true))
+    }
+
+    @Test
+    fun `a hinted deactivation waits for an abort's ERROR hint, then is published as it was`() {
+        val tracker = StateTracker(ACTIVE, abortWindowMillis = 25)
+        tracker.hint(INACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 100, grace, hintsExpected = true), "held")
+        assertTrue(tracker.holding)
+        tracker.hint(ERROR)
+        tracker.hint(INACTIVE)
+        assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 110, grace, hintsExpected = true), "an abort reset at once")
+
+        tracker.hint(ACTIVE)
+        assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true), "other transitions are not held")
+        tracker.hint(INACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 130, grace, hintsExpected = true))
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true), "a deactivation after the window")
+        assertFalse(tracker.holding)
     }
 
     @Test

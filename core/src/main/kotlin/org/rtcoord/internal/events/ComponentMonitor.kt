@@ -37,6 +37,8 @@ import kotlin.time.Duration.Companion.seconds
  * component's events come out in the order they happened; delivery to handlers is the sinks' job. What
  * has states of its own lives apart: whether it answers ([ComponentLiveness]), its observer
  * ([ObserverLink]), its timers ([MonitorTimers]) and how it is watched ([decideWatchMethod]).
+ *
+ * Over 300 lines: the order in which hints, reads and timers are taken is one piece of logic, kept whole.
  */
 internal class ComponentMonitor(
     private val core: TreeCore,
@@ -63,10 +65,12 @@ internal class ComponentMonitor(
 
     // Owned by the worker coroutine.
     private var last: ComponentSnapshot? = null
-    private val states = ContextStates(node)
+    private val states = ContextStates(node, ABORT_WINDOW_MILLIS)
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
+    /** Work that arrived during a read, other than the lifecycle hints taken at once: the next round's. */
+    private val carried = ArrayList<Work>()
     private val timers = MonitorTimers(core, { done -> work.trySend(Tick(done)).isSuccess }) { work.trySend(Liveness) }
 
     init {
@@ -106,8 +110,9 @@ internal class ComponentMonitor(
 
     private suspend fun run() {
         try {
-            for (first in work) {
-                val batch = mutableListOf(first)
+            while (true) {
+                val batch = ArrayList(carried).also { carried.clear() }
+                if (batch.isEmpty()) batch += work.receiveCatching().getOrNull() ?: break
                 while (true) batch += work.tryReceive().getOrNull() ?: break
                 handle(batch)
             }
@@ -186,9 +191,35 @@ internal class ComponentMonitor(
 
     /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read where hints and reads disagree. */
     private fun stateEvents(snapshot: ComponentSnapshot): List<RtcEvent> {
+        val late = takeLateStateHints()
         val events = states.read(last, snapshot, now(), GRACE_MILLIS, hintsExpected = link.observer != null)
-        if (states.awaitingConfirmation) core.scope.launch { delay(GRACE_MILLIS); work.trySend(Read) }
+        if (states.awaitingConfirmation) {
+            // A late hint may lead past what the read found: read again now rather than after the grace period.
+            if (late) carried += Read
+            core.scope.launch { delay(GRACE_MILLIS); work.trySend(Read) }
+        }
+        if (states.holding) core.scope.launch { delay(ABORT_WINDOW_MILLIS); work.trySend(Read) }
         return events
+    }
+
+    /**
+     * Takes the lifecycle hints that arrived while the component was being read, before reconciling: they
+     * tell of changes made before it answered. An abort hints INACTIVE then ERROR, and when a reset follows
+     * at once, a read between the two finds INACTIVE, which the first hint alone would confirm as a
+     * deactivation. Returns whether there were any.
+     */
+    private fun takeLateStateHints(): Boolean {
+        var taken = false
+        while (true) {
+            val item = work.tryReceive().getOrNull() ?: return taken
+            val hint = (item as? Received)?.hint
+            if (hint != null && hint.kind == HintKind.RTC_STATUS && !hint.isFinalize && states.hinted(hint) != null) {
+                liveness.hinted(now())
+                taken = true
+            } else {
+                carried += item
+            }
+        }
     }
 
     /** Whether the component must be read: it is probed while unreachable, and read once it went silent, which is announced. */
@@ -293,6 +324,9 @@ internal class ComponentMonitor(
     private companion object {
         /** How long hints and reads may disagree before a read decides: hints late under load still count. */
         const val GRACE_MILLIS = 500L
+
+        /** How long a hinted deactivation waits for the ERROR hint that would make it an abort. */
+        const val ABORT_WINDOW_MILLIS = 25L
 
         fun now(): Long = MonitorTimers.now()
     }

@@ -8,11 +8,14 @@ import org.rtcoord.StateChanged
  * One watched component's lifecycle in each of its execution contexts: a [StateTracker] per context
  * handle, fed the lifecycle hints and the reads, and the [StateChanged] events they agree on.
  */
-internal class ContextStates(private val node: ComponentNode) {
+internal class ContextStates(private val node: ComponentNode, private val abortWindowMillis: Long) {
     private val trackers = HashMap<Int, StateTracker>()
 
     /** Whether hints and reads disagree somewhere, and a read after the grace period must decide. */
     val awaitingConfirmation: Boolean get() = trackers.values.any { it.awaitingConfirmation }
+
+    /** Whether a hinted deactivation is held somewhere, and a read after the abort window must publish it. */
+    val holding: Boolean get() = trackers.values.any { it.holding }
 
     /**
      * Takes an RTC_STATUS [hint]; returns the handle of the context whose state is then worth reading,
@@ -30,7 +33,7 @@ internal class ContextStates(private val node: ComponentNode) {
     fun read(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, graceMillis: Long, hintsExpected: Boolean): List<StateChanged> {
         val events = mutableListOf<StateChanged>()
         for (context in snapshot.contexts) {
-            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state) }
+            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state, abortWindowMillis) }
             tracker.reconcile(context.state, now, graceMillis, hintsExpected).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
         }
         trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())

@@ -11,17 +11,25 @@ import org.rtcoord.LifeCycle
  * not agree on within the grace period, counted from the first read that disagreed, is decided by the
  * read. So the published stream has no phantom transition, keeps every transition the hints reported and
  * the reads confirmed, and always ends in the real state.
+ *
+ * A hinted deactivation (ACTIVE to INACTIVE) is held for [abortWindowMillis] before it is published: an
+ * abort hints INACTIVE then ERROR, and when a reset follows at once, a read between the two hints finds
+ * INACTIVE too. The ERROR hint arriving within the window turns the pair into the abort it was.
  */
-internal class StateTracker(initial: LifeCycle) {
+internal class StateTracker(initial: LifeCycle, private val abortWindowMillis: Long = 0) {
     /** The last published state. */
     var confirmed: LifeCycle = initial
         private set
 
     private val hinted = ArrayList<LifeCycle>()
     private var disagreedSince: Long? = null
+    private var heldSince: Long? = null
 
     /** Whether hints and reads disagree, and a later read must decide. */
     val awaitingConfirmation: Boolean get() = disagreedSince != null
+
+    /** Whether a hinted deactivation is held, and a read after the abort window must publish it. */
+    val holding: Boolean get() = heldSince != null
 
     /** Takes a hinted state; duplicates and impossible transitions are ignored (the next read decides). */
     fun hint(state: LifeCycle) {
@@ -41,7 +49,13 @@ internal class StateTracker(initial: LifeCycle) {
             val since = disagreedSince ?: now.also { disagreedSince = it }
             if (now - since < graceMillis) return emptyList()
         }
-        val path = if (hinted.lastOrNull() == real) listOf(confirmed) + hinted else listOf(confirmed, real)
+        val hintedPath = hinted.lastOrNull() == real
+        val path = if (hintedPath) listOf(confirmed) + hinted else listOf(confirmed, real)
+        if (hintedPath && hintsExpected && path.takeLast(2) == listOf(LifeCycle.ACTIVE, LifeCycle.INACTIVE)) {
+            val since = heldSince ?: now.also { heldSince = it }
+            if (now - since < abortWindowMillis) return emptyList()
+        }
+        heldSince = null
         hinted.clear()
         disagreedSince = null
         confirmed = real
