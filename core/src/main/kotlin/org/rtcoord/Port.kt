@@ -8,6 +8,11 @@ import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.channels.BufferOverflow
+import kotlinx.coroutines.channels.awaitClose
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.buffer
+import kotlinx.coroutines.flow.callbackFlow
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.orFail
 import org.rtcoord.internal.toMap
@@ -120,6 +125,25 @@ public class Port internal constructor(
     private suspend fun owner(peer: PortService): ComponentObject? =
         runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
             ?.owner?.let { core.components.objectFor(it) }
+
+    /**
+     * Subscribes [listener] to this out-port's data and returns once it is subscribed. The tree taps the
+     * port as a connected in-port would (see [PortData] for what arrives): one tap per port, shared by
+     * every listener, whose connector (id and name starting `rtcoord-tap-`) shows in the port's
+     * connections while any listener is subscribed. Cancelling the last listener removes the tap, and so
+     * does closing the tree; a tree that died leaves its tap behind, and the next tree tapping the port
+     * removes it. Fails for a port that is not a data out-port, or that refuses the connection.
+     */
+    public suspend fun tap(listener: DataListener): Subscription = core.taps.subscribe(this, listener)
+
+    /**
+     * This out-port's samples while the flow is collected (see [tap]). A collector slower than the port
+     * loses the oldest samples beyond the [capacity] waiting for it, never the newest.
+     */
+    public fun data(capacity: Int = 64): Flow<PortData> = callbackFlow {
+        val subscription = tap { trySend(it) }
+        awaitClose { subscription.cancel() }
+    }.buffer(capacity, BufferOverflow.DROP_OLDEST)
 
     internal suspend fun reference(): PortService {
         component.component.ports[name]?.let { return it }

@@ -16,6 +16,7 @@ import org.rtcoord.ComponentSnapshot
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
+import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
@@ -175,6 +176,11 @@ internal class ComponentMonitor(
      */
     private fun take(hint: Hint, hintedStates: MutableSet<Int>): Boolean {
         liveness.hinted(now(), finalize = hint.isFinalize)
+        // Data flowing changes nothing a read would show.
+        hint.traffic()?.let { (port, outgoing) ->
+            publish(listOf(PortTraffic(node, port, outgoing)))
+            return false
+        }
         when {
             hint.kind == HintKind.HEARTBEAT || hint.kind == HintKind.EC_HEARTBEAT || hint.kind == HintKind.OTHER -> return false
             // The read this asks for finds the component gone, and it is finalized.
@@ -256,7 +262,7 @@ internal class ComponentMonitor(
             attachment = if (liveness.state == ComponentLiveness.State.UNREACHABLE) {
                 Attachment.Failed("it does not answer")
             } else {
-                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat) { hint -> work.trySend(Received(hint)) }
+                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat, trafficInterval()) { hint -> work.trySend(Received(hint)) }
                     .also { if (it is Attachment.Attached) liveness.hinted(now()) }
             }
             // A change between that read and the attachment sent its hint to nobody: read once more.
@@ -275,6 +281,10 @@ internal class ComponentMonitor(
         pollPeriod = period
         poller = period?.let { core.scope.launchTicks(it) { work.trySend(Tick) } }
     }
+
+    /** The shortest traffic interval a push registration asks for. */
+    private fun trafficInterval(): Duration =
+        registrations.filter { it.options.mode != WatchMode.POLL }.minOf { it.options.trafficInterval }
 
     private fun pushRegistration(): Registration? =
         registrations.filter { it.options.mode != WatchMode.POLL }.minByOrNull { it.options.heartbeat }

@@ -16,6 +16,7 @@ import org.rtcoord.ManagerReturned
 import org.rtcoord.Node
 import org.rtcoord.Overlap
 import org.rtcoord.ParameterChanged
+import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
@@ -188,7 +189,7 @@ internal class Watcher(private val core: TreeCore) {
         val STATE_EVENTS = setOf(
             StateChanged::class.java, HeartbeatLost::class.java, BecameZombie::class.java,
             Recovered::class.java, ComponentFinalized::class.java, WatchMethodChanged::class.java,
-            ManagerDied::class.java, ManagerReturned::class.java,
+            ManagerDied::class.java, ManagerReturned::class.java, PortTraffic::class.java,
         )
 
         val CONFIGURATION_EVENTS = setOf(
