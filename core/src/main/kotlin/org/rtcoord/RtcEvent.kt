@@ -33,7 +33,8 @@ public data class PortDisconnected(override val source: ComponentNode, val port:
 /**
  * Port [port] of the component sent ([outgoing]) or received data: OpenRTM-aist's `SEND:` and `RECEIVE:`
  * observer hints, which a component sends at most once per [EventOptions.trafficInterval] per port.
- * Only a component's observer tells this (a read cannot), so polled components send none.
+ * Only a component's observer tells this (a read cannot), so polled components send none. Data hints are
+ * many: only registrations that name this type (not a supertype such as [RtcEvent]) receive them.
  */
 public data class PortTraffic(override val source: ComponentNode, val port: String, val outgoing: Boolean) : RtcEvent()
 

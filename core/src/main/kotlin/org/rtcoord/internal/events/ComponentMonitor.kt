@@ -32,6 +32,7 @@ import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -54,9 +55,10 @@ internal class ComponentMonitor(
 ) {
     /**
      * One registration's needs: [configuration] when it wants configuration events, [statesOnly] when it
-     * wants nothing but lifecycle and liveness events (then a poll tick reads only the states).
+     * wants nothing but lifecycle and liveness events (then a poll tick reads only the states), [traffic]
+     * when it asked for [PortTraffic] by name (data hints are many: nobody gets them without asking).
      */
-    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean, val statesOnly: Boolean) {
+    class Registration(val sink: EventSink, val options: EventOptions, val configuration: Boolean, val statesOnly: Boolean, val traffic: Boolean = false) {
         /** How the component is watched, as this registration was last told; owned by the monitor's coroutine. */
         var told: WatchMethod? = null
     }
@@ -83,6 +85,8 @@ internal class ComponentMonitor(
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
+    /** The traffic interval the observer was attached with. */
+    private var attachedTraffic: Duration? = null
     private var poller: Job? = null
     private var pollPeriod: Duration? = null
     private var watchdog: Job? = null
@@ -178,7 +182,8 @@ internal class ComponentMonitor(
         liveness.hinted(now(), finalize = hint.isFinalize)
         // Data flowing changes nothing a read would show.
         hint.traffic()?.let { (port, outgoing) ->
-            publish(listOf(PortTraffic(node, port, outgoing)))
+            val event = PortTraffic(node, port, outgoing)
+            registrations.filter { it.traffic }.forEach { it.sink.offer(event) }
             return false
         }
         when {
@@ -258,12 +263,15 @@ internal class ComponentMonitor(
         readAndPublish()
         if (liveness.state == ComponentLiveness.State.FINALIZED) return
         val push = pushRegistration()
+        // Asking for data hints (or no longer) takes an observer attached with the new interval.
+        if (link.observer != null && attachedTraffic != trafficInterval()) link.detach()
         if (push != null && link.observer == null) {
             attachment = if (liveness.state == ComponentLiveness.State.UNREACHABLE) {
                 Attachment.Failed("it does not answer")
             } else {
-                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat, trafficInterval()) { hint -> work.trySend(Received(hint)) }
-                    .also { if (it is Attachment.Attached) liveness.hinted(now()) }
+                val traffic = trafficInterval()
+                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat, traffic) { hint -> work.trySend(Received(hint)) }
+                    .also { if (it is Attachment.Attached) { liveness.hinted(now()); attachedTraffic = traffic } }
             }
             // A change between that read and the attachment sent its hint to nobody: read once more.
             if (link.observer != null) readAndPublish()
@@ -282,9 +290,9 @@ internal class ComponentMonitor(
         poller = period?.let { core.scope.launchTicks(it) { work.trySend(Tick) } }
     }
 
-    /** The shortest traffic interval a push registration asks for. */
+    /** The shortest traffic interval a push registration that wants traffic asks for; an hour (next to none) when none does. */
     private fun trafficInterval(): Duration =
-        registrations.filter { it.options.mode != WatchMode.POLL }.minOf { it.options.trafficInterval }
+        registrations.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval } ?: NO_TRAFFIC
 
     private fun pushRegistration(): Registration? =
         registrations.filter { it.options.mode != WatchMode.POLL }.minByOrNull { it.options.heartbeat }
@@ -358,6 +366,9 @@ internal class ComponentMonitor(
     private companion object {
         /** How long hints and reads may disagree before a read decides: hints late under load still count. */
         const val GRACE_MILLIS = 500L
+
+        /** The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default. */
+        val NO_TRAFFIC = 1.hours
 
         fun now(): Long = System.nanoTime() / 1_000_000
     }

@@ -53,6 +53,7 @@ internal class Watcher(private val core: TreeCore) {
         val sink = EventSink(core.scope, { event -> types == null || types.any { it.isInstance(event) } }, options.overlap, handler)
         val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
+        val traffic = types != null && PortTraffic::class.java in types
         val releases = mutableListOf<() -> Unit>()
         val watched = HashSet<DirectoryNode>()
         // A component reached by two paths at once (its naming context, its manager) is included once;
@@ -66,7 +67,7 @@ internal class Watcher(private val core: TreeCore) {
                     val earlier = synchronized(included) { included.putIfAbsent(node.component, inclusion) }
                     if (earlier != null) return earlier.await()
                     try {
-                        val registration = ComponentMonitor.Registration(sink, options, configuration, statesOnly)
+                        val registration = ComponentMonitor.Registration(sink, options, configuration, statesOnly, traffic)
                         val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node) { live.remove(it) }.also { live += it } } }
                         monitor.add(registration)
                         synchronized(releases) { releases += { release(node.component, monitor, registration) } }
