@@ -13,6 +13,7 @@ internal enum class Benchmark(val label: String) {
     MEMORY("memory"),
     STARTUP("startup"),
     PROFILE("profile"),
+    DATA("data"),
 }
 
 /**
@@ -48,6 +49,10 @@ internal data class BenchOptions(
     /** Whether to time the coordinator scripts (round trip, cached script start): they compile the script once. */
     val scripts: Boolean,
     val seed: Long = 9,
+    /** How long the data benchmark counts at each rate, with its tap and without. */
+    val dataWindow: Duration = 10.seconds,
+    /** Silences timed at each threshold. */
+    val silenceRepetitions: Int = 5,
 ) {
     companion object {
         const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S]
@@ -55,7 +60,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: discovery, reaction, monitoring, roundtrip, memory, startup, profile
+  --only        some of: discovery, reaction, monitoring, roundtrip, memory, startup, profile, data
   --seconds S   the monitoring window (default 60, quick 10)"""
 
         /** What issue 9 asks for: N up to 1000 (10,000 for memory), 60 s monitoring windows. */
@@ -97,6 +102,8 @@ in the same run). Results are printed, never stored.
             floorCalls = 1000 to 10_000,
             startupRepetitions = 3,
             profileRepetitions = 3,
+            dataWindow = 5.seconds,
+            silenceRepetitions = 3,
         )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
@@ -119,6 +126,8 @@ in the same run). Results are printed, never stored.
             profileSize = 10,
             profileRepetitions = 1,
             scripts = false,
+            dataWindow = 1.seconds,
+            silenceRepetitions = 1,
         )
 
         /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */
