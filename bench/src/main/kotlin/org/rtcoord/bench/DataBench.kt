@@ -84,7 +84,7 @@ internal class DataBench(private val options: BenchOptions, private val report: 
                     if (samples.isEmpty()) return report.skipped("${figure(rate)} Hz", "no sample reached the tap")
                     val millis = Samples.millis(samples)
                     val received = samples.size / options.dataWindow.inWholeMilliseconds.times(1e-3)
-                    report.row("write to listener at ${figure(rate)} Hz", millis, "p50 ${figure(millis.percentile(50.0))} ms, p99 ${figure(millis.percentile(99.0))} ms; the fixture wrote ${figure(wrote)}/s, ${figure(received)}/s reached the tap (its "new" connector sends the newest)")
+                    report.row("write to listener at ${figure(rate)} Hz", millis, "p50 ${figure(millis.percentile(50.0))} ms, p99 ${figure(millis.percentile(99.0))} ms; the fixture wrote ${figure(wrote)}/s, ${figure(received)}/s reached the tap (its connector is of subscription type new: the newest sample, not a queue)")
                     report.value("CPU per sample at ${figure(rate)} Hz", (tappedCpu - idleCpu) / received * 1e6, "us", "tapped ${figure(tappedCpu * 100)} % of a core, untapped ${figure(idleCpu * 100)} %")
                 }
             }
