@@ -37,6 +37,8 @@ public enum class Overlap {
  * @property overlap the callback's policy for events arriving while it runs.
  * @property heartbeat the ComponentObserver heartbeat interval asked for.
  * @property missedBeats how many heartbeats may be missed before the component is presumed dead.
+ * @property trafficInterval the least time between two [PortTraffic] events of one port, as the observer
+ *   asks the component (`port_profile.send_event.min_interval`, `receive_event.min_interval`).
  *
  * Java callers write `new EventOptions()` for the defaults, or use a [Builder].
  */
@@ -48,6 +50,8 @@ public class EventOptions(
     @get:JvmSynthetic
     public val heartbeat: Duration = 1.seconds,
     public val missedBeats: Int = 3,
+    @get:JvmSynthetic
+    public val trafficInterval: Duration = 1.seconds,
 ) {
     /** The defaults: push where possible, else polling every second; events queued; a one-second heartbeat. */
     public constructor() : this(WatchMode.AUTO)
@@ -58,10 +62,14 @@ public class EventOptions(
     /** [heartbeat] in milliseconds, for Java callers. */
     public val heartbeatMillis: Long get() = heartbeat.inWholeMilliseconds
 
+    /** [trafficInterval] in milliseconds, for Java callers. */
+    public val trafficIntervalMillis: Long get() = trafficInterval.inWholeMilliseconds
+
     init {
         require(pollPeriod.isPositive()) { "pollPeriod must be positive, was $pollPeriod" }
         require(heartbeat.isPositive()) { "heartbeat must be positive, was $heartbeat" }
         require(missedBeats > 0) { "missedBeats must be positive, was $missedBeats" }
+        require(!trafficInterval.isNegative()) { "trafficInterval must not be negative, was $trafficInterval" }
     }
 
     /** Builds [EventOptions] step by step, for Java callers: `EventOptions.builder().mode(WatchMode.POLL).build()`. */
@@ -71,6 +79,7 @@ public class EventOptions(
         private var overlap = Overlap.QUEUE
         private var heartbeat: Duration = 1.seconds
         private var missedBeats = 3
+        private var trafficInterval: Duration = 1.seconds
 
         /** Sets [EventOptions.mode]. */
         public fun mode(mode: WatchMode): Builder = apply { this.mode = mode }
@@ -87,8 +96,11 @@ public class EventOptions(
         /** Sets [EventOptions.missedBeats]. */
         public fun missedBeats(beats: Int): Builder = apply { missedBeats = beats }
 
+        /** Sets [EventOptions.trafficInterval]. */
+        public fun trafficInterval(interval: java.time.Duration): Builder = apply { trafficInterval = interval.toKotlinDuration() }
+
         /** The options; fails as the constructor does on a bad value. */
-        public fun build(): EventOptions = EventOptions(mode, pollPeriod, overlap, heartbeat, missedBeats)
+        public fun build(): EventOptions = EventOptions(mode, pollPeriod, overlap, heartbeat, missedBeats, trafficInterval)
     }
 
     /** How Java callers get a [Builder]. */

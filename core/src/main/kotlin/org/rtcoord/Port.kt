@@ -1,9 +1,15 @@
 package org.rtcoord
 
+import RTC.PortService
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.channels.BufferOverflow
+import kotlinx.coroutines.channels.awaitClose
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.buffer
+import kotlinx.coroutines.flow.callbackFlow
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.PortCalls
 
@@ -75,6 +81,28 @@ public class Port internal constructor(
     private suspend fun refreshAfter(peers: List<ComponentObject>) = coroutineScope {
         (peers + component.component).distinct().forEach { peer -> launch { runCatching { peer.refresh(subject) } } }
     }
+
+    /**
+     * Subscribes [listener] to this out-port's data and returns once it is subscribed. The tree taps the
+     * port as a connected in-port would (see [PortData] for what arrives): one tap per port, shared by
+     * every listener, whose connector (id and name starting `rtcoord-tap-`) shows in the port's
+     * connections while any listener is subscribed. Cancelling the last listener removes the tap, and so
+     * does closing the tree; a tree that died leaves its tap behind, and the next tree tapping the port
+     * removes it. Fails for a port that is not a data out-port, or that refuses the connection.
+     */
+    public suspend fun tap(listener: DataListener): Subscription = component.core.taps.subscribe(this, listener)
+
+    /**
+     * This out-port's samples while the flow is collected (see [tap]). A collector slower than the port
+     * loses the oldest samples beyond the [capacity] waiting for it, never the newest.
+     */
+    public fun data(capacity: Int = 64): Flow<PortData> = callbackFlow {
+        val subscription = tap { trySend(it) }
+        awaitClose { subscription.cancel() }
+    }.buffer(capacity, BufferOverflow.DROP_OLDEST)
+
+    /** The port's object reference, as its component's last read found it. */
+    internal suspend fun reference(): PortService = calls.reference()
 
     private fun defaults(first: PortSnapshot): Map<String, String> = buildMap {
         if (first.kind == PortKind.DATA_IN || first.kind == PortKind.DATA_OUT) {

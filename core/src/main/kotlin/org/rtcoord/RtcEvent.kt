@@ -30,6 +30,14 @@ public data class PortConnected(override val source: ComponentNode, val port: St
 /** Port [port] of the component lost connection [connector]. */
 public data class PortDisconnected(override val source: ComponentNode, val port: String, val connector: ConnectorSnapshot) : RtcEvent()
 
+/**
+ * Port [port] of the component sent ([outgoing]) or received data: OpenRTM-aist's `SEND:` and `RECEIVE:`
+ * observer hints, which a component sends at most once per [EventOptions.trafficInterval] per port.
+ * Only a component's observer tells this (a read cannot), so polled components send none. Data hints are
+ * many: only registrations that name this type (not a supertype such as [RtcEvent]) receive them.
+ */
+public data class PortTraffic(override val source: ComponentNode, val port: String, val outgoing: Boolean) : RtcEvent()
+
 /** Parameter [name] of configuration set [set] changed from [old] to [new] (null: absent). */
 public data class ParameterChanged(override val source: ComponentNode, val set: String, val name: String, val old: String?, val new: String?) : RtcEvent()
 

@@ -47,7 +47,8 @@ class ApiGuardTest {
             "on", "subscribe",
             "events", "subscribe",
             "onWatching", "subscribeWatching",
-            "child", "node");
+            "child", "node",
+            "data", "tap");
 
     /** Kotlin-only by design: Java passes a {@code java.util.function.Predicate} to {@code JavaTree.find} instead. */
     private static final Set<String> KOTLIN_ONLY = Set.of("org.rtcoord.NodeFilters");

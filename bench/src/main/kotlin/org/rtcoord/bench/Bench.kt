@@ -24,6 +24,7 @@ internal class Bench(private val options: BenchOptions, private val installation
                     Benchmark.MEMORY -> MemoryBench(options, report).run()
                     Benchmark.STARTUP -> StartupBench(options, installation, report).run()
                     Benchmark.PROFILE -> ProfileBench(options, installation, report).run()
+                    Benchmark.DATA -> DataBench(options, report).run()
                 }
             } catch (e: Exception) {
                 report.skipped(benchmark.label, "failed: ${e.message ?: e.javaClass.simpleName}")

@@ -14,6 +14,7 @@ internal enum class Benchmark(val label: String) {
     MEMORY("memory"),
     STARTUP("startup"),
     PROFILE("profile"),
+    DATA("data"),
 }
 
 /**
@@ -53,6 +54,10 @@ internal data class BenchOptions(
     /** Whether to time the coordinator scripts (round trip, cached script start): they compile the script once. */
     val scripts: Boolean,
     val seed: Long = 9,
+    /** How long the data benchmark counts at each rate, with its tap and without. */
+    val dataWindow: Duration = 10.seconds,
+    /** Silences timed at each threshold. */
+    val silenceRepetitions: Int = 5,
 ) {
     companion object {
         const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S]
@@ -60,7 +65,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile
+  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data
   --seconds S   the monitoring window (default 60, quick 10)"""
 
         /** What issue 9 asks for: N up to 1000 (10,000 for memory), 60 s monitoring windows. */
@@ -106,6 +111,8 @@ in the same run). Results are printed, never stored.
             profileRepetitions = 3,
             microIterations = 4 to 3,
             microIteration = 1.seconds,
+            dataWindow = 5.seconds,
+            silenceRepetitions = 3,
         )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
@@ -130,6 +137,8 @@ in the same run). Results are printed, never stored.
             microIterations = 1 to 1,
             microIteration = 200.milliseconds,
             scripts = false,
+            dataWindow = 1.seconds,
+            silenceRepetitions = 1,
         )
 
         /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */

@@ -21,12 +21,13 @@ class BenchSmokeTest {
         val sections = listOf(
             "one call and one notification", "discovery, whole process, N=10", "discovery, library in a warm JVM, N=10", "discovery floor",
             "reaction:", "monitoring cost:", "coordinator round trip:", "memory:", "start-up, whole processes", "start-up breakdown",
-            "profile restore, N=10",
+            "profile restore, N=10", "data: tap of a TimedDoubleSeq(181)",
         )
         assertEquals(emptyList<String>(), sections.filter { section -> printed.lines().none { it.startsWith(section) } }, "missing sections")
         assertEquals(emptyList<String>(), printed.lines().filter { "failed:" in it }, "failed benchmarks")
         // A measured row has a count and a median: the library discovery ran its two repetitions.
         assertTrue(Regex("""rtcoord RtcTree\.create \+ refresh\s+2\s""").containsMatchIn(printed), "no library discovery row")
         assertTrue(Regex("""rtcoord SystemProfiles\.restore in a warm JVM\s+1\s""").containsMatchIn(printed), "no library restore row")
+        assertTrue(Regex("""silence noticed after 100 ms\s+1\s""").containsMatchIn(printed), "no silence detection row")
     }
 }

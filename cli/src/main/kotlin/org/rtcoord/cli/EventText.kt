@@ -15,6 +15,7 @@ import org.rtcoord.ManagerReturned
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
 import org.rtcoord.ParameterChanged
+import org.rtcoord.PortTraffic
 import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
 import org.rtcoord.Recovered
@@ -43,6 +44,7 @@ internal fun RtcEvent.what(): String = when (this) {
     is ComponentFinalized -> "finalized"
     is PortConnected -> "port $port connected (connector ${connector.name}, id ${connector.id})"
     is PortDisconnected -> "port $port disconnected (connector ${connector.name}, id ${connector.id})"
+    is PortTraffic -> "port $port ${if (outgoing) "sent" else "received"} data"
     is ParameterChanged -> "parameter $name in set $set: ${old ?: "(none)"} -> ${new ?: "(none)"}"
     is ConfigurationSetActivated -> "active configuration set: ${old ?: "(none)"} -> ${new ?: "(none)"}"
     is ConfigurationSetAdded -> "configuration set $id added"
@@ -75,6 +77,7 @@ private fun RtcEvent.fields(): Map<String, Any?> = when (this) {
     is ComponentFinalized -> emptyMap()
     is PortConnected -> mapOf("port" to port, "connector" to connector.id, "connectorName" to connector.name)
     is PortDisconnected -> mapOf("port" to port, "connector" to connector.id, "connectorName" to connector.name)
+    is PortTraffic -> mapOf("port" to port, "outgoing" to outgoing)
     is ParameterChanged -> mapOf("set" to set, "name" to name, "old" to old, "new" to new)
     is ConfigurationSetActivated -> mapOf("old" to old, "new" to new)
     is ConfigurationSetAdded -> mapOf("set" to id)
@@ -102,4 +105,4 @@ private fun WatchMethod.fields(): Map<String, Any?> = when (this) {
     is WatchMethod.Unwatched -> mapOf("method" to "unwatched", "reason" to reason)
 }
 
-private val TIMESTAMP: DateTimeFormatter = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS")
+internal val TIMESTAMP: DateTimeFormatter = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS")

@@ -69,6 +69,7 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "mgr" to { MgrCommand() },
     "del" to { DelCommand() },
     "watch" to { WatchCommand() },
+    "print" to { PrintCommand() },
     "graph" to { GraphCommand() },
     "serve" to { ServeCommand() },
     "help" to { HelpCommand() },

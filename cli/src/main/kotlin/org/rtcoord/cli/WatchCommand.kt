@@ -3,11 +3,13 @@ package org.rtcoord.cli
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
+import org.rtcoord.PortTraffic
 import org.rtcoord.RtcEvent
 import org.rtcoord.WatchMode
 
@@ -24,6 +26,7 @@ class WatchCommand : TreeCommand("watch") {
         "rtcoord watch /localhost/host.host_cxt/laser0.rtc" to "the laser's state, ports, configuration and contexts",
         "rtcoord watch /localhost/host.host_cxt --poll 200ms --for 1m" to "a whole context, polled five times a second, for a minute",
         "rtcoord --json watch /localhost/host.host_cxt | jq .event" to "one JSON object per line",
+        "rtcoord watch --data /localhost/host.host_cxt/laser0.rtc" to "the laser's events and the rate of its scans, every second",
     )
 
     private val paths by argument("PATH", help = "Components, naming contexts or managers.").multiple(required = true)
@@ -32,21 +35,33 @@ class WatchCommand : TreeCommand("watch") {
 
     private val duration by option("--for", metavar = "DURATION", help = "Stop after DURATION.").duration()
 
+    private val data by option(
+        "--data",
+        help = "Also watch the data: every second a line per data out-port with the rate it sends at (the tree taps each " +
+            "one), and the ports' traffic as their components report it.",
+    ).flag()
+
     override suspend fun execute() {
         val options = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
         StopSignals().use { signals ->
             // Subscribed one by one, each returning once its components are read and observed: a wrong
             // path fails before anything is printed, and --for counts from when every event is caught.
             val events = Channel<RtcEvent>(Channel.UNLIMITED)
-            paths.forEach { path -> tree.on(node(path), RtcEvent::class.java, options) { events.send(it) } }
+            val nodes = paths.map { node(it) }
+            // Traffic comes only to who names it: with --data.
+            val types = if (data) setOf(RtcEvent::class.java, PortTraffic::class.java) else setOf(RtcEvent::class.java)
+            nodes.forEach { node -> tree.on(node, types, options) { events.send(it) } }
+            val rates = if (data) PortRates.tap(tree, nodes) else null
             coroutineScope {
                 val printing = launch {
                     for (event in events) if (session.json) echo(toJson(event.toJson(), pretty = false)) else echo(event.line())
                 }
+                val reporting = rates?.let { launch { it.report(session.json) { line -> echo(line) } } }
                 signals.await(duration)
                 // Closing the tree while still subscribed detaches every observer before it returns;
                 // ending the subscriptions first would leave that to background work the exit cuts short.
                 tree.close()
+                reporting?.cancel()
                 printing.cancel()
             }
         }

@@ -6,6 +6,7 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import org.rtcoord.TreeConfig
+import org.rtcoord.internal.data.DataTaps
 import org.rtcoord.internal.events.Watcher
 import org.slf4j.LoggerFactory
 import java.util.concurrent.atomic.AtomicBoolean
@@ -25,6 +26,7 @@ internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) 
     )
     val components = ComponentRegistry(this)
     val watcher = Watcher(this)
+    val taps = DataTaps(this)
 
     /** Poll ticks that found the previous one still waiting and were folded into it (see [RtcTree.missedPollTicks]). */
     val missedPollTicks = AtomicLong()
@@ -36,6 +38,7 @@ internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) 
     override fun close() {
         if (!closed.compareAndSet(false, true)) return
         watcher.close()
+        taps.close()
         scope.cancel()
         orb.close()
     }

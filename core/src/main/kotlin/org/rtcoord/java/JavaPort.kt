@@ -2,10 +2,12 @@ package org.rtcoord.java
 
 import org.rtcoord.Connection
 import org.rtcoord.ConnectorSnapshot
+import org.rtcoord.DataListener
 import org.rtcoord.Port
 import org.rtcoord.PortSnapshot
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
+import org.rtcoord.Subscription
 import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 
@@ -60,6 +62,16 @@ public class JavaPort(
 
     /** [connections], when done. */
     public fun connectionsAsync(): CompletableFuture<List<Connection>> = calls.future { port.connections() }
+
+    /**
+     * Subscribes [listener] to this out-port's data and returns once subscribed; cancel the returned
+     * [Subscription] to stop (see [Port.tap]).
+     */
+    @Throws(RtcException::class)
+    public fun tap(listener: DataListener): Subscription = calls.await { port.tap(listener) }
+
+    /** [tap], when subscribed. */
+    public fun tapAsync(listener: DataListener): CompletableFuture<Subscription> = calls.future { port.tap(listener) }
 
     override fun toString(): String = port.toString()
 }

@@ -10,10 +10,12 @@ import org.rtcoord.Node;
 import org.rtcoord.NodeKind;
 import org.rtcoord.NotFoundException;
 import org.rtcoord.ParameterChanged;
+import org.rtcoord.PortData;
 import org.rtcoord.PreconditionNotMetException;
 import org.rtcoord.RtcException;
 import org.rtcoord.StateChanged;
 import org.rtcoord.Subscription;
+import org.rtcoord.TimedDoubleSeq;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.WatchMode;
 import org.rtcoord.fixtures.FixtureRuntime;
@@ -128,6 +130,24 @@ class JavaEmbeddingTest {
 
         in.disconnect(made.getId());
         assertEquals(List.of(), out.connections());
+    }
+
+    @Test
+    void tapsAnOutPortsData() throws Exception {
+        JavaPort laser = tree.port(path("laser0.rtc:laser"));
+        BlockingQueue<PortData> samples = new LinkedBlockingQueue<>();
+        Subscription subscription = laser.tapAsync(samples::add).get(10, TimeUnit.SECONDS);
+        PortData sample = samples.poll(5, TimeUnit.SECONDS);
+        assertTrue(sample instanceof TimedDoubleSeq, "a scan: " + sample);
+        assertEquals(8, ((TimedDoubleSeq) sample).getData().size());
+        assertNotNull(sample.getTime());
+        assertEquals(1, laser.connections().stream().filter(c -> c.getId().startsWith("rtcoord-tap-")).count());
+        subscription.cancel();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (laser.connections().stream().anyMatch(c -> c.getId().startsWith("rtcoord-tap-"))) {
+            assertTrue(System.nanoTime() < deadline, "the tap is removed once cancelled");
+            Thread.sleep(20);
+        }
     }
 
     @Test

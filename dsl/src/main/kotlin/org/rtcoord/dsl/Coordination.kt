@@ -96,13 +96,19 @@ public open class Coordination(
      * indented by nesting: what `check` shows and tools can draw.
      */
     public val description: List<String>
-        get() = rules.map { "on ${it.description}" } + timers.map { it.description } + supervisions.map { it.description } +
+        get() = rules.map { "on ${it.description}" } + dataRules.map { "on ${it.description}" } + timers.map { it.description } + supervisions.map { it.description } +
             machineList.flatMap { it.description }
+
+    internal val dataRules = mutableListOf<DataRule>()
+
+    internal fun addData(rule: DataRule) {
+        dataRules += rule
+    }
 
     internal fun add(rule: Rule<*>) {
         rules += rule
     }
 
     /** What was declared so far, frozen: later declarations do not change it. */
-    internal fun plan(): Plan = Plan(rules.toList(), timers.toList(), supervisions.toList(), machineList.toList(), nameServers.toList(), watching, directory)
+    internal fun plan(): Plan = Plan(rules.toList(), dataRules.toList(), timers.toList(), supervisions.toList(), machineList.toList(), nameServers.toList(), watching, directory)
 }

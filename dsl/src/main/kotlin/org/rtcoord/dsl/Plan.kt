@@ -14,6 +14,7 @@ import java.nio.file.Path
  */
 internal class Plan(
     val rules: List<Rule<*>>,
+    val dataRules: List<DataRule>,
     val timers: List<Timer>,
     val supervisions: List<Supervision>,
     val machines: List<ModeMachine>,

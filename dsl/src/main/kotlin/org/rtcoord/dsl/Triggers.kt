@@ -6,12 +6,14 @@ import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.Node
 import org.rtcoord.ParameterChanged
+import org.rtcoord.PortData
 import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
+import kotlin.time.Duration
 
 /**
  * A guard: the rule fires only when it returns true for the event. It runs when the rule's turn to
@@ -111,6 +113,40 @@ public class PortTriggers internal constructor(private val owner: Coordination, 
 
     /** When the port loses a connection. */
     public fun disconnected(handler: suspend Reaction.(PortDisconnected) -> Unit): Unit = owner.add(EventPatterns.disconnected(target).rule(guards, handler))
+
+    /**
+     * On each sample of type [T] the out-port sends: `on(port("laser0.rtc:laser")).data<TimedDoubleSeq> { scan -> ... }`.
+     * The coordinator taps the port (one tap per port, see [org.rtcoord.Port.tap]); while the handler
+     * runs, only the newest sample waits (LATEST), so a fast stream never queues behind a slow handler.
+     * Samples of another type are ignored; [org.rtcoord.UnknownData] takes any type not decoded. Guards
+     * do not apply to data rules.
+     */
+    public inline fun <reified T : PortData> data(noinline handler: suspend Reaction.(T) -> Unit): Unit = data(T::class.java, handler)
+
+    /** [data] with the type as a class, for callers that do not know it at compile time. */
+    public fun <T : PortData> data(type: Class<T>, handler: suspend Reaction.(T) -> Unit): Unit =
+        owner.addData(DataRule.Samples(target, type, handler))
+
+    /**
+     * When the out-port sends nothing for [limit] while its component is ACTIVE: the data-liveness
+     * watchdog, for a sensor that stays ACTIVE but stopped publishing:
+     * `on(port("laser0.rtc:laser")).silentFor(500.milliseconds) { ... }`. Fires once per silence; the
+     * next sample re-arms it. Time while the component is not ACTIVE does not count.
+     */
+    public fun silentFor(limit: Duration, handler: suspend Reaction.() -> Unit) {
+        require(limit.isPositive()) { "silentFor needs a positive duration, was $limit" }
+        owner.addData(DataRule.Silence(target, limit, handler))
+    }
+
+    /**
+     * When the out-port sends fewer than [rate] samples a second (counted over the last second) while
+     * its component is ACTIVE: `on(port("laser0.rtc:laser")).rateBelow(5.0) { rate -> ... }`. Fires once
+     * per drop; a rate back at [rate] re-arms it.
+     */
+    public fun rateBelow(rate: Double, handler: suspend Reaction.(rate: Double) -> Unit) {
+        require(rate > 0) { "rateBelow needs a positive rate, was $rate" }
+        owner.addData(DataRule.RateBelow(target, rate, handler))
+    }
 }
 
 /** What a manager does: `on(manager()).created { name -> ... }`. */

@@ -63,6 +63,46 @@ class ExamplesTest {
     }
 
     @Test
+    fun `frozen laser - a laser ACTIVE but silent is noticed from its data and odometry takes over`(): Unit = runBlocking {
+        ExampleSystem("frozen-laser.coord.kts", Mode.PUSH.options).use { example ->
+            example.coordinator.start()
+            val laser = example.system.component("laser0")
+            val tap = awaitValue("the coordinator's tap on laser0:laser") {
+                runBlocking { example.witness.port(example.path("laser0.rtc:laser")).connections() }.firstOrNull { it.id.startsWith("rtcoord-tap-") }
+            }
+            // Longer than the threshold with scans flowing: no switch.
+            val watched = TimeSource.Monotonic.markNow()
+            val consumer = example.system.component("laser_localise0")
+            val first = consumer.latest("laser")
+            await("800 ms of scans reaching the laser localiser") { watched.elapsedNow() > 800.milliseconds && consumer.latest("laser") !== first }
+            assertTrue(example.system.components.none { it.instanceName == "odo_localise0" }, "no switch while scans flow")
+
+            val frozen = TimeSource.Monotonic.markNow()
+            laser.freezeOutput()
+            await("odo_localise0 to be ACTIVE") {
+                runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
+            }
+            val took = frozen.elapsedNow()
+            println("frozen-laser example: freeze to odo_localise0 ACTIVE in $took")
+            assertTrue(took >= 500.milliseconds, "not before the 500 ms of silence: $took")
+            assertEquals(LifeCycle.ACTIVE, example.witness.component(example.path("laser0.rtc")).state(), "the laser stayed ACTIVE")
+            val old = example.witness.component(example.path("laser_localise0.rtc")).also { it.refresh() }.snapshot()
+            assertEquals(LifeCycle.INACTIVE, old.state)
+            assertTrue(old.ports.all { it.connectors.isEmpty() })
+            val localiser = example.system.component("odo_localise0")
+            val before = localiser.latest("odo")
+            await("the odometry to reach the new localiser") { localiser.latest("odo") !== before }
+            assertEquals(0, example.coordinator.failures)
+            assertTrue(example.log.any { it.contains("sent no scan for 500 ms") }, example.log.joinToString("\n"))
+
+            example.coordinator.close()
+            await("the coordinator's tap removed on close") {
+                runBlocking { example.witness.port(example.path("laser0.rtc:laser")).connections() }.none { it.id == tap.id }
+            }
+        }
+    }
+
+    @Test
     fun `localisation - a coordinator started after the laser broke still switches to odometry (includeCurrent)`(): Unit = runBlocking {
         ExampleSystem("localisation.coord.kts", Mode.PUSH.options).use { example ->
             example.system.component("laser0").breakDown()

@@ -32,6 +32,7 @@ import org.rtcoord.NodeVanished
 import org.rtcoord.ParameterChanged
 import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
+import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
 import org.rtcoord.RootNode
 import org.rtcoord.RtcEvent
@@ -173,7 +174,7 @@ internal class LiveView(
         /** The timeline's filter groups: state, port, configuration, liveness, manager, structure. */
         fun kindOf(event: RtcEvent): String = when (event) {
             is StateChanged, is ContextRunningChanged, is ContextRateChanged, is ContextAttachmentChanged, is ComponentFinalized -> "state"
-            is PortConnected, is PortDisconnected -> "port"
+            is PortConnected, is PortDisconnected, is PortTraffic -> "port"
             is ParameterChanged, is ConfigurationSetActivated, is ConfigurationSetAdded, is ConfigurationSetRemoved -> "configuration"
             is HeartbeatLost, is BecameZombie, is Recovered, is WatchMethodChanged -> "liveness"
             is ManagerComponentChanged, is ManagerDied, is ManagerReturned -> "manager"

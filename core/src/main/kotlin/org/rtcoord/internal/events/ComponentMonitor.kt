@@ -14,6 +14,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
+import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
@@ -27,6 +28,7 @@ import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.seconds
 
 /**
@@ -69,6 +71,8 @@ internal class ComponentMonitor(
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
+    /** The traffic interval the observer was attached with. */
+    private var attachedTraffic: Duration? = null
     /** Work that arrived during a read, other than the lifecycle hints taken at once: the next round's. */
     private val carried = ArrayList<Work>()
     private val timers = MonitorTimers(core, { done -> work.trySend(Tick(done)).isSuccess }) { work.trySend(Liveness) }
@@ -241,12 +245,20 @@ internal class ComponentMonitor(
         readAndPublish()
         if (liveness.state == ComponentLiveness.State.FINALIZED) return
         val push = pushRegistration()
+        // Asking for data hints (or no longer) takes an observer attached with the new interval.
+        if (link.observer != null && attachedTraffic != trafficInterval()) link.detach()
         if (push != null && link.observer == null) {
             attachment = if (liveness.state == ComponentLiveness.State.UNREACHABLE) {
                 Attachment.Failed("it does not answer")
             } else {
-                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat, ::received)
-                    .also { if (it is Attachment.Attached) liveness.hinted(now()).also { timers.heard() } }
+                val traffic = trafficInterval()
+                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat, traffic, ::received).also {
+                    if (it is Attachment.Attached) {
+                        liveness.hinted(now())
+                        timers.heard()
+                        attachedTraffic = traffic
+                    }
+                }
             }
             // A change between that read and the attachment sent its hint to nobody: read once more.
             if (link.observer != null) readAndPublish()
@@ -260,10 +272,26 @@ internal class ComponentMonitor(
         timers.watch(push?.options?.heartbeat)
     }
 
-    /** What the observer received; a heartbeat only says when (see [MonitorTimers]). */
+    /**
+     * What the observer received. A heartbeat only says when (see [MonitorTimers]); data flowing changes
+     * nothing a read would show, and goes straight to the registrations that asked for [PortTraffic].
+     */
     private fun received(hint: Hint) {
-        if (hint.isHeartbeat) timers.heard() else work.trySend(Received(hint))
+        val traffic = hint.traffic()
+        when {
+            hint.isHeartbeat -> timers.heard()
+            traffic != null -> {
+                timers.heard()
+                val event = PortTraffic(node, traffic.first, traffic.second)
+                registrations.forEach { if (it.traffic) it.sink.offer(event) }
+            }
+            else -> work.trySend(Received(hint))
+        }
     }
+
+    /** The shortest traffic interval a push registration that wants traffic asks for; an hour (next to none) when none does. */
+    private fun trafficInterval(): Duration =
+        registrations.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval } ?: NO_TRAFFIC
 
     private fun pushRegistration(): MonitorRegistration? =
         registrations.filter { it.options.mode != WatchMode.POLL }.minByOrNull { it.options.heartbeat }
@@ -327,6 +355,9 @@ internal class ComponentMonitor(
 
         /** How long a hinted deactivation waits for the ERROR hint that would make it an abort. */
         const val ABORT_WINDOW_MILLIS = 25L
+
+        /** The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default. */
+        val NO_TRAFFIC = 1.hours
 
         fun now(): Long = MonitorTimers.now()
     }

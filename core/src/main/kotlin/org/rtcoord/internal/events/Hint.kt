@@ -23,6 +23,24 @@ internal class Hint(val kind: HintKind, val text: String) {
     /** Whether it is a heartbeat, the component's or an execution context's: a sign of life and nothing else. */
     val isHeartbeat: Boolean get() = kind == HintKind.HEARTBEAT || kind == HintKind.EC_HEARTBEAT
 
+    /**
+     * For PORT_PROFILE: the port (without the instance prefix) and whether it sent (true) or received
+     * data, from OpenRTM's `SEND:OutPort:<instance>.<port>` and `RECEIVE:InPort:<instance>.<port>`
+     * (the middle field is optional here); null for any other hint.
+     */
+    fun traffic(): Pair<String, Boolean>? {
+        if (kind != HintKind.PORT_PROFILE) return null
+        val fields = text.split(':').map { it.trim() }
+        if (fields.size !in 2..3) return null
+        val outgoing = when (fields[0].uppercase()) {
+            "SEND" -> true
+            "RECEIVE" -> false
+            else -> return null
+        }
+        val port = fields.last().substringAfter('.').takeIf { it.isNotEmpty() } ?: return null
+        return port to outgoing
+    }
+
     /** Whether it is OpenRTM's `FINALIZE:0`, sent when the component exits. */
     val isFinalize: Boolean get() = kind == HintKind.RTC_STATUS && parts()?.first == "FINALIZE"
 

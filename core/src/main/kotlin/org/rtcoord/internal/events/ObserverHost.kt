@@ -1,14 +1,9 @@
 package org.rtcoord.internal.events
 
 import org.omg.CORBA.ORB
-import org.omg.CORBA.Policy
-import org.omg.PortableServer.IdAssignmentPolicyValue
-import org.omg.PortableServer.POA
-import org.omg.PortableServer.POAHelper
 import org.omg.PortableServer.Servant
-import org.omg.PortableServer.ThreadPolicyValue
 import org.rtcoord.ObserverFlavour
-import java.security.SecureRandom
+import org.rtcoord.internal.RandomIdPoa
 import java.util.UUID
 
 /**
@@ -17,31 +12,17 @@ import java.util.UUID
  * and one thread delivers every call, so each component's hints arrive in the order it sent them (a
  * multi-threaded POA reorders oneway calls).
  */
-internal class ObserverHost(private val orb: ORB) {
-    private val random = SecureRandom()
-
-    private val poa: POA by lazy {
-        val root = POAHelper.narrow(orb.resolve_initial_references("RootPOA"))
-        root.the_POAManager().activate()
-        root.create_POA(
-            "rtcoord-observers-${UUID.randomUUID()}",
-            root.the_POAManager(),
-            arrayOf<Policy>(
-                root.create_id_assignment_policy(IdAssignmentPolicyValue.USER_ID),
-                root.create_thread_policy(ThreadPolicyValue.SINGLE_THREAD_MODEL),
-            ),
-        )
-    }
+internal class ObserverHost(orb: ORB) {
+    private val poa = RandomIdPoa(orb, "rtcoord-observers", singleThread = true)
 
     /** An observer attached (or about to be) to one component. */
-    inner class Observer internal constructor(val flavour: ObserverFlavour, private val objectId: ByteArray, servant: Servant) {
+    inner class Observer internal constructor(val flavour: ObserverFlavour, servant: Servant) {
         /** The service profile id; the prefix marks observers this library registered. */
         val profileId: String = PROFILE_PREFIX + UUID.randomUUID()
-        val reference: org.omg.CORBA.Object = poa.run { activate_object_with_id(objectId, servant); id_to_reference(objectId) }
+        private val served = poa.serve(servant)
+        val reference: org.omg.CORBA.Object get() = served.reference
 
-        fun close() {
-            runCatching { poa.deactivate_object(objectId) }
-        }
+        fun close() = served.close()
     }
 
     /** A new observer of [flavour] passing every hint it receives to [receive]. */
@@ -54,7 +35,7 @@ internal class ObserverHost(private val orb: ORB) {
                 override fun update_status(kind: RTC.StatusKind, hint: String?) = receive(Hint.omg(kind, hint))
             }
         }
-        return Observer(flavour, ByteArray(16).also(random::nextBytes), servant)
+        return Observer(flavour, servant)
     }
 
     companion object {

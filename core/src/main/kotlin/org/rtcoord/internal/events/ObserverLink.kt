@@ -29,10 +29,11 @@ internal class ObserverLink(
     /**
      * Attaches an observer of a flavour listed in [advertised] (the component's
      * `sdo.service.consumer.available_services`; either flavour when it lists none) that passes its hints
-     * to [receive] and sends heartbeats every [heartbeat]; says how that went. Stale observers a crashed
+     * to [receive], sends heartbeats every [heartbeat] and data traffic hints at most every [traffic] per
+     * port; says how that went. Stale observers a crashed
      * tree left behind are removed first.
      */
-    suspend fun attach(advertised: String?, heartbeat: Duration, receive: (Hint) -> Unit): Attachment {
+    suspend fun attach(advertised: String?, heartbeat: Duration, traffic: Duration, receive: (Hint) -> Unit): Attachment {
         val offered = advertised?.split(',')?.map { it.trim() }?.filter { it.isNotEmpty() }
         val flavours = ObserverFlavour.values().filter { offered == null || it.repositoryId in offered }
         if (flavours.isEmpty()) return Attachment.NotOffered(offered.orEmpty())
@@ -43,10 +44,12 @@ internal class ObserverLink(
         }
         removeStaleObservers(core, subject, component.ref, configuration)
         val seconds = (heartbeat.inWholeMilliseconds / 1000.0).toString()
+        val trafficSeconds = (traffic.inWholeMilliseconds / 1000.0).toString()
         val properties = mapOf(
             "observed_status" to "ALL",
             "heartbeat.enable" to "YES", "heartbeat.interval" to seconds,
             "rtc_heartbeat.enable" to "YES", "rtc_heartbeat.interval" to seconds,
+            "port_profile.send_event.min_interval" to trafficSeconds, "port_profile.receive_event.min_interval" to trafficSeconds,
         ).map { (name, value) -> NameValue(name, core.orb.orb.create_any().apply { insert_string(value) }) }.toTypedArray()
         var failure: String? = null
         for (flavour in flavours) {

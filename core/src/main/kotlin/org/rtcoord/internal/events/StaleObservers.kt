@@ -3,6 +3,7 @@ package org.rtcoord.internal.events
 import _SDOPackage.Configuration
 import org.rtcoord.RtcException
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.isGone
 import org.slf4j.LoggerFactory
 
 private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
@@ -37,15 +38,4 @@ internal suspend fun removeStaleObservers(core: TreeCore, subject: String, compo
             log.debug("{}: could not remove stale observer {}: {}", subject, profile.id, e.message)
         }
     }
-}
-
-/** Whether nothing answers for [observer]: its ORB is gone (refused), or its ORB no longer has it. */
-private fun isGone(observer: org.omg.CORBA.Object): Boolean = try {
-    observer._non_existent()
-} catch (e: org.omg.CORBA.OBJECT_NOT_EXIST) {
-    true
-} catch (e: org.omg.CORBA.OBJ_ADAPTER) {
-    true
-} catch (e: org.omg.CORBA.TRANSIENT) {
-    true
 }

@@ -16,6 +16,7 @@ import org.rtcoord.ManagerReturned
 import org.rtcoord.Node
 import org.rtcoord.Overlap
 import org.rtcoord.ParameterChanged
+import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
@@ -59,6 +60,7 @@ internal class Watcher(private val core: TreeCore) {
         val sink = EventSink(core.scope, { event -> types == null || types.any { it.isInstance(event) } }, options.overlap, handler)
         val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
+        val traffic = types != null && PortTraffic::class.java in types
         val releases = mutableListOf<() -> Unit>()
         val watched = HashSet<DirectoryNode>()
         // A component reached by two paths at once (its naming context, its manager) is included once;
@@ -72,7 +74,7 @@ internal class Watcher(private val core: TreeCore) {
                     val earlier = synchronized(included) { included.putIfAbsent(node.component, inclusion) }
                     if (earlier != null) return earlier.await()
                     try {
-                        val registration = MonitorRegistration(sink, options, configuration, statesOnly)
+                        val registration = MonitorRegistration(sink, options, configuration, statesOnly, traffic)
                         val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node) { live.remove(it) }.also { live += it } } }
                         monitor.add(registration)
                         synchronized(releases) { releases += { release(node.component, monitor, registration) } }
@@ -239,7 +241,7 @@ internal class Watcher(private val core: TreeCore) {
         val STATE_EVENTS = setOf(
             StateChanged::class.java, HeartbeatLost::class.java, BecameZombie::class.java,
             Recovered::class.java, ComponentFinalized::class.java, WatchMethodChanged::class.java,
-            ManagerDied::class.java, ManagerReturned::class.java,
+            ManagerDied::class.java, ManagerReturned::class.java, PortTraffic::class.java,
         )
 
         val CONFIGURATION_EVENTS = setOf(

@@ -62,6 +62,7 @@ public class Coordinator(
     private val listeners = CopyOnWriteArrayList<Subscription>()
     private val subscriptions = CopyOnWriteArrayList<Subscription>()
     private val supervisors = CopyOnWriteArrayList<Supervisor>()
+    private val dataRuns = CopyOnWriteArrayList<DataRuleRun>()
     private val failureCount = MutableStateFlow(0)
 
     /** How many handler runs failed so far. */
@@ -99,6 +100,12 @@ public class Coordinator(
         plan.nameServers.forEach(tree::addNameServer)
         try {
             plan.rules.forEach { subscribe(it) }
+            withContext(engine) {
+                plan.dataRules.forEach { rule ->
+                    DataRuleRun(rule, engine, scope) { what, handler -> run("rule $what") { Reaction(engine, null).handle(handler) } }
+                        .also { dataRuns += it }.start()
+                }
+            }
             interpreters.forEach { machine ->
                 watch(machine, machine.machine.eventPatterns)
                 watchNetwork(machine)
@@ -250,6 +257,8 @@ public class Coordinator(
     /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
     override fun close() {
         supervisors.forEach(Supervisor::close)
+        dataRuns.forEach(DataRuleRun::stop)
+        dataRuns.clear()
         (listeners + subscriptions).forEach(Subscription::cancel)
         listeners.clear()
         subscriptions.clear()

@@ -7,6 +7,7 @@ import kotlin.script.experimental.annotations.KotlinScript
 import kotlin.script.experimental.api.ScriptAcceptedLocation
 import kotlin.script.experimental.api.ScriptCompilationConfiguration
 import kotlin.script.experimental.api.acceptedLocations
+import kotlin.script.experimental.api.compilerOptions
 import kotlin.script.experimental.api.defaultImports
 import kotlin.script.experimental.api.ide
 import kotlin.script.experimental.jvm.dependenciesFromCurrentContext
@@ -37,6 +38,8 @@ public object CoordinatorScriptCompilation : ScriptCompilationConfiguration({
     jvm {
         dependenciesFromCurrentContext(wholeClasspath = true)
     }
+    // The DSL's inline words (`data<TimedDoubleSeq> { }`) are JVM 17 bytecode, which a script can inline only at the same target.
+    compilerOptions("-jvm-target", "17")
     ide {
         acceptedLocations(ScriptAcceptedLocation.Everywhere)
     }

@@ -1,0 +1,93 @@
+package org.rtcoord.cli
+
+import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.options.flag
+import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.int
+import com.github.ajalt.clikt.parameters.options.check
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.launch
+import org.rtcoord.PortData
+import org.rtcoord.TimedDouble
+import org.rtcoord.TimedDoubleSeq
+import org.rtcoord.TimedFloatSeq
+import org.rtcoord.TimedLongSeq
+import org.rtcoord.UnknownData
+
+/** `rtcoord print`: rtprint, working: the tree taps the out-port and prints each sample on a line. */
+class PrintCommand : TreeCommand("print") {
+    override fun help(context: Context): String =
+        "Print the data an out-port sends, one line per sample: its time stamp, its type and its value (an unknown " +
+            "type as its name and the raw bytes in hex). The tree taps the port as a connected in-port would; the tap's " +
+            "connector (id rtcoord-tap-...) goes when the command ends. Runs until Ctrl-C, SIGTERM, --count samples or " +
+            "--for has passed, then exits 0."
+
+    override fun helpEpilog(context: Context): String = examples(
+        "rtcoord print /localhost/host.host_cxt/laser0.rtc:laser" to "the laser's scans as they come",
+        "rtcoord print laser0.rtc:laser --count 1 --json" to "one scan, as JSON",
+        "rtcoord print gyro0.rtc:gyro --for 5s" to "five seconds of the gyro",
+    )
+
+    private val path by argument("PATH:PORT", help = "The out-port (component.rtc:port).")
+
+    private val json by option("--json", help = "One JSON object per sample (as the global --json).").flag()
+
+    private val count by option("--count", "-n", metavar = "N", help = "Stop after N samples.").int().check("must be positive") { it > 0 }
+
+    private val duration by option("--for", metavar = "DURATION", help = "Stop after DURATION.").duration()
+
+    override suspend fun execute() {
+        val port = port(path)
+        StopSignals().use { signals ->
+            val samples = Channel<PortData>(Channel.UNLIMITED)
+            port.tap { samples.trySend(it) }
+            coroutineScope {
+                val printing = launch {
+                    var printed = 0
+                    for (sample in samples) {
+                        echo(if (json || session.json) toJson(sample.toJson(), pretty = false) else sample.line())
+                        if (++printed == count) break
+                    }
+                }
+                val stopping = launch {
+                    signals.await(duration)
+                    printing.cancel()
+                }
+                printing.join()
+                stopping.cancel()
+            }
+            // Closing the tree removes the tap before it returns; cancelling the tap would leave that to background work the exit cuts short.
+            tree.close()
+        }
+    }
+}
+
+/** A sample as one line: time stamp, type, value. */
+internal fun PortData.line(): String {
+    val type = if (this is UnknownData) typeName else javaClass.simpleName
+    return "${time ?: "-"}  $type  ${valueText()}"
+}
+
+private fun PortData.valueText(): String = when (this) {
+    is UnknownData -> bytes.joinToString("") { "%02x".format(it) }
+    is TimedDoubleSeq -> data.joinToString(" ", "[", "]")
+    is TimedFloatSeq -> data.joinToString(" ", "[", "]")
+    is TimedLongSeq -> data.joinToString(" ", "[", "]")
+    is TimedDouble -> data.toString()
+    else -> toString().substringAfter("data=", "").removeSuffix(")").ifEmpty { toString() }
+}
+
+/** A sample as JSON: time stamp, type and value. */
+internal fun PortData.toJson(): Map<String, Any?> = linkedMapOf(
+    "time" to time?.toString(),
+    "type" to if (this is UnknownData) typeName else javaClass.simpleName,
+    "value" to when (this) {
+        is UnknownData -> bytes.joinToString("") { "%02x".format(it) }
+        is TimedDoubleSeq -> data
+        is TimedFloatSeq -> data
+        is TimedLongSeq -> data
+        else -> valueText()
+    },
+)

@@ -1,0 +1,93 @@
+package org.rtcoord.internal
+
+import RTC.Time
+import org.jacorb.orb.CDROutputStream
+import org.junit.jupiter.api.AfterAll
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.omg.CORBA.ORB
+import org.rtcoord.TimedDouble
+import org.rtcoord.TimedDoubleSeq
+import org.rtcoord.TimedLong
+import org.rtcoord.TimedPose2D
+import org.rtcoord.TimedString
+import org.rtcoord.TimedVelocity2D
+import org.rtcoord.UnknownData
+import org.rtcoord.internal.data.DataDecoder
+import org.rtcoord.internal.data.DataTap
+import java.nio.ByteBuffer
+import java.nio.ByteOrder
+import java.time.Instant
+import java.util.Properties
+
+/** Decoding against JacORB's own CDR encoder (big-endian, from the compiled IDL) and hand-made little-endian bytes. */
+class DataDecoderTest {
+    private fun jacorb(write: (CDROutputStream) -> Unit): ByteArray {
+        val out = CDROutputStream(orb)
+        write(out)
+        return out.bufferCopy
+    }
+
+    private val time = Time(1_700_000_000, 123_456_789)
+    private val instant = Instant.ofEpochSecond(1_700_000_000, 123_456_789)
+
+    @Test
+    fun `big-endian samples encoded by JacORB from the IDL decode to their values`() {
+        val double = jacorb { RTC.TimedDoubleHelper.write(it, RTC.TimedDouble(time, 2.5)) }
+        assertEquals(TimedDouble(instant, 2.5), DataDecoder("IDL:RTC/TimedDouble:1.0", littleEndian = false).decode(double))
+
+        val seq = jacorb { RTC.TimedDoubleSeqHelper.write(it, RTC.TimedDoubleSeq(time, doubleArrayOf(1.0, 2.0, 3.5))) }
+        assertEquals(TimedDoubleSeq(instant, listOf(1.0, 2.0, 3.5)), DataDecoder("TimedDoubleSeq", littleEndian = false).decode(seq))
+
+        val text = jacorb { RTC.TimedStringHelper.write(it, RTC.TimedString(time, "scan ok")) }
+        assertEquals(TimedString(instant, "scan ok"), DataDecoder("RTC::TimedString", littleEndian = false).decode(text))
+
+        val long = jacorb { RTC.TimedLongHelper.write(it, RTC.TimedLong(time, -7)) }
+        assertEquals(TimedLong(instant, -7), DataDecoder("IDL:RTC/TimedLong:1.0", littleEndian = false).decode(long))
+
+        val pose = jacorb { RTC.TimedPose2DHelper.write(it, RTC.TimedPose2D(time, RTC.Pose2D(RTC.Point2D(1.0, 2.0), 0.5))) }
+        assertEquals(TimedPose2D(instant, 1.0, 2.0, 0.5), DataDecoder("IDL:RTC/TimedPose2D:1.0", littleEndian = false).decode(pose))
+
+        val velocity = jacorb { RTC.TimedVelocity2DHelper.write(it, RTC.TimedVelocity2D(time, RTC.Velocity2D(0.1, 0.0, -0.2))) }
+        assertEquals(TimedVelocity2D(instant, 0.1, 0.0, -0.2), DataDecoder("IDL:RTC/TimedVelocity2D:1.0", littleEndian = false).decode(velocity))
+    }
+
+    @Test
+    fun `little-endian samples, as OpenRTM sends by default, decode with the sequence aligned from the first byte`() {
+        val bytes = ByteBuffer.allocate(32).order(ByteOrder.LITTLE_ENDIAN)
+            .putInt(1_700_000_000).putInt(123_456_789).putInt(2).putInt(0).putDouble(1.25).putDouble(-3.0).array()
+        assertEquals(TimedDoubleSeq(instant, listOf(1.25, -3.0)), DataDecoder("IDL:RTC/TimedDoubleSeq:1.0", littleEndian = true).decode(bytes))
+        val other = DataDecoder("IDL:RTC/TimedDoubleSeq:1.0", littleEndian = false).decode(bytes)
+        assertTrue(other is UnknownData, "read in the wrong byte order the length exceeds the data: $other")
+    }
+
+    @Test
+    fun `unknown types and malformed data arrive as the type name and the raw bytes`() {
+        val bytes = byteArrayOf(1, 2, 3, 4, 5)
+        val unknown = DataDecoder("IDL:Acme/Scan:1.0", littleEndian = true).decode(bytes) as UnknownData
+        assertEquals("IDL:Acme/Scan:1.0", unknown.typeName)
+        assertEquals(bytes.toList(), unknown.bytes.toList())
+        assertEquals(null, unknown.time)
+        val short = DataDecoder("TimedDouble", littleEndian = true).decode(bytes)
+        assertEquals(UnknownData("TimedDouble", bytes, true), short)
+    }
+
+    @Test
+    fun `the byte order is the first one the connector's endian property lists`() {
+        assertTrue(DataTap.littleEndian("little,big"))
+        assertTrue(DataTap.littleEndian(null))
+        assertEquals(false, DataTap.littleEndian(" BIG , little"))
+    }
+
+    companion object {
+        private val orb: ORB = ORB.init(emptyArray(), Properties().apply {
+            setProperty("org.omg.CORBA.ORBClass", "org.jacorb.orb.ORB")
+            setProperty("org.omg.CORBA.ORBSingletonClass", "org.jacorb.orb.ORBSingleton")
+        })
+
+        @JvmStatic
+        @AfterAll
+        fun shutdown() = orb.destroy()
+    }
+}

@@ -1,0 +1,57 @@
+package org.rtcoord.dsl.runtime
+
+/**
+ * Whether a port's data went silent or slow, from the times samples arrived and checks of the
+ * component's state (times in milliseconds, from any monotonic clock). Only time while the component
+ * is ACTIVE counts: a component not ACTIVE is expected to send nothing, and its silence starts when it
+ * is seen ACTIVE again. Each silence or drop is reported once; a sample (or a rate back at its floor)
+ * ends it.
+ */
+internal class DataLiveness(start: Long, private val silenceMillis: Long?, private val minRate: Double?, private val windowMillis: Long = 1000) {
+    private var lastSample = start
+    private var countingSince = start
+    private val arrivals = ArrayDeque<Long>()
+    private var silentReported = false
+    private var slowReported = false
+
+    fun sample(now: Long) {
+        lastSample = now
+        silentReported = false
+        if (minRate != null) {
+            arrivals.addLast(now)
+            while (arrivals.isNotEmpty() && arrivals.first() <= now - windowMillis) arrivals.removeFirst()
+        }
+    }
+
+    /** What a check at [now] finds, the component [active] or not. */
+    fun check(now: Long, active: Boolean): Finding {
+        while (arrivals.isNotEmpty() && arrivals.first() <= now - windowMillis) arrivals.removeFirst()
+        if (!active) {
+            countingSince = now
+            silentReported = false
+            slowReported = false
+            return Finding.NOTHING
+        }
+        val silentFor = now - maxOf(lastSample, countingSince)
+        if (silenceMillis != null && silentFor >= silenceMillis && !silentReported) {
+            silentReported = true
+            return Finding.Silent(silentFor)
+        }
+        if (minRate != null && now - countingSince >= windowMillis) {
+            val rate = arrivals.size * 1000.0 / windowMillis
+            if (rate < minRate && !slowReported) {
+                slowReported = true
+                return Finding.Slow(rate)
+            }
+            if (rate >= minRate) slowReported = false
+        }
+        return Finding.NOTHING
+    }
+
+    /** The outcome of a check. */
+    sealed class Finding {
+        object NOTHING : Finding()
+        data class Silent(val millis: Long) : Finding()
+        data class Slow(val rate: Double) : Finding()
+    }
+}
