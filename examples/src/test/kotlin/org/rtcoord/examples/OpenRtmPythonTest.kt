@@ -1,11 +1,15 @@
 package org.rtcoord.examples
 
+import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeout
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle
+import org.rtcoord.PortData
 import org.rtcoord.RtcTree
+import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.dsl.runtime.FailedAction
@@ -32,6 +36,23 @@ class OpenRtmPythonTest {
                     test(system, coordinator, log)
                 }
             }
+        }
+    }
+
+    @Test
+    fun `data - a tap decodes a real out-port's scans, and its connector leaves with it`(): Unit = runBlocking {
+        OpenRtmPythonSystem.start().use { system ->
+            val port = system.witness.port(system.path("laser0.rtc:laser"))
+            val scans = Channel<PortData>(Channel.UNLIMITED)
+            val tapped = TimeSource.Monotonic.markNow()
+            val subscription = port.tap { scans.trySend(it) }
+            val scan = withTimeout(10.seconds) { scans.receive() }
+            println("real OpenRTM-aist-Python: first scan through the tap ${tapped.elapsedNow()} after tapping")
+            assertTrue(scan is TimedDoubleSeq && scan.data.size == 8 && scan.data.all { it in 4.0..6.0 }, "$scan")
+            fun taps() = runBlocking { port.connections().count { it.id.startsWith("rtcoord-tap-") } }
+            assertEquals(1, taps(), "the real port lists the tap's connector")
+            subscription.cancel()
+            await("the tap's connector to leave the real port", 10.seconds) { taps() == 0 }
         }
     }
 
