@@ -96,4 +96,24 @@ class DataRulesTest {
             assertEquals(0, coordinator.failures)
         }
     }
+
+    @Test
+    fun `a data rule follows its component when it is re-created, tapping the new one`(): Unit = runBlocking {
+        val samples = AtomicInteger()
+        coordinator {
+            on(port("gyro0.rtc:gyro")).data<TimedDouble> { samples.incrementAndGet() }
+        }.use { coordinator ->
+            coordinator.start()
+            await("samples from the first gyro0") { samples.get() > 0 }
+            val host = "/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}"
+            witness.component("$host/gyro0.rtc").exit()
+            await("gyro0 to be gone") { system.runtime.components.none { it.instanceName == "gyro0" } }
+            witness.manager("$host/manager.mgr").create("gyro", "gyro0")
+            system.component("gyro0").activate()
+            await("the rule to tap the new gyro0") { taps("gyro0.rtc:gyro") == 1 }
+            val before = samples.get()
+            await("samples from the new gyro0") { samples.get() > before }
+            assertEquals(0, coordinator.failures, log.toString())
+        }
+    }
 }

@@ -4,6 +4,8 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
+import org.rtcoord.ComponentNode
+import org.rtcoord.DataListener
 import org.rtcoord.LifeCycle
 import org.rtcoord.Overlap
 import org.rtcoord.PortData
@@ -16,7 +18,9 @@ import kotlin.time.Duration.Companion.milliseconds
 /**
  * One run of a [DataRule]: taps the port and hands samples to the handler (the newest waiting while it
  * runs), or watches the port's silence and rate with a [DataLiveness] checked a few times per threshold.
- * [fire] runs a handler as the coordinator runs any (counted, logged, its failure contained).
+ * The port's component is followed through the engine's [Identities]: when it is re-created, the new
+ * one's port is tapped in its place. [fire] runs a handler as the coordinator runs any (counted, logged,
+ * its failure contained).
  */
 internal class DataRuleRun(
     private val rule: DataRule,
@@ -24,31 +28,46 @@ internal class DataRuleRun(
     private val scope: CoroutineScope,
     private val fire: suspend (String, suspend Reaction.() -> Unit) -> Unit,
 ) {
-    private var subscription: Subscription? = null
+    private var following: Subscription? = null
+    @Volatile private var tapped: Subscription? = null
 
     /** Taps the port; fails as the tap does (no such port, not an out-port). */
     suspend fun start() {
-        val port = rule.port.port()
-        when (rule) {
-            is DataRule.Samples<*> -> subscription = port.tap(samples(rule))
-            is DataRule.Silence, is DataRule.RateBelow -> watchLiveness { listener -> subscription = port.tap(listener) }
+        val listener = when (rule) {
+            is DataRule.Samples<*> -> samples(rule)
+            is DataRule.Silence, is DataRule.RateBelow -> watchLiveness()
         }
+        following = engine.identities.listen(rule.port.component.selector, emptySet(), prepare = { node -> tap(node, listener) }) {}
     }
 
     fun stop() {
-        subscription?.cancel()
+        following?.cancel()
+        tapped?.cancel()
     }
 
-    private fun <T : PortData> samples(rule: DataRule.Samples<T>): org.rtcoord.DataListener {
+    /** Taps the port of [node], which the rule's component name resolves to now, in place of the one it replaced. */
+    private suspend fun tap(node: ComponentNode, listener: DataListener) {
+        val first = tapped == null
+        tapped?.cancel()
+        tapped = try {
+            node.port(rule.port.name).tap(listener)
+        } catch (e: RtcException) {
+            if (first) throw e
+            engine.log("warning: ${rule.description}: could not tap the re-created component: ${e.message}")
+            null
+        }
+    }
+
+    private fun <T : PortData> samples(rule: DataRule.Samples<T>): DataListener {
         val queue = HandlerQueue<T>(scope, Overlap.LATEST) { sample -> fire(rule.description) { rule.handler(this, sample) } }
-        return org.rtcoord.DataListener { data -> if (rule.type.isInstance(data)) queue.offer(rule.type.cast(data)) }
+        return DataListener { data -> if (rule.type.isInstance(data)) queue.offer(rule.type.cast(data)) }
     }
 
-    private suspend fun watchLiveness(tap: suspend (org.rtcoord.DataListener) -> Unit) {
+    /** Starts checking the port's silence and rate; returns the listener that counts its samples. */
+    private fun watchLiveness(): DataListener {
         val silence = (rule as? DataRule.Silence)?.limit
         val rate = (rule as? DataRule.RateBelow)?.rate
         val liveness = DataLiveness(now(), silence?.inWholeMilliseconds, rate)
-        tap(org.rtcoord.DataListener { synchronized(liveness) { liveness.sample(now()) } })
         val period = ((silence ?: 1000.milliseconds) / 5).coerceIn(10.milliseconds, 200.milliseconds)
         scope.launch {
             while (isActive) {
@@ -65,6 +84,7 @@ internal class DataRuleRun(
                 }
             }
         }
+        return DataListener { synchronized(liveness) { liveness.sample(now()) } }
     }
 
     private companion object {
