@@ -3,11 +3,9 @@ package org.rtcoord.internal.data
 import RTC.PortService
 import org.rtcoord.RtcException
 import org.rtcoord.internal.TreeCore
-import org.rtcoord.internal.isGone
+import org.rtcoord.internal.orFail
+import org.rtcoord.internal.removeLeftBehind
 import org.rtcoord.internal.toMap
-import org.slf4j.LoggerFactory
-
-private val log = LoggerFactory.getLogger(DataTap::class.java)
 
 /**
  * Removes from [port] the tap connectors of trees that are gone (a coordinator that crashed or was
@@ -20,19 +18,9 @@ internal suspend fun removeStaleTaps(core: TreeCore, subject: String, port: Port
     } catch (e: RtcException) {
         return
     }
-    for (profile in profiles.filter { it.connector_id.orEmpty().startsWith(DataTap.PREFIX) }) {
-        val ior = profile.properties.toMap()["dataport.corba_cdr.inport_ior"]
-        val gone = try {
-            core.remote.call(subject, "probe tap ${profile.connector_id}") { ior == null || isGone(core.orb.orb.string_to_object(ior)) }
-        } catch (e: RtcException) {
-            false
-        }
-        if (!gone) continue
-        try {
-            core.remote.call(subject, "disconnect") { port.disconnect(profile.connector_id) }
-            log.info("{}: removed stale data tap {} left by an earlier run", subject, profile.connector_id)
-        } catch (e: RtcException) {
-            log.debug("{}: could not remove stale data tap {}: {}", subject, profile.connector_id, e.message)
-        }
-    }
+    core.removeLeftBehind(
+        subject, "data tap", profiles.filter { it.connector_id.orEmpty().startsWith(DataTap.PREFIX) }, { it.connector_id },
+        { profile -> profile.properties.toMap()["dataport.corba_cdr.inport_ior"]?.let(core.orb.orb::string_to_object) },
+        "disconnect",
+    ) { id -> port.disconnect(id).orFail(subject, "disconnect") }
 }

@@ -1,12 +1,10 @@
 package org.rtcoord.internal.events
 
 import _SDOPackage.Configuration
+import org.rtcoord.OperationFailedException
 import org.rtcoord.RtcException
 import org.rtcoord.internal.TreeCore
-import org.rtcoord.internal.isGone
-import org.slf4j.LoggerFactory
-
-private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
+import org.rtcoord.internal.removeLeftBehind
 
 /**
  * Removes from the component the observers this library registered (their profile ids carry
@@ -24,18 +22,8 @@ internal suspend fun removeStaleObservers(core: TreeCore, subject: String, compo
     } catch (e: RtcException) {
         return
     }
-    for (profile in profiles.filter { it.id.orEmpty().startsWith(ObserverHost.PROFILE_PREFIX) }) {
-        val gone = try {
-            core.remote.call(subject, "probe observer ${profile.id}") { profile.service == null || isGone(profile.service) }
-        } catch (e: RtcException) {
-            false
-        }
-        if (!gone) continue
-        try {
-            core.remote.call(subject, "remove_service_profile") { configuration.remove_service_profile(profile.id) }
-            log.info("{}: removed stale observer {} left by an earlier run", subject, profile.id)
-        } catch (e: RtcException) {
-            log.debug("{}: could not remove stale observer {}: {}", subject, profile.id, e.message)
-        }
-    }
+    core.removeLeftBehind(
+        subject, "observer", profiles.filter { it.id.orEmpty().startsWith(ObserverHost.PROFILE_PREFIX) }, { it.id },
+        { profile -> profile.service }, "remove_service_profile",
+    ) { id -> if (!configuration.remove_service_profile(id)) throw OperationFailedException(subject, "remove_service_profile", "false") }
 }
