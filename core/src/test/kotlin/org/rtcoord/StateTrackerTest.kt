@@ -31,8 +31,8 @@ class StateTrackerTest {
     }
 
     @Test
-    fun `a hinted deactivation waits for an abort's ERROR hint, then is published as it was`() {
-        val tracker = StateTracker(ACTIVE, abortWindowMillis = 25)
+    fun `a hinted deactivation waits for an abort's ERROR hint, until the hints before it are in or the limit, then is published as it was`() {
+        val tracker = StateTracker(ACTIVE, holdLimitMillis = 25)
         tracker.hint(INACTIVE)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 100, grace, hintsExpected = true), "held")
         assertTrue(tracker.holding)
@@ -44,8 +44,21 @@ class StateTrackerTest {
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true), "other transitions are not held")
         tracker.hint(INACTIVE)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 130, grace, hintsExpected = true))
-        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true), "a deactivation after the window")
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true), "a deactivation after the limit")
         assertFalse(tracker.holding)
+
+        tracker.hint(ACTIVE)
+        assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 160, grace, hintsExpected = true))
+        tracker.hint(INACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 161, grace, hintsExpected = true))
+        tracker.flushed()
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 162, grace, hintsExpected = true), "a deactivation once the earlier hints are in")
+        assertFalse(tracker.holding)
+        tracker.flushed()
+        tracker.hint(ACTIVE)
+        tracker.reconcile(ACTIVE, 163, grace, hintsExpected = true)
+        tracker.hint(INACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 164, grace, hintsExpected = true), "a flush before the hold began does not end it")
     }
 
     @Test

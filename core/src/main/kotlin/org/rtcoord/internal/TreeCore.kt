@@ -28,6 +28,9 @@ internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) 
     val watcher = Watcher(this)
     val taps = DataTaps(this)
 
+    /** Requests whose replies no thread waits for; made on first use, when the ORB has started. */
+    val requests by lazy { AsyncRequests(orb.orb, scope) }
+
     /** Poll ticks that found the previous one still waiting and were folded into it (see [RtcTree.missedPollTicks]). */
     val missedPollTicks = AtomicLong()
     private val closed = AtomicBoolean()

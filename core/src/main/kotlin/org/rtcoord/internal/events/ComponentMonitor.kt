@@ -54,6 +54,10 @@ internal class ComponentMonitor(
     /** A poll tick; [done] tells the tree's [PollSchedule] once it has been served. */
     private class Tick(val done: () -> Unit) : Work
     private object Liveness : Work
+    /** A poll read its [StateProbe] could not finish alone. */
+    private class Probed(val outcome: StateProbe.Outcome) : Work
+    /** A [HintMarker]'s marker came back through the observer. */
+    private class Marked(val hint: Hint) : Work
     /** Registrations changed; [done] completes once the monitor watches as they ask. */
     private class Reconfigure(val done: CompletableDeferred<Unit>? = null) : Work
 
@@ -67,7 +71,9 @@ internal class ComponentMonitor(
 
     // Owned by the worker coroutine.
     private var last: ComponentSnapshot? = null
-    private val states = ContextStates(node, ABORT_WINDOW_MILLIS)
+    private val states = ContextStates(node, HOLD_LIMIT_MILLIS)
+    /** While a deactivation is held: when the hints sent before the read that confirmed it are in. */
+    private val marker = HintMarker(subject)
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
@@ -75,7 +81,23 @@ internal class ComponentMonitor(
     private var attachedTraffic: Duration? = null
     /** Work that arrived during a read, other than the lifecycle hints taken at once: the next round's. */
     private val carried = ArrayList<Work>()
-    private val timers = MonitorTimers(core, { done -> work.trySend(Tick(done)).isSuccess }) { work.trySend(Liveness) }
+    /** Counts the reads this monitor reconciled (and failures): a probe sent before the latest one tells nothing new. */
+    private var epoch = 0L
+    private val probe: StateProbe? = core.requests.takeIf { it.supports(node.component.ref) }?.let { requests ->
+        StateProbe(requests, node.component.ref, { timers.heard() }) { outcome -> if (!work.trySend(Probed(outcome)).isSuccess) outcome.done() }
+    }
+    private val member = object : PollSchedule.Member {
+        override fun tick(done: () -> Unit) {
+            if (!work.trySend(Tick(done)).isSuccess) done()
+        }
+
+        override fun probe(done: () -> Unit): Boolean = probe?.send(done) ?: false
+
+        override fun late() {
+            probe?.late()
+        }
+    }
+    private val timers = MonitorTimers(core, member) { work.trySend(Liveness) }
 
     init {
         // On the dispatcher of remote calls, which its reads then make without changing threads.
@@ -123,6 +145,7 @@ internal class ComponentMonitor(
         } finally {
             withContext(NonCancellable) {
                 timers.stop()
+                probe?.close()
                 link.detach()
                 ended(this@ComponentMonitor)
                 stopped.complete(Unit)
@@ -133,12 +156,25 @@ internal class ComponentMonitor(
     private suspend fun handle(batch: List<Work>) {
         var read = false
         val hintedStates = HashSet<Int>()
+        var probed: Map<Int, LifeCycle>? = null
         val reconfigurations = batch.filterIsInstance<Reconfigure>()
+        fun tick() {
+            if (registrations.all { it.statesOnly } && liveness.state == ComponentLiveness.State.ANSWERING) hintedStates += node.component.contexts.keys else read = true
+        }
         for (item in batch) {
             when (item) {
                 is Received -> read = take(item.hint, hintedStates) || read
                 Read -> read = true
-                is Tick -> if (registrations.all { it.statesOnly } && liveness.state == ComponentLiveness.State.ANSWERING) hintedStates += node.component.contexts.keys else read = true
+                is Tick -> tick()
+                is Probed -> when (val outcome = item.outcome) {
+                    // Read as this monitor last knew it: the states it found are news.
+                    is StateProbe.Outcome.Changed -> if (outcome.epoch == epoch) probed = outcome.states else tick()
+                    is StateProbe.Outcome.Unsettled -> tick()
+                }
+                is Marked -> if (marker.cameBack(item.hint)) {
+                    states.flushed()
+                    hintedStates += node.component.contexts.keys
+                }
                 Liveness -> read = checkLiveness() || read
                 is Reconfigure -> Unit
             }
@@ -149,11 +185,31 @@ internal class ComponentMonitor(
                 reconfigurations.isNotEmpty() -> reconfigure()
                 read -> readAndPublish()
                 hintedStates.isNotEmpty() -> readStates(hintedStates)
+                probed != null -> takeStates(probed)
             }
         } finally {
+            // Before the ticks are done: the probe of the next one expects what this batch found.
+            expectProbes()
             reconfigurations.forEach { it.done?.complete(Unit) }
-            batch.forEach { if (it is Tick) it.done() }
+            batch.forEach { item ->
+                when (item) {
+                    is Tick -> item.done()
+                    is Probed -> item.outcome.done()
+                    else -> Unit
+                }
+            }
         }
+    }
+
+    /**
+     * Tells the probe what its reads should find, when a read finding that needs nothing of this monitor:
+     * every registration wants states alone, the component answers, and its hints and reads agree.
+     */
+    private fun expectProbes() {
+        val probe = probe ?: return
+        val settled = registrations.isNotEmpty() && registrations.all { it.statesOnly } &&
+            liveness.state == ComponentLiveness.State.ANSWERING && !states.awaitingConfirmation && !states.holding
+        probe.expect(last?.takeIf { settled }?.let { StateProbe.Expectation.of(it, node.component.contexts, epoch) })
     }
 
     /**
@@ -186,10 +242,17 @@ internal class ComponentMonitor(
             failed(e)
             return
         }
+        takeStates(states)
+    }
+
+    /** Takes [states], just read by context handle, as the component's and publishes what changed. */
+    private fun takeStates(states: Map<Int, LifeCycle>) {
+        val previous = last ?: return
         liveness.answered(now())
         val snapshot = previous.copy(contexts = previous.contexts.map { context -> states[context.handle]?.let { context.copy(state = it) } ?: context })
         node.component.publish(snapshot)
         last = snapshot
+        epoch++
         publish(stateEvents(snapshot))
     }
 
@@ -202,7 +265,14 @@ internal class ComponentMonitor(
             if (late) carried += Read
             core.scope.launch { delay(GRACE_MILLIS); work.trySend(Read) }
         }
-        if (states.holding) core.scope.launch { delay(ABORT_WINDOW_MILLIS); work.trySend(Read) }
+        when {
+            !states.holding -> marker.forget()
+            // A deactivation this read confirmed is held until the hints sent before the read are in.
+            !marker.isPending -> {
+                marker.send(link.observer)
+                core.scope.launch { delay(HOLD_LIMIT_MILLIS); work.trySend(Read) }
+            }
+        }
         return events
     }
 
@@ -279,6 +349,7 @@ internal class ComponentMonitor(
     private fun received(hint: Hint) {
         val traffic = hint.traffic()
         when {
+            marker.isMarker(hint) -> work.trySend(Marked(hint))
             hint.isHeartbeat -> timers.heard()
             traffic != null -> {
                 timers.heard()
@@ -319,10 +390,12 @@ internal class ComponentMonitor(
         events += stateEvents(snapshot)
         if (previous != null) events += differences(node, previous, snapshot)
         last = snapshot
+        epoch++
         publish(events)
     }
 
     private fun failed(e: RtcException) {
+        epoch++
         val unreachable = e is UnreachableException
         val changes = liveness.failed(now(), gone = unreachable && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable)
         if (ComponentLiveness.Change.Finalized in changes) {
@@ -353,8 +426,8 @@ internal class ComponentMonitor(
         /** How long hints and reads may disagree before a read decides: hints late under load still count. */
         const val GRACE_MILLIS = 500L
 
-        /** How long a hinted deactivation waits for the ERROR hint that would make it an abort. */
-        const val ABORT_WINDOW_MILLIS = 25L
+        /** How long a hinted deactivation may wait for its [HintMarker]: as long as hints and reads may disagree. */
+        const val HOLD_LIMIT_MILLIS = GRACE_MILLIS
 
         /** The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default. */
         val NO_TRAFFIC = 1.hours

@@ -8,14 +8,19 @@ import org.rtcoord.StateChanged
  * One watched component's lifecycle in each of its execution contexts: a [StateTracker] per context
  * handle, fed the lifecycle hints and the reads, and the [StateChanged] events they agree on.
  */
-internal class ContextStates(private val node: ComponentNode, private val abortWindowMillis: Long) {
+internal class ContextStates(private val node: ComponentNode, private val holdLimitMillis: Long) {
     private val trackers = HashMap<Int, StateTracker>()
 
     /** Whether hints and reads disagree somewhere, and a read after the grace period must decide. */
     val awaitingConfirmation: Boolean get() = trackers.values.any { it.awaitingConfirmation }
 
-    /** Whether a hinted deactivation is held somewhere, and a read after the abort window must publish it. */
+    /** Whether a hinted deactivation is held somewhere, until [flushed] or the hold limit. */
     val holding: Boolean get() = trackers.values.any { it.holding }
+
+    /** The hints sent before the latest read have all been taken: held deactivations end at the next read. */
+    fun flushed() {
+        trackers.values.forEach(StateTracker::flushed)
+    }
 
     /**
      * Takes an RTC_STATUS [hint]; returns the handle of the context whose state is then worth reading,
@@ -33,7 +38,7 @@ internal class ContextStates(private val node: ComponentNode, private val abortW
     fun read(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, graceMillis: Long, hintsExpected: Boolean): List<StateChanged> {
         val events = mutableListOf<StateChanged>()
         for (context in snapshot.contexts) {
-            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state, abortWindowMillis) }
+            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state, holdLimitMillis) }
             tracker.reconcile(context.state, now, graceMillis, hintsExpected).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
         }
         trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())

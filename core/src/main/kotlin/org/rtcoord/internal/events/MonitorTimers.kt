@@ -4,20 +4,19 @@ import org.rtcoord.internal.TreeCore
 import kotlin.time.Duration
 
 /**
- * The timers of one component's monitor: its place in the tree's poll schedule, and the watchdog of its
- * observer's heartbeats. Both only post work to the monitor: [tick] a poll tick (false when the monitor
- * no longer takes work), [check] a liveness check. A heartbeat only records when it came ([heard]), on the
+ * The timers of one component's monitor: its [member]ship of the tree's poll schedule, and the watchdog
+ * of its observer's heartbeats, which only posts work to the monitor ([check], a liveness check). A sign
+ * of life (a heartbeat, a poll read that found nothing new) only records when it came ([heard]), on the
  * ORB's thread, and wakes the monitor only once a beat is overdue.
  */
-internal class MonitorTimers(private val core: TreeCore, private val tick: (done: () -> Unit) -> Boolean, private val check: () -> Unit) {
+internal class MonitorTimers(private val core: TreeCore, private val member: PollSchedule.Member, private val check: () -> Unit) {
     /** The period it is polled at, or null. */
     var pollPeriod: Duration? = null
         private set
 
-    private val member = PollSchedule.Member { done -> if (!tick(done)) done() }
     private var watchdog: Pair<Duration, () -> Unit>? = null
 
-    /** When the last heartbeat arrived, in [now]'s milliseconds. */
+    /** When the last sign of life came, in [now]'s milliseconds. */
     @Volatile var heardAt: Long = now()
         private set
 

@@ -22,6 +22,18 @@ internal class ObserverHost(orb: ORB) {
         private val served = poa.serve(servant)
         val reference: org.omg.CORBA.Object get() = served.reference
 
+        /**
+         * Sends [marker] to this observer, through the ORB like any hint, in a kind no component sends (the
+         * enum's count, `STATUS_KIND_NUM`). One thread takes the observers' calls in the order they reached
+         * the ORB: when the marker comes back, every hint that reached it before has been taken too.
+         */
+        fun sendMarker(marker: String) {
+            when (flavour) {
+                ObserverFlavour.OPENRTM -> OpenRTM.ComponentObserverHelper.unchecked_narrow(reference).update_status(OpenRTM.StatusKind.STATUS_KIND_NUM, marker)
+                ObserverFlavour.OMG -> RTC.ComponentObserverHelper.unchecked_narrow(reference).update_status(RTC.StatusKind.STATUS_KIND_NUM, marker)
+            }
+        }
+
         fun close() = served.close()
     }
 

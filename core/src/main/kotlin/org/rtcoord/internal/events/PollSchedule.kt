@@ -12,16 +12,21 @@ import java.util.concurrent.atomic.AtomicBoolean
 import kotlin.coroutines.CoroutineContext
 import kotlin.coroutines.EmptyCoroutineContext
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.DurationUnit
+import kotlin.time.TimeMark
 import kotlin.time.TimeSource
 
 /**
  * Every component of a tree polled at one [period], on one schedule: each round reads every member once,
- * their reads spread evenly over the period (member i of n at i/n of it) rather than all at once, with at
- * most [inFlight] reads pending. When the reads cannot keep up, a round simply takes longer: every member
- * is then read at the same, lower rate, and [slow] is told once (after [SLOW_ROUNDS] slow rounds in a row)
- * what that rate is. Ticks a round could not serve in time count as [missed] (a member whose previous
- * read still waits, a hung component, is passed over in that round rather than holding the others up).
+ * their reads spread over the period (member i of n at i/n of it; those due within a [slice] of each
+ * other leave together, one wake-up for several reads rather than one each). A member's read is a
+ * [Member.probe] when it can make one (no thread waits for the reply; at most [PROBES_IN_FLIGHT]
+ * pending), else a [Member.tick] (at most [inFlight] pending: each holds a thread). When the reads cannot
+ * keep up, a round simply takes longer: every member is then read at the same, lower rate, and [slow] is
+ * told once (after [SLOW_ROUNDS] slow rounds in a row) what that rate is. Ticks a round could not serve
+ * in time count as [missed] (a member whose previous read still waits, a hung component, is passed over
+ * in that round rather than holding the others up, and told it is [Member.late]).
  * Its rounds run in [context]: on the dispatcher the members read on, a tick and its read pass from one
  * to the other without waking a thread.
  */
@@ -34,9 +39,16 @@ internal class PollSchedule(
     private val time: TimeSource = TimeSource.Monotonic,
     context: CoroutineContext = EmptyCoroutineContext,
 ) {
-    /** One polled component: [tick] asks it to read, and it calls `done` once the read has ended (or failed). */
+    /** One polled component. Each read it is asked for calls `done` once it has ended (or failed). */
     fun interface Member {
+        /** Reads the member. */
         fun tick(done: () -> Unit)
+
+        /** Sends a read whose reply no thread waits for, if the member can now; false when it cannot, and [tick] is asked instead. */
+        fun probe(done: () -> Unit): Boolean = false
+
+        /** Its turn came while its previous read was still pending. */
+        fun late() {}
     }
 
     private class Slot(val member: Member) {
@@ -46,6 +58,8 @@ internal class PollSchedule(
     private val slots = CopyOnWriteArrayList<Slot>()
     private val joined = Channel<Unit>(Channel.CONFLATED)
     private val permits = Semaphore(inFlight)
+    private val probes = Semaphore(PROBES_IN_FLIGHT)
+    private val slice = (period / SLICES).coerceAtMost(MAX_SLICE)
     private var warned = false
     private var overdue = 0.0
 
@@ -55,13 +69,16 @@ internal class PollSchedule(
     private var lastMembers = 0
 
     private val rounds: Job = scope.launch(context) {
+        val origin = time.markNow()
+        var due = Duration.ZERO
         while (isActive) {
             val members = slots.toList()
             if (members.isEmpty()) {
                 joined.receive()
+                due = origin.elapsedNow()
                 continue
             }
-            round(members)
+            due = round(members, origin, due)
         }
     }
 
@@ -81,35 +98,45 @@ internal class PollSchedule(
         rounds.cancel()
     }
 
-    private suspend fun round(members: List<Slot>) {
-        val start = time.markNow()
+    /**
+     * Reads every member once, spread over the period that begins [due] after [origin]; returns when the
+     * next round is due. Rounds keep to one timeline: a round that starts late catches up, and only a
+     * schedule a whole period behind gives up the ticks it owes, and goes on from now.
+     */
+    private suspend fun round(members: List<Slot>, origin: TimeMark, due: Duration): Duration {
+        val start = origin.elapsedNow()
         var passedOver = 0L
         members.forEachIndexed { index, slot ->
-            delay(period * index.toDouble() / members.size - start.elapsedNow())
+            val wait = due + period * index.toDouble() / members.size - origin.elapsedNow()
+            if (wait > slice) delay(wait)
             // Its previous read still waits (a hung component): this round goes on without it.
             if (!slot.busy.compareAndSet(false, true)) {
                 passedOver++
+                slot.member.late()
                 return@forEachIndexed
             }
-            permits.acquire()
-            val released = AtomicBoolean()
-            slot.member.tick {
-                if (released.compareAndSet(false, true)) {
-                    slot.busy.set(false)
-                    permits.release()
-                }
-            }
+            read(slot)
         }
-        delay(period - start.elapsedNow())
-        val took = start.elapsedNow()
-        // A round that took 1.5 periods left half a tick of every member unserved.
-        overdue += members.size * ((took - period) / period).coerceAtLeast(0.0)
+        var next = due + period
+        delay(next - origin.elapsedNow())
+        val behind = origin.elapsedNow() - next
+        if (behind >= period) {
+            // A period and a half behind: one and a half ticks of every member were never served.
+            overdue += members.size * (behind / period)
+            next = origin.elapsedNow()
+        }
         val late = overdue.toLong()
         overdue -= late
         if (late + passedOver > 0) missed(late + passedOver)
+        noteSpeed(members.size, origin.elapsedNow() - start)
+        return next
+    }
+
+    /** Says once that the schedule cannot keep up, when rounds of as many members keep taking [took] or longer. */
+    private fun noteSpeed(members: Int, took: Duration) {
         // Only a schedule that stays slow with the same members says so: not one still being filled.
-        if (took <= period * SLOW || members.size != lastMembers) {
-            lastMembers = members.size
+        if (took <= period * SLOW || members != lastMembers) {
+            lastMembers = members
             slowRounds = 0
             slowTime = Duration.ZERO
             return
@@ -118,11 +145,42 @@ internal class PollSchedule(
         slowTime += took
         if (!warned && slowRounds == SLOW_ROUNDS) {
             warned = true
-            slow(members.size, slowTime / slowRounds)
+            slow(members, slowTime / slowRounds)
+        }
+    }
+
+    private suspend fun read(slot: Slot) {
+        probes.acquire()
+        if (slot.member.probe(ending(slot, probes))) return
+        probes.release()
+        permits.acquire()
+        slot.member.tick(ending(slot, permits))
+    }
+
+    /** What ends a read of [slot] that took one of [limit]'s permits: only the first call counts. */
+    private fun ending(slot: Slot, limit: Semaphore): () -> Unit {
+        val ended = AtomicBoolean()
+        return {
+            if (ended.compareAndSet(false, true)) {
+                slot.busy.set(false)
+                limit.release()
+            }
         }
     }
 
     private companion object {
+        /**
+         * Probes pending at once. A probe holds no thread, and polling 1000 components at 10 Hz sends 50 in
+         * a slice: this limit only slows a round down when the components answer more slowly than that.
+         */
+        const val PROBES_IN_FLIGHT = 64
+
+        /** Slices per period: reads due within one slice leave together. */
+        const val SLICES = 20
+
+        /** The longest slice, whatever the period: a read leaves at most this much before its time. */
+        val MAX_SLICE = 10.milliseconds
+
         /** How much longer than its period a round may take before the schedule says it cannot keep up. */
         const val SLOW = 1.2
 

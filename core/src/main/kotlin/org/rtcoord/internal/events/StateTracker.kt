@@ -12,11 +12,12 @@ import org.rtcoord.LifeCycle
  * read. So the published stream has no phantom transition, keeps every transition the hints reported and
  * the reads confirmed, and always ends in the real state.
  *
- * A hinted deactivation (ACTIVE to INACTIVE) is held for [abortWindowMillis] before it is published: an
- * abort hints INACTIVE then ERROR, and when a reset follows at once, a read between the two hints finds
- * INACTIVE too. The ERROR hint arriving within the window turns the pair into the abort it was.
+ * A hinted deactivation (ACTIVE to INACTIVE) that a read confirms is held until every hint the component
+ * sent before that read has been taken ([flushed]), or [holdLimitMillis] at most: an abort hints INACTIVE
+ * then ERROR, and when a reset follows at once, a read that overtook the ERROR hint finds INACTIVE too.
+ * The ERROR hint arriving meanwhile turns the pair into the abort it was.
  */
-internal class StateTracker(initial: LifeCycle, private val abortWindowMillis: Long = 0) {
+internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Long = 0) {
     /** The last published state. */
     var confirmed: LifeCycle = initial
         private set
@@ -24,12 +25,18 @@ internal class StateTracker(initial: LifeCycle, private val abortWindowMillis: L
     private val hinted = ArrayList<LifeCycle>()
     private var disagreedSince: Long? = null
     private var heldSince: Long? = null
+    private var flushed = false
 
     /** Whether hints and reads disagree, and a later read must decide. */
     val awaitingConfirmation: Boolean get() = disagreedSince != null
 
-    /** Whether a hinted deactivation is held, and a read after the abort window must publish it. */
+    /** Whether a hinted deactivation is held, until [flushed] or the hold limit. */
     val holding: Boolean get() = heldSince != null
+
+    /** Every hint sent before the read that began the hold has been taken: the next reconciliation ends it. */
+    fun flushed() {
+        if (heldSince != null) flushed = true
+    }
 
     /** Takes a hinted state; duplicates and impossible transitions are ignored (the next read decides). */
     fun hint(state: LifeCycle) {
@@ -53,9 +60,10 @@ internal class StateTracker(initial: LifeCycle, private val abortWindowMillis: L
         val path = if (hintedPath) listOf(confirmed) + hinted else listOf(confirmed, real)
         if (hintedPath && hintsExpected && path.takeLast(2) == listOf(LifeCycle.ACTIVE, LifeCycle.INACTIVE)) {
             val since = heldSince ?: now.also { heldSince = it }
-            if (now - since < abortWindowMillis) return emptyList()
+            if (!flushed && now - since < holdLimitMillis) return emptyList()
         }
         heldSince = null
+        flushed = false
         hinted.clear()
         disagreedSince = null
         confirmed = real

@@ -51,12 +51,40 @@ class PollScheduleTest {
 
         // 100 ticks of each in 10 s, give or take the one under way at the end.
         run.components.forEach { assertTrue(it.reads.size in 99..100, "reads: ${it.reads.size}") }
-        // One read starts every millisecond: spread, never a burst of 100 at once.
-        val starts = run.components.flatMap { it.reads }.sorted()
-        val perMillisecond = starts.groupingBy { it }.eachCount().values.max()
-        assertEquals(1, perMillisecond, "reads starting in the same millisecond")
+        // Component i is read at i ms of every period, or up to a slice (5 ms, a twentieth) earlier with
+        // those due within it: spread, never a burst of 100 at once.
+        run.components.forEachIndexed { index, component ->
+            component.reads.forEach { start -> assertTrue((index - start % 100) in 0..5, "component $index read at $start") }
+        }
+        val perMillisecond = run.components.flatMap { it.reads }.groupingBy { it }.eachCount().values.max()
+        assertEquals(6, perMillisecond, "reads starting in the same millisecond")
         assertEquals(0, run.missed)
         assertEquals(emptyList<Pair<Int, Duration>>(), run.warnings)
+    }
+
+    @Test
+    fun `a round held up once catches up and misses no tick`() = runTest {
+        var missed = 0L
+        val reads = CoroutineScope(coroutineContext + Job())
+        // One read at a time; the first read of the ninth component (due at 80 ms) takes 40 ms, holding the
+        // tenth (due at 90 ms) until 120 ms, past the end of the round.
+        val schedule = PollSchedule(backgroundScope, 100.milliseconds, 1, { missed += it }, { _, _ -> }, testScheduler.timeSource)
+        var first = true
+        val slow = PollSchedule.Member { done ->
+            val readTime = if (first) 40.milliseconds else 1.milliseconds
+            first = false
+            reads.launch { delay(readTime); done() }
+        }
+        val others = List(9) { Component(reads, 1.milliseconds) { testScheduler.currentTime } }
+        others.take(8).forEach(schedule::add)
+        schedule.add(slow)
+        schedule.add(others.last())
+        testScheduler.advanceTimeBy(2.seconds)
+        schedule.stop()
+        reads.coroutineContext[Job]!!.cancel()
+
+        others.forEach { assertTrue(it.reads.size in 19..20, "reads: ${it.reads.size}") }
+        assertEquals(0, missed)
     }
 
     @Test
@@ -96,5 +124,56 @@ class PollScheduleTest {
         assertEquals(1, hung.ticks)
         healthy.forEach { assertTrue(it.reads.size in 49..50, "reads: ${it.reads.size}") }
         assertTrue(missed in 48L..50L, "missed $missed")
+    }
+
+    /** A component read by probes answered after [replyTime]; a probe left unanswered is [late] once its turn comes again. */
+    private class Probed(private val scope: CoroutineScope, private val replyTime: Duration?, private val clock: () -> Long) : PollSchedule.Member {
+        val probes = mutableListOf<Long>()
+        var ticks = 0
+        var lates = 0
+        private var pending: (() -> Unit)? = null
+
+        override fun probe(done: () -> Unit): Boolean {
+            probes += clock()
+            pending = done
+            replyTime?.let { scope.launch { delay(it); done() } }
+            return true
+        }
+
+        override fun tick(done: () -> Unit) {
+            ticks++
+            done()
+        }
+
+        override fun late() {
+            lates++
+            // Given up to the monitor, whose own read ends it.
+            pending?.invoke()
+        }
+    }
+
+    @Test
+    fun `probes hold no read in flight and a probe still unanswered at its next turn is late`() = runTest {
+        var missed = 0L
+        val replies = CoroutineScope(coroutineContext + Job())
+        // One read in flight at a time, and replies take half a period: ticks could serve 20 components a second.
+        val schedule = PollSchedule(backgroundScope, 100.milliseconds, 1, { missed += it }, { _, _ -> }, testScheduler.timeSource)
+        val answering = List(99) { Probed(replies, 50.milliseconds) { testScheduler.currentTime } }
+        val silent = Probed(replies, null) { testScheduler.currentTime }
+        answering.forEach(schedule::add)
+        schedule.add(silent)
+        testScheduler.advanceTimeBy(10.seconds)
+        schedule.stop()
+        replies.coroutineContext[Job]!!.cancel()
+
+        answering.forEach {
+            assertTrue(it.probes.size in 99..100, "probes: ${it.probes.size}")
+            assertEquals(0, it.lates)
+            assertEquals(0, it.ticks)
+        }
+        // Probed, passed over as late the next round (its read handed over, and ended), probed again.
+        assertTrue(silent.probes.size in 49..50, "probes: ${silent.probes.size}")
+        assertTrue(silent.lates in silent.probes.size - 1..silent.probes.size + 1, "lates: ${silent.lates}")
+        assertTrue(missed in 49L..50L, "missed $missed")
     }
 }
