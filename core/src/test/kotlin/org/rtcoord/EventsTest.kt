@@ -13,6 +13,9 @@ import org.rtcoord.fixtures.ComponentContext
 import org.rtcoord.fixtures.ComponentType
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -62,9 +65,23 @@ class EventsTest {
 
     @Test
     fun `an abort reset at once is reported as an abort, not as a deactivation`(): Unit = runBlocking {
-        // Its on_deactivated fails, so a deactivation aborts: OpenRTM-aist hints INACTIVE, then ERROR. The reset
-        // follows at once, so a read made between the two hints already finds the component INACTIVE.
-        val aborting = ComponentType("aborting", behaviour = { object : Behaviour { override fun onDeactivated(rtc: ComponentContext) = false } })
+        // Its execution fails, so it aborts: OpenRTM-aist hints INACTIVE (on_deactivated), then ERROR
+        // (on_aborting). The reset waits only for the abort to end, so a read made after the first hint may
+        // already find the component INACTIVE again.
+        val failing = LinkedBlockingQueue<CountDownLatch>()
+        val aborting = ComponentType(
+            "aborting",
+            rate = 1000.0,
+            behaviour = {
+                object : Behaviour {
+                    override fun onExecute(rtc: ComponentContext): Boolean {
+                        val failure = failing.poll() ?: return true
+                        failure.countDown()
+                        return false
+                    }
+                }
+            },
+        )
         val component = localisation.system.runtime.create(aborting, "aborting0")
         val node = tree.component(path("aborting0.rtc"))
         val recorder = EventRecorder()
@@ -72,7 +89,9 @@ class EventsTest {
         repeat(ABORTS) {
             assertEquals(ReturnCode_t.RTC_OK, component.activate())
             assertEquals(LifeCycle.INACTIVE to LifeCycle.ACTIVE, recorder.next<StateChanged>().let { it.old to it.new })
-            assertEquals(ReturnCode_t.RTC_ERROR, component.deactivate())
+            val failed = CountDownLatch(1).also(failing::add)
+            assertTrue(failed.await(5, TimeUnit.SECONDS), "the execution failed")
+            // Taken as soon as the context's thread lets go, once the abort is done.
             assertEquals(ReturnCode_t.RTC_OK, component.reset())
             assertEquals(LifeCycle.ACTIVE to LifeCycle.ERROR, recorder.next<StateChanged>().let { it.old to it.new }, "round ${it + 1}")
             assertEquals(LifeCycle.ERROR to LifeCycle.INACTIVE, recorder.next<StateChanged>().let { it.old to it.new }, "round ${it + 1}")

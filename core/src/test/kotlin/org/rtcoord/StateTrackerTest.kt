@@ -62,6 +62,22 @@ class StateTrackerTest {
     }
 
     @Test
+    fun `hints lead a read that finds the state they left, not one that finds a change they did not announce`() {
+        val tracker = StateTracker(ACTIVE)
+        tracker.hint(INACTIVE)
+        // OpenRTM-aist shows the new state only once the transition's hints are sent: a read may come first.
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ACTIVE, 1, grace, hintsExpected = true))
+        assertTrue(tracker.hintsLead)
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 2, grace, hintsExpected = true))
+        assertFalse(tracker.hintsLead)
+
+        // A read ahead of the hints waits for them; reading again sooner would not help.
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ACTIVE, 3, grace, hintsExpected = true))
+        assertTrue(tracker.awaitingConfirmation)
+        assertFalse(tracker.hintsLead)
+    }
+
+    @Test
     fun `a hint no read confirms is dropped after the grace period`() {
         val tracker = StateTracker(INACTIVE)
         tracker.hint(ACTIVE)

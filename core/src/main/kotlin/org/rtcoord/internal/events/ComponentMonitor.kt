@@ -56,6 +56,8 @@ internal class ComponentMonitor(
     private object Liveness : Work
     /** A poll read its [StateProbe] could not finish alone. */
     private class Probed(val outcome: StateProbe.Outcome) : Work
+    /** Time to read the states again: the hints lead the last read. */
+    private object Recheck : Work
     /** A [HintMarker]'s marker came back through the observer. */
     private class Marked(val hint: Hint) : Work
     /** Registrations changed; [done] completes once the monitor watches as they ask. */
@@ -74,6 +76,8 @@ internal class ComponentMonitor(
     private val states = ContextStates(node, HOLD_LIMIT_MILLIS)
     /** While a deactivation is held: when the hints sent before the read that confirmed it are in. */
     private val marker = HintMarker(subject)
+    /** How long the pending [Recheck] waits; 0 when none is pending. */
+    private var recheckDelay = 0L
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
@@ -165,12 +169,14 @@ internal class ComponentMonitor(
             when (item) {
                 is Received -> read = take(item.hint, hintedStates) || read
                 Read -> read = true
+                Recheck -> hintedStates += node.component.contexts.keys
                 is Tick -> tick()
                 is Probed -> when (val outcome = item.outcome) {
                     // Read as this monitor last knew it: the states it found are news.
                     is StateProbe.Outcome.Changed -> if (outcome.epoch == epoch) probed = outcome.states else tick()
                     is StateProbe.Outcome.Unsettled -> tick()
                 }
+                // The hints sent before the held read are in: a fresh read of the states decides.
                 is Marked -> if (marker.cameBack(item.hint)) {
                     states.flushed()
                     hintedStates += node.component.contexts.keys
@@ -265,6 +271,7 @@ internal class ComponentMonitor(
             if (late) carried += Read
             core.scope.launch { delay(GRACE_MILLIS); work.trySend(Read) }
         }
+        recheckIfHintsLead()
         when {
             !states.holding -> marker.forget()
             // A deactivation this read confirmed is held until the hints sent before the read are in.
@@ -274,6 +281,21 @@ internal class ComponentMonitor(
             }
         }
         return events
+    }
+
+    /**
+     * Reads the states again soon while hints lead the read, at growing intervals up to the grace period:
+     * OpenRTM-aist sends a transition's hints before its new state shows (its state machine updates the
+     * state once the actions that send them are done), so a read made at once may find the old one.
+     */
+    private fun recheckIfHintsLead() {
+        if (!states.hintsLead) {
+            recheckDelay = 0
+            return
+        }
+        recheckDelay = if (recheckDelay == 0L) FIRST_RECHECK_MILLIS else minOf(recheckDelay * 2, GRACE_MILLIS)
+        val wait = recheckDelay
+        core.scope.launch { delay(wait); work.trySend(Recheck) }
     }
 
     /**
@@ -425,6 +447,9 @@ internal class ComponentMonitor(
     private companion object {
         /** How long hints and reads may disagree before a read decides: hints late under load still count. */
         const val GRACE_MILLIS = 500L
+
+        /** The first wait before reading again when hints lead the read: their state shows a moment after them. */
+        const val FIRST_RECHECK_MILLIS = 1L
 
         /** How long a hinted deactivation may wait for its [HintMarker]: as long as hints and reads may disagree. */
         const val HOLD_LIMIT_MILLIS = GRACE_MILLIS

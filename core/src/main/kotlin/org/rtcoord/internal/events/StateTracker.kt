@@ -30,6 +30,9 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
     /** Whether hints and reads disagree, and a later read must decide. */
     val awaitingConfirmation: Boolean get() = disagreedSince != null
 
+    /** Whether hints lead to a state the last read did not find yet. */
+    val hintsLead: Boolean get() = hinted.isNotEmpty() && disagreedSince != null
+
     /** Whether a hinted deactivation is held, until [flushed] or the hold limit. */
     val holding: Boolean get() = heldSince != null
 
