@@ -16,13 +16,7 @@ import kotlin.system.exitProcess
  * non-daemon threads behind that would keep the JVM alive after the tree is closed.
  */
 fun main(args: Array<String>) {
-    // Before anything logs or makes a reference: SLF4J takes CliLogging as it is named (instead of searching
-    // every jar for a provider) and says nothing about it, and neither JacORB nor RMI-IIOP start logging
-    // of their own (see JacorbSetup and PlainStubs).
-    System.setProperty("slf4j.provider", CliLogging::class.java.name)
-    System.setProperty("slf4j.internal.verbosity", "WARN")
-    System.setProperty("jacorb.log.initializer", CliLogging.JacorbSetup::class.java.name)
-    System.setProperty("javax.rmi.CORBA.StubClass", PlainStubs::class.java.name)
+    useCommandLogging()
     val argv = args.asList()
     val (command, parsed) = parsedRtcoord(argv)
     val status = try {
@@ -33,6 +27,18 @@ fun main(args: Array<String>) {
         e.statusCode
     }
     exitProcess(status)
+}
+
+/**
+ * Makes this JVM log as the command does; called before anything logs or makes a reference. SLF4J takes
+ * [CliLogging] as it is named (instead of searching every jar for a provider) and says nothing about it,
+ * and neither JacORB nor RMI-IIOP start logging of their own (see [CliLogging.JacorbSetup] and [PlainStubs]).
+ */
+fun useCommandLogging() {
+    System.setProperty("slf4j.provider", CliLogging::class.java.name)
+    System.setProperty("slf4j.internal.verbosity", "WARN")
+    System.setProperty("jacorb.log.initializer", CliLogging.JacorbSetup::class.java.name)
+    System.setProperty("javax.rmi.CORBA.StubClass", PlainStubs::class.java.name)
 }
 
 /** The `rtcoord` command with every subcommand. */
