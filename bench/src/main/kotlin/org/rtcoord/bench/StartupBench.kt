@@ -145,6 +145,6 @@ internal class StartupBench(private val options: BenchOptions, private val insta
         const val RUN_CACHED = "rtcoord run --for 1ms, cached script"
 
         /** The flags `./rtcoord` starts the JVM of a browsing command with (cli/src/dist/bin/rtcoord). */
-        val JVM_FLAGS = listOf("-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC", "-Xshare:auto", "-XX:CICompilerCount=1", "-XX:-UsePerfData")
+        val JVM_FLAGS = listOf("-XX:TieredStopAtLevel=1", "-XX:+UseG1GC", "-Xshare:auto", "-XX:CICompilerCount=1", "-XX:-UsePerfData")
     }
 }
