@@ -6,6 +6,7 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import kotlinx.coroutines.withContext
+import org.rtcoord.internal.SurveyReads
 import org.rtcoord.internal.TreeCore
 
 /**
@@ -34,10 +35,11 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
 
     /**
      * Lists this directory again, and those below it down to [depth] levels, reading of each component
-     * only its [ComponentSummary]: what a listing shows, in fewer calls than [refresh]. Dead and hung
-     * components become [ZombieNode]s, as with [refresh].
+     * only its [ComponentSummary]: what a listing shows, in fewer calls than [refresh]. A component
+     * reached by two paths (its naming context and its manager) is read once. Dead and hung components
+     * become [ZombieNode]s, as with [refresh].
      */
-    public suspend fun survey(depth: Int = Int.MAX_VALUE): Unit = withContext(core.remote.dispatcher) {
+    public suspend fun survey(depth: Int = Int.MAX_VALUE): Unit = withContext(core.remote.dispatcher + (SurveyReads.current() ?: SurveyReads())) {
         val children = relist()
         if (depth > 0) {
             children.forEach { child ->

@@ -155,6 +155,16 @@ class TreeDiscoveryTest {
     }
 
     @Test
+    fun `a survey reads a component once, below its naming context and below its manager alike`(): Unit = runBlocking {
+        tree.root.survey()
+        for (name in listOf("laser0", "gyro0", "odometry0", "laser_localise0")) {
+            assertEquals(1, localisation.system.component(name).calls("get_owned_contexts"), name)
+        }
+        val listed = tree.find { it is ComponentNode }.toList().map { it as ComponentNode }.groupBy { it.name }
+        listed.values.forEach { (inNaming, belowManager) -> assertEquals(inNaming.summaries.value, belowManager.summaries.value) }
+    }
+
+    @Test
     fun `a survey shows a hung component as a zombie within the call deadline`(): Unit = runBlocking {
         RtcTree.create(TreeConfig(nameServers = listOf(localisation.naming.address), callTimeout = 1.seconds)).use { quick ->
             val gyro = localisation.system.component("gyro0")

@@ -4,12 +4,16 @@ import org.rtcoord.fixtures.FixtureProcess
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
+import java.util.jar.JarEntry
+import java.util.jar.JarFile
+import java.util.jar.JarOutputStream
 
 /**
  * Start-up of the command line as users run it (`./rtcoord`, whole processes, against the localisation
  * system in a fixture JVM): the bare JVM, `--version`, `--help`, a recursive listing, and a coordinator
  * started from a warm script cache. Then where a browsing command's time goes, from a probe run in a
- * fresh JVM on the CLI's class path: the JVM's start, creating the tree (ORB and classes), the first call.
+ * fresh JVM on the CLI's class path as the launcher runs one: the JVM's start, the command line, creating
+ * the tree, the first call (the ORB starts there), the rest of the listing, closing and the JVM's exit.
  */
 internal class StartupBench(private val options: BenchOptions, private val installation: Installation, private val report: Report) {
     private val javaCommand = Paths.get(System.getProperty("java.home"), "bin", "java").toString()
@@ -24,7 +28,7 @@ internal class StartupBench(private val options: BenchOptions, private val insta
         FixtureProcess.start().use { fixtures ->
             commands(fixtures.address)
             script(fixtures.address)
-            report.section("start-up breakdown: a probe on the CLI's class path, in a fresh JVM with the launcher's flags")
+            report.section("start-up breakdown: a probe on the CLI's class path, in a fresh JVM with the launcher's flags and an archive of its own")
             breakdown(fixtures.address)
         }
     }
@@ -74,28 +78,73 @@ internal class StartupBench(private val options: BenchOptions, private val insta
         }
     }
 
+    /**
+     * The probe runs as the launcher runs a browsing command: its flags, and a class-data sharing archive
+     * written by the first (warm-up) run and mapped by the timed ones. CDS wants jars on the class path,
+     * so the probe's classes go into one of their own.
+     */
     private fun breakdown(address: String) {
-        val classPath = listOf(installation.cliJar!!, codeSource()).joinToString(java.io.File.pathSeparator)
-        val command = listOf(javaCommand) + JVM_FLAGS + listOf("-cp", classPath, StartupProbe::class.java.name, address)
-        val probes = List(options.processWarmups + options.startupRepetitions) {
-            val launched = System.currentTimeMillis()
-            val run = TimedCommand("startup probe", command, installation.root).run()
-            val (entered, created, listed, classes) = run.output.single { it.startsWith("probe ") }.split(' ').drop(1).map { it.toLong() }
-            listOf((entered - launched).toDouble(), created / 1e6, listed / 1e6, classes.toDouble())
-        }.drop(options.processWarmups)
-        report.row("JVM start to main", Samples(probes.map { it[0] }, "ms"), "process start, JVM init, loading the main class")
-        report.row("RtcTree.create", Samples(probes.map { it[1] }, "ms"), "ORB init, loading core and JacORB classes")
-        report.row("first call: list the name server", Samples(probes.map { it[2] }, "ms"), "connection, naming resolve and list")
-        report.row("classes loaded by then", Samples(probes.map { it[3] }, "classes"))
+        val scratch = Files.createTempDirectory("bench-probe")
+        try {
+            val classPath = listOf(installation.cliJar!!, probeJar(scratch)).joinToString(java.io.File.pathSeparator)
+            val archive = scratch.resolve("probe.jsa")
+            fun probe(vararg options: String) = listOf(javaCommand) + JVM_FLAGS + options + listOf("-cp", classPath, StartupProbe::class.java.name, address)
+            // The first run writes the archive and counts the classes a listing loads; the timed ones map it.
+            val first = TimedCommand("startup probe", probe("-XX:ArchiveClassesAtExit=$archive") + "classes", installation.root).run()
+            val classes = first.output.single { it.startsWith("classes ") }.substringAfter(' ').toDouble()
+            val runs = List(options.startupRepetitions) {
+                val launched = System.currentTimeMillis()
+                val run = TimedCommand("startup probe", probe("-XX:SharedArchiveFile=$archive"), installation.root).run()
+                val fields = run.output.single { it.startsWith("probe ") }.split(' ').drop(1).map { it.toLong() }
+                val entered = fields.first()
+                val ended = fields.last()
+                listOf((entered - launched).toDouble()) + fields.subList(1, fields.size - 1).map { it / 1e6 } + (launched + run.nanos / 1e6 - ended)
+            }
+            val rows = listOf(
+                "JVM start to main" to "process start, JVM init with the archive, loading the main class",
+                "command line made and parsed" to "Clikt: rtcoord and its ls subcommand, as the launcher runs them",
+                "RtcTree.create" to "the tree and its scopes; the ORB starts at the first call",
+                "first call: list the name server" to "ORB init, connection, naming resolve and list",
+                "rest of ls -l -R: survey" to "every context, manager and component below, concurrently",
+                "tree closed" to "ORB shut down",
+                "JVM exit" to "from the end of main to the process's end",
+            )
+            rows.forEachIndexed { column, (label, notes) -> report.row(label, Samples(runs.map { it[column] }, "ms"), notes) }
+            report.value("classes a listing loads", classes, "classes", "in the run that wrote the archive; the timed runs map them")
+        } finally {
+            scratch.toFile().deleteRecursively()
+        }
     }
 
-    /** Where this module's classes are: its jar or its classes directory. */
-    private fun codeSource(): Path = Paths.get(StartupProbe::class.java.protectionDomain.codeSource.location.toURI())
+    /** A jar in [directory] holding the probe's classes, from this module's jar or classes directory. */
+    private fun probeJar(directory: Path): Path {
+        val source = Paths.get(StartupProbe::class.java.protectionDomain.codeSource.location.toURI())
+        val jar = directory.resolve("probe.jar")
+        val prefix = StartupProbe::class.java.name.replace('.', '/')
+        JarOutputStream(Files.newOutputStream(jar)).use { out ->
+            fun add(name: String, bytes: ByteArray) {
+                out.putNextEntry(JarEntry(name))
+                out.write(bytes)
+                out.closeEntry()
+            }
+            if (Files.isDirectory(source)) {
+                Files.walk(source).use { files ->
+                    files.filter { Files.isRegularFile(it) && source.relativize(it).toString().startsWith(prefix) }
+                        .forEach { add(source.relativize(it).toString(), Files.readAllBytes(it)) }
+                }
+            } else {
+                JarFile(source.toFile()).use { classes ->
+                    classes.entries().asSequence().filter { it.name.startsWith(prefix) }.forEach { add(it.name, classes.getInputStream(it).readBytes()) }
+                }
+            }
+        }
+        return jar
+    }
 
     private companion object {
         const val RUN_CACHED = "rtcoord run --for 1ms, cached script"
 
-        /** The flags `./rtcoord` starts its JVM with. */
-        val JVM_FLAGS = listOf("-XX:TieredStopAtLevel=1", "-Xshare:auto")
+        /** The flags `./rtcoord` starts the JVM of a browsing command with (cli/src/dist/bin/rtcoord). */
+        val JVM_FLAGS = listOf("-XX:TieredStopAtLevel=1", "-XX:+UseG1GC", "-Xshare:auto", "-XX:CICompilerCount=1", "-XX:-UsePerfData")
     }
 }

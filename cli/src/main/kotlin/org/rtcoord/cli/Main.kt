@@ -2,11 +2,12 @@ package org.rtcoord.cli
 
 import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.CliktError
+import com.github.ajalt.clikt.core.CoreCliktCommand
 import com.github.ajalt.clikt.core.PrintHelpMessage
 import com.github.ajalt.clikt.core.PrintMessage
 import com.github.ajalt.clikt.core.UsageError
-import com.github.ajalt.clikt.core.parse
 import com.github.ajalt.clikt.core.subcommands
+import com.github.ajalt.clikt.parsers.CommandLineParseResult
 import com.github.ajalt.clikt.parsers.CommandLineParser
 import kotlin.system.exitProcess
 
@@ -15,23 +16,29 @@ import kotlin.system.exitProcess
  * non-daemon threads behind that would keep the JVM alive after the tree is closed.
  */
 fun main(args: Array<String>) {
-    // Before anything logs or makes a reference: SLF4J takes CliLogging as it is named (instead of searching
-    // every jar for a provider) and says nothing about it, and neither JacORB nor RMI-IIOP start logging
-    // of their own (see JacorbSetup and PlainStubs).
-    System.setProperty("slf4j.provider", CliLogging::class.java.name)
-    System.setProperty("slf4j.internal.verbosity", "WARN")
-    System.setProperty("jacorb.log.initializer", CliLogging.JacorbSetup::class.java.name)
-    System.setProperty("javax.rmi.CORBA.StubClass", PlainStubs::class.java.name)
+    useCommandLogging()
     val argv = args.asList()
-    val command = rtcoord(argv)
+    val (command, parsed) = parsedRtcoord(argv)
     val status = try {
-        command.execute(argv)
+        command.execute(parsed)
         0
     } catch (e: CliktError) {
         command.echoFormattedHelp(e)
         e.statusCode
     }
     exitProcess(status)
+}
+
+/**
+ * Makes this JVM log as the command does; called before anything logs or makes a reference. SLF4J takes
+ * [CliLogging] as it is named (instead of searching every jar for a provider) and says nothing about it,
+ * and neither JacORB nor RMI-IIOP start logging of their own (see [CliLogging.JacorbSetup] and [PlainStubs]).
+ */
+fun useCommandLogging() {
+    System.setProperty("slf4j.provider", CliLogging::class.java.name)
+    System.setProperty("slf4j.internal.verbosity", "WARN")
+    System.setProperty("jacorb.log.initializer", CliLogging.JacorbSetup::class.java.name)
+    System.setProperty("javax.rmi.CORBA.StubClass", PlainStubs::class.java.name)
 }
 
 /** The `rtcoord` command with every subcommand. */
@@ -42,12 +49,16 @@ fun rtcoord(): Rtcoord = Rtcoord().subcommands(SUBCOMMANDS.values.map { it() })
  * it, since making every subcommand costs a command more start-up than listing a small system; every
  * subcommand otherwise, so that help and usage errors read as they always do.
  */
-fun rtcoord(argv: List<String>): Rtcoord {
-    val named = argv.firstNotNullOfOrNull { SUBCOMMANDS[it] } ?: return rtcoord()
+fun rtcoord(argv: List<String>): Rtcoord = parsedRtcoord(argv).first
+
+/** [rtcoord] for [argv] with [argv] parsed by it: the lone subcommand's parse is not done twice. */
+internal fun parsedRtcoord(argv: List<String>): Pair<Rtcoord, CommandLineParseResult<CoreCliktCommand>> {
+    fun all() = rtcoord().let { it to CommandLineParser.parse(it, argv) }
+    val named = argv.firstNotNullOfOrNull { SUBCOMMANDS[it] } ?: return all()
     val alone = Rtcoord().subcommands(named())
-    val parsed = CommandLineParser.parse(alone, argv).invocation
-    val subcommand = parsed.subcommandInvocations.singleOrNull()
-    return if (parsed.errors.isEmpty() && subcommand != null && subcommand.errors.isEmpty()) alone else rtcoord()
+    val parsed = CommandLineParser.parse(alone, argv)
+    val subcommand = parsed.invocation.subcommandInvocations.singleOrNull()
+    return if (parsed.invocation.errors.isEmpty() && subcommand != null && subcommand.errors.isEmpty()) alone to parsed else all()
 }
 
 /** Every subcommand, in the order help lists them, by name. */
@@ -76,13 +87,16 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "completion" to { CompletionCommand() },
 )
 
+/** Parses [argv] and runs the command it names, as the overload for a parsed command line does. */
+fun Rtcoord.execute(argv: List<String>): Unit = execute(CommandLineParser.parse(this, argv))
+
 /**
- * Parses [argv] and runs the command it names. Usage errors exit with status 2, as rtshell's do
+ * Runs the command line this command [parsed]. Usage errors exit with status 2, as rtshell's do
  * (Clikt's own is 1), so scripts can tell a mistyped command from a failed operation.
  */
-fun Rtcoord.execute(argv: List<String>) {
+fun Rtcoord.execute(parsed: CommandLineParseResult<CoreCliktCommand>) {
     try {
-        parse(argv)
+        CommandLineParser.run(parsed.invocation) { it.run() }
     } catch (e: UsageError) {
         throw PrintMessage(getFormattedHelp(e).orEmpty(), statusCode = USAGE_STATUS, printError = true)
     } catch (e: PrintHelpMessage) {

@@ -2,16 +2,17 @@ package org.rtcoord.cli
 
 import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.Context
+import com.github.ajalt.clikt.core.PrintMessage
 import com.github.ajalt.clikt.core.UsageError
 import com.github.ajalt.clikt.core.context
 import com.github.ajalt.clikt.core.registerCloseable
 import com.github.ajalt.clikt.core.terminal
 import com.github.ajalt.clikt.parameters.options.convert
 import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.eagerOption
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.multiple
 import com.github.ajalt.clikt.parameters.options.option
-import com.github.ajalt.clikt.parameters.options.versionOption
 import com.github.ajalt.mordant.terminal.Terminal
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
@@ -26,7 +27,8 @@ import kotlin.time.Duration.Companion.seconds
  */
 class Rtcoord : CliktCommand(name = "rtcoord") {
     init {
-        versionOption(version(), message = { "rtcoord $it" })
+        // Read only when asked for: finding the resource costs every command a few milliseconds.
+        eagerOption("--version", help = "Show the version and exit") { throw PrintMessage("rtcoord ${version()}") }
         context {
             helpFormatter = ::HelpFormatter
             terminal = Terminal(terminalInterface = PlainTerminal)

@@ -160,12 +160,17 @@ class CliJarIT {
 
         assertEquals(Run(0, "rtcoord ${version()}\n", "", 0), run(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory), environment).copy(millis = 0))
         assertTrue(Files.notExists(cache.resolve("cds")), "--version makes no archive")
+        assertEquals(0, run(listOf(tree.resolve("rtcoord").toString(), "ls", "--help"), fakeMaven(directory), environment).status)
+        assertTrue(Files.notExists(cache.resolve("cds")), "a help screen makes no archive")
         assertEquals(Run(0, expected, "", 0), listing().copy(millis = 0))
         val archive = Files.list(cache.resolve("cds")).use { files -> files.toList() }.single()
         assertTrue(archive.fileName.toString().startsWith("browse"), archive.toString())
         val made = Files.getLastModifiedTime(archive)
         assertEquals(Run(0, expected, "", 0), listing().copy(millis = 0))
         assertEquals(made, Files.getLastModifiedTime(archive), "the archive is mapped, not made again")
+        // Other commands map it too, silently, and never make it again.
+        assertEquals(Run(0, "rtcoord ${version()}\n", "", 0), run(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory), environment).copy(millis = 0))
+        assertEquals(made, Files.getLastModifiedTime(archive), "--version maps the archive")
 
         // An archive the JVM cannot use is ignored without a word.
         Files.delete(archive)

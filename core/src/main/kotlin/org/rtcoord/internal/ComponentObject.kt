@@ -63,9 +63,13 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     /** The snapshot, read now if none was read yet. */
     suspend fun loaded(subject: String): ComponentSnapshot = current.value ?: refresh(subject)
 
-    /** The instance name: the snapshot's, or read from the profile alone when there is no snapshot yet. */
+    /**
+     * The instance name: the snapshot's, else the one the summary read in the caller's survey gave, else
+     * read from the profile alone.
+     */
     suspend fun instanceName(subject: String): String =
-        current.value?.instanceName ?: core.remote.call(subject, "get_component_profile") { ref.get_component_profile() }.instance_name
+        current.value?.instanceName ?: SurveyReads.current()?.instanceName(this)
+            ?: core.remote.call(subject, "get_component_profile") { ref.get_component_profile() }.instance_name
 
     /** The component's configuration object, once known. */
     @Volatile private var configuration: Configuration? = null
@@ -94,9 +98,17 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
         }
     }
 
-    /** Reads what a listing shows (see [ComponentSummary]) and publishes it; the snapshot stays as it was. */
-    suspend fun refreshSummary(subject: String): ComponentSummary = refreshing.withLock {
-        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, ref).readSummary() }.also { currentSummary.value = it }
+    /**
+     * Reads what a listing shows (see [ComponentSummary]) and publishes it; the snapshot stays as it was.
+     * In a survey, the first path that reaches the component reads it, the others take that read.
+     */
+    suspend fun refreshSummary(subject: String): ComponentSummary {
+        val survey = SurveyReads.current() ?: return readSummary(subject).summary
+        return survey.summary(this) { readSummary(subject) }.summary
+    }
+
+    private suspend fun readSummary(subject: String): ComponentReader.SummaryReading = refreshing.withLock {
+        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, ref).readSummary() }.also { currentSummary.value = it.summary }
     }
 
     /** Reads the configuration sets and publishes them with the rest of the latest snapshot. */

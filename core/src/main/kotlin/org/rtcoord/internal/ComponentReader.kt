@@ -34,6 +34,9 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     /** A snapshot and the references behind it. */
     class Reading(val snapshot: ComponentSnapshot, val contexts: Map<Int, ExecutionContext>, val ports: Map<String, PortService>)
 
+    /** A summary and the instance name the profile read for it gave. */
+    class SummaryReading(val summary: ComponentSummary, val instanceName: String)
+
     suspend fun read(): Reading = coroutineScope {
         val profile = async { readProfile() }
         val contexts = async { readContexts().map { (context, isOwned, handle) -> async { readContext(context, isOwned, handle) } }.awaitAll() }
@@ -58,12 +61,13 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     }
 
     /** What a listing shows: the profile's ports and the state in each context, without the contexts' own details. */
-    suspend fun readSummary(): ComponentSummary = coroutineScope {
+    suspend fun readSummary(): SummaryReading = coroutineScope {
         val profile = async { readProfile() }
         val states = async {
             readContexts().map { (context, _, handle) -> async { handle to LifeCycle.of(readState(context)) } }.awaitAll().toMap()
         }
-        ComponentSummary(states.await(), portsOf(profile.await()))
+        val p = profile.await()
+        SummaryReading(ComponentSummary(states.await(), portsOf(p)), p.instance_name)
     }
 
     private suspend fun readProfile(): ComponentProfile = remote.call(subject, "get_component_profile") { ref.get_component_profile() }

@@ -1,0 +1,44 @@
+package org.rtcoord.internal
+
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.currentCoroutineContext
+import org.rtcoord.RtcException
+import java.util.concurrent.ConcurrentHashMap
+import kotlin.coroutines.AbstractCoroutineContextElement
+import kotlin.coroutines.CoroutineContext
+
+/**
+ * The component reads of one survey ([org.rtcoord.DirectoryNode.survey]), carried in its coroutines'
+ * context: a component reached by two paths (its naming context and its manager) is read once, and its
+ * manager's listing takes the instance name from that read instead of asking for the profile again.
+ */
+internal class SurveyReads : AbstractCoroutineContextElement(SurveyReads) {
+    private val summaries = ConcurrentHashMap<ComponentObject, CompletableDeferred<ComponentReader.SummaryReading>>()
+
+    /** [component]'s summary in this survey: made by [read] on the first request, shared by the later ones. */
+    suspend fun summary(component: ComponentObject, read: suspend () -> ComponentReader.SummaryReading): ComponentReader.SummaryReading {
+        val mine = CompletableDeferred<ComponentReader.SummaryReading>()
+        val earlier = summaries.putIfAbsent(component, mine) ?: return try {
+            read().also { mine.complete(it) }
+        } catch (e: Throwable) {
+            mine.completeExceptionally(e)
+            throw e
+        }
+        return earlier.await()
+    }
+
+    /** [component]'s instance name from its summary in this survey, once that is read; null without one, or if it failed. */
+    suspend fun instanceName(component: ComponentObject): String? {
+        val reading = summaries[component] ?: return null
+        return try {
+            reading.await().instanceName
+        } catch (e: RtcException) {
+            null
+        }
+    }
+
+    companion object Key : CoroutineContext.Key<SurveyReads> {
+        /** The reads of the survey the caller runs in, or null outside one. */
+        suspend fun current(): SurveyReads? = currentCoroutineContext()[Key]
+    }
+}
