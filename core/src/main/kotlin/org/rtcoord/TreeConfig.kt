@@ -12,8 +12,7 @@ import kotlin.time.toKotlinDuration
  * @property callTimeout the deadline of every remote call unless the call gives its own.
  * @property concurrency how many remote calls discovery keeps in flight at once.
  * @property orb an ORB owned by the host application; the tree then neither configures nor destroys it.
- *   By default the tree creates and owns a JacORB ORB, configured by rtcoord's recipe: JacORB's
- *   configuration files on the class path are not read (its system properties still are).
+ *   By default the tree creates and owns a JacORB ORB.
  * @property listenAddress the one address the tree's own ORB listens on for callbacks (observers), and the
  *   only one its object references carry. By default (null) the address this host uses to reach the first
  *   name server the tree has when it makes its first remote call: loopback for a name server on this

@@ -2,7 +2,6 @@ package org.rtcoord.internal
 
 import org.omg.CORBA.ORB
 import org.rtcoord.idl.OrbRecipe
-import java.net.URL
 import kotlin.time.Duration
 
 /**
@@ -31,7 +30,7 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
         fun <T> withJacorbLoader(create: () -> T): T {
             val thread = Thread.currentThread()
             val previous = thread.contextClassLoader
-            thread.contextClassLoader = RecipeOnly(OrbHolder::class.java.classLoader)
+            thread.contextClassLoader = OrbHolder::class.java.classLoader
             try {
                 return create()
             } finally {
@@ -42,20 +41,5 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
         /** rtcoord's one ORB recipe ([OrbRecipe], shared with the fixtures) on [listenAddress], any port. */
         fun jacorbProperties(listenAddress: String, callTimeout: Duration) =
             OrbRecipe.properties(listenAddress, 0, callTimeout.inWholeMilliseconds)
-    }
-
-    /**
-     * [parent] as JacORB sees it while the ORB starts, without the configuration files JacORB looks for on
-     * the class path (`orb.properties`, `jacorb.properties`): the tree's ORB is configured by [OrbRecipe]
-     * (JacORB still reads the files in the JDK's `lib`, the user's home and the working directory, and its
-     * system properties). Searching the class path for them, twice each, was a fifth of a listing's first
-     * call: the first resource looked up there opens the first jar and the class path its manifest names.
-     */
-    private class RecipeOnly(parent: ClassLoader) : ClassLoader(parent) {
-        override fun getResource(name: String): URL? = if (name in CONFIGURATION_FILES) null else super.getResource(name)
-
-        private companion object {
-            val CONFIGURATION_FILES = setOf("orb.properties", "jacorb.properties")
-        }
     }
 }
