@@ -36,8 +36,8 @@ public final class OrbRecipe {
     // needs to go back to the pool: under load the pool emptied itself, started threads up to the
     // limit and warned "thread pool exhausted" for every request (a fixture serving 1000 components:
     // 104 of 128 request threads blocked returning to the pool). Started at once, none is ever started
-    // under that lock. 64: a tree keeps at most 32 calls in flight (TreeConfig.concurrency), and a
-    // component's hung execution context holds a thread per call until the caller's deadline.
+    // under that lock. 64: a tree keeps at most 32 calls in flight (TreeConfig.concurrency) and 32 poll
+    // reads, and a component's hung execution context holds a thread per call until the caller's deadline.
     properties.setProperty("jacorb.poa.thread_pool_shared", "on");
     properties.setProperty("jacorb.poa.thread_pool_min", "64");
     properties.setProperty("jacorb.poa.thread_pool_max", "64");
