@@ -59,7 +59,7 @@ internal class DiscoveryBench(private val options: BenchOptions, private val ins
     }
 
     private fun processTarget(n: Int): String? = when {
-        n <= 10 -> "target: no slower than 1.5x rtls"
+        n <= 10 -> "target: no slower than 1.2x rtls"
         n >= 1000 -> "target: at least 3x faster than rtls"
         else -> null
     }
