@@ -170,11 +170,11 @@ internal class PollSchedule(
 
     private companion object {
         /**
-         * Probes pending at once. A probe holds no thread here, but each holds one of the component's
-         * request threads while it is served: a JacORB peer made from rtcoord's recipe has 64 (OrbRecipe),
-         * and more pending than that queue and make it warn. Polling 1000 components at 10 Hz sends 50
-         * in a slice, answered within a slice: this limit only slows a round down when the components
-         * answer more slowly than that.
+         * Probes pending at once. A probe holds no thread here, but each holds one of the answering ORB's
+         * request threads while it is served: a JacORB peer made from rtcoord's recipe has 64 (OrbRecipe)
+         * for every call the tree makes, and requests beyond them queue and make it warn. Polling 1000
+         * components at 10 Hz sends 50 in a slice, answered within a slice: this limit only slows a round
+         * down when the components answer more slowly than that.
          */
         const val PROBES_IN_FLIGHT = 32
 

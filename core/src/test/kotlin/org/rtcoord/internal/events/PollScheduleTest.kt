@@ -156,9 +156,10 @@ class PollScheduleTest {
     fun `probes hold no read in flight and a probe still unanswered at its next turn is late`() = runTest {
         var missed = 0L
         val replies = CoroutineScope(coroutineContext + Job())
-        // One read in flight at a time, and replies take half a period: ticks could serve 20 components a second.
+        // One tick in flight at a time, and replies take a quarter of a period: ticks could serve 40 components
+        // a second, probes (25 pending at a time) every one of the 100 ten times a second.
         val schedule = PollSchedule(backgroundScope, 100.milliseconds, 1, { missed += it }, { _, _ -> }, testScheduler.timeSource)
-        val answering = List(99) { Probed(replies, 50.milliseconds) { testScheduler.currentTime } }
+        val answering = List(99) { Probed(replies, 25.milliseconds) { testScheduler.currentTime } }
         val silent = Probed(replies, null) { testScheduler.currentTime }
         answering.forEach(schedule::add)
         schedule.add(silent)
