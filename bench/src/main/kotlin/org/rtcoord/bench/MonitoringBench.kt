@@ -73,7 +73,11 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
             val live = Heap.live() / Heap.MB
             subscriptions.forEach { it.cancel() }
             val cpuSamples = Samples(cpu, "% core")
-            val target = if (watching?.mode == WatchMode.POLL) "; target: under 30% of one core" else ""
+            val target = when (watching?.mode) {
+                null -> ""
+                WatchMode.POLL -> "; target: under 30% of one core"
+                else -> "; target: under 5% of one core"
+            }
             report.row("$label: CPU", cpuSamples, "mean ${figure(cpu.average())}% of one core, per-second samples$target")
             report.row("$label: fixtures' CPU", Samples(fixturesCpu, "% core"), "mean ${figure(fixturesCpu.average())}% of one core: the ${nodes.size} components answering, in their own JVM")
             report.row("$label: heap used", Samples(heap, "MB"), "live after GC ${figure(live)} MB")
