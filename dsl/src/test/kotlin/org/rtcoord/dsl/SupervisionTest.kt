@@ -224,13 +224,18 @@ class SupervisionTest : CoordinatedSystem(
             }
         }.use { coordinator ->
             coordinator.start()
+            val restarts = { coordinator.supervision.single().status.value.restarts }
             witness.component(path("gyro0.rtc")).exit()
             val recreated = awaitValue("gyro0 to be re-created") { active("gyro0")?.takeIf { it !== gyro } }
             assertTrue(gyro.isExited)
             assertTrue(logged("re-create gyro0 (gyro) through ${path("manager.mgr/manager_slave")}"), log.joinToString("\n"))
+            await("gyro0's restart to be over") { restarts() == 1 }
 
             odometry.fail()
-            await("odometry0 to be reset and active again") { logged("reset ${path("odometry0.rtc")}") && odometry.state == LifeCycleState.ACTIVE_STATE }
+            // Until the restart is over: an exit while the supervisor still confirms the activation is a failed restart.
+            await("odometry0 to be reset and active again") {
+                restarts() == 2 && logged("reset ${path("odometry0.rtc")}") && odometry.state == LifeCycleState.ACTIVE_STATE
+            }
             witness.component(path("odometry0.rtc")).exit()
             await("the supervisor to let odometry0 go") { logged("${path("odometry0.rtc")}: it is transient and exited by itself: not restarted") }
 
