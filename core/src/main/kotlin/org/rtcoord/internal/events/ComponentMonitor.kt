@@ -76,8 +76,10 @@ internal class ComponentMonitor(
     private val states = ContextStates(node, HOLD_LIMIT_MILLIS)
     /** While a deactivation is held: when the hints sent before the read that confirmed it are in. */
     private val marker = HintMarker(subject)
-    /** How long the pending [Recheck] waits; 0 when none is pending. */
+    /** The wait of the latest [Recheck] while hints lead the reads; 0 once they no longer do. */
     private var recheckDelay = 0L
+    /** Whether a [Recheck] is on its way: reads made meanwhile do not ask for another. */
+    private var recheckPending = false
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
@@ -169,7 +171,10 @@ internal class ComponentMonitor(
             when (item) {
                 is Received -> read = take(item.hint, hintedStates) || read
                 Read -> read = true
-                Recheck -> hintedStates += node.component.contexts.keys
+                Recheck -> {
+                    recheckPending = false
+                    hintedStates += node.component.contexts.keys
+                }
                 is Tick -> tick()
                 is Probed -> when (val outcome = item.outcome) {
                     // Read as this monitor last knew it: the states it found are news.
@@ -293,6 +298,8 @@ internal class ComponentMonitor(
             recheckDelay = 0
             return
         }
+        if (recheckPending) return
+        recheckPending = true
         recheckDelay = if (recheckDelay == 0L) FIRST_RECHECK_MILLIS else minOf(recheckDelay * 2, GRACE_MILLIS)
         val wait = recheckDelay
         core.scope.launch { delay(wait); work.trySend(Recheck) }
