@@ -64,7 +64,7 @@ class FaultToleranceTest {
         private var server = OmniNames.start()
         override val address = server.address
         override val corbaloc = server.corbaloc
-        override fun stop() = server.close()
+        override fun stop() = server.stop()
         override fun restart() {
             server = server.restart(keepsData)
         }

@@ -115,10 +115,11 @@ class DemoCommand : TreeCommand("demo") {
     /** The coordinator shipped in this jar, as a file the script host can compile. */
     private fun script(): Path {
         val directory = Files.createTempDirectory("rtcoord-demo")
-        val file = directory.resolve("localisation.coord.kts")
-        DemoCommand::class.java.getResourceAsStream("/demo/localisation.coord.kts")!!.use { Files.copy(it, file) }
-        file.toFile().deleteOnExit()
+        // Deleted at exit in the reverse order of registration: the file, then its directory.
         directory.toFile().deleteOnExit()
+        val file = directory.resolve("localisation.coord.kts")
+        file.toFile().deleteOnExit()
+        DemoCommand::class.java.getResourceAsStream("/demo/localisation.coord.kts")!!.use { Files.copy(it, file) }
         return file
     }
 

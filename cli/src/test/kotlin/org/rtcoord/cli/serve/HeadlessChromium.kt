@@ -104,8 +104,12 @@ class HeadlessChromium private constructor(private val process: Process, private
 
     override fun close() {
         runCatching { socket.sendClose(WebSocket.NORMAL_CLOSURE, "").get(5, TimeUnit.SECONDS) }
-        process.destroy()
-        if (!process.waitFor(10, TimeUnit.SECONDS)) process.destroyForcibly().waitFor()
+        // Chromium's helper processes outlive it for a moment and write into the profile: end them all first.
+        val processes = process.descendants().toList() + process.toHandle()
+        processes.forEach { it.destroy() }
+        processes.forEach { handle ->
+            runCatching { handle.onExit().get(10, TimeUnit.SECONDS) }.onFailure { handle.destroyForcibly() }
+        }
         profile.toFile().deleteRecursively()
     }
 
@@ -139,7 +143,9 @@ class HeadlessChromium private constructor(private val process: Process, private
                 return HeadlessChromium(process, profile, socket, replies).also { it.send("Page.enable") }
             } catch (e: Throwable) {
                 process.destroyForcibly()
-                throw AssertionError("Chromium did not start: ${Files.readString(profile.resolve("chromium.log")).takeLast(2000)}", e)
+                val log = Files.readString(profile.resolve("chromium.log")).takeLast(2000)
+                profile.toFile().deleteRecursively()
+                throw AssertionError("Chromium did not start: $log", e)
             }
         }
 
