@@ -98,6 +98,27 @@ class EventsTest {
         }
     }
 
+    @Test
+    fun `a change no hint announced is published once hints and reads have disagreed for the grace period`(): Unit = runBlocking {
+        // OpenRTM-aist announces a deactivation only when on_deactivated succeeds; it ends INACTIVE all the same.
+        val sulky = ComponentType("sulky", behaviour = { object : Behaviour { override fun onDeactivated(rtc: ComponentContext) = false } })
+        val component = localisation.system.runtime.create(sulky, "sulky0")
+        assertEquals(ReturnCode_t.RTC_OK, component.activate())
+        val node = tree.component(path("sulky0.rtc"))
+        val recorder = EventRecorder()
+        tree.on(node, RtcEvent::class.java, Source.PUSH.options, recorder.handler)
+        assertEquals(ReturnCode_t.RTC_OK, component.deactivate())
+
+        // A context hint has the component read: the read finds INACTIVE, which no hint announced.
+        node.executionContext().setRate(5.0)
+        recorder.next<ContextRateChanged>()
+        val found = System.nanoTime()
+        val deactivated = recorder.next<StateChanged>()
+        assertEquals(LifeCycle.ACTIVE to LifeCycle.INACTIVE, deactivated.old to deactivated.new)
+        // Only the read made once the grace period is over decides; until then the hint might be on its way.
+        assertTrue(System.nanoTime() - found >= 300.milliseconds.inWholeNanoseconds, "published before the grace period was over")
+    }
+
     @ParameterizedTest
     @EnumSource(Source::class)
     fun `connections, configuration and execution contexts`(source: Source): Unit = runBlocking {

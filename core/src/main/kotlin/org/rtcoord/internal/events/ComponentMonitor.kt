@@ -58,6 +58,8 @@ internal class ComponentMonitor(
     private class Probed(val outcome: StateProbe.Outcome) : Work
     /** Time to read the states again: the hints lead the last read. */
     private object Recheck : Work
+    /** The grace period of the oldest disagreement between hints and reads is over: a read decides. */
+    private object GraceOver : Work
     /** A [HintMarker]'s marker came back through the observer. */
     private class Marked(val hint: Hint) : Work
     /** Registrations changed; [done] completes once the monitor watches as they ask. */
@@ -80,6 +82,8 @@ internal class ComponentMonitor(
     private var recheckDelay = 0L
     /** Whether a [Recheck] is on its way: reads made meanwhile do not ask for another. */
     private var recheckPending = false
+    /** Whether a [GraceOver] is on its way. */
+    private var graceOverPending = false
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
@@ -174,6 +178,10 @@ internal class ComponentMonitor(
                 Recheck -> {
                     recheckPending = false
                     hintedStates += node.component.contexts.keys
+                }
+                GraceOver -> {
+                    graceOverPending = false
+                    if (states.awaitingConfirmation) read = true
                 }
                 is Tick -> tick()
                 is Probed -> when (val outcome = item.outcome) {
@@ -274,7 +282,7 @@ internal class ComponentMonitor(
         if (states.awaitingConfirmation) {
             // A late hint may lead past what the read found: read again now rather than after the grace period.
             if (late) carried += Read
-            core.scope.launch { delay(GRACE_MILLIS); work.trySend(Read) }
+            decideAfterGrace()
         }
         recheckIfHintsLead()
         when {
@@ -286,6 +294,19 @@ internal class ComponentMonitor(
             }
         }
         return events
+    }
+
+    /**
+     * Has a read made once the oldest disagreement's grace period is over, when it decides. One is pending at
+     * a time: disagreements that began later end later, and the read that decides the oldest one asks for
+     * the next.
+     */
+    private fun decideAfterGrace() {
+        val since = states.disagreedSince ?: return
+        if (graceOverPending) return
+        graceOverPending = true
+        val wait = (since + GRACE_MILLIS - now()).coerceAtLeast(0)
+        core.scope.launch { delay(wait); work.trySend(GraceOver) }
     }
 
     /**

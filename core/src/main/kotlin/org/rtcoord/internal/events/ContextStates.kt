@@ -14,6 +14,9 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     /** Whether hints and reads disagree somewhere, and a read after the grace period must decide. */
     val awaitingConfirmation: Boolean get() = trackers.values.any { it.awaitingConfirmation }
 
+    /** When the oldest disagreement between hints and reads began; null when none is awaiting confirmation. */
+    val disagreedSince: Long? get() = trackers.values.mapNotNull { it.disagreedSince }.minOrNull()
+
     /** Whether, somewhere, hints lead to a state the last read did not find yet. */
     val hintsLead: Boolean get() = trackers.values.any { it.hintsLead }
 

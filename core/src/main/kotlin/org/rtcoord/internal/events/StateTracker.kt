@@ -23,7 +23,10 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
         private set
 
     private val hinted = ArrayList<LifeCycle>()
-    private var disagreedSince: Long? = null
+
+    /** When the read that found hints and reads disagreeing was made; null while they agree. */
+    var disagreedSince: Long? = null
+        private set
     private var heldSince: Long? = null
     private var flushed = false
 
