@@ -297,9 +297,9 @@ internal class ComponentMonitor(
     }
 
     /**
-     * Has a read made once the oldest disagreement's grace period is over, when it decides. One is pending at
-     * a time: disagreements that began later end later, and the read that decides the oldest one asks for
-     * the next.
+     * Asks for the read that decides the oldest disagreement between hints and reads, due when its grace
+     * period is over. One is pending at a time: disagreements that began later end later, and the read that
+     * decides the oldest asks for the next.
      */
     private fun decideAfterGrace() {
         val since = states.disagreedSince ?: return

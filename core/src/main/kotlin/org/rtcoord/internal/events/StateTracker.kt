@@ -27,6 +27,7 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
     /** When the read that found hints and reads disagreeing was made; null while they agree. */
     var disagreedSince: Long? = null
         private set
+
     private var heldSince: Long? = null
     private var flushed = false
 
