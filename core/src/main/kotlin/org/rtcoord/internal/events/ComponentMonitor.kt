@@ -65,6 +65,24 @@ internal class ComponentMonitor(
     /** Registrations changed; [done] completes once the monitor watches as they ask. */
     private class Reconfigure(val done: CompletableDeferred<Unit>? = null) : Work
 
+    /** [item], sent to this monitor's work once a delay is over; one at a time, owned by the worker coroutine. */
+    private inner class DelayedWork(private val item: Work) {
+        /** Whether it was sent and has not [arrived] yet. */
+        var isPending = false
+            private set
+
+        /** Sends it in [after] milliseconds. */
+        fun send(after: Long) {
+            isPending = true
+            core.scope.launch { delay(after); work.trySend(item) }
+        }
+
+        /** The worker took it. */
+        fun arrived() {
+            isPending = false
+        }
+    }
+
     private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
     private val subject = node.path.toString()
     private val registrations = CopyOnWriteArrayList<MonitorRegistration>()
@@ -80,10 +98,10 @@ internal class ComponentMonitor(
     private val marker = HintMarker(subject)
     /** The wait of the latest [Recheck] while hints lead the reads; 0 once they no longer do. */
     private var recheckDelay = 0L
-    /** Whether a [Recheck] is on its way: reads made meanwhile do not ask for another. */
-    private var recheckPending = false
-    /** Whether a [GraceOver] is on its way. */
-    private var graceOverPending = false
+    /** The [Recheck] on its way: reads made meanwhile do not ask for another. */
+    private val recheck = DelayedWork(Recheck)
+    /** The [GraceOver] on its way. */
+    private val graceOver = DelayedWork(GraceOver)
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
@@ -176,11 +194,11 @@ internal class ComponentMonitor(
                 is Received -> read = take(item.hint, hintedStates) || read
                 Read -> read = true
                 Recheck -> {
-                    recheckPending = false
+                    recheck.arrived()
                     hintedStates += node.component.contexts.keys
                 }
                 GraceOver -> {
-                    graceOverPending = false
+                    graceOver.arrived()
                     if (states.awaitingConfirmation) read = true
                 }
                 is Tick -> tick()
@@ -303,10 +321,7 @@ internal class ComponentMonitor(
      */
     private fun decideAfterGrace() {
         val since = states.disagreedSince ?: return
-        if (graceOverPending) return
-        graceOverPending = true
-        val wait = (since + GRACE_MILLIS - now()).coerceAtLeast(0)
-        core.scope.launch { delay(wait); work.trySend(GraceOver) }
+        if (!graceOver.isPending) graceOver.send(after = (since + GRACE_MILLIS - now()).coerceAtLeast(0))
     }
 
     /**
@@ -319,11 +334,9 @@ internal class ComponentMonitor(
             recheckDelay = 0
             return
         }
-        if (recheckPending) return
-        recheckPending = true
+        if (recheck.isPending) return
         recheckDelay = if (recheckDelay == 0L) FIRST_RECHECK_MILLIS else minOf(recheckDelay * 2, GRACE_MILLIS)
-        val wait = recheckDelay
-        core.scope.launch { delay(wait); work.trySend(Recheck) }
+        recheck.send(after = recheckDelay)
     }
 
     /**
