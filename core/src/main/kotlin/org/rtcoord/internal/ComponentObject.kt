@@ -64,8 +64,8 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     suspend fun loaded(subject: String): ComponentSnapshot = current.value ?: refresh(subject)
 
     /**
-     * The instance name: the snapshot's, else the one the summary read in the caller's survey gave, else
-     * read from the profile alone.
+     * The instance name: the snapshot's, else the one the summary read in the caller's survey gave (or its
+     * failure), else read from the profile alone.
      */
     suspend fun instanceName(subject: String): String =
         current.value?.instanceName ?: SurveyReads.current()?.instanceName(this)

@@ -2,7 +2,6 @@ package org.rtcoord.internal
 
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.currentCoroutineContext
-import org.rtcoord.RtcException
 import java.util.concurrent.ConcurrentHashMap
 import kotlin.coroutines.AbstractCoroutineContextElement
 import kotlin.coroutines.CoroutineContext
@@ -27,15 +26,11 @@ internal class SurveyReads : AbstractCoroutineContextElement(SurveyReads) {
         return earlier.await()
     }
 
-    /** [component]'s instance name from its summary in this survey, once that is read; null without one, or if it failed. */
-    suspend fun instanceName(component: ComponentObject): String? {
-        val reading = summaries[component] ?: return null
-        return try {
-            reading.await().instanceName
-        } catch (e: RtcException) {
-            null
-        }
-    }
+    /**
+     * [component]'s instance name from its summary in this survey, once that is read; null without one. A
+     * read that failed fails this too: asking the component again would wait out a hung one's deadline twice.
+     */
+    suspend fun instanceName(component: ComponentObject): String? = summaries[component]?.await()?.instanceName
 
     companion object Key : CoroutineContext.Key<SurveyReads> {
         /** The reads of the survey the caller runs in, or null outside one. */
