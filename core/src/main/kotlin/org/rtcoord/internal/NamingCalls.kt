@@ -9,11 +9,19 @@ import org.omg.CosNaming.NamingContextHelper
 import org.rtcoord.NotFoundException
 import org.rtcoord.RtcPath
 
-/** The remote calls a [org.rtcoord.NamingDirectory] makes on its naming [context], found at [path]. */
+/**
+ * The remote calls a [org.rtcoord.NamingDirectory] makes on its naming [context], found at [path]. A
+ * failure to reach the context names the context, not the binding asked about: when the name server
+ * goes down mid-listing, it is the server that is unreachable, not the component whose name was next.
+ */
 internal class NamingCalls(private val core: TreeCore, private val path: RtcPath, private val context: NamingContext) {
     /** Removes the binding [name] (`id.kind`), whatever it is bound to. */
     suspend fun unbind(name: String) {
-        core.remote.call(path.child(name).toString(), "unbind") { context.unbind(nameComponents(name)) }
+        try {
+            core.remote.call(path.toString(), "unbind $name") { context.unbind(nameComponents(name)) }
+        } catch (e: NotFoundException) {
+            throw NotFoundException(path.child(name).toString(), "not bound")
+        }
     }
 
     /** What [name] (`id.kind`) is bound to, or null when nothing is. */
@@ -21,7 +29,7 @@ internal class NamingCalls(private val core: TreeCore, private val path: RtcPath
 
     /** What the binding [name] is bound to, or null when it was unbound since it was listed. */
     suspend fun resolve(name: Array<NameComponent>): org.omg.CORBA.Object? = try {
-        core.remote.call(path.child(nameOf(name)).toString(), "resolve") { context.resolve(name) }
+        core.remote.call(path.toString(), "resolve ${nameOf(name)}") { context.resolve(name) }
     } catch (e: NotFoundException) {
         null
     }
