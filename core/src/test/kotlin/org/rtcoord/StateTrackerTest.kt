@@ -2,6 +2,7 @@ package org.rtcoord
 
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
+import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle.ACTIVE
@@ -59,6 +60,30 @@ class StateTrackerTest {
         tracker.reconcile(ACTIVE, 163, grace, hintsExpected = true)
         tracker.hint(INACTIVE)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 164, grace, hintsExpected = true), "a flush before the hold began does not end it")
+    }
+
+    @Test
+    fun `a held deactivation ends once it has settled and the hints before it are in, whichever comes last`() {
+        val tracker = StateTracker(ACTIVE, holdLimitMillis = 500, settleMillis = 10)
+        assertNull(tracker.settlesIn(100), "nothing held")
+        tracker.hint(INACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 100, grace, hintsExpected = true), "held")
+        assertEquals(10L, tracker.settlesIn(100))
+        tracker.flushed()
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 105, grace, hintsExpected = true), "the hints are in, but it has not settled")
+        tracker.hint(ERROR)
+        tracker.hint(INACTIVE)
+        assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 108, grace, hintsExpected = true), "an ERROR hint late behind the marker")
+
+        tracker.hint(ACTIVE)
+        tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true)
+        tracker.hint(INACTIVE)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 130, grace, hintsExpected = true))
+        assertEquals(0L, tracker.settlesIn(145))
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 145, grace, hintsExpected = true), "settled, but the hints before it are not known to be in")
+        tracker.flushed()
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 146, grace, hintsExpected = true), "a deactivation")
+        assertNull(tracker.settlesIn(146))
     }
 
     @Test

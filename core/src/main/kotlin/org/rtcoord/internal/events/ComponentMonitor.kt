@@ -60,6 +60,8 @@ internal class ComponentMonitor(
     private object Recheck : Work
     /** The grace period of the oldest disagreement between hints and reads is over: a read decides. */
     private object GraceOver : Work
+    /** A held deactivation has settled: a read decides, once the hints sent before it are in too. */
+    private object Settled : Work
     /** A [HintMarker]'s marker came back through the observer. */
     private class Marked(val hint: Hint) : Work
     /** Registrations changed; [done] completes once the monitor watches as they ask. */
@@ -93,7 +95,7 @@ internal class ComponentMonitor(
 
     // Owned by the worker coroutine.
     private var last: ComponentSnapshot? = null
-    private val states = ContextStates(node, HOLD_LIMIT_MILLIS)
+    private val states = ContextStates(node, HOLD_LIMIT_MILLIS, SETTLE_MILLIS)
     /** While a deactivation is held: when the hints sent before the read that confirmed it are in. */
     private val marker = HintMarker(subject)
     /** The wait of the latest [Recheck] while hints lead the reads; 0 once they no longer do. */
@@ -102,6 +104,8 @@ internal class ComponentMonitor(
     private val recheck = DelayedWork(Recheck)
     /** The [GraceOver] on its way. */
     private val graceOver = DelayedWork(GraceOver)
+    /** The [Settled] on its way. */
+    private val settled = DelayedWork(Settled)
     private val liveness = ComponentLiveness(now())
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
@@ -207,10 +211,14 @@ internal class ComponentMonitor(
                     is StateProbe.Outcome.Changed -> if (outcome.epoch == epoch) probed = outcome.states else tick()
                     is StateProbe.Outcome.Unsettled -> tick()
                 }
-                // The hints sent before the held read are in: a fresh read of the states decides.
+                // The hints sent before the held read are in: a fresh read of the states decides, once settled.
                 is Marked -> if (marker.cameBack(item.hint)) {
                     states.flushed()
-                    hintedStates += node.component.contexts.keys
+                    if (!settled.isPending) hintedStates += node.component.contexts.keys
+                }
+                Settled -> {
+                    settled.arrived()
+                    if (states.holding && !marker.isPending) hintedStates += node.component.contexts.keys
                 }
                 Liveness -> read = checkLiveness() || read
                 is Reconfigure -> Unit
@@ -311,6 +319,7 @@ internal class ComponentMonitor(
                 core.scope.launch { delay(HOLD_LIMIT_MILLIS); work.trySend(Read) }
             }
         }
+        states.settlesIn(now())?.let { if (!settled.isPending) settled.send(after = it) }
         return events
     }
 
@@ -494,6 +503,12 @@ internal class ComponentMonitor(
 
         /** How long a hinted deactivation may wait for its [HintMarker]: as long as hints and reads may disagree. */
         const val HOLD_LIMIT_MILLIS = GRACE_MILLIS
+
+        /**
+         * How long a hinted deactivation is held at least, for an abort's ERROR hint that its marker may
+         * overtake: a few of the scheduler's time slices on a busy machine.
+         */
+        const val SETTLE_MILLIS = 10L
 
         /** The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default. */
         val NO_TRAFFIC = 1.hours

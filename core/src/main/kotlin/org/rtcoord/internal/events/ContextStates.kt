@@ -8,7 +8,7 @@ import org.rtcoord.StateChanged
  * One watched component's lifecycle in each of its execution contexts: a [StateTracker] per context
  * handle, fed the lifecycle hints and the reads, and the [StateChanged] events they agree on.
  */
-internal class ContextStates(private val node: ComponentNode, private val holdLimitMillis: Long) {
+internal class ContextStates(private val node: ComponentNode, private val holdLimitMillis: Long, private val settleMillis: Long) {
     private val trackers = HashMap<Int, StateTracker>()
 
     /** Whether hints and reads disagree somewhere, and a read after the grace period must decide. */
@@ -20,10 +20,13 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     /** Whether, somewhere, hints lead to a state the last read did not find yet. */
     val hintsLead: Boolean get() = trackers.values.any { it.hintsLead }
 
-    /** Whether a hinted deactivation is held somewhere, until [flushed] or the hold limit. */
+    /** Whether a hinted deactivation is held somewhere, until it settled and [flushed], or the hold limit. */
     val holding: Boolean get() = trackers.values.any { it.holding }
 
-    /** The hints sent before the latest read have all been taken: held deactivations end at the next read. */
+    /** How long after [now] the first held deactivation has settled (0 if it has); null when none is held. */
+    fun settlesIn(now: Long): Long? = trackers.values.mapNotNull { it.settlesIn(now) }.minOrNull()
+
+    /** The hints sent before the latest read have all been taken: held deactivations end at the next read once settled. */
     fun flushed() {
         trackers.values.forEach(StateTracker::flushed)
     }
@@ -44,7 +47,7 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     fun read(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, graceMillis: Long, hintsExpected: Boolean): List<StateChanged> {
         val events = mutableListOf<StateChanged>()
         for (context in snapshot.contexts) {
-            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state, holdLimitMillis) }
+            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state, holdLimitMillis, settleMillis) }
             tracker.reconcile(context.state, now, graceMillis, hintsExpected).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
         }
         trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())

@@ -4,11 +4,13 @@ import org.slf4j.LoggerFactory
 import java.util.UUID
 
 /**
- * Tells when every hint a component sent before now has been taken: a marker sent through its observer
- * ([ObserverHost.Observer.sendMarker]) comes back after them, as one thread takes the observers' calls in
- * the order they reached the ORB. JacORB hands each hint through two threads, while a read's reply wakes
- * its reader at once, so a read made after one hint often overtakes the next: an abort's INACTIVE and
- * ERROR, say. One marker is pending at a time; sending another forgets the previous one.
+ * Tells when every hint that reached the ORB before now has been taken: a marker sent through its
+ * observer ([ObserverHost.Observer.sendMarker]) comes back after them, as one thread takes the observers'
+ * calls in the order they reached the ORB. JacORB hands each hint through two threads, while a read's reply
+ * wakes its reader at once, so a read made after one hint often overtakes the next: an abort's INACTIVE and
+ * ERROR, say. A hint still on its way in (its connection's reader thread not yet run) is not covered: the
+ * marker travels a connection of its own. One marker is pending at a time; sending another forgets the
+ * previous one.
  */
 internal class HintMarker(private val subject: String) {
     private val log = LoggerFactory.getLogger(HintMarker::class.java)

@@ -12,12 +12,15 @@ import org.rtcoord.LifeCycle
  * read. So the published stream has no phantom transition, keeps every transition the hints reported and
  * the reads confirmed, and always ends in the real state.
  *
- * A hinted deactivation (ACTIVE to INACTIVE) that a read confirms is held until every hint the component
- * sent before that read has been taken ([flushed]), or [holdLimitMillis] at most: an abort hints INACTIVE
- * then ERROR, and when a reset follows at once, a read that overtook the ERROR hint finds INACTIVE too.
- * The ERROR hint arriving meanwhile turns the pair into the abort it was.
+ * A hinted deactivation (ACTIVE to INACTIVE) that a read confirms is held for [settleMillis], and then
+ * until every hint the component sent before that read has been taken ([flushed]), or [holdLimitMillis]
+ * at most: an abort hints INACTIVE then ERROR, and when a reset follows at once, a read that overtook the
+ * ERROR hint finds INACTIVE too. The ERROR hint arriving meanwhile turns the pair into the abort it was.
+ * [flushed] alone cannot tell that every hint is in: the hints and the read's reply travel different
+ * connections, and a connection whose reader thread is kept waiting by the scheduler (or by the network,
+ * for a remote component) delivers late.
  */
-internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Long = 0) {
+internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Long = 0, private val settleMillis: Long = 0) {
     /** The last published state. */
     var confirmed: LifeCycle = initial
         private set
@@ -37,10 +40,13 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
     /** Whether hints lead to a state the last read did not find yet. */
     val hintsLead: Boolean get() = hinted.isNotEmpty() && disagreedSince != null
 
-    /** Whether a hinted deactivation is held, until [flushed] or the hold limit. */
+    /** Whether a hinted deactivation is held, until it settled and [flushed], or the hold limit. */
     val holding: Boolean get() = heldSince != null
 
-    /** Every hint sent before the read that began the hold has been taken: the next reconciliation ends it. */
+    /** How long after [now] the held deactivation has settled (0 if it has); null when none is held. */
+    fun settlesIn(now: Long): Long? = heldSince?.let { (it + settleMillis - now).coerceAtLeast(0) }
+
+    /** Every hint sent before the read that began the hold has been taken: the first reconciliation once it settled ends it. */
     fun flushed() {
         if (heldSince != null) flushed = true
     }
@@ -67,7 +73,8 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
         val path = if (hintedPath) listOf(confirmed) + hinted else listOf(confirmed, real)
         if (hintedPath && hintsExpected && path.takeLast(2) == listOf(LifeCycle.ACTIVE, LifeCycle.INACTIVE)) {
             val since = heldSince ?: now.also { heldSince = it }
-            if (!flushed && now - since < holdLimitMillis) return emptyList()
+            val settled = flushed && now - since >= settleMillis
+            if (!settled && now - since < holdLimitMillis) return emptyList()
         }
         heldSince = null
         flushed = false
