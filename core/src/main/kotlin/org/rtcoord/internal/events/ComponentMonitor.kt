@@ -214,7 +214,7 @@ internal class ComponentMonitor(
                 // The hints sent before the held read are in: a fresh read of the states decides, once settled.
                 is Marked -> if (marker.cameBack(item.hint)) {
                     states.flushed()
-                    if (!settled.isPending) hintedStates += node.component.contexts.keys
+                    if (states.settlesIn(now()) == 0L) hintedStates += node.component.contexts.keys
                 }
                 Settled -> {
                     settled.arrived()
