@@ -28,8 +28,18 @@ public class ComponentNode internal constructor(
     internal val calls: ComponentCalls get() = ComponentCalls(core, subject, component)
 
     init {
-        component.knownAt(path)
+        component.knownAs(this)
     }
+
+    /**
+     * The component's one path, which every event, log line and result uses: where it is bound in a
+     * naming context, or where the tree first found it if it found it only below a manager (a manager's
+     * listing is an alias of the naming path).
+     */
+    public val canonicalPath: RtcPath get() = canonical.path
+
+    /** The node at [canonicalPath]: this one, or the same component found at its naming path. */
+    public val canonical: ComponentNode get() = component.canonical ?: this
 
     override val kind: NodeKind get() = NodeKind.COMPONENT
 

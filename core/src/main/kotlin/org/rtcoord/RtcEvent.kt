@@ -14,6 +14,14 @@ public sealed class RtcEvent {
     /** When the tree noticed it, in milliseconds since the epoch. */
     public val noticedAt: Long = System.currentTimeMillis()
 
+    /**
+     * Where the event stands in the tree's history: every event the tree publishes gets the next number,
+     * and a [SystemSnapshot] with [SystemSnapshot.sequence] N holds every event up to N. 0 for an event the
+     * tree made but has not published.
+     */
+    public var sequence: Long = 0L
+        internal set
+
     /** The source's path. */
     public val path: RtcPath get() = source.path
 }
@@ -62,8 +70,11 @@ public data class ContextAttachmentChanged(override val source: ComponentNode, v
 /** Manager [source] created ([created] true) or deleted component [instanceName]. */
 public data class ManagerComponentChanged(override val source: ManagerNode, val instanceName: String, val created: Boolean) : RtcEvent()
 
-/** A binding [child] appeared under [source]. */
-public data class NodeAppeared(override val source: DirectoryNode, val child: Node) : RtcEvent()
+/**
+ * A binding [child] appeared under [source]. For a component, [snapshot] is what the tree read of it when
+ * it appeared: what happened to it between its creation and its discovery (its state, its connections).
+ */
+public data class NodeAppeared(override val source: DirectoryNode, val child: Node, val snapshot: ComponentSnapshot? = null) : RtcEvent()
 
 /** The binding at [child] vanished from [source]. */
 public data class NodeVanished(override val source: DirectoryNode, val child: RtcPath) : RtcEvent()
@@ -88,3 +99,12 @@ public data class ManagerDied(override val source: ManagerNode, val components: 
 
 /** Manager [source], presumed dead, answers again. */
 public data class ManagerReturned(override val source: ManagerNode) : RtcEvent()
+
+/**
+ * Name server [source] stopped answering: [cause]. Until [NameServerReturned], nothing is known of what is
+ * registered on it; the components themselves may still run.
+ */
+public data class NameServerLost(override val source: NameServerNode, val cause: RtcException) : RtcEvent()
+
+/** Name server [source], lost, answers again after [downMillis] milliseconds. */
+public data class NameServerReturned(override val source: NameServerNode, val downMillis: Long) : RtcEvent()

@@ -46,6 +46,9 @@ public class RtcPath internal constructor(
     /** Whether this is the root `/`. */
     public val isRoot: Boolean get() = address == null && objectReference == null
 
+    /** Whether the path reaches a component through a manager (`.mgr`) or an object reference: an alias, not where it is bound in naming. */
+    internal val isAlias: Boolean get() = objectReference != null || names.any { it.endsWith(".mgr") }
+
     /**
      * The last name without its port; `/` for the root, the address as written for a name server
      * (`localhost`, not `localhost:2809`) and the whole `corbaloc:` text for an object reference.

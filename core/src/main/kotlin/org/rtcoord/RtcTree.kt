@@ -2,11 +2,13 @@ package org.rtcoord
 
 import OpenRTM.DataFlowComponentHelper
 import RTM.ManagerHelper
+import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.channels.awaitClose
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.callbackFlow
 import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.toList
+import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import java.util.concurrent.CopyOnWriteArrayList
 
@@ -20,7 +22,7 @@ import java.util.concurrent.CopyOnWriteArrayList
  * [org.rtcoord.java.JavaTree].
  */
 public class RtcTree private constructor(public val config: TreeConfig) : AutoCloseable {
-    internal val core = TreeCore(config) { ArrayList(servers).firstOrNull()?.address?.substringBeforeLast(':') }
+    internal val core = TreeCore(config) { ArrayList(servers) }
     // Read through copies: toList() and firstOrNull() read the size, then the elements, and a name server
     // removed in between fails them.
     private val servers = CopyOnWriteArrayList<NameServerNode>()
@@ -100,10 +102,30 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         val found = search().ifEmpty { refresh(depth = Int.MAX_VALUE); search() }.sortedBy { node -> node.path.names.any { it.endsWith(".mgr") } }
         val distinct = found.fold(emptyList<ComponentNode>()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
         return when (distinct.size) {
-            0 -> throw NotFoundException(name, "no such component on ${nameServers.joinToString { it.address }.ifEmpty { "any name server (none configured)" }}")
+            0 -> throw notFound(name)
             1 -> distinct.single()
             else -> throw AmbiguousNameException(name, distinct.map { it.path.toString() })
         }
+    }
+
+    /**
+     * Why [name] was not found: no such component on the name servers that answered, or, when none
+     * answered, the first one's failure; only a name server that answered can say a component is not there.
+     */
+    private suspend fun notFound(name: String): RtcException {
+        val servers = nameServers.ifEmpty { return NotFoundException(name, "no such component on any name server (none configured)") }
+        val failures = servers.mapNotNull { server ->
+            try {
+                server.relist()
+                null
+            } catch (e: RtcException) {
+                server to e
+            }
+        }
+        val answered = servers - failures.map { it.first }.toSet()
+        if (answered.isEmpty()) return failures.first().second
+        val silent = failures.joinToString { (server, e) -> "${server.address} did not answer (${e.reason})" }
+        return NotFoundException(name, "no such component on ${answered.joinToString { it.address }}" + if (silent.isEmpty()) "" else "; $silent")
     }
 
     /** The manager at [path]. */
@@ -137,20 +159,31 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
 
     /**
      * Every node below [from] (included) for which [predicate] holds, in depth-first order, listing
-     * directories as the walk reaches them. Unreachable branches are skipped.
+     * directories as the walk reaches them. Unreachable branches are skipped. A component is found once:
+     * where it is bound in naming; below a manager (an alias) only when its naming path is not found.
      */
     public fun find(from: RtcPath = RtcPath.ROOT, predicate: suspend (Node) -> Boolean = { true }): Flow<Node> = find(from, Int.MAX_VALUE, predicate)
 
     /** As [find], going at most [maxDepth] levels below [from] ([from] is level 0), as rtfind's `-m`. */
     public fun find(from: RtcPath, maxDepth: Int, predicate: suspend (Node) -> Boolean): Flow<Node> = flow {
+        val found = HashSet<ComponentObject>()
+        // Aliases wait until the walk is over: the naming path of their component may come later.
+        val aliases = ArrayList<ComponentNode>()
         suspend fun walk(node: Node, depth: Int) {
-            if (predicate(node)) emit(node)
+            when {
+                node is ComponentNode && node.path.isAlias -> aliases += node
+                predicate(node) -> {
+                    if (node is ComponentNode) found += node.component
+                    emit(node)
+                }
+            }
             if (node is DirectoryNode && depth < maxDepth) {
                 val children = try { node.children() } catch (e: RtcException) { emptyList() }
                 children.forEach { walk(it, depth + 1) }
             }
         }
         walk(node(from), 0)
+        for (alias in aliases) if (alias.component !in found && predicate(alias)) emit(alias).also { found += alias.component }
     }
 
     /**
@@ -186,6 +219,44 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * Cancel the returned [Subscription] to stop.
      */
     public fun onWatching(handler: suspend (RtcEvent) -> Unit): Subscription = core.watcher.report(handler)
+
+    /**
+     * The tree's model of the system now, read without a remote call: every component its listings found,
+     * once each at its canonical path, with its states as the tree's events last told them, and the name
+     * servers and managers it cannot reach. See [SystemSnapshot].
+     */
+    public fun snapshot(): SystemSnapshot = core.model.snapshot(root)
+
+    /**
+     * Subscribes to the events of [types] from each of [nodes] as [on] does, then hands [start] the model
+     * as it is once every subscription is in place, and [handler] every event after it, none missed and
+     * none twice: what a view needs to show the system and keep showing it true. [handler] is first called
+     * once [start] has returned. Cancel the returned [Subscription] to stop.
+     */
+    public suspend fun follow(
+        nodes: List<Node>,
+        types: Set<Class<out RtcEvent>>,
+        options: EventOptions = EventOptions(),
+        start: suspend (SystemSnapshot) -> Unit,
+        handler: suspend (RtcEvent) -> Unit,
+    ): Subscription {
+        val begun = CompletableDeferred<Long>()
+        val subscriptions = mutableListOf<Subscription>()
+        val all = Subscription { subscriptions.forEach(Subscription::cancel) }
+        try {
+            nodes.forEach { node -> subscriptions += on(node, types, options) { event -> if (event.sequence > begun.await()) handler(event) } }
+            val snapshot = snapshot()
+            try {
+                start(snapshot)
+            } finally {
+                begun.complete(snapshot.sequence)
+            }
+        } catch (e: Throwable) {
+            all.cancel()
+            throw e
+        }
+        return all
+    }
 
     /** Every event from the node at [path] (see [on]) while the flow is collected. */
     public fun events(path: String, options: EventOptions = EventOptions()): Flow<RtcEvent> = callbackFlow {

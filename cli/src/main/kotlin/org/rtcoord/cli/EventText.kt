@@ -2,6 +2,7 @@ package org.rtcoord.cli
 
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
+import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.ConfigurationSetAdded
 import org.rtcoord.ConfigurationSetRemoved
@@ -9,9 +10,12 @@ import org.rtcoord.ContextAttachmentChanged
 import org.rtcoord.ContextRateChanged
 import org.rtcoord.ContextRunningChanged
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
+import org.rtcoord.NameServerLost
+import org.rtcoord.NameServerReturned
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
 import org.rtcoord.ParameterChanged
@@ -20,6 +24,7 @@ import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
+import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMethodChanged
@@ -28,15 +33,17 @@ import java.time.ZoneId
 import java.time.format.DateTimeFormatter
 
 /** The event as `watch` prints it: when the tree noticed it (local time), the source's path, what happened. */
-internal fun RtcEvent.line(zone: ZoneId = ZoneId.systemDefault()): String =
-    "${TIMESTAMP.format(Instant.ofEpochMilli(noticedAt).atZone(zone))} $path ${what()}"
+internal fun RtcEvent.line(zone: ZoneId = ZoneId.systemDefault()): String = "${timestamp(noticedAt, zone)} $path ${what()}"
+
+/** [millis] since the epoch as `watch` prints times, in local time. */
+internal fun timestamp(millis: Long, zone: ZoneId = ZoneId.systemDefault()): String = TIMESTAMP.format(Instant.ofEpochMilli(millis).atZone(zone))
+
+/** The start of an event's JSON line, or of what `watch` found present when it started. */
+internal fun presentJson(millis: Long, path: RtcPath, event: String): Map<String, Any?> =
+    mapOf("time" to Instant.ofEpochMilli(millis).toString(), "path" to path.toString(), "event" to event)
 
 /** The event for `rtcoord --json watch`: time, path, type and the event's own fields. */
-internal fun RtcEvent.toJson(): Map<String, Any?> = mapOf(
-    "time" to Instant.ofEpochMilli(noticedAt).toString(),
-    "path" to path.toString(),
-    "event" to javaClass.simpleName,
-) + fields()
+internal fun RtcEvent.toJson(): Map<String, Any?> = presentJson(noticedAt, path, javaClass.simpleName) + mapOf("sequence" to sequence) + fields()
 
 /** What happened, in a few words. */
 internal fun RtcEvent.what(): String = when (this) {
@@ -53,7 +60,7 @@ internal fun RtcEvent.what(): String = when (this) {
     is ContextRunningChanged -> "context $handle ${if (running) "started" else "stopped"}"
     is ContextAttachmentChanged -> "${if (attached) "joined" else "left"} context $handle"
     is ManagerComponentChanged -> "component $instanceName ${if (created) "created" else "deleted"}"
-    is NodeAppeared -> "${child.name} appeared"
+    is NodeAppeared -> "${child.name} appeared" + (snapshot?.let { ": ${it.brief()}" } ?: "")
     is NodeVanished -> "${child.name} vanished"
     is HeartbeatLost -> "no heartbeat for $silentMillis ms"
     is BecameZombie -> "unreachable: ${cause.reason}"
@@ -62,10 +69,18 @@ internal fun RtcEvent.what(): String = when (this) {
     is ManagerDied -> "manager stopped answering (${cause.reason}); " +
         (if (components.isEmpty()) "it hosted no component" else "its components went with it: ${components.joinToString { it.name }}")
     is ManagerReturned -> "manager answers again"
+    is NameServerLost -> "name server unreachable (${cause.reason}); what is registered on it is unknown until it answers"
+    is NameServerReturned -> "name server answers again, after ${downMillis / 1000.0} s"
+}
+
+/** A component as a line shows it: its state, and its ports that have connections. */
+internal fun ComponentSnapshot.brief(state: LifeCycle = this.state): String {
+    val connected = ports.filter { it.connectors.isNotEmpty() }.joinToString { "${it.name} (${it.connectors.size})" }
+    return state.name + if (connected.isEmpty()) ", no connection" else ", connected: $connected"
 }
 
 /** How a component is watched, in a few words. */
-private fun WatchMethod.text(): String = when (this) {
+internal fun WatchMethod.text(): String = when (this) {
     is WatchMethod.Pushed -> "pushed by its ${flavour.label}, heartbeat every $heartbeat" + (pollPeriod?.let { ", and polled every $it" } ?: "")
     is WatchMethod.Polled -> "polled every $period, as $reason"
     is WatchMethod.Unwatched -> "not at all, as $reason"
@@ -86,7 +101,7 @@ private fun RtcEvent.fields(): Map<String, Any?> = when (this) {
     is ContextRunningChanged -> mapOf("handle" to handle, "running" to running)
     is ContextAttachmentChanged -> mapOf("handle" to handle, "attached" to attached)
     is ManagerComponentChanged -> mapOf("instanceName" to instanceName, "created" to created)
-    is NodeAppeared -> mapOf("child" to child.path.toString())
+    is NodeAppeared -> mapOf("child" to child.path.toString()) + snapshot?.stateFields().orEmpty()
     is NodeVanished -> mapOf("child" to child.toString())
     is HeartbeatLost -> mapOf("silentMillis" to silentMillis)
     is BecameZombie -> mapOf("error" to cause.message)
@@ -94,9 +109,17 @@ private fun RtcEvent.fields(): Map<String, Any?> = when (this) {
     is WatchMethodChanged -> new.fields() + mapOf("was" to old?.let { it.fields()["method"] })
     is ManagerDied -> mapOf("components" to components.map { it.name }, "error" to cause.message)
     is ManagerReturned -> emptyMap()
+    is NameServerLost -> mapOf("error" to cause.message)
+    is NameServerReturned -> mapOf("downMillis" to downMillis)
 }
 
-private fun WatchMethod.fields(): Map<String, Any?> = when (this) {
+/** A component's state and connections for JSON. */
+internal fun ComponentSnapshot.stateFields(state: LifeCycle = this.state): Map<String, Any?> = mapOf(
+    "state" to state.name,
+    "connections" to ports.filter { it.connectors.isNotEmpty() }.associate { it.name to it.connectors.size },
+)
+
+internal fun WatchMethod.fields(): Map<String, Any?> = when (this) {
     is WatchMethod.Pushed -> mapOf(
         "method" to "pushed", "observer" to flavour.repositoryId, "heartbeatMillis" to heartbeat.inWholeMilliseconds,
         "pollPeriodMillis" to pollPeriod?.inWholeMilliseconds,

@@ -13,6 +13,7 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
+import org.rtcoord.NameServerNode
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
 import org.rtcoord.cli.serve.LiveService
@@ -22,6 +23,8 @@ import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import java.time.LocalTime
 import java.time.format.DateTimeFormatter
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
 
 /**
  * Runs a coordinator script against the live system until SIGINT/SIGTERM or `--for` elapses, logging
@@ -48,6 +51,10 @@ class RunCommand : TreeCommand("run") {
         help = "Stop at the first handler that fails, with status 1 (for a service manager to restart the coordinator); " +
             "without it a failed handler is logged and counted, and the coordinator keeps running.",
     ).flag()
+    private val requireNameServers by option(
+        "--require-name-servers",
+        help = "Exit 1 when a name server does not answer at start, instead of saying so and trying again until it does.",
+    ).flag()
     private val serve by option("--serve", help = "Serve a live view of the system and the coordinator (see rtcoord serve).").flag()
     private val serving by ServeOptions(prefix = "serve-")
 
@@ -66,8 +73,10 @@ class RunCommand : TreeCommand("run") {
                 echo("${now()} $line")
                 service?.log("coordinator", line)
             }
-            // One line per component saying how it is watched (again when that changes), and one per manager that dies.
+            // One line per component saying how it is watched (again when that changes), one per manager that
+            // dies or returns, and one per name server that stops or starts answering.
             tree.onWatching { event -> echo("${now()} ${event.path} ${event.what()}") }
+            if (!awaitNameServers(signals)) return
             try {
                 coordinator.start()
             } catch (e: RtcException) {
@@ -107,10 +116,37 @@ class RunCommand : TreeCommand("run") {
         }
     }
 
+    /**
+     * Waits until every name server answers, saying which do not and when each is reached; false when
+     * stopped meanwhile. With --require-name-servers, one that does not answer ends the run instead.
+     */
+    private suspend fun awaitNameServers(signals: StopSignals): Boolean {
+        for (server in tree.nameServers) {
+            val failure = unreachable(server) ?: continue
+            if (requireNameServers) fail("name server ${server.address}: ${failure.reason}", failure)
+            val lost = TimeSource.Monotonic.markNow()
+            echo("${now()} name server ${server.address} unreachable (${failure.reason}); trying again every $RETRY")
+            while (unreachable(server) != null) {
+                if (signals.await(RETRY) != null) return false
+            }
+            echo("${now()} name server ${server.address} reached after ${lost.elapsedNow().inWholeMilliseconds / 1000.0} s")
+        }
+        return true
+    }
+
+    /** Why [server] does not answer a listing now; null when it does. */
+    private suspend fun unreachable(server: NameServerNode): RtcException? = try {
+        server.refresh()
+        null
+    } catch (e: RtcException) {
+        e
+    }
+
     private fun now(): String = LocalTime.now().format(TIME)
 
     private companion object {
         const val HANDLER_FAILED = "a handler that failed (--fail-on-handler-error)"
         val TIME: DateTimeFormatter = DateTimeFormatter.ofPattern("HH:mm:ss.SSS")
+        val RETRY = 1.seconds
     }
 }

@@ -9,8 +9,10 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
+import org.rtcoord.Node
 import org.rtcoord.PortTraffic
 import org.rtcoord.RtcEvent
+import org.rtcoord.SystemSnapshot
 import org.rtcoord.WatchMode
 
 /** `rtcoord watch`: rtwatch that starts, for every kind of event, pushed where components allow it. */
@@ -50,7 +52,8 @@ class WatchCommand : TreeCommand("watch") {
             val nodes = paths.map { node(it) }
             // Traffic comes only to who names it: with --data.
             val types = if (data) setOf(RtcEvent::class.java, PortTraffic::class.java) else setOf(RtcEvent::class.java)
-            nodes.forEach { node -> tree.on(node, types, options) { events.send(it) } }
+            // The system as it is when every event is caught, then what changes: nothing lost in between.
+            tree.follow(nodes, types, options, start = { snapshot -> presentLines(snapshot, nodes).forEach(::echo) }) { events.send(it) }
             val rates = if (data) PortRates.tap(tree, nodes) else null
             coroutineScope {
                 val printing = launch {
@@ -65,5 +68,29 @@ class WatchCommand : TreeCommand("watch") {
                 printing.cancel()
             }
         }
+    }
+
+    /** A line per component below [nodes] with its state, and per name server of theirs that does not answer, as [snapshot] has them. */
+    private fun presentLines(snapshot: SystemSnapshot, nodes: List<Node>): List<String> {
+        val now = System.currentTimeMillis()
+        val servers = snapshot.nameServers.filter { entry -> !entry.reachable && nodes.any { it.path.nameServer == entry.node.address } }.map { entry ->
+            if (session.json) {
+                toJson(presentJson(now, entry.node.path, "NameServerLost") + mapOf("error" to entry.cause?.message), pretty = false)
+            } else {
+                "${timestamp(now)} ${entry.node.path} name server unreachable (${entry.cause?.reason})"
+            }
+        }
+        val components = snapshot.components.filter { entry -> nodes.any { entry.isAtOrBelow(it.path) } }.map { entry ->
+            val read = entry.node.snapshots.value
+            val what = if (!entry.alive) "unreachable" else read?.brief(entry.state) ?: entry.state.name
+            val method = entry.watchMethod
+            if (session.json) {
+                val state = read?.stateFields(entry.state) ?: mapOf("state" to entry.state.name)
+                toJson(presentJson(now, entry.path, "Present") + state + mapOf("alive" to entry.alive) + method?.fields().orEmpty(), pretty = false)
+            } else {
+                "${timestamp(now)} ${entry.path} $what" + (method?.let { "; watched: ${it.text()}" } ?: "")
+            }
+        }
+        return servers + components
     }
 }

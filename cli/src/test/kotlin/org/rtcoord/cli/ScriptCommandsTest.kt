@@ -9,7 +9,12 @@ import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import org.omg.CosNaming.NamingContextExtHelper
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.naming.NamingService
+import java.net.InetAddress
+import java.net.InetSocketAddress
+import java.net.Socket
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.CompletableFuture
@@ -164,6 +169,50 @@ class ScriptCommandsTest {
                 val died = Regex("""\d\d:\d\d:\d\d\.\d{3} /\S+/manager_${process.pid} manager stopped answering \(.*\); its components went with it: hosted0\.rtc\n""")
                 assertEquals(1, died.findAll(result.stdout).count(), result.stdout)
             }
+        }
+    }
+
+    @Test
+    fun `run says when its name server stops answering and when it answers again`() {
+        var naming = NamingService.start()
+        try {
+            Scenarios.localisation(naming.corbaloc).use { system ->
+                val rule = script("gyro.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n")
+                val run = CompletableFuture.supplyAsync { runRtcoord("-n", naming.address, "run", "--for", "10s", rule.toString()) }
+                await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { system.component("gyro0").observerIds.isNotEmpty() }
+                val saved = naming.snapshot()
+                naming.close()
+                // The run's output is read at its end: the outage lasts three of its one-second checks.
+                Thread.sleep(3_000)
+                naming = NamingService.start(naming.port, saved)
+                val result = run.get()
+                assertEquals(0, result.statusCode, result.stderr)
+                val lost = Regex("""\d\d:\d\d:\d\d\.\d{3} /\Q${naming.address}\E name server unreachable \(.+\n""")
+                val back = Regex("""\d\d:\d\d:\d\d\.\d{3} /\Q${naming.address}\E name server answers again, after \d+\.\d+ s\n""")
+                assertEquals(1, lost.findAll(result.stdout).count(), result.stdout)
+                assertEquals(1, back.findAll(result.stdout).count(), result.stdout)
+            }
+        } finally {
+            naming.close()
+        }
+    }
+
+    @Test
+    fun `run waits for a name server that does not answer at start, or exits 1 with --require-name-servers`() {
+        val rule = script("laser.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) { reset() }\n")
+        // Bound and never listening: connections are refused for as long as the test holds the port.
+        Socket().use { reserved ->
+            reserved.bind(InetSocketAddress(InetAddress.getLoopbackAddress(), 0))
+            val server = "127.0.0.1:${reserved.localPort}"
+            val waited = runRtcoord("-n", server, "run", "--for", "2s", rule.toString())
+            assertEquals(0, waited.statusCode, waited.stderr)
+            val said = Regex("""\d\d:\d\d:\d\d\.\d{3} name server \Q$server\E unreachable \(.+\); trying again every 1s\n""")
+            assertEquals(1, said.findAll(waited.stdout).count(), waited.stdout)
+            assertTrue("no such component" !in waited.stdout + waited.stderr, waited.stdout + waited.stderr)
+
+            val refused = runRtcoord("-n", server, "run", "--require-name-servers", rule.toString())
+            assertEquals(1, refused.statusCode)
+            assertTrue(refused.stderr.startsWith("rtcoord: name server $server: unreachable"), refused.stderr)
         }
     }
 

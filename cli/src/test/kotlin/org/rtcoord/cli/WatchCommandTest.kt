@@ -8,11 +8,15 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import org.rtcoord.fixtures.iiopAddresses
 import org.rtcoord.fixtures.listeningSockets
 import org.omg.CosNaming.NamingContextExtHelper
+import java.net.InetAddress
+import java.net.InetSocketAddress
+import java.net.Socket
 import java.util.concurrent.CompletableFuture
 import kotlin.time.Duration.Companion.seconds
 
@@ -44,19 +48,22 @@ class WatchCommandTest {
         val (watched, lines) = printed.partition { " watched: " in it }
         val line = Regex("""\d{4}-\d\d-\d\d \d\d:\d\d:\d\d\.\d{3} /\S+/gyro0\.rtc state in context 0: (ACTIVE -> INACTIVE|INACTIVE -> ACTIVE)""")
         assertTrue(lines.isNotEmpty() && lines.all { line.matches(it) }, lines.joinToString("\n"))
-        // How each component is watched, once each, before its events.
-        val how = Regex("""\S+ \S+ /\S+/(\w+)\.rtc watched: pushed by its OpenRTM::ComponentObserver, heartbeat every 1s""")
+        // Each component's state and how it is watched, once each, before any event.
+        val how = Regex("""\S+ \S+ /\S+/(\w+)\.rtc (ACTIVE|INACTIVE), [^;]+; watched: pushed by its OpenRTM::ComponentObserver, heartbeat every 1s""")
         assertEquals(listOf("gyro0", "laser0", "laser_localise0", "odometry0"), watched.map { how.matchEntire(it)?.groupValues?.get(1) }.sortedBy { it }, watched.joinToString("\n"))
-        assertTrue(printed.indexOfFirst { "gyro0.rtc watched" in it } < printed.indexOfFirst { "gyro0.rtc state" in it }, printed.joinToString("\n"))
+        assertTrue(printed.indexOfLast { " watched: " in it } < printed.indexOfFirst { "gyro0.rtc state" in it }, printed.joinToString("\n"))
     }
 
     @Test
     fun `polls with --poll and prints JSON lines with --json`() {
         val printed = watchWhileToggling(3, "--json", "watch", gyro, "--poll", "100ms").ok().lines().filter { it.isNotEmpty() }
-        val how = Regex("""\{"time":"[^"]+","path":"\Q$gyro\E","event":"WatchMethodChanged","method":"polled","pollPeriodMillis":100,"reason":"polling was asked for","was":null}""")
-        assertTrue(how.matches(printed.first()), printed.first())
+        val present = Regex(
+            """\{"time":"[^"]+","path":"\Q$gyro\E","event":"Present","state":"(ACTIVE|INACTIVE)","connections":\{[^}]*},"alive":true,""" +
+                """"method":"polled","pollPeriodMillis":100,"reason":"polling was asked for"}""",
+        )
+        assertTrue(present.matches(printed.first()), printed.first())
         val lines = printed.drop(1)
-        val line = Regex("""\{"time":"[^"]+","path":"\Q$gyro\E","event":"StateChanged","handle":0,"old":"(ACTIVE|INACTIVE)","new":"(ACTIVE|INACTIVE)"}""")
+        val line = Regex("""\{"time":"[^"]+","path":"\Q$gyro\E","event":"StateChanged","sequence":\d+,"handle":0,"old":"(ACTIVE|INACTIVE)","new":"(ACTIVE|INACTIVE)"}""")
         assertTrue(lines.isNotEmpty() && lines.all { line.matches(it) }, lines.joinToString("\n"))
     }
 
@@ -98,7 +105,7 @@ class WatchCommandTest {
             val line = Regex("""\S+ \S+ /\S+/manager_${process.pid} manager stopped answering \(unreachable \(\w+.*\)\); its components went with it: hosted0\.rtc""")
             assertTrue(line.matches(died.single()), died.single())
             // Pushed, or polled when the kill cut the attachment's reply short: either way said once.
-            assertEquals(1, lines.count { "hosted0.rtc watched: " in it }, lines.joinToString("\n"))
+            assertEquals(1, lines.count { "hosted0.rtc " in it && "watched: " in it }, lines.joinToString("\n"))
         }
     }
 
@@ -107,6 +114,37 @@ class WatchCommandTest {
         val orb = localisation.system.runtime.orb.orb
         val naming = NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc))
         return RTObjectHelper.narrow(naming.resolve_str("${FixtureRuntime.hostContext}/$name"))
+    }
+
+    @Test
+    fun `starts with each component's state, a change made just before included`() {
+        runRtcoord("deact", gyro).ok()
+        val printed = runRtcoord("watch", localisation.host, "--for", "1s").ok().lines()
+        val states = printed.mapNotNull { Regex("""\S+ \S+ /\S+/(\w+)\.rtc (\w+), .*; watched: .*""").matchEntire(it)?.destructured?.let { (name, state) -> name to state } }.toMap()
+        assertEquals(mapOf("gyro0" to "INACTIVE", "laser0" to "ACTIVE", "laser_localise0" to "ACTIVE", "odometry0" to "ACTIVE"), states, printed.joinToString("\n"))
+    }
+
+    @Test
+    fun `a component that appears is printed with what happened to it before it was found`() {
+        val watching = CompletableFuture.supplyAsync { runRtcoord("watch", localisation.host, "--for", "4s") }
+        await("watch to observe gyro0", 30.seconds) { localisation.system.component("gyro0").observerIds.isNotEmpty() }
+        localisation.system.runtime.create(Scenarios.relay, "late0").activate()
+        val printed = watching.get().ok().lines()
+        val appeared = printed.single { "late0.rtc appeared" in it }
+        // Found after its activation, or between its creation and its activation, which then follows it.
+        assertTrue(appeared.endsWith("late0.rtc appeared: ACTIVE, no connection") || printed.last { "late0.rtc" in it }.endsWith("INACTIVE -> ACTIVE"), printed.joinToString("\n"))
+    }
+
+    @Test
+    fun `a name server that does not answer is said, not silently watched`() {
+        // Bound and never listening: connections to it are refused for as long as the test holds it.
+        Socket().use { reserved ->
+            reserved.bind(InetSocketAddress(InetAddress.getLoopbackAddress(), 0))
+            val server = "127.0.0.1:${reserved.localPort}"
+            val printed = runRtcoord("-n", server, "watch", "/$server/", "--for", "3s").ok().lines().filter { it.isNotEmpty() }
+            assertEquals(1, printed.size, printed.joinToString("\n"))
+            assertTrue(Regex("""\S+ \S+ /\Q$server\E name server unreachable \(.+\).*""").matches(printed.single()), printed.single())
+        }
     }
 
     @Test

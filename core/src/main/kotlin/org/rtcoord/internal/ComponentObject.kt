@@ -10,13 +10,13 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import kotlinx.coroutines.withContext
+import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ComponentSummary
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.ManagerNode
 import org.rtcoord.RtcPath
 import org.rtcoord.summary
-import java.util.concurrent.CopyOnWriteArraySet
 
 /**
  * A live component: its reference and the latest snapshot read from it. Reads are serialised per
@@ -27,8 +27,6 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     private val refreshing = Mutex()
     private val current = MutableStateFlow<ComponentSnapshot?>(null)
     private val currentSummary = MutableStateFlow<ComponentSummary?>(null)
-
-    private val paths = CopyOnWriteArraySet<RtcPath>()
 
     /** Execution contexts by the component's handle for them, as of the last refresh. */
     @Volatile var contexts: Map<Int, ExecutionContext> = emptyMap()
@@ -48,11 +46,23 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
         hosts[manager.path] = manager
     }
 
-    /** The paths at which the tree shows this component, in the order they were found. */
-    val knownPaths: List<RtcPath> get() = paths.toList()
+    /** The nodes at which the tree shows this component, by path, in the order they were found. */
+    private val nodes = LinkedHashMap<RtcPath, ComponentNode>()
 
-    fun knownAt(path: RtcPath) {
-        paths += path
+    /** The paths at which the tree shows this component, in the order they were found. */
+    val knownPaths: List<RtcPath> get() = synchronized(nodes) { nodes.keys.toList() }
+
+    /**
+     * The one node that stands for the component in every event, log line and result: the first found in
+     * a naming context (where it registered itself), else the first found at all (below a manager, whose
+     * listing is an alias). The latest node at that path, since a listing may make it anew.
+     */
+    val canonical: ComponentNode?
+        get() = synchronized(nodes) { nodes.values.firstOrNull { !it.path.isAlias } ?: nodes.values.firstOrNull() }
+
+    /** Records that the tree shows this component at [node]'s path. */
+    fun knownAs(node: ComponentNode) {
+        synchronized(nodes) { nodes[node.path] = node }
     }
 
     val snapshot: StateFlow<ComponentSnapshot?> get() = current

@@ -5,26 +5,33 @@ import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
+import org.rtcoord.NameServerNode
 import org.rtcoord.TreeConfig
 import org.rtcoord.internal.data.DataTaps
 import org.rtcoord.internal.events.Watcher
+import org.rtcoord.internal.model.SystemModel
 import org.slf4j.LoggerFactory
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicLong
 
 /**
- * What every node of one tree shares: the ORB, the remote-call runner, the scope and the registry.
- * [firstNameServer] is the host of the tree's first name server, asked when the ORB starts.
+ * What every node of one tree shares: the ORB, the remote-call runner, the scope, the registry and the
+ * model. [nameServers] are the tree's name servers; the host of the first is asked when the ORB starts.
  */
-internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) : AutoCloseable {
+internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<NameServerNode>) : AutoCloseable {
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
 
-    val orb = OrbHolder(config.orb, { config.listenAddress ?: listenAddressToward(firstNameServer()) }, config.callTimeout)
+    val orb = OrbHolder(
+        config.orb,
+        { config.listenAddress ?: listenAddressToward(nameServers().firstOrNull()?.address?.substringBeforeLast(':')) },
+        config.callTimeout,
+    )
     val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned)
     val scope = CoroutineScope(
         SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
     )
     val components = ComponentRegistry(this)
+    val model = SystemModel(nameServers)
     val watcher = Watcher(this)
     val taps = DataTaps(this)
 

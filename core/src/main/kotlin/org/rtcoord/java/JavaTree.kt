@@ -14,12 +14,14 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
+import org.rtcoord.SystemSnapshot
 import org.rtcoord.TreeConfig
 import org.rtcoord.WrongKindException
 import org.rtcoord.label
 import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.Executor
+import java.util.function.Consumer
 import java.util.function.Predicate
 
 /**
@@ -168,6 +170,37 @@ public class JavaTree(
         return tree.onWatching { event -> withContext(dispatcher) { listener.onEvent(event) } }
     }
 
+    /** The tree's model of the system now, read without a remote call (see [RtcTree.snapshot]). */
+    public fun snapshot(): SystemSnapshot = tree.snapshot()
+
+    /**
+     * Subscribes to the events of [type] from the nodes at [paths], then calls [start] on [executor] with
+     * the model as it is once they are watched, and [listener] with every later event, one at a time, none
+     * missed and none twice (see [RtcTree.follow]): what a view needs to draw the system and keep it true.
+     * Returns once [start] was called; close the [Subscription] to stop.
+     */
+    @JvmOverloads
+    @Throws(RtcException::class)
+    public fun <E : RtcEvent> follow(
+        paths: List<String>,
+        type: Class<E>,
+        executor: Executor,
+        start: Consumer<SystemSnapshot>,
+        listener: EventListener<E>,
+        options: EventOptions = EventOptions(),
+    ): Subscription = calls.await { followed(paths, type, executor, start, listener, options) }
+
+    /** [follow], once [start] was called. */
+    @JvmOverloads
+    public fun <E : RtcEvent> followAsync(
+        paths: List<String>,
+        type: Class<E>,
+        executor: Executor,
+        start: Consumer<SystemSnapshot>,
+        listener: EventListener<E>,
+        options: EventOptions = EventOptions(),
+    ): CompletableFuture<Subscription> = calls.future { followed(paths, type, executor, start, listener, options) }
+
     /** Closes the tree (see [RtcTree.close]). */
     override fun close() {
         tree.close()
@@ -187,6 +220,20 @@ public class JavaTree(
 
     private suspend fun findAll(from: String, filter: Predicate<Node>, maxDepth: Int): List<Node> =
         tree.find(RtcPath.parse(from), maxDepth) { filter.test(it) }.toList()
+
+    private suspend fun <E : RtcEvent> followed(
+        paths: List<String>,
+        type: Class<E>,
+        executor: Executor,
+        start: Consumer<SystemSnapshot>,
+        listener: EventListener<E>,
+        options: EventOptions,
+    ): Subscription {
+        val dispatcher = executor.asCoroutineDispatcher()
+        return tree.follow(paths.map { tree.node(it) }, setOf(type), options, { snapshot -> withContext(dispatcher) { start.accept(snapshot) } }) { event ->
+            withContext(dispatcher) { listener.onEvent(type.cast(event)) }
+        }
+    }
 
     private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription {
         val dispatcher = executor.asCoroutineDispatcher()

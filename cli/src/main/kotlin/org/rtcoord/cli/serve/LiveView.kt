@@ -26,6 +26,8 @@ import org.rtcoord.HeartbeatLost
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
+import org.rtcoord.NameServerLost
+import org.rtcoord.NameServerReturned
 import org.rtcoord.Node
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
@@ -40,6 +42,7 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
 import org.rtcoord.Subscription
+import org.rtcoord.SystemSnapshot
 import org.rtcoord.WatchMethodChanged
 import org.rtcoord.cli.discover
 import org.rtcoord.cli.toJson
@@ -82,9 +85,8 @@ internal class LiveView(
     /** Reads the system, subscribes to its events and starts following the coordinator. */
     suspend fun start() {
         discover(top, null)
-        network = NetworkView(top).toJson()
         val watched = if (top is RootNode) tree.nameServers else listOf(top)
-        watched.forEach { node -> subscriptions += tree.on(node, RtcEvent::class.java, options) { publish(it) } }
+        subscriptions += tree.follow(watched, setOf(RtcEvent::class.java), options, start = { model -> network = NetworkView(top, model).toJson() }) { publish(it) }
         scope.launch {
             for (signal in reshaped) {
                 // Changes come in bursts (a component appears with its ports and connections): one read for all.
@@ -95,9 +97,12 @@ internal class LiveView(
         coordinator?.let { following -> scope.launch { followCoordinator(following) } }
     }
 
-    /** Everything a page starts from: the network, the coordinator, the recent events, what it may do. */
+    /**
+     * Everything a page starts from: the network with the states the tree's model holds now (the page
+     * then skips the state events up to its sequence), the coordinator, the recent events, what it may do.
+     */
     fun snapshot(): Map<String, Any?> = mapOf(
-        "network" to network,
+        "network" to withStates(network, tree.snapshot()),
         "coordinator" to coordinatorState,
         "events" to synchronized(recent) { recent.toList() },
         "operable" to operable,
@@ -133,9 +138,8 @@ internal class LiveView(
 
     /** Reads the network again; components that appeared are read first, so they are drawn with their state. */
     private suspend fun readNetwork() {
-        val view = NetworkView(top)
-        view.unread().forEach { component -> readQuietly(component) }
-        network = view.toJson()
+        NetworkView(top, tree.snapshot()).unread().forEach { component -> readQuietly(component) }
+        network = NetworkView(top, tree.snapshot()).toJson()
         broadcast.tryEmit(Update("network", toJson(network, pretty = false)))
     }
 
@@ -166,6 +170,16 @@ internal class LiveView(
     }
 
     private companion object {
+        /** [network] with each component's state as [model] holds it, and [model]'s sequence. */
+        @Suppress("UNCHECKED_CAST")
+        fun withStates(network: Map<String, Any?>, model: SystemSnapshot): Map<String, Any?> {
+            val states = model.components.flatMap { entry -> entry.paths.map { it.toString() to entry.overallState.name } }.toMap()
+            val components = (network["components"] as? List<Map<String, Any?>>).orEmpty().map { component ->
+                states[component["id"]]?.let { component + ("state" to it) } ?: component
+            }
+            return network + mapOf("components" to components, "sequence" to model.sequence)
+        }
+
         const val BUFFERED = 10_000
         const val RECENT_KEPT = 500
         val RESHAPE_SETTLE = 150.milliseconds
@@ -178,6 +192,7 @@ internal class LiveView(
             is ParameterChanged, is ConfigurationSetActivated, is ConfigurationSetAdded, is ConfigurationSetRemoved -> "configuration"
             is HeartbeatLost, is BecameZombie, is Recovered, is WatchMethodChanged -> "liveness"
             is ManagerComponentChanged, is ManagerDied, is ManagerReturned -> "manager"
+            is NameServerLost, is NameServerReturned -> "liveness"
             is NodeAppeared, is NodeVanished -> "structure"
         }
     }

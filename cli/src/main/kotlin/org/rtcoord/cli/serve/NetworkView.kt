@@ -4,6 +4,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
+import org.rtcoord.SystemSnapshot
 import org.rtcoord.ZombieNode
 import org.rtcoord.cli.ComponentNetwork
 
@@ -11,9 +12,9 @@ import org.rtcoord.cli.ComponentNetwork
  * The system below [top] as the page draws it, from what the tree holds: naming contexts and name
  * servers as boxes around what they bind, components with their states, data and service connections
  * (from [ComponentNetwork]), managers with the components they host, zombies, and directories that
- * could not be listed. Every id is a whole path.
+ * could not be listed. Every id is a whole path. States are [model]'s, the tree's events up to its sequence.
  */
-internal class NetworkView(private val top: Node) {
+internal class NetworkView(private val top: Node, private val model: SystemSnapshot) {
     /** Components below [top] the tree has not read yet: the view leaves them out until they are. */
     fun unread(): List<ComponentNode> = walk(top).filterIsInstance<ComponentNode>().filter { it.snapshots.value == null }
 
@@ -31,7 +32,8 @@ internal class NetworkView(private val top: Node) {
                 "name" to snapshot.instanceName,
                 "type" to snapshot.typeName,
                 "parent" to component.path.parent?.toString(),
-                "state" to snapshot.overallState.name,
+                // As the tree's events tell it: a read may run ahead of them (a deactivation held).
+                "state" to (model.component(component)?.overallState ?: snapshot.overallState).name,
                 "hostedBy" to managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
             )
         }
@@ -39,6 +41,7 @@ internal class NetworkView(private val top: Node) {
         val vertices = graph.vertices.associate { vertex -> vertex.id to wholePath(vertex.id) }
         return mapOf(
             "top" to top.path.toString(),
+            "sequence" to model.sequence,
             "contexts" to directories.map { directory ->
                 mapOf(
                     "id" to directory.path.toString(),

@@ -67,7 +67,8 @@ const view = {
   shown: {},                 // path -> { state, at (page clock), noticedAt (tree clock) }: when the page showed a state
   coordinatorShownAt: {},    // rule description -> { firings, at }: when the page showed a firing
   loadedAt: Date.now(),      // a reload would change it
-  renderedAt: null,          // performance.now() when the network was first drawn
+  renderedAt: null,
+  since: 0,                  // the tree's sequence the last snapshot held: state events up to it are already drawn          // performance.now() when the network was first drawn
   snapshots: 0,
   operable: false,
   coordinator: null,
@@ -301,14 +302,21 @@ function connect() {
     view.operable = snapshot.operable;
     connected(true, 'live' + (snapshot.operable ? ', operable' : ', read-only'));
     drawNetwork(snapshot.network);
+    // The network holds the tree's events up to its sequence: older ones that reach the page after it are history.
+    view.since = snapshot.network.sequence || 0;
     showCoordinator(snapshot.coordinator);
     addToTimeline(snapshot.events, true);
   });
-  events.addEventListener('network', message => drawNetwork(JSON.parse(message.data)));
+  events.addEventListener('network', message => {
+    const network = JSON.parse(message.data);
+    drawNetwork(network);
+    view.since = Math.max(view.since, network.sequence || 0);
+  });
   events.addEventListener('coordinator', message => showCoordinator(JSON.parse(message.data)));
   events.addEventListener('event', message => {
     const entry = JSON.parse(message.data);
-    if (entry.event === 'StateChanged' && STATES.includes(entry.new)) applyState(entry.source, entry.new, entry.noticedAt);
+    const news = !entry.sequence || entry.sequence > view.since;
+    if (news && entry.event === 'StateChanged' && STATES.includes(entry.new)) applyState(entry.source, entry.new, entry.noticedAt);
     if (entry.event === 'BecameZombie') cy.getElementById(entry.source).addClass('zombie');
     if (entry.event === 'Recovered') cy.getElementById(entry.source).removeClass('zombie');
     addToTimeline([entry], false);

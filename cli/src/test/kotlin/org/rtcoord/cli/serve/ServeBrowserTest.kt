@@ -11,6 +11,7 @@ import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.cli.Localisation
+import org.rtcoord.fixtures.await
 import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import java.nio.file.Path
@@ -97,6 +98,25 @@ class ServeBrowserTest {
         assertTrue(ruleShownAt - firedAt < 1000, "firing shown ${ruleShownAt - firedAt} ms after it fired")
         assertEquals(loadedAt, browser.evaluate("rtcoord.loadedAt").jsonPrimitive.long, "the page was reloaded")
         assertEquals("1", browser.evaluate("String(rtcoord.snapshots)").jsonPrimitive.content, "the page reconnected")
+    }
+
+    @Test
+    fun `a page opened after states changed draws every component in the state the tree holds`() {
+        val service = serve(null).closedAfter()
+        // Changed while the server follows the system, before any page is open: the page must not start from an old picture.
+        runBlocking { tree.component(localisation.path("gyro0.rtc")).deactivate() }
+        localisation.system.component("laser0").fail()
+        val expected = mapOf("gyro0" to "INACTIVE", "laser0" to "ERROR", "odometry0" to "ACTIVE", "laser_localise0" to "ACTIVE")
+        await("the tree to hold both changes") { tree.snapshot().components.associate { it.node.name.removeSuffix(".rtc") to it.overallState.name } == expected }
+
+        val browser = HeadlessChromium.start().closedAfter()
+        browser.navigate(service.url)
+        browser.await("the network drawn", expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4")
+        for (entry in tree.snapshot().components) {
+            val drawn = browser.evaluate("rtcoord.cy.getElementById(${js(entry.path.toString())}).data('state')").jsonPrimitive.content
+            assertEquals(entry.overallState.name, drawn, entry.path.toString())
+            assertEquals(runBlocking { entry.node.state() }.name, drawn, "${entry.path} as read now")
+        }
     }
 
     @Test

@@ -426,7 +426,7 @@ internal class ComponentMonitor(
             traffic != null -> {
                 timers.heard()
                 val event = PortTraffic(node, traffic.first, traffic.second)
-                registrations.forEach { if (it.traffic) it.sink.offer(event) }
+                core.model.publish(listOf(event)) { registrations.forEach { registration -> if (registration.traffic) registration.sink.offer(it) } }
             }
             else -> work.trySend(Received(hint))
         }
@@ -489,9 +489,9 @@ internal class ComponentMonitor(
     /** Where the registrations' events go. */
     fun sinks(): List<EventSink> = registrations.map { it.sink }
 
+    /** Publishes [events] through the tree's model, with the states they leave the component in. */
     private fun publish(events: List<RtcEvent>) {
-        if (events.isEmpty()) return
-        for (registration in registrations) events.forEach(registration.sink::offer)
+        core.model.publish(events, node.component, states.published) { event -> registrations.forEach { it.sink.offer(event) } }
     }
 
     private companion object {

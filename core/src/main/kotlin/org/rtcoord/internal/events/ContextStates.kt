@@ -2,6 +2,7 @@ package org.rtcoord.internal.events
 
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.LifeCycle
 import org.rtcoord.StateChanged
 
 /**
@@ -10,6 +11,9 @@ import org.rtcoord.StateChanged
  */
 internal class ContextStates(private val node: ComponentNode, private val holdLimitMillis: Long, private val settleMillis: Long) {
     private val trackers = HashMap<Int, StateTracker>()
+
+    /** The state in each context as the published events tell it, by handle. */
+    val published: Map<Int, LifeCycle> get() = trackers.mapValues { it.value.confirmed }
 
     /** Whether hints and reads disagree somewhere, and a read after the grace period must decide. */
     val awaitingConfirmation: Boolean get() = trackers.values.any { it.awaitingConfirmation }

@@ -62,14 +62,15 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
                     } catch (e: RtcException) {
                         if (!failing) {
                             log.info("{}; listing it again every {}", e.message, every)
-                            if (directory is ManagerNode) core.watcher.managerSilent(directory, every)
+                            core.watcher.listingFailed(directory, e, every)
                         }
                         failing = true
                         continue
                     }
                     if (failing) log.info("{}: listed again", directory.path)
                     failing = false
-                    if (before != null) announce(before, after)
+                    // Never listed before: the first listing failed, and all it finds now is news.
+                    announce(before.orEmpty(), after)
                     before = after
                 }
             }
@@ -81,17 +82,16 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
         val new = after.associateBy { it.name }
         val appeared = (new.keys - old.keys).map(new::getValue)
         val vanished = (old.keys - new.keys).map(old::getValue)
+        // Watched before announced: a handler acting on a new node misses none of its events, and what
+        // happened to a component before it was found is in the snapshot its appearance carries.
+        for (registration in registrations) appeared.forEach { registration.appeared(it) }
         val events: List<RtcEvent> = if (directory is ManagerNode) {
             appeared.filterIsInstance<ComponentNode>().map { ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = true) } +
                 vanished.filterIsInstance<ComponentNode>().map { ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = false) }
         } else {
-            appeared.map { NodeAppeared(directory, it) } + vanished.map { NodeVanished(directory, it.path) }
+            appeared.map { NodeAppeared(directory, it, (it as? ComponentNode)?.snapshots?.value) } + vanished.map { NodeVanished(directory, it.path) }
         }
-        for (registration in registrations) {
-            // Watched before announced: a handler acting on a new node misses none of its events.
-            appeared.forEach { registration.appeared(it) }
-            events.forEach(registration.sink::offer)
-        }
+        core.model.publish(events) { event -> registrations.forEach { it.sink.offer(event) } }
     }
 
     /** Where the registrations' events go. */

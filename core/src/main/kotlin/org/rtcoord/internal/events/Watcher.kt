@@ -1,6 +1,9 @@
 package org.rtcoord.internal.events
 
 import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
@@ -13,6 +16,9 @@ import org.rtcoord.HeartbeatLost
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerNode
 import org.rtcoord.ManagerReturned
+import org.rtcoord.NameServerLost
+import org.rtcoord.NameServerNode
+import org.rtcoord.NameServerReturned
 import org.rtcoord.Node
 import org.rtcoord.Overlap
 import org.rtcoord.ParameterChanged
@@ -20,8 +26,11 @@ import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
 import org.rtcoord.Subscription
+import org.rtcoord.TimedOutException
+import org.rtcoord.UnreachableException
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMethodChanged
 import org.rtcoord.WrongKindException
@@ -42,11 +51,21 @@ internal class Watcher(private val core: TreeCore) {
     private val host by lazy { ObserverHost(core.orb.orb) }
     private val components = HashMap<ComponentObject, ComponentMonitor>()
     private val live = java.util.concurrent.ConcurrentHashMap.newKeySet<ComponentMonitor>()
-    private val listings = HashMap<DirectoryNode, ListingMonitor>()
+    /** By path: a directory listed anew (its name server restarted) is the same directory, listed once. */
+    private val listings = HashMap<RtcPath, ListingMonitor>()
     private val reporters = CopyOnWriteArrayList<EventSink>()
-    private val managers = ManagerLiveness(core, ::sinksOf, ::report)
+    private val managers = Outages<ManagerNode>(
+        core, { manager -> sinksOf(manager) + reporters }, probe = { it.profile() },
+        lost = { manager, cause -> ManagerDied(manager, manager.listed.value.orEmpty().filterIsInstance<ComponentNode>(), cause) },
+        back = { manager, _ -> ManagerReturned(manager) },
+    )
+    private val nameServers = Outages<NameServerNode>(
+        core, { server -> sinksOf(server) + reporters }, probe = { it.relist() }, lost = ::NameServerLost, back = ::NameServerReturned,
+    )
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
     private val polls = HashMap<Duration, PollSchedule>()
+    /** The name servers' check while anyone wants reports; guarded by [reporters]. */
+    private var serverChecks: Job? = null
 
     /** The heartbeat watchdogs of every component watched by push. */
     val watchdogs = Watchdogs(core.scope)
@@ -62,7 +81,7 @@ internal class Watcher(private val core: TreeCore) {
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
         val traffic = types != null && PortTraffic::class.java in types
         val releases = mutableListOf<() -> Unit>()
-        val watched = HashSet<DirectoryNode>()
+        val watched = HashSet<RtcPath>()
         // A component reached by two paths at once (its naming context, its manager) is included once;
         // the second caller waits until it is watched, as the first does.
         val included = HashMap<ComponentObject, CompletableDeferred<Unit>>()
@@ -75,20 +94,25 @@ internal class Watcher(private val core: TreeCore) {
                     if (earlier != null) return earlier.await()
                     try {
                         val registration = MonitorRegistration(sink, options, configuration, statesOnly, traffic)
-                        val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node) { live.remove(it) }.also { live += it } } }
+                        val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node, ::ended).also { live += it } } }
                         monitor.add(registration)
                         synchronized(releases) { releases += { release(node.component, monitor, registration) } }
                     } finally {
                         inclusion.complete(Unit)
                     }
                 }
-                is DirectoryNode -> synchronized(watched) { watched.add(node) }.takeIf { it }?.let {
-                    val children = try { node.children() } catch (e: RtcException) { emptyList() }
+                is DirectoryNode -> synchronized(watched) { watched.add(node.path) }.takeIf { it }?.let {
+                    val children = try {
+                        node.children()
+                    } catch (e: RtcException) {
+                        listingFailed(node, e, options.pollPeriod)
+                        emptyList()
+                    }
                     // Managers listed first, down to their slaves: a component that dies before the walk
                     // reaches its manager is still known as that manager's, and the manager's death told.
                     children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
                     val registration = ListingMonitor.Registration(sink, options.pollPeriod) { child -> include(child) }
-                    val monitor = synchronized(listings) { listings.getOrPut(node) { ListingMonitor(core, node) } }
+                    val monitor = synchronized(listings) { listings.getOrPut(node.path) { ListingMonitor(core, node) } }
                     monitor.add(registration)
                     synchronized(releases) { releases += { release(node, monitor, registration) } }
                     // Components in naming contexts first, so a monitor's paths are the ones users know.
@@ -114,10 +138,28 @@ internal class Watcher(private val core: TreeCore) {
         synchronized(reporters) {
             reporters += sink
             live.forEach { monitor -> monitor.method?.let { sink.offer(WatchMethodChanged(monitor.node, null, it)) } }
+            if (serverChecks == null) serverChecks = core.scope.launch { checkNameServers() }
         }
         return Subscription {
-            reporters -= sink
+            synchronized(reporters) {
+                reporters -= sink
+                if (reporters.isEmpty()) serverChecks?.cancel().also { serverChecks = null }
+            }
             sink.close()
+        }
+    }
+
+    /** Lists the name servers every [SERVER_CHECK_PERIOD] while anyone wants reports: an outage is news even to a coordinator that lists nothing. */
+    private suspend fun checkNameServers() {
+        while (true) {
+            delay(SERVER_CHECK_PERIOD)
+            for (server in core.nameServers()) {
+                try {
+                    server.relist()
+                } catch (e: RtcException) {
+                    listingFailed(server, e, SERVER_CHECK_PERIOD)
+                }
+            }
         }
     }
 
@@ -130,12 +172,12 @@ internal class Watcher(private val core: TreeCore) {
             val old = monitor.method
             if (old != method) {
                 monitor.method = method
-                reporters.forEach { it.offer(WatchMethodChanged(monitor.node, old, method)) }
+                core.model.publish(listOf(WatchMethodChanged(monitor.node, old, method))) { event -> reporters.forEach { it.offer(event) } }
             }
         }
         for (registration in registrations) {
             if (registration.told == method) continue
-            registration.sink.offer(WatchMethodChanged(monitor.node, registration.told, method))
+            core.model.publish(listOf(WatchMethodChanged(monitor.node, registration.told, method))) { registration.sink.offer(it) }
             registration.told = method
         }
     }
@@ -171,27 +213,42 @@ internal class Watcher(private val core: TreeCore) {
         node.component.hostingManagers.forEach { managers.suspect(it, period) }
     }
 
-    /** Listing [manager] failed: it is asked whether it still answers, every [period] once dead. */
-    fun managerSilent(manager: ManagerNode, period: Duration) {
-        managers.suspect(manager, period)
+    /**
+     * Listing [directory] failed with [cause]: a manager is asked whether it still answers, and so is the
+     * name server of anything else that did not answer, every [period] once found lost.
+     */
+    fun listingFailed(directory: DirectoryNode, cause: RtcException, period: Duration) {
+        when {
+            directory is ManagerNode -> managers.suspect(directory, period)
+            cause !is UnreachableException && cause !is TimedOutException -> Unit
+            else -> core.nameServers().firstOrNull { it.address == directory.path.nameServer }?.let { nameServers.suspect(it, period) }
+        }
+    }
+
+    /** Where events about [server] go: to whoever watches something registered on it. */
+    private fun sinksOf(server: NameServerNode): Set<EventSink> {
+        val componentSinks = synchronized(components) { components.values.filter { it.node.path.nameServer == server.address }.flatMap { it.sinks() } }
+        val listingSinks = synchronized(listings) { listings.filterKeys { it.nameServer == server.address }.values.flatMap { it.sinks() } }
+        return (componentSinks + listingSinks).toSet()
     }
 
     /** Where events about [manager] go: to whoever watches it or a component its last listing showed. */
     private fun sinksOf(manager: ManagerNode): Set<EventSink> {
         val hosted = manager.listed.value.orEmpty().filterIsInstance<ComponentNode>().map { it.component }.toSet()
         val componentSinks = synchronized(components) { components.filterKeys { it in hosted }.values.flatMap { it.sinks() } }
-        val listingSinks = synchronized(listings) { listings.filterKeys { it.path == manager.path }.values.flatMap { it.sinks() } }
+        val listingSinks = synchronized(listings) { listings[manager.path]?.sinks().orEmpty() }
         return (componentSinks + listingSinks).toSet()
-    }
-
-    private fun report(event: RtcEvent) {
-        reporters.forEach { it.offer(event) }
     }
 
     /** Lists [manager] and its slaves (once: listings are cached), each recording the components it hosts. */
     private suspend fun listManagers(manager: ManagerNode) {
         val children = try { manager.children() } catch (e: RtcException) { return }
         children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
+    }
+
+    private fun ended(monitor: ComponentMonitor) {
+        live.remove(monitor)
+        core.model.unwatched(monitor.node.component)
     }
 
     private fun release(component: ComponentObject, monitor: ComponentMonitor, registration: MonitorRegistration) {
@@ -206,7 +263,7 @@ internal class Watcher(private val core: TreeCore) {
     private fun release(directory: DirectoryNode, monitor: ListingMonitor, registration: ListingMonitor.Registration) {
         synchronized(listings) {
             if (monitor.remove(registration)) {
-                listings.remove(directory)
+                listings.remove(directory.path)
                 monitor.stop()
             }
         }
@@ -237,11 +294,15 @@ internal class Watcher(private val core: TreeCore) {
          */
         const val POLLS_IN_FLIGHT = 4
 
+        /** How often the name servers are listed for the reports: as often as a component is polled by default. */
+        val SERVER_CHECK_PERIOD = 1.seconds
+
         /** Events a read of the lifecycle states alone can produce. */
         val STATE_EVENTS = setOf(
             StateChanged::class.java, HeartbeatLost::class.java, BecameZombie::class.java,
             Recovered::class.java, ComponentFinalized::class.java, WatchMethodChanged::class.java,
             ManagerDied::class.java, ManagerReturned::class.java, PortTraffic::class.java,
+            NameServerLost::class.java, NameServerReturned::class.java,
         )
 
         val CONFIGURATION_EVENTS = setOf(

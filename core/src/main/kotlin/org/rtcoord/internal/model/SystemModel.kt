@@ -1,0 +1,107 @@
+package org.rtcoord.internal.model
+
+import org.rtcoord.BecameZombie
+import org.rtcoord.ComponentEntry
+import org.rtcoord.ComponentFinalized
+import org.rtcoord.ComponentNode
+import org.rtcoord.DirectoryNode
+import org.rtcoord.LifeCycle
+import org.rtcoord.ManagerDied
+import org.rtcoord.ManagerNode
+import org.rtcoord.ManagerReturned
+import org.rtcoord.NameServerEntry
+import org.rtcoord.NameServerLost
+import org.rtcoord.NameServerNode
+import org.rtcoord.NameServerReturned
+import org.rtcoord.Node
+import org.rtcoord.Recovered
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
+import org.rtcoord.StateChanged
+import org.rtcoord.SystemSnapshot
+import org.rtcoord.WatchMethod
+import org.rtcoord.WatchMethodChanged
+import org.rtcoord.internal.ComponentObject
+
+/**
+ * The tree's one truth about the live system: what its events have told, numbered. Every event the tree
+ * publishes passes through [publish], which gives it the next sequence number, applies it to the model
+ * and hands it to its sinks in one step; [snapshot] reads the model in a step of the same lock. So a
+ * snapshot at N holds exactly the events up to N, and a sink registered before it gets every later one.
+ *
+ * The model keeps what no node keeps: the states as the events told them (a watched component's read may
+ * run ahead of its events while a deactivation is held), name servers that do not answer and managers
+ * found dead. Structure (which nodes exist) stays with the nodes' listings, read here without a call.
+ */
+internal class SystemModel(private val nameServers: () -> List<NameServerNode>) {
+    private class Outage(val since: Long, val cause: RtcException)
+
+    private var sequence = 0L
+    /** Each watched component's states by context handle, as its events last told them. */
+    private val states = HashMap<ComponentObject, Map<Int, LifeCycle>>()
+    private val dead = HashSet<ComponentObject>()
+    private val methods = HashMap<ComponentObject, WatchMethod>()
+    private val outages = HashMap<RtcPath, Outage>()
+    private val deadManagers = LinkedHashMap<RtcPath, ManagerNode>()
+
+    /**
+     * Numbers [events], applies them and hands each to [deliver], in order; [deliver] must not wait. For a
+     * watched [component], [published] are its states by handle as its events tell them after [events].
+     */
+    fun publish(events: List<RtcEvent>, component: ComponentObject? = null, published: Map<Int, LifeCycle>? = null, deliver: (RtcEvent) -> Unit) {
+        synchronized(this) {
+            if (component != null && published != null) states[component] = published
+            for (event in events) {
+                event.sequence = ++sequence
+                apply(event)
+                deliver(event)
+            }
+        }
+    }
+
+    /** Nobody watches [component] any more: its states are read from its snapshots again. */
+    fun unwatched(component: ComponentObject) {
+        synchronized(this) {
+            states.remove(component)
+            methods.remove(component)
+        }
+    }
+
+    /** When [server] was lost and why; null while it answers. */
+    fun outageOf(server: NameServerNode): Pair<Long, RtcException>? = synchronized(this) { outages[server.path]?.let { it.since to it.cause } }
+
+    /** The model now: every component the listings found, at its canonical path, with its states as told. */
+    fun snapshot(root: DirectoryNode): SystemSnapshot = synchronized(this) {
+        val found = LinkedHashMap<ComponentObject, ComponentNode>()
+        fun walk(node: Node) {
+            when (node) {
+                is ComponentNode -> found.putIfAbsent(node.component, node)
+                is DirectoryNode -> node.listed.value?.forEach(::walk)
+                else -> Unit
+            }
+        }
+        walk(root)
+        val components = found.map { (component, node) ->
+            val told = states[component] ?: node.snapshots.value?.contexts?.associate { it.handle to it.state }.orEmpty()
+            ComponentEntry(node.canonical, told, alive = component !in dead, watchMethod = methods[component])
+        }
+        val servers = nameServers().map { server -> outages[server.path].let { NameServerEntry(server, it?.since, it?.cause) } }
+        SystemSnapshot(sequence, components, servers, deadManagers.values.toList())
+    }
+
+    private fun apply(event: RtcEvent) {
+        when (event) {
+            is StateChanged -> states[event.source.component]?.let { states[event.source.component] = it + (event.handle to event.new) }
+            is BecameZombie -> dead += event.source.component
+            is ComponentFinalized -> dead += event.source.component
+            is Recovered -> dead -= event.source.component
+            is WatchMethodChanged -> methods[event.source.component] = event.new
+            is ManagerDied -> deadManagers[event.source.path] = event.source
+            is ManagerReturned -> deadManagers.remove(event.source.path)
+            is NameServerLost -> outages[event.source.path] = Outage(event.noticedAt, event.cause)
+            is NameServerReturned -> outages.remove(event.source.path)
+            else -> Unit
+        }
+    }
+}
