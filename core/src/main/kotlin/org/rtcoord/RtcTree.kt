@@ -49,7 +49,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
             servers.firstOrNull { it.path == path }?.let { return it }
             return NameServerNode(path, core).also {
                 servers += it
-                root.show(ArrayList(servers))
+                root.showSettled()
             }
         }
     }
@@ -58,7 +58,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     public fun removeNameServer(address: String): Boolean {
         val path = RtcPath.nameServer(address)
         synchronized(servers) {
-            return servers.removeIf { it.path == path }.also { root.show(ArrayList(servers)) }
+            return servers.removeIf { it.path == path }.also { root.showSettled() }
         }
     }
 
