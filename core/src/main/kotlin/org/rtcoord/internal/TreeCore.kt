@@ -7,6 +7,7 @@ import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import org.rtcoord.TreeConfig
 import org.rtcoord.internal.data.DataTaps
+import org.rtcoord.internal.events.ListenerFailures
 import org.rtcoord.internal.events.Watcher
 import org.slf4j.LoggerFactory
 import java.util.concurrent.atomic.AtomicBoolean
@@ -22,7 +23,8 @@ internal class TreeCore(val config: TreeConfig, firstNameServer: () -> String?) 
     val orb = OrbHolder(config.orb, { config.listenAddress ?: listenAddressToward(firstNameServer()) }, config.callTimeout)
     val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned)
     val scope = CoroutineScope(
-        SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
+        SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
+            ListenerFailures(config.listenerFailures),
     )
     val components = ComponentRegistry(this)
     val watcher = Watcher(this)

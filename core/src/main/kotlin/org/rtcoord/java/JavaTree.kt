@@ -2,7 +2,6 @@ package org.rtcoord.java
 
 import kotlinx.coroutines.asCoroutineDispatcher
 import kotlinx.coroutines.flow.toList
-import kotlinx.coroutines.withContext
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventListener
@@ -142,6 +141,7 @@ public class JavaTree(
      * Calls [listener] on [executor] with every event of [type] from the node at [path] (see [RtcTree.on]),
      * one event at a time: the next waits until the listener has returned, so [EventOptions.overlap] holds.
      * A UI passes its toolkit's executor (SWT: `display::asyncExec`) and touches its widgets in the listener.
+     * What the listener throws goes to [TreeConfig.listenerFailures], naming it and the event.
      * Returns once the node is watched; close the [Subscription] to stop.
      */
     @JvmOverloads
@@ -163,10 +163,8 @@ public class JavaTree(
      * Calls [listener] on [executor] with how the tree watches each watched component and with managers
      * that die or return (see [RtcTree.onWatching]). Close the [Subscription] to stop.
      */
-    public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription {
-        val dispatcher = executor.asCoroutineDispatcher()
-        return tree.onWatching { event -> withContext(dispatcher) { listener.onEvent(event) } }
-    }
+    public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription =
+        tree.onWatching(JavaListenerCall(listener, executor.asCoroutineDispatcher()))
 
     /** Closes the tree (see [RtcTree.close]). */
     override fun close() {
@@ -188,10 +186,8 @@ public class JavaTree(
     private suspend fun findAll(from: String, filter: Predicate<Node>, maxDepth: Int): List<Node> =
         tree.find(RtcPath.parse(from), maxDepth) { filter.test(it) }.toList()
 
-    private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription {
-        val dispatcher = executor.asCoroutineDispatcher()
-        return tree.on(path, type, options) { event -> withContext(dispatcher) { listener.onEvent(event) } }
-    }
+    private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription =
+        tree.on(path, type, options, JavaListenerCall(listener, executor.asCoroutineDispatcher()))
 
     /** How Java callers get a [JavaTree]. */
     public companion object {
