@@ -2,6 +2,8 @@ package org.rtcoord
 
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.update
+import kotlinx.coroutines.flow.updateAndGet
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
@@ -59,28 +61,40 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     /** Lists the children from the live system, reusing [previous] nodes that still stand. */
     internal abstract suspend fun readChildren(previous: List<Node>): List<Node>
 
-    /** Shows [children] without reading them: the tree already knows them. */
-    internal fun show(children: List<Node>) {
-        listing.value = children
+    /**
+     * What to show of [listed], children just listed or shown as they are: the children themselves,
+     * unless the directory's children also change without a listing (the root's name servers).
+     */
+    internal open fun settled(listed: List<Node>): List<Node> = listed
+
+    /** Whether a child whose read failed with [failure] is shown as a [ZombieNode] instead of failing this directory's read. */
+    internal open fun buries(failure: RtcException): Boolean = failure.meansDead
+
+    /** Shows the children as [settled] says they are now, without reading them. */
+    internal fun showSettled() {
+        listing.update { settled(it.orEmpty()) }
     }
 
+    // Every write of the listing is an update that starts again if another write came first, so that a
+    // child shown meanwhile (a name server added during a refresh) is never written over.
     internal suspend fun relist(): List<Node> = listingLock.withLock {
-        withContext(core.remote.dispatcher) { readChildren(listing.value.orEmpty()) }.also { listing.value = it }
+        val listed = withContext(core.remote.dispatcher) { readChildren(listing.value.orEmpty()) }
+        listing.updateAndGet { settled(listed) }!!
     }
 
-    /** Reads [child] with [read]; if it turns out dead, this directory shows a zombie in its place. */
+    /** Reads [child] with [read]; if it fails in a way this directory [buries], it shows a zombie in its place. */
     private suspend fun buryIfDead(child: Node, read: suspend () -> Unit) {
         try {
             read()
         } catch (e: RtcException) {
-            if (!e.meansDead) throw e
+            if (!buries(e)) throw e
             bury(child, e)
         }
     }
 
     private suspend fun bury(child: Node, cause: RtcException) {
         listingLock.withLock {
-            listing.value = listing.value?.map { if (it === child) ZombieNode(child.path, core, cause, this) else it }
+            listing.update { children -> children?.map { if (it === child) ZombieNode(child.path, core, cause, this) else it } }
         }
     }
 }

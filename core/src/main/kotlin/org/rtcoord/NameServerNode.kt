@@ -3,6 +3,7 @@ package org.rtcoord
 import org.omg.CosNaming.NameComponent
 import org.omg.CosNaming.NamingContext
 import org.omg.CosNaming.NamingContextHelper
+import org.rtcoord.internal.NameServerProbe
 import org.rtcoord.internal.TreeCore
 
 /** A name server: its root naming context, at `corbaloc:iiop:host:port/NameService`. */
@@ -22,4 +23,11 @@ public class NameServerNode internal constructor(path: RtcPath, core: TreeCore) 
     override fun root(): NamingContext = root
 
     override suspend fun context(): NamingContext = root
+
+    /** A listing that fails because something other than a name server answers says what answers. */
+    override suspend fun readChildren(previous: List<Node>): List<Node> = try {
+        super.readChildren(previous)
+    } catch (e: RtcException) {
+        throw NameServerProbe(core, path, address).explain(e)
+    }
 }

@@ -2,10 +2,19 @@ package org.rtcoord
 
 import org.rtcoord.internal.TreeCore
 
-/** The root of the tree; its children are the name servers. */
+/**
+ * The root of the tree; its children are the name servers. Every name server the tree has is one of
+ * them, whatever answers at its address: one that cannot be listed is a [ZombieNode] whose cause says
+ * why (unreachable, hung, or something else answering there), and never fails the others' reads.
+ */
 public class RootNode internal constructor(core: TreeCore, private val servers: () -> List<NameServerNode>) :
     DirectoryNode(RtcPath.ROOT, core) {
     override val kind: NodeKind get() = NodeKind.ROOT
 
     override suspend fun readChildren(previous: List<Node>): List<Node> = servers()
+
+    /** The name servers as they are now, each as last shown (a server found dead stays a zombie until read again). */
+    override fun settled(listed: List<Node>): List<Node> = servers().map { server -> listed.firstOrNull { it.path == server.path } ?: server }
+
+    override fun buries(failure: RtcException): Boolean = true
 }

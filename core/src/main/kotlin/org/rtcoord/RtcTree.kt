@@ -51,7 +51,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
             servers.firstOrNull { it.path == path }?.let { return it }
             return NameServerNode(path, core).also {
                 servers += it
-                root.show(ArrayList(servers))
+                root.showSettled()
             }
         }
     }
@@ -60,7 +60,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     public fun removeNameServer(address: String): Boolean {
         val path = RtcPath.nameServer(address)
         synchronized(servers) {
-            return servers.removeIf { it.path == path }.also { root.show(ArrayList(servers)) }
+            return servers.removeIf { it.path == path }.also { root.showSettled() }
         }
     }
 
@@ -190,15 +190,17 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * Calls [handler] with every event of [type] from the node at [path]: a component's own events, or
      * for a naming context or manager its listing's events and those of every component below it,
      * including components that appear later. Handlers run in the tree's scope, never on the source
-     * node's update path, so they may operate on the node that triggered them; a handler that throws is
-     * logged and keeps receiving events. Cancel the returned [Subscription] to stop.
+     * node's update path, so they may operate on the node that triggered them; what a handler throws goes
+     * to [TreeConfig.listenerFailures], and it keeps receiving events. Cancel the returned [Subscription] to stop.
      */
     public suspend fun <E : RtcEvent> on(path: String, type: Class<E>, options: EventOptions = EventOptions(), handler: suspend (E) -> Unit): Subscription =
         on(node(path), type, options, handler)
 
     /** [on] for a node already at hand. */
+    @Suppress("UNCHECKED_CAST")
     public suspend fun <E : RtcEvent> on(node: Node, type: Class<E>, options: EventOptions = EventOptions(), handler: suspend (E) -> Unit): Subscription =
-        core.watcher.watch(node, setOf(type), options) { event -> handler(type.cast(event)) }
+        // Passed as it is, so that what it throws is reported as its own: the watcher delivers only events of [type].
+        core.watcher.watch(node, setOf(type), options, handler as suspend (RtcEvent) -> Unit)
 
     /**
      * [on] for the events of any of [types] from [node]: one registration for what would take several,

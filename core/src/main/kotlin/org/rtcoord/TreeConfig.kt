@@ -19,6 +19,8 @@ import kotlin.time.toKotlinDuration
  *   host or when there is none. Name servers added later must be able to reach that address (their
  *   components call observers back there); give an address explicitly when they cannot. `0.0.0.0`
  *   listens on every interface, and only when given.
+ * @property listenerFailures where what event listeners and handlers throw goes, with the listener and the
+ *   event ([ListenerFailure]); by default it is logged ([ListenerFailureHandler.LOG]). Never dropped.
  *
  * Java callers write `new TreeConfig(List.of("127.0.0.1:2809"))`, or use a [Builder].
  */
@@ -29,6 +31,7 @@ public class TreeConfig(
     public val concurrency: Int = 32,
     public val orb: org.omg.CORBA.ORB? = null,
     public val listenAddress: String? = null,
+    public val listenerFailures: ListenerFailureHandler = ListenerFailureHandler.LOG,
 ) {
     /** A configuration with [nameServers] and the defaults for the rest. */
     public constructor(nameServers: List<String>) : this(nameServers, 3.seconds)
@@ -50,6 +53,7 @@ public class TreeConfig(
         private var concurrency = 32
         private var orb: org.omg.CORBA.ORB? = null
         private var listenAddress: String? = null
+        private var listenerFailures = ListenerFailureHandler.LOG
 
         /** Adds a name server (see [TreeConfig.nameServers]). */
         public fun nameServer(address: String): Builder = apply { nameServers += address }
@@ -66,8 +70,11 @@ public class TreeConfig(
         /** Sets [TreeConfig.listenAddress]. */
         public fun listenAddress(address: String?): Builder = apply { listenAddress = address }
 
+        /** Sets [TreeConfig.listenerFailures]. */
+        public fun listenerFailures(handler: ListenerFailureHandler): Builder = apply { listenerFailures = handler }
+
         /** The configuration; fails as the constructor does on a bad value. */
-        public fun build(): TreeConfig = TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress)
+        public fun build(): TreeConfig = TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress, listenerFailures)
     }
 
     public companion object {

@@ -4,7 +4,9 @@ import org.rtcoord.internal.TreeCore
 
 /**
  * A registration whose object is dead, unreachable or hung: it is still bound in naming (rtshell marks
- * it with `*`). [cause] says what happened when it was last tried.
+ * it with `*`). [cause] says what happened when it was last tried. Below the root, a name server that
+ * could not be listed, for whatever reason: unreachable or hung, or something other than a name server
+ * answering at its address (a [WrongKindException] saying what answers).
  */
 public class ZombieNode internal constructor(
     path: RtcPath,

@@ -6,32 +6,38 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.assertThrows
+import org.rtcoord.fixtures.FixtureManager
+import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.OmniNames
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.naming.NamingService
 import java.net.InetAddress
-import java.net.ServerSocket
+import java.net.InetSocketAddress
+import java.net.Socket
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.measureTime
 
 class NameServersTest {
     @Test
     fun `several name servers at once, one of them unreachable, each complete`(): Unit = runBlocking {
-        val nowhere = ServerSocket(0, 1, InetAddress.getLoopbackAddress()).use { "127.0.0.1:${it.localPort}" }
-        OmniNames.start().use { omni ->
-            NamingService.start().use { embedded ->
-                Scenarios.scale(omni.corbaloc, 5).use {
-                    Scenarios.localisation(embedded.corbaloc).use {
-                        RtcTree.create(TreeConfig(listOf(omni.address, nowhere, embedded.address))).use { tree ->
-                            val elapsed = measureTime { tree.refresh() }
-                            assertTrue(elapsed < 3.seconds, "refresh took $elapsed")
+        refusedPort().use { refused ->
+            val nowhere = "127.0.0.1:${refused.localPort}"
+            OmniNames.start().use { omni ->
+                NamingService.start().use { embedded ->
+                    Scenarios.scale(omni.corbaloc, 5).use {
+                        Scenarios.localisation(embedded.corbaloc).use {
+                            RtcTree.create(TreeConfig(listOf(omni.address, nowhere, embedded.address))).use { tree ->
+                                val elapsed = measureTime { tree.refresh() }
+                                assertTrue(elapsed < 3.seconds, "refresh took $elapsed")
 
-                            val servers = tree.root.children()
-                            assertEquals(listOf(NodeKind.NAME_SERVER, NodeKind.ZOMBIE, NodeKind.NAME_SERVER), servers.map { it.kind })
-                            assertTrue((servers[1] as ZombieNode).cause is UnreachableException)
-                            val components = tree.find { it is ComponentNode }.toList()
-                            assertEquals(5, components.count { it.path.nameServer == omni.address })
-                            assertEquals(8, components.count { it.path.nameServer == embedded.address }, "4 in naming, 4 below the manager")
+                                val servers = tree.root.children()
+                                assertEquals(listOf(NodeKind.NAME_SERVER, NodeKind.ZOMBIE, NodeKind.NAME_SERVER), servers.map { it.kind })
+                                assertTrue((servers[1] as ZombieNode).cause is UnreachableException)
+                                val components = tree.find { it is ComponentNode }.toList()
+                                assertEquals(5, components.count { it.path.nameServer == omni.address })
+                                assertEquals(8, components.count { it.path.nameServer == embedded.address }, "4 in naming, 4 below the manager")
+                            }
                         }
                     }
                 }
@@ -80,4 +86,40 @@ class NameServersTest {
             naming.close()
         }
     }
+
+    @Test
+    fun `an address where a manager answers is a node saying so, not an unreachable name server`(): Unit = runBlocking {
+        NamingService.start().use { naming ->
+            FixtureRuntime.start(null).use { runtime ->
+                FixtureManager(runtime, isMaster = true)
+                val managerPort = "${runtime.orb.host}:${runtime.orb.port}"
+                RtcTree.create(TreeConfig(listOf(managerPort, naming.address))).use { tree ->
+                    tree.refresh()
+                    val servers = tree.root.children()
+                    assertEquals(listOf(NodeKind.ZOMBIE, NodeKind.NAME_SERVER), servers.map { it.kind })
+                    val cause = (servers[0] as ZombieNode).cause
+                    assertEquals("/$managerPort: is a manager (IDL:RTM/Manager:1.0), not a name server", cause.message)
+                    val listing = assertThrows<WrongKindException> { (tree.node("/$managerPort") as DirectoryNode).children() }
+                    assertEquals(cause.message, listing.message)
+                }
+            }
+        }
+    }
+
+    @Test
+    fun `a manager answering at the key NameService is a node saying so`(): Unit = runBlocking {
+        FixtureRuntime.start(null).use { runtime ->
+            val manager = FixtureManager(runtime, isMaster = true)
+            runtime.orb.bindKey("NameService", manager.ref)
+            val address = "${runtime.orb.host}:${runtime.orb.port}"
+            RtcTree.create(TreeConfig(listOf(address))).use { tree ->
+                tree.root.survey()
+                val server = tree.root.children().single() as ZombieNode
+                assertEquals("/$address: is a manager (IDL:RTM/Manager:1.0), not a name server", server.cause.message)
+            }
+        }
+    }
+
+    /** A socket bound to a port of its own and never listening: connections to it are refused, and no server can take the port while it is held. */
+    private fun refusedPort(): Socket = Socket().apply { bind(InetSocketAddress(InetAddress.getLoopbackAddress(), 0)) }
 }

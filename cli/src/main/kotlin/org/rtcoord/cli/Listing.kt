@@ -61,6 +61,7 @@ internal fun entryOf(node: Node): Entry = Entry(node, (node as? ComponentNode)?.
  * (dead ones with `*`).
  */
 internal fun longLines(entries: List<Entry>): List<String> {
+    if (entries.isEmpty()) return emptyList()
     val cells = entries.map { it.columns }
     val widths = (0 until 5).map { column -> cells.maxOf { it[column].length } + 2 }
     return entries.zip(cells).map { (entry, row) ->

@@ -21,7 +21,7 @@ class LsCommand : TreeCommand("ls") {
         "List name servers, naming contexts, managers and components, as rtls does. Directories end in '/', " +
             "dead registrations (zombies) start with '*'. With no PATH, list the working directory as rtls does: RTCOORD_CWD " +
             "(or RTCSH_CWD) when set, else the root context of each name server given by -n or the environment; '/' lists " +
-            "the name servers themselves. A name server that cannot be reached is reported on stderr, one line each, and " +
+            "the name servers themselves. A name server that cannot be reached, or an address where something else answers, is reported on stderr, one line each, and " +
             "the status is 1; what can be reached is listed. " +
             "A slave manager's components are listed below it, not a second time below its master as rtls does."
 
@@ -46,17 +46,18 @@ class LsCommand : TreeCommand("ls") {
             try {
                 listing(text, headed = targets.size > 1)
             } catch (e: RtcException) {
-                // A name server's root that does not answer is one error line among the listings, as below.
-                if (!e.meansDead || !pathOf(text).isNameServer) throw e
+                // A name server's root that cannot be listed (unreachable, or not a name server) is one error
+                // line among the listings, as below.
+                if (!pathOf(text).isNameServer) throw e
                 failures += e
                 emptyList()
             }
         }
-        // As rtls fails on a name server it cannot reach, rather than list it as a dead registration.
-        val unreachable = read.flatMap { block -> block.entries.map { it.node }.filterIsInstance<ZombieNode>().filter { it.path.isNameServer } }
-        val blocks = read.map { block -> Block(block.header, block.entries.filter { it.node !in unreachable }) }
+        // As rtls fails on a name server it cannot list, rather than list it as a dead registration.
+        val unlisted = read.flatMap { block -> block.entries.map { it.node }.filterIsInstance<ZombieNode>().filter { it.path.isNameServer } }
+        val blocks = read.map { block -> Block(block.header, block.entries.filter { it.node !in unlisted }) }
         show(blocks)
-        val errors = failures.map { explain(it) } + unreachable.distinctBy { it.path }.map { "${it.path}: ${it.cause.reason}" }
+        val errors = failures.map { explain(it) } + unlisted.distinctBy { it.path }.map { "${it.path}: ${it.cause.reason}" }
         if (errors.isEmpty()) return
         errors.forEach { echo(CommandFailed(it).message, err = true) }
         throw ProgramResult(1)

@@ -117,6 +117,17 @@ class LsCommandTest {
     }
 
     @Test
+    fun `a manager's port given as a name server is an error line saying so, in the long form too`() {
+        val managerPort = localisation.system.master!!.runtime.orb.let { "${it.host}:${it.port}" }
+        val expected = "rtcoord: /$managerPort: is a manager (IDL:RTM/Manager:1.0), not a name server\n"
+        for (arguments in listOf(listOf("ls", "/"), listOf("ls", "-l", "/"), listOf("ls", "-l"))) {
+            val listed = runRtcoord("-n", managerPort, *arguments.toTypedArray())
+            assertEquals("" to expected, listed.stdout to listed.stderr, arguments.joinToString(" "))
+            assertEquals(1, listed.statusCode)
+        }
+    }
+
+    @Test
     fun `each dead name server has its own line, under -R and --json too`() {
         val dead = listOf(deadNameServer(), deadNameServer())
         val recursive = runRtcoord("-n", dead[0], "-n", address, "-n", dead[1], "ls", "-R", "/")

@@ -66,19 +66,21 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
             code.orFail(subject, operation.verb, "the component is $now in context $handle, not ${operation.from}")
         }
         code.orFail(subject, operation.verb, "in context $handle")
-        val reached = awaitState(operation.verb, ec, handle, operation.to, deadline ?: core.remote.defaultDeadline)
-        component.snapshot.value?.let { snapshot ->
-            component.publish(snapshot.copy(contexts = snapshot.contexts.map { if (it.handle == handle) it.copy(state = reached) else it }))
-        }
+        val stamp = awaitState(operation.verb, ec, handle, operation.to, deadline ?: core.remote.defaultDeadline)
+        component.publishStates(mapOf(handle to operation.to), stamp)
     }
 
-    /** Polls the state until it is [target], fails at once if the component fell into ERROR instead. */
-    private suspend fun awaitState(operation: String, ec: ExecutionContext, handle: Int, target: LifeCycle, limit: Duration): LifeCycle {
+    /**
+     * Polls the state until it is [target], fails at once if the component fell into ERROR instead;
+     * returns the stamp of the read that found [target] (see [ComponentObject.stamp]).
+     */
+    private suspend fun awaitState(operation: String, ec: ExecutionContext, handle: Int, target: LifeCycle, limit: Duration): Long {
         val deadline = TimeSource.Monotonic.markNow() + limit
         var pause = 1.milliseconds
         while (true) {
+            val stamp = component.stamp()
             val state = state(ec)
-            if (state == target) return state
+            if (state == target) return stamp
             if (state == LifeCycle.ERROR) throw OperationFailedException(subject, operation, ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
             if (deadline.hasPassedNow()) throw TimedOutException(subject, "$operation (waiting for $target, still $state)", limit.inWholeMilliseconds)
             delay(pause)

@@ -14,14 +14,17 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ComponentSummary
 import org.rtcoord.ConfigurationSnapshot
+import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerNode
 import org.rtcoord.RtcPath
 import org.rtcoord.summary
+import java.util.concurrent.atomic.AtomicLong
 
 /**
  * A live component: its reference and the latest snapshot read from it. Reads are serialised per
- * component (one refresh at a time, a caller arriving during one gets its result); different
- * components refresh in parallel; readers take [snapshot]'s value without waiting.
+ * component (one refresh at a time; a caller takes the result of a read that started after it arrived,
+ * never of one that may have missed what it wrote); different components refresh in parallel; readers
+ * take [snapshot]'s value without waiting.
  */
 internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     private val refreshing = Mutex()
@@ -84,28 +87,75 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     /** The component's configuration object, once known. */
     @Volatile private var configuration: Configuration? = null
 
-    /** How many reads completed; an operation's [publish] does not count, it knows only what it changed. */
-    @Volatile private var reads = 0L
+    /**
+     * Orders the reads: each read of the whole component ([refresh]) or of its states ([stamp]) takes the
+     * next stamp as it starts, so a read can tell whether another started after it, or after a write.
+     */
+    private val stamps = AtomicLong()
+
+    /** The stamp of the latest whole read published. */
+    @Volatile private var lastRead = 0L
+
+    /**
+     * By context handle, the stamp of the read behind the state published: a state read that started
+     * earlier never replaces it. Guarded by [publishing], which makes each publication one step.
+     */
+    private val stateStamps = HashMap<Int, Long>()
+    private val publishing = Any()
+
+    /** The stamp of a read of states starting now; pass it to [publishStates] with what it found. */
+    fun stamp(): Long = stamps.incrementAndGet()
 
     /** Reads the component again (its configuration too, once that was read) and publishes the result. */
     suspend fun refresh(subject: String): ComponentSnapshot {
-        val readsBefore = reads
+        val arrived = stamps.get()
         return refreshing.withLock {
-            // A read that finished while this caller waited is as fresh as its own would be.
-            current.value.takeIf { reads != readsBefore } ?: withContext(core.remote.dispatcher) {
+            // Only a read that started after this caller arrived is as fresh as its own would be: one that
+            // started before may have missed what the caller just wrote.
+            current.value.takeIf { lastRead > arrived } ?: withContext(core.remote.dispatcher) {
+                val stamp = stamp()
                 val reader = ComponentReader(core.remote, subject, ref)
                 val withConfiguration = current.value?.configuration != null
                 val settings = async { if (withConfiguration) readConfiguration(reader) else null }
                 val reading = reader.read()
                 contexts = reading.contexts
                 ports = reading.ports
-                reading.snapshot.copy(configuration = settings.await()).also {
-                    current.value = it
-                    currentSummary.value = it.summary
-                    reads++
-                }
+                publishRead(reading.snapshot.copy(configuration = settings.await()), stamp).also { lastRead = stamp }
             }
         }
+    }
+
+    /** Publishes [read], a whole read stamped [stamp], keeping each context's state that a later read found. */
+    private fun publishRead(read: ComponentSnapshot, stamp: Long): ComponentSnapshot = synchronized(publishing) {
+        val previous = current.value?.contexts.orEmpty().associateBy { it.handle }
+        val contexts = read.contexts.map { context ->
+            val later = previous[context.handle]?.takeIf { (stateStamps[context.handle] ?: 0) > stamp }
+            if (later == null) stateStamps[context.handle] = stamp
+            later?.let { context.copy(state = it.state) } ?: context
+        }
+        show(read.copy(contexts = contexts))
+    }
+
+    /**
+     * Publishes [states] by context handle, read by the read stamped [stamp], onto the latest snapshot
+     * (whatever else was published since stays); a context whose state a later read found keeps it.
+     */
+    fun publishStates(states: Map<Int, LifeCycle>, stamp: Long) {
+        synchronized(publishing) {
+            val latest = current.value ?: return
+            val contexts = latest.contexts.map { context ->
+                val state = states[context.handle]?.takeIf { stamp > (stateStamps[context.handle] ?: 0) } ?: return@map context
+                stateStamps[context.handle] = stamp
+                context.copy(state = state)
+            }
+            show(latest.copy(contexts = contexts))
+        }
+    }
+
+    private fun show(snapshot: ComponentSnapshot): ComponentSnapshot {
+        current.value = snapshot
+        currentSummary.value = snapshot.summary
+        return snapshot
     }
 
     /**
@@ -121,23 +171,22 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
         withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, ref).readSummary() }.also { currentSummary.value = it.summary }
     }
 
-    /** Reads the configuration sets and publishes them with the rest of the latest snapshot. */
+    /**
+     * Reads the configuration sets and publishes them with the rest of the latest snapshot. Read while no
+     * other read runs, so that a read started earlier, which may have missed a write, cannot publish after it.
+     */
     suspend fun loadConfiguration(subject: String): ConfigurationSnapshot {
-        val snapshot = loaded(subject)
-        val settings = readConfiguration(ComponentReader(core.remote, subject, ref))
-        refreshing.withLock { current.value = (current.value ?: snapshot).copy(configuration = settings) }
-        return settings
+        loaded(subject)
+        return refreshing.withLock {
+            readConfiguration(ComponentReader(core.remote, subject, ref)).also { settings ->
+                synchronized(publishing) { current.value = current.value!!.copy(configuration = settings) }
+            }
+        }
     }
 
     private suspend fun readConfiguration(reader: ComponentReader): ConfigurationSnapshot {
         val (settings, target) = reader.readConfiguration(configuration)
         configuration = target
         return settings
-    }
-
-    /** Publishes [snapshot] as the latest, after an operation whose effect is known. */
-    fun publish(snapshot: ComponentSnapshot) {
-        current.value = snapshot
-        currentSummary.value = snapshot.summary
     }
 }

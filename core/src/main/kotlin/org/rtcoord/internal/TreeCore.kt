@@ -8,6 +8,7 @@ import kotlinx.coroutines.cancel
 import org.rtcoord.NameServerNode
 import org.rtcoord.TreeConfig
 import org.rtcoord.internal.data.DataTaps
+import org.rtcoord.internal.events.ListenerFailures
 import org.rtcoord.internal.events.Watcher
 import org.rtcoord.internal.model.SystemModel
 import org.slf4j.LoggerFactory
@@ -28,7 +29,8 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     )
     val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned)
     val scope = CoroutineScope(
-        SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) },
+        SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
+            ListenerFailures(config.listenerFailures),
     )
     val components = ComponentRegistry(this)
     val model = SystemModel(nameServers)

@@ -144,6 +144,7 @@ public class JavaTree(
      * Calls [listener] on [executor] with every event of [type] from the node at [path] (see [RtcTree.on]),
      * one event at a time: the next waits until the listener has returned, so [EventOptions.overlap] holds.
      * A UI passes its toolkit's executor (SWT: `display::asyncExec`) and touches its widgets in the listener.
+     * What the listener throws goes to [TreeConfig.listenerFailures], naming it and the event.
      * Returns once the node is watched; close the [Subscription] to stop.
      */
     @JvmOverloads
@@ -165,10 +166,8 @@ public class JavaTree(
      * Calls [listener] on [executor] with how the tree watches each watched component and with managers
      * that die or return (see [RtcTree.onWatching]). Close the [Subscription] to stop.
      */
-    public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription {
-        val dispatcher = executor.asCoroutineDispatcher()
-        return tree.onWatching { event -> withContext(dispatcher) { listener.onEvent(event) } }
-    }
+    public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription =
+        tree.onWatching(JavaListenerCall(listener, executor.asCoroutineDispatcher()))
 
     /** The tree's model of the system now, read without a remote call (see [RtcTree.snapshot]). */
     public fun snapshot(): SystemSnapshot = tree.snapshot()
@@ -230,15 +229,14 @@ public class JavaTree(
         options: EventOptions,
     ): Subscription {
         val dispatcher = executor.asCoroutineDispatcher()
+        val call = JavaListenerCall(listener, dispatcher)
         return tree.follow(paths.map { tree.node(it) }, setOf(type), options, { snapshot -> withContext(dispatcher) { start.accept(snapshot) } }) { event ->
-            withContext(dispatcher) { listener.onEvent(type.cast(event)) }
+            call(type.cast(event))
         }
     }
 
-    private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription {
-        val dispatcher = executor.asCoroutineDispatcher()
-        return tree.on(path, type, options) { event -> withContext(dispatcher) { listener.onEvent(event) } }
-    }
+    private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription =
+        tree.on(path, type, options, JavaListenerCall(listener, executor.asCoroutineDispatcher()))
 
     /** How Java callers get a [JavaTree]. */
     public companion object {

@@ -116,7 +116,7 @@ internal class ComponentMonitor(
     /** Counts the reads this monitor reconciled (and failures): a probe sent before the latest one tells nothing new. */
     private var epoch = 0L
     private val probe: StateProbe? = core.requests.takeIf { it.supports(node.component.ref) }?.let { requests ->
-        StateProbe(requests, node.component.ref, { timers.heard() }) { outcome -> if (!work.trySend(Probed(outcome)).isSuccess) outcome.done() }
+        StateProbe(requests, node.component.ref, node.component::stamp, { timers.heard() }) { outcome -> if (!work.trySend(Probed(outcome)).isSuccess) outcome.done() }
     }
     private val member = object : PollSchedule.Member {
         override fun tick(done: () -> Unit) {
@@ -188,7 +188,7 @@ internal class ComponentMonitor(
     private suspend fun handle(batch: List<Work>) {
         var read = false
         val hintedStates = HashSet<Int>()
-        var probed: Map<Int, LifeCycle>? = null
+        var probed: StateProbe.Outcome.Changed? = null
         val reconfigurations = batch.filterIsInstance<Reconfigure>()
         fun tick() {
             if (registrations.all { it.statesOnly } && liveness.state == ComponentLiveness.State.ANSWERING) hintedStates += node.component.contexts.keys else read = true
@@ -208,7 +208,7 @@ internal class ComponentMonitor(
                 is Tick -> tick()
                 is Probed -> when (val outcome = item.outcome) {
                     // Read as this monitor last knew it: the states it found are news.
-                    is StateProbe.Outcome.Changed -> if (outcome.epoch == epoch) probed = outcome.states else tick()
+                    is StateProbe.Outcome.Changed -> if (outcome.epoch == epoch) probed = outcome else tick()
                     is StateProbe.Outcome.Unsettled -> tick()
                 }
                 // The hints sent before the held read are in: a fresh read of the states decides, once settled.
@@ -230,7 +230,7 @@ internal class ComponentMonitor(
                 reconfigurations.isNotEmpty() -> reconfigure()
                 read -> readAndPublish()
                 hintedStates.isNotEmpty() -> readStates(hintedStates)
-                probed != null -> takeStates(probed)
+                probed != null -> takeStates(probed.states, probed.stamp)
             }
         } finally {
             // Before the ticks are done: the probe of the next one expects what this batch found.
@@ -279,6 +279,7 @@ internal class ComponentMonitor(
         // Only a whole read brings a silent or unreachable component back, observer and all.
         if (handles.any { it !in contexts } || liveness.state != ComponentLiveness.State.ANSWERING) return readAndPublish()
         suspend fun state(handle: Int) = LifeCycle.of(core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) })
+        val stamp = node.component.stamp()
         val states = try {
             // One context, the common case, is read without a coroutine per read.
             handles.singleOrNull()?.let { mapOf(it to state(it)) }
@@ -287,15 +288,16 @@ internal class ComponentMonitor(
             failed(e)
             return
         }
-        takeStates(states)
+        takeStates(states, stamp)
     }
 
-    /** Takes [states], just read by context handle, as the component's and publishes what changed. */
-    private fun takeStates(states: Map<Int, LifeCycle>) {
+    /** Takes [states], just read by context handle by the read stamped [stamp], as the component's and publishes what changed. */
+    private fun takeStates(states: Map<Int, LifeCycle>, stamp: Long) {
         val previous = last ?: return
         liveness.answered(now())
+        // Onto the component's latest snapshot, not this monitor's: an operation may have published a newer one since.
+        node.component.publishStates(states, stamp)
         val snapshot = previous.copy(contexts = previous.contexts.map { context -> states[context.handle]?.let { context.copy(state = it) } ?: context })
-        node.component.publish(snapshot)
         last = snapshot
         epoch++
         publish(stateEvents(snapshot))

@@ -6,12 +6,12 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.launch
 import org.rtcoord.Overlap
 import org.rtcoord.RtcEvent
-import org.slf4j.LoggerFactory
 
 /**
  * One registration's delivery: events wait in a channel shaped by its [Overlap] policy and its handler
  * runs in a coroutine of its own, never on the monitor that produced the event, so a handler may call
- * back into the source node, and a slow or failing handler delays nobody else.
+ * back into the source node, and a slow or failing handler delays nobody else. What a handler throws goes
+ * to the tree's [ListenerFailures], found in [scope]'s context.
  */
 internal class EventSink(
     scope: CoroutineScope,
@@ -19,7 +19,8 @@ internal class EventSink(
     overlap: Overlap,
     private val handler: suspend (RtcEvent) -> Unit,
 ) {
-    private val log = LoggerFactory.getLogger(EventSink::class.java)
+    private val failures = checkNotNull(scope.coroutineContext[ListenerFailures]) { "event sinks deliver in a tree's scope" }
+    private val listener: Any = (handler as? StandIn)?.listener ?: handler
     private val pending = Channel<RtcEvent>(
         when (overlap) {
             Overlap.QUEUE -> Channel.UNLIMITED
@@ -35,7 +36,7 @@ internal class EventSink(
             } catch (e: CancellationException) {
                 throw e
             } catch (e: Throwable) {
-                log.warn("event handler failed on {}: {}", event, e.toString(), e)
+                failures.report(listener, event, e)
             }
         }
     }

@@ -24,6 +24,8 @@ import java.util.concurrent.atomic.AtomicIntegerArray
 internal class StateProbe(
     private val requests: AsyncRequests,
     private val component: RTObject,
+    /** The stamp of a read of the component's states starting now (see [org.rtcoord.internal.ComponentObject.stamp]). */
+    private val nextStamp: () -> Long,
     private val answered: () -> Unit,
     private val handOver: (Outcome) -> Unit,
 ) {
@@ -40,14 +42,15 @@ internal class StateProbe(
 
     /** How a probe the monitor must finish ended; [done] tells the poll schedule once it has. */
     sealed class Outcome(val done: () -> Unit) {
-        /** The replies found [states] (by context handle), other than expected as of read [epoch]. */
-        class Changed(val states: Map<Int, LifeCycle>, val epoch: Long, done: () -> Unit) : Outcome(done)
+        /** The replies found [states] (by context handle), other than expected as of read [epoch], in the read stamped [stamp]. */
+        class Changed(val states: Map<Int, LifeCycle>, val epoch: Long, val stamp: Long, done: () -> Unit) : Outcome(done)
 
         /** No answer to go by: the monitor reads the component itself. */
         class Unsettled(done: () -> Unit) : Outcome(done)
     }
 
     private inner class Round(val expectation: Expectation, val done: () -> Unit) {
+        val stamp = nextStamp()
         val ids = AtomicIntegerArray(expectation.contexts.size).also { ids -> repeat(ids.length()) { ids[it] = NO_REQUEST } }
         val states = arrayOfNulls<LifeCycle>(expectation.contexts.size)
         val remaining = AtomicInteger(expectation.contexts.size)
@@ -141,7 +144,7 @@ internal class StateProbe(
             return
         }
         val states = expected.contexts.mapIndexed { index, (handle, _) -> handle to round.states[index]!! }.toMap()
-        handOver(Outcome.Changed(states, expected.epoch, round.done))
+        handOver(Outcome.Changed(states, expected.epoch, round.stamp, round.done))
     }
 
     /**

@@ -38,7 +38,7 @@ class StateProbeTest {
 
     private val answered = AtomicInteger()
     private val outcomes = LinkedBlockingQueue<StateProbe.Outcome>()
-    private val probe = StateProbe(requests, component, { answered.incrementAndGet() }) { outcomes += it }
+    private val probe = StateProbe(requests, component, { 0L }, { answered.incrementAndGet() }) { outcomes += it }
 
     @AfterEach
     fun stop() {
