@@ -20,8 +20,9 @@ import java.util.concurrent.ConcurrentHashMap
  * The one owner of "which component is this" in a running coordinator: resolves what a script names
  * (a path, a name found on any name server, or a pattern that matches one component) and follows each
  * name to the component that replaces it when it is re-created, whoever re-creates it (a supervisor, a
- * handler, someone by hand). Each name listened to has one subscription to the tree, shared by every
- * rule, machine and supervisor that listens to it (see [FollowedComponent]).
+ * handler, someone by hand). Those who need to know what a name refers to now (a supervisor) ask it and
+ * keep no copy. Each name listened to has one subscription to the tree, shared by every rule, machine
+ * and supervisor that listens to it (see [FollowedComponent]).
  *
  * @param watched the events the plan listens to, by name: a name's subscription asks the tree for these
  *   alone, so a component only rules on states watch is read for its states alone.
@@ -102,7 +103,8 @@ internal class Identities(
         names.clear()
     }
 
-    private suspend fun followed(selector: String): FollowedComponent {
+    /** What [selector] (not a pattern) names, resolved now if it never was: its [FollowedComponent.node] is the component it refers to from then on. */
+    suspend fun followed(selector: String): FollowedComponent {
         names[selector]?.let { return it }
         val node = resolve(selector)
         return names.computeIfAbsent(selector) { FollowedComponent(it, node, this) }
