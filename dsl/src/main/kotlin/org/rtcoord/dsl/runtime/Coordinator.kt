@@ -188,37 +188,25 @@ public class Coordinator(
 
     /**
      * Hands the events of [types] from what [target] names to a listener [made] for each node: a component
-     * the script names is followed across re-creation, on its one subscription; each node a pattern,
-     * manager or naming context names now is watched by a subscription of its own.
+     * the script names is followed across re-creation, and a pattern covers every match as they come and
+     * go, each on its one subscription; a manager or naming context is watched by a subscription of its
+     * own, which covers the components below it as they come and go.
      */
     private suspend fun listen(target: Target, types: Set<Class<out RtcEvent>>, made: () -> NodeListener) {
-        val name = target.followedName
-        if (name != null) {
-            if (target is Target.Port) identities.node(name).port(target.ref.name)
-            val listener = made()
-            listeners += identities.listen(name, types, listener::prepare, listener::deliver)
-            return
-        }
-        for (node in targets(target)) {
-            val listener = made()
-            listener.prepare(node)
-            subscriptions += tree.on(node, types, watching.queued()) { listener.deliver(it) }
+        when (target) {
+            is Target.Component -> listeners += identities.listen(target.ref.selector, types, made)
+            is Target.Port -> {
+                identities.node(target.ref.component.selector).port(target.ref.name)
+                listeners += identities.listen(target.ref.component.selector, types, made)
+            }
+            is Target.Manager -> watchDirectory(engine.manager(target.ref), types, made())
+            is Target.Context -> watchDirectory(tree.node(target.ref.path), types, made())
         }
     }
 
-    /** What takes one node's events for a rule or a machine: it reads the node first, then takes its events in order. */
-    private interface NodeListener {
-        /** Reads [node] before its first event, and again when a component the script names is re-created. */
-        suspend fun prepare(node: Node)
-
-        suspend fun deliver(event: RtcEvent)
-    }
-
-    private suspend fun targets(target: Target): List<Node> = when (target) {
-        is Target.Component -> identities.nodes(target.ref.selector)
-        is Target.Port -> listOf(identities.node(target.ref.component.selector))
-        is Target.Manager -> listOf(engine.manager(target.ref))
-        is Target.Context -> listOf(tree.node(target.ref.path))
+    private suspend fun watchDirectory(directory: Node, types: Set<Class<out RtcEvent>>, listener: NodeListener) {
+        listener.prepare(directory)
+        subscriptions += tree.on(directory, types, watching.queued()) { listener.deliver(it) }
     }
 
     private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
