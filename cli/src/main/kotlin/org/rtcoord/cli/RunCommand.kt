@@ -14,6 +14,7 @@ import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcException
+import org.rtcoord.WatchMethodChanged
 import org.rtcoord.WatchMode
 import org.rtcoord.cli.serve.LiveService
 import org.rtcoord.cli.serve.ServeOptions
@@ -66,8 +67,8 @@ class RunCommand : TreeCommand("run") {
                 echo("${now()} $line")
                 service?.log("coordinator", line)
             }
-            // One line per component saying how it is watched (again when that changes), and one per manager that dies.
-            tree.onWatching { event -> echo("${now()} ${event.path} ${event.what()}") }
+            // One line per component saying how it is watched (again when that changes); the coordinator says which managers die.
+            tree.onWatching { event -> if (event is WatchMethodChanged) echo("${now()} ${event.path} ${event.what()}") }
             try {
                 coordinator.start()
             } catch (e: RtcException) {

@@ -19,11 +19,13 @@ import org.rtcoord.EventOptions
 import org.rtcoord.Node
 import org.rtcoord.NotFoundException
 import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
 import org.rtcoord.dsl.Coordination
 import org.rtcoord.dsl.Escalation
 import org.rtcoord.dsl.EventPattern
+import org.rtcoord.dsl.ManagerRef
 import org.rtcoord.dsl.Reaction
 import org.rtcoord.dsl.Rule
 import org.rtcoord.dsl.Supervision
@@ -55,7 +57,8 @@ public class Coordinator(
 
     private val job = SupervisorJob()
     private val identities = Identities(tree, watching, CoroutineScope(job + CoroutineName("coordinator names")), log, watchedByName())
-    private val engine = Engine(tree, identities, plan.directory, log)
+    private val managers = ManagerWatch(tree, watching, log)
+    private val engine = Engine(tree, identities, plan.directory, log, managers)
     private val scope = CoroutineScope(job + CoroutineName("coordinator") + engine + CoroutineExceptionHandler { _, e -> failed("timer", e) })
     private val interpreters = plan.machines.map { MachineInterpreter(it, scope, engine, Configurator(engine, scope), log, ::failed, ::watchNetwork) }
     /** The listeners of followed names, and the subscriptions to nodes that are not followed. */
@@ -99,6 +102,7 @@ public class Coordinator(
     public suspend fun start() {
         plan.nameServers.forEach(tree::addNameServer)
         try {
+            managers.start()
             plan.rules.forEach { subscribe(it) }
             withContext(engine) {
                 plan.dataRules.forEach { rule ->
@@ -113,6 +117,9 @@ public class Coordinator(
             plan.supervisions.forEach { supervision ->
                 supervisors += Supervisor(supervision, engine, scope, log) { escalated(supervision, it) }.also { it.start() }
             }
+            // Last: watching a manager watches the components below it, and the tree names each component by the path it
+            // was first watched at; the rules' names (naming contexts) come first.
+            plan.managers.forEach { watchManager(it) }
         } catch (e: Exception) {
             close()
             throw e
@@ -127,6 +134,15 @@ public class Coordinator(
             }
         }
         interpreters.forEach(MachineInterpreter::start)
+    }
+
+    /** Watches manager [selector] for its death and return; one not found now is watched once a handler uses it. */
+    private suspend fun watchManager(selector: String) {
+        try {
+            engine.manager(ManagerRef(selector))
+        } catch (e: RtcException) {
+            log("manager $selector: ${e.reason}; watched once the script uses it")
+        }
     }
 
     /**
@@ -250,6 +266,7 @@ public class Coordinator(
         (listeners + subscriptions).forEach(Subscription::cancel)
         listeners.clear()
         subscriptions.clear()
+        managers.close()
         identities.close()
         job.cancel()
     }
