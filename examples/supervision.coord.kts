@@ -1,7 +1,8 @@
 // Keeps the localisation pipeline running. The odometry and the laser feed the laser localiser, which
 // is declared after them because it depends on them: when the laser fails, the laser and the localiser
 // restart together (restForOne) and the odometry is left alone. A component in ERROR is reset; one that
-// died is re-created through its manager, connected as it was and put back in its configuration set.
+// died is re-created through its manager, connected as it was and put back in its configuration set;
+// one re-created meanwhile by someone else (`rtmgr -c`, during a back-off) is followed, not created twice.
 // Past LIMIT restarts a minute (the first argument, 3 by default) the supervisor gives up and stops the
 // laser localiser. A laser that stays broken (its resets keep failing) ends there too: the localisation
 // then goes on from odometry and the gyro, as in the paper, with a localiser created for it.

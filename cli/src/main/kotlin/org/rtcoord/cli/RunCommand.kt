@@ -13,6 +13,8 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
+import org.rtcoord.ManagerDied
+import org.rtcoord.ManagerReturned
 import org.rtcoord.NameServerNode
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
@@ -73,9 +75,9 @@ class RunCommand : TreeCommand("run") {
                 echo("${now()} $line")
                 service?.log("coordinator", line)
             }
-            // One line per component saying how it is watched (again when that changes), one per manager that
-            // dies or returns, and one per name server that stops or starts answering.
-            tree.onWatching { event -> echo("${now()} ${event.path} ${event.what()}") }
+            // One line per component saying how it is watched (again when that changes), and one per name server
+            // that stops or starts answering; the coordinator says which managers die.
+            tree.onWatching { event -> if (event !is ManagerDied && event !is ManagerReturned) echo("${now()} ${event.path} ${event.what()}") }
             if (!awaitNameServers(signals)) return
             try {
                 coordinator.start()

@@ -28,6 +28,7 @@ public open class Coordination(
     internal val timers = mutableListOf<Timer>()
     internal val supervisions = mutableListOf<Supervision>()
     internal val nameServers = mutableListOf<String>()
+    internal val managers = linkedSetOf<String>()
     private val machineList = mutableListOf<ModeMachine>()
 
     /** The mode machines declared so far. */
@@ -47,8 +48,11 @@ public open class Coordination(
     /** A port, as `component:port`. */
     public fun port(path: String): PortRef = portRef(path)
 
-    /** A manager, by name (found on any name server) or path. */
-    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name)
+    /**
+     * A manager, by name (found on any name server) or path. A running coordinator watches it from the
+     * start: its death and its return are logged, and `on(manager()).died { ... }` reacts to them.
+     */
+    public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name).also { managers += name }
 
     /** A naming context, by path. */
     public fun context(path: String): ContextRef = ContextRef(path)
@@ -110,5 +114,5 @@ public open class Coordination(
     }
 
     /** What was declared so far, frozen: later declarations do not change it. */
-    internal fun plan(): Plan = Plan(rules.toList(), dataRules.toList(), timers.toList(), supervisions.toList(), machineList.toList(), nameServers.toList(), watching, directory)
+    internal fun plan(): Plan = Plan(rules.toList(), dataRules.toList(), timers.toList(), supervisions.toList(), machineList.toList(), nameServers.toList(), managers.toList(), watching, directory)
 }

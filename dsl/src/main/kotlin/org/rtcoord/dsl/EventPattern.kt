@@ -8,6 +8,8 @@ import org.rtcoord.ContextRateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerComponentChanged
+import org.rtcoord.ManagerDied
+import org.rtcoord.ManagerReturned
 import org.rtcoord.Node
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
@@ -127,6 +129,10 @@ internal object EventPatterns {
 
     fun deleted(target: ManagerRef) =
         EventPattern("$target deletes a component", Target.Manager(target), ManagerComponentChanged::class.java) { !it.created }
+
+    fun died(target: ManagerRef) = EventPattern("$target dies", Target.Manager(target), ManagerDied::class.java) { target.names(it.source) }
+
+    fun returned(target: ManagerRef) = EventPattern("$target answers again", Target.Manager(target), ManagerReturned::class.java) { target.names(it.source) }
 
     fun appeared(target: ContextRef) =
         EventPattern("$target gains a binding", Target.Context(target), NodeAppeared::class.java) { it.source.path.toString() == RtcPath.parse(target.path).toString() }

@@ -19,6 +19,8 @@ internal class Plan(
     val supervisions: List<Supervision>,
     val machines: List<ModeMachine>,
     val nameServers: List<String>,
+    /** The managers the script named as it was evaluated (those its handlers name are watched once used). */
+    val managers: List<String>,
     val watching: EventOptions,
     val directory: Path,
 )

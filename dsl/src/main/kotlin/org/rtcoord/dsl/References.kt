@@ -4,6 +4,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.Connection
 import org.rtcoord.LifeCycle
+import org.rtcoord.ManagerNode
 import org.rtcoord.Port
 import org.rtcoord.RtcPath
 import org.rtcoord.dsl.runtime.Engine
@@ -101,6 +102,10 @@ public class ManagerRef internal constructor(public val selector: String) {
 
     /** Deletes component [instanceName] through the manager that hosts it. */
     public suspend fun delete(instanceName: String): Unit = Engine.current().delete(this, instanceName)
+
+    /** Whether it names [manager] itself (by path, or by name), not one of its slaves. */
+    internal fun names(manager: ManagerNode): Boolean =
+        if (selector.startsWith("/")) manager.path == RtcPath.parse(selector) else manager.name == selector
 
     override fun toString(): String = selector
 }

@@ -5,14 +5,14 @@ import kotlin.time.Duration
 
 /** What a rule watches: a component (or pattern), a port, a manager or a naming context. */
 internal sealed class Target {
-    /** The component this target's events come from when the script names one (not a pattern): the name a run follows. */
+    /** What a run follows for this target's events when it names components: a name (followed through re-creation) or a pattern (covering every match, as they come). */
     open val followedName: String? get() = null
 
     /** What tells two targets apart: equal keys watch the same thing. */
     abstract val key: String
 
     class Component(val ref: ComponentRef) : Target() {
-        override val followedName: String? get() = ref.selector.takeUnless { ref.isPattern }
+        override val followedName: String get() = ref.selector
         override val key: String get() = "component ${ref.selector}"
     }
 

@@ -4,6 +4,8 @@ import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
+import org.rtcoord.ManagerDied
+import org.rtcoord.ManagerReturned
 import org.rtcoord.Node
 import org.rtcoord.ParameterChanged
 import org.rtcoord.PortData
@@ -162,6 +164,15 @@ public class ManagerTriggers internal constructor(private val owner: Coordinatio
     /** When a component it hosted is deleted. */
     public fun deleted(handler: suspend Reaction.(instanceName: String) -> Unit): Unit =
         owner.add(EventPatterns.deleted(target).rule(guards) { handler(it.instanceName) })
+
+    /**
+     * When the manager itself stops answering (its process died or hangs; a slave's death is not its):
+     * `died { event -> log("lost ${event.components.size} components") }`, once per death.
+     */
+    public fun died(handler: suspend Reaction.(ManagerDied) -> Unit): Unit = owner.add(EventPatterns.died(target).rule(guards, handler))
+
+    /** When the manager, said dead, answers again. */
+    public fun returned(handler: suspend Reaction.(ManagerReturned) -> Unit): Unit = owner.add(EventPatterns.returned(target).rule(guards, handler))
 }
 
 /** Bindings appearing and vanishing in a naming context: `on(context("/localhost/host.host_cxt")).appeared { ... }`. */

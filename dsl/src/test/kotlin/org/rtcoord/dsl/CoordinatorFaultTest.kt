@@ -24,6 +24,7 @@ import org.rtcoord.fixtures.rtSystem
 import java.util.Collections
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -113,6 +114,29 @@ class CoordinatorFaultTest {
         assertTrue(created.single().endsWith("odo_localise0.rtc"), created.toString())
         assertTrue(log.any { it.endsWith("(looked up again)") }, log.toString())
         assertEquals(1, coordinator.failures, log.toString())
+    }
+
+    @Test
+    fun `the death of the master manager the script uses is reported at once, and its rule fires`(): Unit = runBlocking {
+        val manager = FixtureProcess.start("--naming", naming.address, "--scenario", "localisation").closedAfter()
+        val tree = RtcTree.create(TreeConfig(listOf(naming.address))).closedAfter()
+        val died = CopyOnWriteArrayList<String>()
+        val coordinator = coordinator(tree) {
+            val master = manager()
+            on(master).died { event -> died += "${event.source.name} with ${event.components.size} components" }
+            after(1.hours) { master.create("relay") }
+        }
+        coordinator.start()
+
+        val killed = TimeSource.Monotonic.markNow()
+        manager.kill()
+        val line = awaitValue("the coordinator to report the master's death") { log.firstOrNull { "/manager.mgr manager stopped answering (" in it } }
+        println("master manager's death reported ${killed.elapsedNow()} after SIGKILL: $line")
+        await("the rule on the master's death to fire") { died.isNotEmpty() }
+        assertEquals(1, died.size, died.toString())
+        assertTrue(died.single().startsWith("manager.mgr with "), died.toString())
+        assertEquals(1, log.count { "/manager.mgr manager stopped answering (" in it }, log.toString())
+        assertEquals(0, coordinator.failures, log.toString())
     }
 
     @Test

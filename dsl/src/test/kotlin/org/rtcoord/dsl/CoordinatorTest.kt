@@ -160,6 +160,39 @@ class CoordinatorTest : CoordinatedSystem() {
     }
 
     @Test
+    fun `a glob rule covers components created after the start, and with includeCurrent one created already in ERROR`(): Unit = runBlocking {
+        val edge = Collections.synchronizedList(mutableListOf<String>())
+        val level = Collections.synchronizedList(mutableListOf<String>())
+        coordinator {
+            on(component("*")).state(ERROR) { event -> edge += event.source.name }
+            on(component("*")).state(ERROR, includeCurrent = true) { event -> level += "${event.source.name} ${event.old}->${event.new}" }
+        }.use { coordinator ->
+            coordinator.start()
+            val late = system.runtime.create(Scenarios.relay, "late0")
+            await("the rules to watch late0") { late.observerIds.size == 1 }
+            late.activate()
+            late.fail()
+            await("both rules to fire for late0") { edge == listOf("late0.rtc") && level == listOf("late0.rtc ACTIVE->ERROR") }
+
+            // Registered only once in ERROR, and by a runtime no manager lists: found in ERROR, whenever the tree looks.
+            org.rtcoord.fixtures.FixtureRuntime.start(naming.corbaloc).use { unmanaged ->
+                val broken = unmanaged.create(Scenarios.relay, "late1", bind = false)
+                broken.activate()
+                broken.fail()
+                await("late1 to be in ERROR before it is registered") { broken.state == RTC.LifeCycleState.ERROR_STATE }
+                unmanaged.bind("late1.rtc", broken.ref)
+                await("the level-triggered rule to fire for late1, in ERROR when it was found") { "late1.rtc ERROR->ERROR" in level }
+                assertEquals(listOf("late0.rtc"), edge.toList(), "the edge-triggered rule saw no transition of late1")
+                assertEquals(1, broken.observerIds.size, "one observer for both rules")
+            }
+
+            late.exit()
+            await("the rules to stop watching late0") { log.any { it.endsWith("/late0.rtc is gone: '*' no longer covers it") } }
+            assertEquals(0, coordinator.failures, log.toString())
+        }
+    }
+
+    @Test
     fun `a reference and the rules on it follow a component re-created at its path`(): Unit = runBlocking {
         val reactions = AtomicInteger()
         coordinator {

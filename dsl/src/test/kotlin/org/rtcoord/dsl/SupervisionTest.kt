@@ -172,6 +172,37 @@ class SupervisionTest : CoordinatedSystem(
     }
 
     @Test
+    fun `a component re-created by someone else during a back-off is followed, and when it fails it is restarted once and nothing healthy is stopped`(): Unit = runBlocking {
+        val laser = system.component("laser0")
+        val escalations = CopyOnWriteArrayList<Escalation>()
+        coordinator {
+            supervise(component("laser0"), component("odometry0")) {
+                backoff = exponential(2.seconds, max = 2.seconds)
+                // As the supervision example's does, giving up stops what the laser feeds.
+                onEscalation { escalation -> component("odometry0").deactivate().also { escalations += escalation } }
+            }
+        }.use { coordinator ->
+            coordinator.start()
+            witness.component(path("laser0.rtc")).exit()
+            await("the supervisor to wait before re-creating laser0") { logged("restarting ${path("laser0.rtc")} in 2s") }
+            // Another client re-creates it through the master, as `rtmgr -c` would, and activates it.
+            witness.manager(path("manager.mgr")).create("laser", "laser0").activate()
+            val recreated = awaitValue("laser0 to be re-created by the other client") { active("laser0")?.takeIf { it !== laser } }
+            await("the supervisor to follow it instead of re-creating it") { logged("${path("laser0.rtc")} was re-created by someone else: following it") }
+
+            recreated.fail()
+            await("the supervisor to reset and reactivate the new laser0") { logged("reset ${path("laser0.rtc")}") && recreated.state == LifeCycleState.ACTIVE_STATE }
+            assertSame(recreated, active("laser0"), "reset, not re-created")
+            assertEquals(listOf("start laser0.rtc"), steps(), log.joinToString("\n"))
+            assertTrue(log.none { "exists already" in it || "re-create laser0" in it }, log.joinToString("\n"))
+            assertEquals(emptyList<Escalation>(), escalations.toList())
+            assertEquals(LifeCycleState.ACTIVE_STATE, system.component("odometry0").state, "the healthy odometry0 was never stopped")
+            assertEquals(1, recreated.observerIds.size, "the supervisor watches the new laser0 on one observer")
+            assertEquals(0, coordinator.failures)
+        }
+    }
+
+    @Test
     fun `beyond the restart intensity the supervisor escalates, the script handles it, and nothing is restarted any more`(): Unit = runBlocking {
         val gyro = system.component("gyro0")
         val escalations = CopyOnWriteArrayList<Escalation>()

@@ -93,8 +93,9 @@ internal class Watcher(private val core: TreeCore) {
                     val earlier = synchronized(included) { included.putIfAbsent(node.component, inclusion) }
                     if (earlier != null) return earlier.await()
                     try {
+                        // Its events name it at its canonical path, whichever path led here first.
                         val registration = MonitorRegistration(sink, options, configuration, statesOnly, traffic)
-                        val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node, ::ended).also { live += it } } }
+                        val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node.canonical, ::ended).also { live += it } } }
                         monitor.add(registration)
                         synchronized(releases) { releases += { release(node.component, monitor, registration) } }
                     } finally {

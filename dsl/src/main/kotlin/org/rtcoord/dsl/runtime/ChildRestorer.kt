@@ -29,9 +29,22 @@ internal class ChildRestorer(private val engine: Engine, private val record: Sup
         }
         val created = child.managers.firstNotNullOfOrNull { createThrough(it, child) } ?: return null
         val node = placed(old, created)
+        engine.identities.follow(old, node)
         record.recreated(child, node, created.path)
         log.line("re-created ${old.path} as ${node.path}")
-        engine.identities.follow(old, node)
+        return node
+    }
+
+    /**
+     * The component someone else re-created in place of [failed] (by hand, another tool), which [child]'s
+     * name refers to from now on and is recorded as it is; null if its name still refers to [failed] and
+     * nothing replaced it. Asks the run's [Identities], which may have followed it already.
+     */
+    suspend fun replacement(child: SupervisedChild, failed: ComponentNode): ComponentNode? {
+        if (child.node.isSameComponent(failed)) engine.identities.successor(child.ref.selector, failed) ?: return null
+        val node = child.node
+        record.retake(child)
+        log.line("${node.path} was re-created by someone else: following it")
         return node
     }
 

@@ -19,11 +19,13 @@ import org.rtcoord.EventOptions
 import org.rtcoord.Node
 import org.rtcoord.NotFoundException
 import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
 import org.rtcoord.dsl.Coordination
 import org.rtcoord.dsl.Escalation
 import org.rtcoord.dsl.EventPattern
+import org.rtcoord.dsl.ManagerRef
 import org.rtcoord.dsl.Reaction
 import org.rtcoord.dsl.Rule
 import org.rtcoord.dsl.Supervision
@@ -55,7 +57,8 @@ public class Coordinator(
 
     private val job = SupervisorJob()
     private val identities = Identities(tree, watching, CoroutineScope(job + CoroutineName("coordinator names")), log, watchedByName())
-    private val engine = Engine(tree, identities, plan.directory, log)
+    private val managers = ManagerWatch(tree, watching, log)
+    private val engine = Engine(tree, identities, plan.directory, log, managers)
     private val scope = CoroutineScope(job + CoroutineName("coordinator") + engine + CoroutineExceptionHandler { _, e -> failed("timer", e) })
     private val interpreters = plan.machines.map { MachineInterpreter(it, scope, engine, Configurator(engine, scope), log, ::failed, ::watchNetwork) }
     /** The listeners of followed names, and the subscriptions to nodes that are not followed. */
@@ -99,6 +102,7 @@ public class Coordinator(
     public suspend fun start() {
         plan.nameServers.forEach(tree::addNameServer)
         try {
+            managers.start()
             plan.rules.forEach { subscribe(it) }
             withContext(engine) {
                 plan.dataRules.forEach { rule ->
@@ -113,6 +117,9 @@ public class Coordinator(
             plan.supervisions.forEach { supervision ->
                 supervisors += Supervisor(supervision, engine, scope, log) { escalated(supervision, it) }.also { it.start() }
             }
+            // Last: watching a manager watches the components below it, and the tree names each component by the path it
+            // was first watched at; the rules' names (naming contexts) come first.
+            plan.managers.forEach { watchManager(it) }
         } catch (e: Exception) {
             close()
             throw e
@@ -127,6 +134,15 @@ public class Coordinator(
             }
         }
         interpreters.forEach(MachineInterpreter::start)
+    }
+
+    /** Watches manager [selector] for its death and return; one not found now is watched once a handler uses it. */
+    private suspend fun watchManager(selector: String) {
+        try {
+            engine.manager(ManagerRef(selector))
+        } catch (e: RtcException) {
+            log("manager $selector: ${e.reason}; watched once the script uses it")
+        }
     }
 
     /**
@@ -188,37 +204,25 @@ public class Coordinator(
 
     /**
      * Hands the events of [types] from what [target] names to a listener [made] for each node: a component
-     * the script names is followed across re-creation, on its one subscription; each node a pattern,
-     * manager or naming context names now is watched by a subscription of its own.
+     * the script names is followed across re-creation, and a pattern covers every match as they come and
+     * go, each on its one subscription; a manager or naming context is watched by a subscription of its
+     * own, which covers the components below it as they come and go.
      */
     private suspend fun listen(target: Target, types: Set<Class<out RtcEvent>>, made: () -> NodeListener) {
-        val name = target.followedName
-        if (name != null) {
-            if (target is Target.Port) identities.node(name).port(target.ref.name)
-            val listener = made()
-            listeners += identities.listen(name, types, listener::prepare, listener::deliver)
-            return
-        }
-        for (node in targets(target)) {
-            val listener = made()
-            listener.prepare(node)
-            subscriptions += tree.on(node, types, watching.queued()) { listener.deliver(it) }
+        when (target) {
+            is Target.Component -> listeners += identities.listen(target.ref.selector, types, made)
+            is Target.Port -> {
+                identities.node(target.ref.component.selector).port(target.ref.name)
+                listeners += identities.listen(target.ref.component.selector, types, made)
+            }
+            is Target.Manager -> watchDirectory(engine.manager(target.ref), types, made())
+            is Target.Context -> watchDirectory(tree.node(target.ref.path), types, made())
         }
     }
 
-    /** What takes one node's events for a rule or a machine: it reads the node first, then takes its events in order. */
-    private interface NodeListener {
-        /** Reads [node] before its first event, and again when a component the script names is re-created. */
-        suspend fun prepare(node: Node)
-
-        suspend fun deliver(event: RtcEvent)
-    }
-
-    private suspend fun targets(target: Target): List<Node> = when (target) {
-        is Target.Component -> identities.nodes(target.ref.selector)
-        is Target.Port -> listOf(identities.node(target.ref.component.selector))
-        is Target.Manager -> listOf(engine.manager(target.ref))
-        is Target.Context -> listOf(tree.node(target.ref.path))
+    private suspend fun watchDirectory(directory: Node, types: Set<Class<out RtcEvent>>, listener: NodeListener) {
+        listener.prepare(directory)
+        subscriptions += tree.on(directory, types, watching.queued()) { listener.deliver(it) }
     }
 
     private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
@@ -262,6 +266,7 @@ public class Coordinator(
         (listeners + subscriptions).forEach(Subscription::cancel)
         listeners.clear()
         subscriptions.clear()
+        managers.close()
         identities.close()
         job.cancel()
     }

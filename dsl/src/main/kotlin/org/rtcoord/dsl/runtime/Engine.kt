@@ -34,6 +34,8 @@ internal class Engine(
     /** What the script's relative file names (profiles) are relative to. */
     val directory: Path,
     val log: (String) -> Unit,
+    /** What watches the managers the run uses, if anything does (a check does not). */
+    private val managers: ManagerWatch? = null,
 ) : AbstractCoroutineContextElement(Engine) {
     /** The one component [selector] names. */
     suspend fun component(selector: String): ComponentNode = identities.node(selector)
@@ -41,7 +43,10 @@ internal class Engine(
     /** A reference to [node], resolving to it. */
     fun reference(node: ComponentNode): ComponentRef = ComponentRef(node.path.toString()).also { identities.remember(node) }
 
-    suspend fun manager(ref: ManagerRef): ManagerNode {
+    /** The manager [ref] names, watched from now on for its death and return. */
+    suspend fun manager(ref: ManagerRef): ManagerNode = find(ref).also { managers?.watch(it) }
+
+    private suspend fun find(ref: ManagerRef): ManagerNode {
         if (ref.selector.startsWith("/")) return tree.manager(ref.selector)
         val found = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER) and NodeFilters.name(ref.selector)).toList()
         return when (found.size) {

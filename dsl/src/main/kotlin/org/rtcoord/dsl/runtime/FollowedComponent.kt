@@ -20,7 +20,11 @@ import java.util.concurrent.CopyOnWriteArrayList
  * another component is registered there; when it is re-created, found so or told to the [owner] by
  * whoever re-created it, the subscription moves to the new component, each listener having read it first.
  */
-internal class FollowedComponent(val selector: String, @Volatile var node: ComponentNode, private val owner: Identities) : AutoCloseable {
+internal class FollowedComponent(val selector: String, initial: ComponentNode, private val owner: Identities) : AutoCloseable {
+    /** The component the name refers to now. */
+    @Volatile var node: ComponentNode = initial
+        private set
+
     private class Listener(val types: Set<Class<out RtcEvent>>, val prepare: suspend (ComponentNode) -> Unit, val deliver: suspend (RtcEvent) -> Unit) {
         fun wants(event: RtcEvent) = types.any { it.isInstance(event) }
     }

@@ -20,8 +20,10 @@ import java.util.concurrent.ConcurrentHashMap
  * The one owner of "which component is this" in a running coordinator: resolves what a script names
  * (a path, a name found on any name server, or a pattern that matches one component) and follows each
  * name to the component that replaces it when it is re-created, whoever re-creates it (a supervisor, a
- * handler, someone by hand). Each name listened to has one subscription to the tree, shared by every
- * rule, machine and supervisor that listens to it (see [FollowedComponent]).
+ * handler, someone by hand); a pattern listened to covers every component that matches it, including
+ * those that appear later (see [FollowedPattern]). Those who need to know what a name refers to now (a
+ * supervisor) ask it and keep no copy. Each name or pattern listened to has one subscription to the tree,
+ * shared by every rule, machine and supervisor that listens to it (see [FollowedComponent]).
  *
  * @param watched the events the plan listens to, by name: a name's subscription asks the tree for these
  *   alone, so a component only rules on states watch is read for its states alone.
@@ -34,14 +36,15 @@ internal class Identities(
     val watched: Map<String, Set<Class<out RtcEvent>>>,
 ) : AutoCloseable {
     private val names = ConcurrentHashMap<String, FollowedComponent>()
+    private val patterns = ConcurrentHashMap<String, FollowedPattern>()
 
-    /** How many subscriptions to the tree the followed names hold now. */
-    val subscriptions: Int get() = names.values.count { it.subscribed }
+    /** How many subscriptions to the tree the followed names and patterns hold now. */
+    val subscriptions: Int get() = names.values.count { it.subscribed } + patterns.values.count { it.subscribed }
 
     /** The one component [selector] names, as resolved before or resolved now. */
     suspend fun node(selector: String): ComponentNode = followed(selector).node
 
-    /** Every component [selector] names: one for a name or path, any number for a pattern (patterns are not followed). */
+    /** Every component [selector] names now: one for a name or path, those a pattern matches now for a pattern. */
     suspend fun nodes(selector: String): List<ComponentNode> =
         if (isPattern(selector)) matching(selector) else listOf(node(selector))
 
@@ -56,6 +59,16 @@ internal class Identities(
         prepare: suspend (ComponentNode) -> Unit = {},
         listener: suspend (RtcEvent) -> Unit,
     ): Subscription = followed(selector).listen(types, prepare, listener)
+
+    /**
+     * Hands the events of [types] from what [selector] names to a listener [made] for each component: the
+     * one a name refers to, followed through re-creation; every one a pattern covers, now and later.
+     */
+    suspend fun listen(selector: String, types: Set<Class<out RtcEvent>>, made: () -> NodeListener): Subscription {
+        if (isPattern(selector)) return patterns.computeIfAbsent(selector) { FollowedPattern(it, this) }.listen(types, made)
+        val listener = made()
+        return listen(selector, types, listener::prepare, listener::deliver)
+    }
 
     /** Remembers [node] as what its path names, so that a reference made from it resolves to it. */
     fun remember(node: ComponentNode) {
@@ -98,11 +111,13 @@ internal class Identities(
 
     /** Stops every subscription and search. */
     override fun close() {
-        names.values.forEach(FollowedComponent::close)
+        (names.values + patterns.values).forEach(AutoCloseable::close)
         names.clear()
+        patterns.clear()
     }
 
-    private suspend fun followed(selector: String): FollowedComponent {
+    /** What [selector] (not a pattern) names, resolved now if it never was: its [FollowedComponent.node] is the component it refers to from then on. */
+    suspend fun followed(selector: String): FollowedComponent {
         names[selector]?.let { return it }
         val node = resolve(selector)
         return names.computeIfAbsent(selector) { FollowedComponent(it, node, this) }
@@ -114,12 +129,14 @@ internal class Identities(
         else -> tree.componentNamed(selector)
     }
 
-    private suspend fun matching(pattern: String): List<ComponentNode> {
-        val glob = if ('.' in pattern) pattern else "$pattern.rtc"
-        return tree.find(predicate = NodeFilters.kind(NodeKind.COMPONENT) and NodeFilters.name(glob)).toList()
+    /** The components [pattern] matches now, each once however many paths reach it. */
+    suspend fun matching(pattern: String): List<ComponentNode> =
+        tree.find(predicate = NodeFilters.kind(NodeKind.COMPONENT) and globOf(pattern)).toList()
             .map { it as ComponentNode }
             .fold(emptyList()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
-    }
+
+    /** Whether a node's name matches [pattern]; a pattern without a kind (`laser*`) is of components (`laser*.rtc`). */
+    fun globOf(pattern: String): suspend (Node) -> Boolean = NodeFilters.name(if ('.' in pattern) pattern else "$pattern.rtc")
 
     private companion object {
         fun isPattern(selector: String) = selector.any { it == '*' || it == '?' }

@@ -23,6 +23,9 @@ internal class RecordedConnection(var id: String, val name: String, properties: 
     /** The properties to connect with (see [reusableProperties]). */
     val properties: Map<String, String> = reusableProperties(properties)
 
+    /** Whether [other] connects the same ports, in the same order. */
+    fun joinsSamePorts(other: RecordedConnection): Boolean = ends.map { it.toString() } == other.ends.map { it.toString() }
+
     fun involves(child: SupervisedChild): Boolean = ends.any { it is End.Supervised && it.child === child }
 
     /** The supervised components at its ends. */

@@ -9,14 +9,19 @@ import org.rtcoord.dsl.ComponentRef
 import org.rtcoord.dsl.RestartType
 
 /**
- * What a supervisor knows of one of its components: where it is now ([node], replaced when it is
- * re-created), what to re-create it from, and the configuration to restore. Changed only under the
- * supervisor's lock.
+ * What a supervisor knows of one of its components: what to re-create it from and the configuration to
+ * restore. Where it is now is not its to know: [node] is what its [name] refers to now, as the run's
+ * [Identities] decide, following it through re-creation by the supervisor or by anyone else. Changed
+ * only under the supervisor's lock.
  *
  * @property index its place in the declared order.
  */
 internal class SupervisedChild(val index: Int, val ref: ComponentRef, val restart: RestartType) {
-    lateinit var node: ComponentNode
+    /** Its name as the run follows it; set when supervision starts. */
+    lateinit var name: FollowedComponent
+
+    /** The component its name refers to now. */
+    val node: ComponentNode get() = name.node
 
     /** The supervisor's watch on [node]. */
     var subscription: Subscription? = null

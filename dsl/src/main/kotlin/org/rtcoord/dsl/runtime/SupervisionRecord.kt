@@ -28,7 +28,7 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
 
     /** Records everything about every child, as the system is now. */
     suspend fun takeAll() {
-        val managers = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER)).toList().filterIsInstance<ManagerNode>()
+        val managers = managers()
         children.forEach { take(it, managers) }
         children.forEach { child -> child.node.snapshot().ports.filter { it.connectors.isNotEmpty() }.forEach { takeConnections(child, it.name) } }
     }
@@ -51,10 +51,16 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
 
     /** Records that [child] was re-created as [node] through the manager at [manager]. */
     suspend fun recreated(child: SupervisedChild, node: ComponentNode, manager: RtcPath) {
-        child.node = node
         child.instanceName = node.snapshot().instanceName
         child.managers = (managersAbove(manager) + child.managers).distinctBy { it.path }
     }
+
+    /** Records [child] anew, re-created by someone else: as it is now, wherever it is hosted now. */
+    suspend fun retake(child: SupervisedChild) {
+        take(child, managers())
+    }
+
+    private suspend fun managers(): List<ManagerNode> = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER)).toList().filterIsInstance<ManagerNode>()
 
     /** The managers above [path] (a component below a manager, a slave below its master), nearest first. */
     private suspend fun managersAbove(path: RtcPath): List<ManagerNode> =
@@ -71,6 +77,8 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
                 continue
             }
             val recorded = RecordedConnection(connection.id, connection.name, connection.properties, ends.filterNotNull())
+            // One between the same ports went with a component since re-created: this one replaces it.
+            connections.removeAll { it.joinsSamePorts(recorded) }
             connections += recorded
             log.line("recorded connection $recorded")
         }

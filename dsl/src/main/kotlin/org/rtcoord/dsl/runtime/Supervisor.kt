@@ -66,7 +66,7 @@ internal class Supervisor(
     /** Resolves and watches the components, records what recovery needs, and starts handling failures. */
     suspend fun start() {
         lock.withLock {
-            children.forEach { it.node = engine.component(it.ref.selector) }
+            children.forEach { it.name = engine.identities.followed(it.ref.selector) }
             children.groupBy { child -> children.first { it.node.isSameComponent(child.node) } }.values.firstOrNull { it.size > 1 }?.let { same ->
                 throw IllegalArgumentException("$name: ${same.joinToString { it.ref.selector }} are one component")
             }
@@ -163,7 +163,10 @@ internal class Supervisor(
                 if (decision.wait.isPositive()) {
                     activity.waiting(decision.wait)
                     say.line("restarting $together in ${decision.wait} (consecutive restart ${decision.attempt})")
+                    val waited = failed.keys.associateWith { it.node }
                     delay(decision.wait)
+                    failed.keys.filter { child -> replacedMeanwhile(child, waited.getValue(child)) }.forEach { failed -= it }
+                    if (failed.isEmpty()) return
                 }
                 // Whatever was reported of them meanwhile, this restart answers.
                 sequence.get().let { now -> failed.keys.forEach { covered[it] = now } }
@@ -172,6 +175,15 @@ internal class Supervisor(
                 activity.restarted(together, children.map { it.toString() })
             }
         }
+    }
+
+    /**
+     * Whether someone else re-created [child] in place of [failed] while the restart waited, and the new
+     * component runs: it is followed, not restarted (a new one in ERROR is still restarted).
+     */
+    private suspend fun replacedMeanwhile(child: SupervisedChild, failed: ComponentNode): Boolean = lock.withLock {
+        restorer.replacement(child, failed) ?: return false
+        (child.status() as? ChildStatus.Up)?.state.let { it != null && it != LifeCycle.ERROR }
     }
 
     /** Whether this failure is news: about the component the child is now, and after its last restart began. */
@@ -220,10 +232,15 @@ internal class Supervisor(
         }
     }
 
-    /** Brings [member] up (reset, or re-created when gone) and activates it; returns whether it is ACTIVE. */
+    /**
+     * Brings [member] up (reset; followed when someone else re-created it; re-created when gone) and
+     * activates it; returns whether it is ACTIVE.
+     */
     private suspend fun start(member: SupervisedChild): Boolean {
         say.line("start $member")
-        when (val status = member.status()) {
+        var status = member.status()
+        if (status is ChildStatus.Gone && restorer.replacement(member, member.node) != null) status = member.status()
+        when (status) {
             is ChildStatus.Gone -> {
                 restorer.recreate(member, status.reason) ?: return false
                 restorer.restore(member)
