@@ -23,7 +23,9 @@ class TreeDiscoveryTest {
     @Test
     fun `the tree holds what rtls -R lists`(): Unit = runBlocking {
         tree.refresh()
-        val ours = tree.find().toList().filter { it !is RootNode && it !is NameServerNode }
+        // What the listings hold, a manager's aliases included, as rtls shows them (find names each component once).
+        fun listed(node: Node): List<Node> = listOf(node) + (node as? DirectoryNode)?.listed?.value.orEmpty().flatMap(::listed)
+        val ours = listed(tree.root).filter { it !is RootNode && it !is NameServerNode }
             .map { node -> node.path.names.joinToString("/") + if (node is DirectoryNode) "/" else "" }.toSet()
 
         val listing = runPeer("rtls", "-R", "/${localisation.naming.address}/").ok().output
