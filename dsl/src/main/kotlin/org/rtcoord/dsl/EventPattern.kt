@@ -10,6 +10,8 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
+import org.rtcoord.NameServerLost
+import org.rtcoord.NameServerReturned
 import org.rtcoord.Node
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
@@ -139,4 +141,10 @@ internal object EventPatterns {
 
     fun vanished(target: ContextRef) =
         EventPattern("$target loses a binding", Target.Context(target), NodeVanished::class.java) { it.source.path.toString() == RtcPath.parse(target.path).toString() }
+
+    fun unreachable(target: ContextRef) =
+        EventPattern("$target's name server stops answering", Target.Context(target), NameServerLost::class.java) { it.source.address == RtcPath.parse(target.path).nameServer }
+
+    fun reachable(target: ContextRef) =
+        EventPattern("$target's name server answers again", Target.Context(target), NameServerReturned::class.java) { it.source.address == RtcPath.parse(target.path).nameServer }
 }

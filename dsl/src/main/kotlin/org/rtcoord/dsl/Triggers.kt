@@ -6,6 +6,8 @@ import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
+import org.rtcoord.NameServerLost
+import org.rtcoord.NameServerReturned
 import org.rtcoord.Node
 import org.rtcoord.ParameterChanged
 import org.rtcoord.PortData
@@ -186,4 +188,13 @@ public class ContextTriggers internal constructor(private val owner: Coordinatio
 
     /** When a binding vanishes from the context. */
     public fun vanished(handler: suspend Reaction.(RtcPath) -> Unit): Unit = owner.add(EventPatterns.vanished(target).rule(guards) { handler(it.child) })
+
+    /**
+     * When the name server the context is on stops answering (`on(context("/localhost")).unreachable { }`):
+     * until it answers again nothing registered on it can be found, although the components may still run.
+     */
+    public fun unreachable(handler: suspend Reaction.(NameServerLost) -> Unit): Unit = owner.add(EventPatterns.unreachable(target).rule(guards, handler))
+
+    /** When the name server the context is on answers again; the event says how long it was gone. */
+    public fun reachable(handler: suspend Reaction.(NameServerReturned) -> Unit): Unit = owner.add(EventPatterns.reachable(target).rule(guards, handler))
 }

@@ -140,6 +140,30 @@ class CoordinatorFaultTest {
     }
 
     @Test
+    fun `a rule on a name server fires when it stops answering and when it answers again`(): Unit = runBlocking {
+        var server = NamingService.start()
+        try {
+            val tree = RtcTree.create(TreeConfig(listOf(server.address))).closedAfter()
+            val heard = CopyOnWriteArrayList<String>()
+            val coordinator = coordinator(tree) {
+                on(context("/${server.address}")).unreachable { event -> heard += "lost ${event.source.address}" }
+                on(context("/${server.address}")).reachable { event -> heard += "back after ${event.downMillis} ms" }
+            }
+            coordinator.start()
+            val saved = server.snapshot()
+            server.close()
+            await("the rule on the outage to fire") { heard.isNotEmpty() }
+            assertEquals("lost ${server.address}", heard.single())
+            server = NamingService.start(server.port, saved)
+            await("the rule on the return to fire") { heard.size == 2 }
+            assertTrue(heard.last().startsWith("back after "), heard.toString())
+            assertEquals(0, coordinator.failures, log.toString())
+        } finally {
+            server.close()
+        }
+    }
+
+    @Test
     fun `handlers that throw, hang or lag behind the events delay no other rule and lose nothing`(): Unit = runBlocking {
         val system = Scenarios.localisation(naming.corbaloc).closedAfter()
         val busy = system.runtime.create(Scenarios.relay, "busy0").also { it.activate() }
