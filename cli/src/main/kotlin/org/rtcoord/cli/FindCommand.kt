@@ -21,7 +21,8 @@ class FindCommand : TreeCommand("find") {
     override fun help(context: Context): String =
         "Print the paths of the objects below PATH (PATH included) that match every filter given. rtfind's options work " +
             "as they do there: -t, -n, -i, -m. " +
-            "A slave manager's components are found below it, not a second time below its master as rtfind does."
+            "Each component is found once, where it is bound in naming; below the manager that hosts it only when its " +
+            "naming path is not found (rtfind finds it there, and again below the master)."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord find /localhost -t c --state error" to "components in ERROR (--state takes any case: ERROR, error)",

@@ -25,6 +25,7 @@ import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import java.time.LocalTime
 import java.time.format.DateTimeFormatter
+import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
@@ -78,7 +79,7 @@ class RunCommand : TreeCommand("run") {
             // One line per component saying how it is watched (again when that changes), and one per name server
             // that stops or starts answering; the coordinator says which managers die.
             tree.onWatching { event -> if (event !is ManagerDied && event !is ManagerReturned) echo("${now()} ${event.path} ${event.what()}") }
-            if (!awaitNameServers(signals)) return
+            if (!awaitNameServers(signals, duration)) return
             try {
                 coordinator.start()
             } catch (e: RtcException) {
@@ -120,16 +121,20 @@ class RunCommand : TreeCommand("run") {
 
     /**
      * Waits until every name server answers, saying which do not and when each is reached; false when
-     * stopped meanwhile. With --require-name-servers, one that does not answer ends the run instead.
+     * stopped, or when [limit] (--for) passed, meanwhile. With --require-name-servers, one that does not
+     * answer ends the run instead.
      */
-    private suspend fun awaitNameServers(signals: StopSignals): Boolean {
+    private suspend fun awaitNameServers(signals: StopSignals, limit: Duration?): Boolean {
+        val waiting = TimeSource.Monotonic.markNow()
         for (server in tree.nameServers) {
             val failure = unreachable(server) ?: continue
             if (requireNameServers) fail("name server ${server.address}: ${failure.reason}", failure)
             val lost = TimeSource.Monotonic.markNow()
             echo("${now()} name server ${server.address} unreachable (${failure.reason}); trying again every $RETRY")
             while (unreachable(server) != null) {
-                if (signals.await(RETRY) != null) return false
+                val left = limit?.minus(waiting.elapsedNow())
+                if (left != null && !left.isPositive()) return false
+                if (signals.await(left?.coerceAtMost(RETRY) ?: RETRY) != null) return false
             }
             echo("${now()} name server ${server.address} reached after ${lost.elapsedNow().inWholeMilliseconds / 1000.0} s")
         }

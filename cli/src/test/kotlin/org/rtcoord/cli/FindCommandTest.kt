@@ -22,25 +22,28 @@ class FindCommandTest {
     private fun find(vararg arguments: String): List<String> = runRtcoord("find", host, *arguments).ok().lines().filter { it.isNotEmpty() }
 
     /**
-     * What rtfind finds below the host context, sorted, less the master's copies of its slaves' components: a master's
-     * `get_components` includes them, so rtfind finds each component a third time directly below the master; rtcoord
-     * lists a component below the manager that hosts it.
+     * What rtfind finds below the host context, sorted, each component once: rtfind finds a component at its naming
+     * path, below the slave that hosts it and again below the master (whose `get_components` includes its slaves');
+     * rtcoord names it at its naming path, and below its manager only when its naming path is not among the finds.
      */
-    private fun rtfind(vararg arguments: String): List<String> =
-        runPeer("rtfind", "$host/", *arguments).ok().output.lines().filter { it.isNotEmpty() && !it.startsWith("${localisation.path("manager.mgr")}/") || it.startsWith(slave) }.sorted()
+    private fun rtfind(vararg arguments: String): List<String> {
+        val found = runPeer("rtfind", "$host/", *arguments).ok().output.lines()
+            .filter { it.isNotEmpty() && !it.startsWith("${localisation.path("manager.mgr")}/") || it.startsWith(slave) }
+        return found.filterNot { it.startsWith("$slave/") && it.endsWith(".rtc") && localisation.path(it.substringAfterLast('/')) in found }.sorted()
+    }
 
     @Test
     fun `by kind`() {
         assertEquals(listOf(localisation.path("manager.mgr"), slave), find("--type", "manager"))
         assertEquals(listOf(host), find("--type", "context"))
         assertEquals(emptyList<String>(), find("--type", "zombie"))
-        assertEquals(8, find("--type", "component").size, "each component below its context and below its manager")
+        assertEquals(4, find("--type", "component").size, "each component once, at its naming path")
     }
 
     @Test
     fun `names and directories are found as rtfind finds them`() {
         // rtfind searches the whole path for the pattern: no need to write the `.rtc`.
-        assertEquals(listOf("$slave/laser0.rtc", localisation.path("laser0.rtc")), find("--name", "laser0"))
+        assertEquals(listOf(localisation.path("laser0.rtc")), find("--name", "laser0"))
         assertEquals(rtfind("-n", "laser0"), find("--name", "laser0").sorted())
         assertEquals(rtfind("-n", "local*0"), find("--name", "local*0").sorted())
         assertEquals(rtfind("-n", "slave"), find("--name", "slave").sorted())
@@ -51,10 +54,10 @@ class FindCommandTest {
 
     @Test
     fun `by name, state and port, combined`() {
-        assertEquals(listOf("$slave/laser_localise0.rtc", localisation.path("laser_localise0.rtc")), find("--name", "*local*", "--type", "component"))
-        assertEquals(listOf("$slave/laser_localise0.rtc", localisation.path("laser_localise0.rtc")), find("--port", "pose"))
+        assertEquals(listOf(localisation.path("laser_localise0.rtc")), find("--name", "*local*", "--type", "component"))
+        assertEquals(listOf(localisation.path("laser_localise0.rtc")), find("--port", "pose"))
         assertEquals(emptyList<String>(), find("--state", "error"))
-        assertEquals(listOf("$slave/gyro0.rtc", localisation.path("gyro0.rtc")), find("--state", "active", "--name", "gyro?.rtc"))
+        assertEquals(listOf(localisation.path("gyro0.rtc")), find("--state", "active", "--name", "gyro?.rtc"))
     }
 
     @Test
@@ -80,7 +83,7 @@ class FindCommandTest {
         localisation.system.component("gyro0").fail()
         await("gyro0 in ERROR") { localisation.system.component("gyro0").state == LifeCycleState.ERROR_STATE }
         try {
-            val inError = listOf("$slave/gyro0.rtc", localisation.path("gyro0.rtc"))
+            val inError = listOf(localisation.path("gyro0.rtc"))
             assertEquals(inError, find("--state", "error"))
             assertEquals(inError, find("--state", "ERROR"))
             assertEquals(inError, find("--state", "Error"))
