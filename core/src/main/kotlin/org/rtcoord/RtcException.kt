@@ -65,6 +65,10 @@ public class OperationFailedException(subject: String, public val operation: Str
     RtcException(subject, "$operation failed: $returnCode" + (detail?.let { " ($it)" } ?: ""))
 
 private fun Throwable.corbaName(): String = when (this) {
+    // JacORB's words for a connection that could not be made (it makes one try: OrbRecipe).
+    is org.omg.CORBA.TRANSIENT -> message?.let { NO_CONNECTION.find(it) }?.let { "cannot connect to ${it.groupValues[1]}" } ?: "TRANSIENT" + (message?.takeIf { it.isNotBlank() }?.let { ": $it" } ?: "")
     is org.omg.CORBA.SystemException -> javaClass.simpleName + (message?.takeIf { it.isNotBlank() }?.let { ": $it" } ?: "")
     else -> toString()
 }
+
+private val NO_CONNECTION = Regex("couldn't reconnect to (\\S+)")

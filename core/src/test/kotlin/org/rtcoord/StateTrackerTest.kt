@@ -19,77 +19,79 @@ class StateTrackerTest {
     @Test
     fun `hinted transitions confirmed by a read are all published`() {
         val tracker = StateTracker(ACTIVE)
-        listOf(INACTIVE, ACTIVE, INACTIVE).forEach { tracker.hint(it) }
+        listOf(INACTIVE, ACTIVE, INACTIVE).forEach { tracker.hint(it, 0) }
         assertEquals(listOf(ACTIVE to INACTIVE, INACTIVE to ACTIVE, ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1, grace, hintsExpected = true))
     }
 
     @Test
     fun `an abort announced as INACTIVE then ERROR is one transition`() {
         val tracker = StateTracker(ACTIVE)
-        tracker.hint(INACTIVE)
-        tracker.hint(ERROR)
+        tracker.hint(INACTIVE, 0)
+        tracker.hint(ERROR, 0)
         assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 1, grace, hintsExpected = true))
     }
 
     @Test
-    fun `a hinted deactivation waits for an abort's ERROR hint, until the hints before it are in or the limit, then is published as it was`() {
+    fun `a hinted deactivation waits for an abort's ERROR hint, until the hints before it are in or the limit after its hint`() {
         val tracker = StateTracker(ACTIVE, holdLimitMillis = 25)
-        tracker.hint(INACTIVE)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 100, grace, hintsExpected = true), "held")
+        tracker.hint(INACTIVE, 100)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true), "held")
         assertTrue(tracker.holding)
-        tracker.hint(ERROR)
-        tracker.hint(INACTIVE)
+        tracker.hint(ERROR, 105)
+        tracker.hint(INACTIVE, 106)
         assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 110, grace, hintsExpected = true), "an abort reset at once")
 
-        tracker.hint(ACTIVE)
+        tracker.hint(ACTIVE, 120)
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true), "other transitions are not held")
-        tracker.hint(INACTIVE)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 130, grace, hintsExpected = true))
-        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true), "a deactivation after the limit")
+        tracker.hint(INACTIVE, 130)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 131, grace, hintsExpected = true))
+        assertEquals(155L, tracker.heldUntil(), "the limit counts from the hint")
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true), "a deactivation at the limit")
         assertFalse(tracker.holding)
 
-        tracker.hint(ACTIVE)
+        tracker.hint(ACTIVE, 160)
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 160, grace, hintsExpected = true))
-        tracker.hint(INACTIVE)
+        tracker.hint(INACTIVE, 161)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 161, grace, hintsExpected = true))
         tracker.flushed()
         assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 162, grace, hintsExpected = true), "a deactivation once the earlier hints are in")
         assertFalse(tracker.holding)
         tracker.flushed()
-        tracker.hint(ACTIVE)
+        tracker.hint(ACTIVE, 163)
         tracker.reconcile(ACTIVE, 163, grace, hintsExpected = true)
-        tracker.hint(INACTIVE)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 164, grace, hintsExpected = true), "a flush before the hold began does not end it")
+        tracker.hint(INACTIVE, 164)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 164, grace, hintsExpected = true), "a flush before the hint does not end its hold")
     }
 
     @Test
-    fun `a held deactivation ends once it has settled and the hints before it are in, whichever comes last`() {
-        val tracker = StateTracker(ACTIVE, holdLimitMillis = 500, settleMillis = 10)
+    fun `a held deactivation ends once it has settled, counted from its hint, and the hints before it are in, whichever comes last`() {
+        val tracker = StateTracker(ACTIVE, holdLimitMillis = 500, settleMillis = 3)
         assertNull(tracker.settlesIn(100), "nothing held")
-        tracker.hint(INACTIVE)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 100, grace, hintsExpected = true), "held")
-        assertEquals(10L, tracker.settlesIn(100))
+        assertTrue(tracker.deactivates(INACTIVE))
+        tracker.hint(INACTIVE, 100)
+        assertTrue(tracker.deactivationPending)
         tracker.flushed()
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 105, grace, hintsExpected = true), "the hints are in, but it has not settled")
-        tracker.hint(ERROR)
-        tracker.hint(INACTIVE)
-        assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 108, grace, hintsExpected = true), "an ERROR hint late behind the marker")
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true), "the hints are in, but it has not settled")
+        assertEquals(2L, tracker.settlesIn(101))
+        tracker.hint(ERROR, 102)
+        tracker.hint(INACTIVE, 102)
+        assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 102, grace, hintsExpected = true), "an ERROR hint late behind the marker")
+        assertFalse(tracker.deactivationPending)
 
-        tracker.hint(ACTIVE)
+        tracker.hint(ACTIVE, 120)
         tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true)
-        tracker.hint(INACTIVE)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 130, grace, hintsExpected = true))
-        assertEquals(0L, tracker.settlesIn(145))
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 145, grace, hintsExpected = true), "settled, but the hints before it are not known to be in")
+        tracker.hint(INACTIVE, 130)
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 134, grace, hintsExpected = true), "settled, but the hints before it are not known to be in")
+        assertEquals(0L, tracker.settlesIn(134))
         tracker.flushed()
-        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 146, grace, hintsExpected = true), "a deactivation")
-        assertNull(tracker.settlesIn(146))
+        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 135, grace, hintsExpected = true), "a deactivation")
+        assertNull(tracker.settlesIn(135))
     }
 
     @Test
     fun `hints lead a read that finds the state they left, not one that finds a change they did not announce`() {
         val tracker = StateTracker(ACTIVE)
-        tracker.hint(INACTIVE)
+        tracker.hint(INACTIVE, 0)
         // OpenRTM-aist shows the new state only once the transition's hints are sent: a read may come first.
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ACTIVE, 1, grace, hintsExpected = true))
         assertTrue(tracker.hintsLead)
@@ -105,7 +107,7 @@ class StateTrackerTest {
     @Test
     fun `a hint no read confirms is dropped after the grace period`() {
         val tracker = StateTracker(INACTIVE)
-        tracker.hint(ACTIVE)
+        tracker.hint(ACTIVE, 0)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10, grace, hintsExpected = true), "waits for later hints")
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10 + grace, grace, hintsExpected = true), "a spoofed ACTIVE leaves no phantom")
         assertEquals(INACTIVE, tracker.confirmed)
@@ -114,12 +116,12 @@ class StateTrackerTest {
     @Test
     fun `duplicates and impossible transitions are ignored, and the read wins`() {
         val tracker = StateTracker(INACTIVE)
-        tracker.hint(INACTIVE)
-        tracker.hint(ACTIVE)
-        tracker.hint(ACTIVE)
+        tracker.hint(INACTIVE, 0)
+        tracker.hint(ACTIVE, 0)
+        tracker.hint(ACTIVE, 0)
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 1, grace, hintsExpected = true))
         val erroneous = StateTracker(ERROR)
-        erroneous.hint(ACTIVE)
+        erroneous.hint(ACTIVE, 0)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), erroneous.reconcile(INACTIVE, 1, grace, hintsExpected = true), "waits for the hint of the change read")
         assertEquals(listOf(ERROR to INACTIVE), erroneous.reconcile(INACTIVE, 1 + grace, grace, hintsExpected = true), "ERROR to ACTIVE is impossible: the read decides")
     }
@@ -136,8 +138,8 @@ class StateTrackerTest {
         val tracker = StateTracker(ACTIVE)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 0, grace, hintsExpected = true))
         // The abort's hints arrive after the read: one transition, not ACTIVE to ERROR and then ERROR to INACTIVE to ERROR.
-        tracker.hint(INACTIVE)
-        tracker.hint(ERROR)
+        tracker.hint(INACTIVE, 0)
+        tracker.hint(ERROR, 0)
         assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 100, grace, hintsExpected = true))
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 200, grace, hintsExpected = true))
     }

@@ -9,6 +9,7 @@ import org.rtcoord.NameServerNode
 import org.rtcoord.TreeConfig
 import org.rtcoord.internal.data.DataTaps
 import org.rtcoord.internal.events.ListenerFailures
+import org.rtcoord.internal.events.MillisClock
 import org.rtcoord.internal.events.Watcher
 import org.rtcoord.internal.model.SystemModel
 import org.slf4j.LoggerFactory
@@ -32,6 +33,8 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
         SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
             ListenerFailures(config.listenerFailures),
     )
+    /** The monotonic clock of every component monitor. */
+    val clock = MillisClock()
     val components = ComponentRegistry(this)
     val model = SystemModel(nameServers)
     val watcher = Watcher(this)

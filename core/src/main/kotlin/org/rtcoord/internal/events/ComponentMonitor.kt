@@ -1,6 +1,7 @@
 package org.rtcoord.internal.events
 
 import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.async
 import kotlinx.coroutines.channels.Channel
@@ -8,39 +9,28 @@ import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
-import org.rtcoord.BecameZombie
-import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
-import org.rtcoord.ComponentSnapshot
-import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.PortTraffic
-import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
-import org.rtcoord.UnreachableException
 import org.rtcoord.WatchMethod
-import org.rtcoord.WatchMode
 import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
+import java.util.EnumMap
 import java.util.concurrent.CompletableFuture
-import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
-import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * Watches one component for every registration interested in it, with one pipeline whatever the
- * source: an observer hint, a poll tick or a liveness check only asks the monitor to read the component
- * again; events are the differences between consecutive reads, lifecycle states reconciled with the
- * hints per execution context ([ContextStates]). One coroutine does all of it, in order, so the
- * component's events come out in the order they happened; delivery to handlers is the sinks' job. What
- * has states of its own lives apart: whether it answers ([ComponentLiveness]), its observer
- * ([ObserverLink]), its timers ([MonitorTimers]) and how it is watched ([decideWatchMethod]).
- *
- * Over 300 lines: the order in which hints, reads and timers are taken is one piece of logic, kept whole.
+ * Watches one component for every registration interested in it: the shell around its [ComponentWatch],
+ * which decides everything. One coroutine takes what happened (hints, ticks, timers, markers, watchdog
+ * checks) in batches, in order, asks the machine what to read, makes the CORBA reads and publishes what
+ * the machine concludes; so the component's events come out in the order they happened, and delivery to
+ * handlers is the sinks' job. Its observer is [ObserverLink]'s, its tick and watchdog [MonitorTimers]',
+ * how it is watched [decideWatchMethod]'s.
  */
 internal class ComponentMonitor(
     private val core: TreeCore,
@@ -48,88 +38,33 @@ internal class ComponentMonitor(
     val node: ComponentNode,
     private val ended: (ComponentMonitor) -> Unit,
 ) {
-    private sealed interface Work
-    private class Received(val hint: Hint) : Work
-    private object Read : Work
-    /** A poll tick; [done] tells the tree's [PollSchedule] once it has been served. */
-    private class Tick(val done: () -> Unit) : Work
-    private object Liveness : Work
-    /** A poll read its [StateProbe] could not finish alone. */
-    private class Probed(val outcome: StateProbe.Outcome) : Work
-    /** Time to read the states again: the hints lead the last read. */
-    private object Recheck : Work
-    /** The grace period of the oldest disagreement between hints and reads is over: a read decides. */
-    private object GraceOver : Work
-    /** A held deactivation has settled: a read decides, once the hints sent before it are in too. */
-    private object Settled : Work
-    /** A [HintMarker]'s marker came back through the observer. */
-    private class Marked(val hint: Hint) : Work
-    /** Registrations changed; [done] completes once the monitor watches as they ask. */
-    private class Reconfigure(val done: CompletableDeferred<Unit>? = null) : Work
-
-    /** [item], sent to this monitor's work once a delay is over; one at a time, owned by the worker coroutine. */
-    private inner class DelayedWork(private val item: Work) {
-        /** Whether it was sent and has not [arrived] yet. */
-        var isPending = false
-            private set
-
-        /** Sends it in [after] milliseconds. */
-        fun send(after: Long) {
-            isPending = true
-            core.scope.launch { delay(after); work.trySend(item) }
-        }
-
-        /** The worker took it. */
-        fun arrived() {
-            isPending = false
-        }
-    }
+    /** What the coroutine takes: an input for the machine, with what must be told once it is served. */
+    private class Work(val input: WatchInput, val done: (() -> Unit)? = null, val ready: CompletableDeferred<Unit>? = null)
 
     private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
     private val subject = node.path.toString()
-    private val registrations = CopyOnWriteArrayList<MonitorRegistration>()
+    private val registrations = MonitorRegistrations()
     private val work = Channel<Work>(Channel.UNLIMITED)
 
     /** How the component is watched, once decided; set through [Watcher.announce]. */
     @Volatile var method: WatchMethod? = null
 
     // Owned by the worker coroutine.
-    private var last: ComponentSnapshot? = null
-    private val states = ContextStates(node, HOLD_LIMIT_MILLIS, SETTLE_MILLIS)
-    /** While a deactivation is held: when the hints sent before the read that confirmed it are in. */
-    private val marker = HintMarker(subject)
-    /** The wait of the latest [Recheck] while hints lead the reads; 0 once they no longer do. */
-    private var recheckDelay = 0L
-    /** The [Recheck] on its way: reads made meanwhile do not ask for another. */
-    private val recheck = DelayedWork(Recheck)
-    /** The [GraceOver] on its way. */
-    private val graceOver = DelayedWork(GraceOver)
-    /** The [Settled] on its way. */
-    private val settled = DelayedWork(Settled)
-    private val liveness = ComponentLiveness(now())
+    private val watch = ComponentWatch(node, now())
+    private val armed = EnumMap<ComponentWatch.Timer, Job>(ComponentWatch.Timer::class.java)
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
-    /** The traffic interval the observer was attached with. */
-    private var attachedTraffic: Duration? = null
-    /** Work that arrived during a read, other than the lifecycle hints taken at once: the next round's. */
+    /** Work that arrived during a read and was not taken with it: the next batch's. */
     private val carried = ArrayList<Work>()
-    /** Counts the reads this monitor reconciled (and failures): a probe sent before the latest one tells nothing new. */
-    private var epoch = 0L
     private val probe: StateProbe? = core.requests.takeIf { it.supports(node.component.ref) }?.let { requests ->
-        StateProbe(requests, node.component.ref, node.component::stamp, { timers.heard() }) { outcome -> if (!work.trySend(Probed(outcome)).isSuccess) outcome.done() }
-    }
-    private val member = object : PollSchedule.Member {
-        override fun tick(done: () -> Unit) {
-            if (!work.trySend(Tick(done)).isSuccess) done()
-        }
-
-        override fun probe(done: () -> Unit): Boolean = probe?.send(done) ?: false
-
-        override fun late() {
-            probe?.late()
+        StateProbe(requests, node.component.ref, node.component::stamp, { timers.heard() }) { outcome ->
+            val input = if (outcome is StateProbe.Outcome.Changed) WatchInput.Probed(outcome.states, outcome.epoch, outcome.stamp) else WatchInput.Unsettled
+            if (!work.trySend(Work(input, outcome.done)).isSuccess) outcome.done()
         }
     }
-    private val timers = MonitorTimers(core, member) { work.trySend(Liveness) }
+    private val timers = MonitorTimers(core, probe, core.clock, { done -> if (!work.trySend(Work(WatchInput.Ticked, done)).isSuccess) done() }) {
+        work.trySend(Work(overdue()))
+    }
 
     init {
         // On the dispatcher of remote calls, which its reads then make without changing threads.
@@ -140,14 +75,19 @@ internal class ComponentMonitor(
     suspend fun add(registration: MonitorRegistration) {
         registrations += registration
         val ready = CompletableDeferred<Unit>()
-        if (work.trySend(Reconfigure(ready)).isSuccess) ready.await()
+        if (work.trySend(Work(WatchInput.Reconfigured, ready = ready)).isSuccess) ready.await()
     }
 
     /** Removes [registration]; returns whether none is left (the caller then [stop]s the monitor). */
     fun remove(registration: MonitorRegistration): Boolean {
         registrations -= registration
-        work.trySend(Reconfigure())
+        work.trySend(Work(WatchInput.Reconfigured))
         return registrations.isEmpty()
+    }
+
+    /** Something this component depends on failed (its manager): a read tells at once whether it answers. */
+    fun suspect() {
+        work.trySend(Work(WatchInput.ReadWanted))
     }
 
     /** Stops watching: polling ends and the observer is detached, soon, by the monitor's coroutine. */
@@ -166,6 +106,9 @@ internal class ComponentMonitor(
         if (done.exceptionOrNull() is TimeoutException) log.warn("{}: observer not detached within {}", subject, timeout)
     }
 
+    /** Where the registrations' events go. */
+    fun sinks(): List<EventSink> = registrations.map { it.sink }
+
     private suspend fun run() {
         try {
             while (true) {
@@ -176,6 +119,7 @@ internal class ComponentMonitor(
             }
         } finally {
             withContext(NonCancellable) {
+                armed.values.forEach { it.cancel() }
                 timers.stop()
                 probe?.close()
                 link.detach()
@@ -186,98 +130,33 @@ internal class ComponentMonitor(
     }
 
     private suspend fun handle(batch: List<Work>) {
-        var read = false
-        val hintedStates = HashSet<Int>()
-        var probed: StateProbe.Outcome.Changed? = null
-        val reconfigurations = batch.filterIsInstance<Reconfigure>()
-        fun tick() {
-            if (registrations.all { it.statesOnly } && liveness.state == ComponentLiveness.State.ANSWERING) hintedStates += node.component.contexts.keys else read = true
-        }
-        for (item in batch) {
-            when (item) {
-                is Received -> read = take(item.hint, hintedStates) || read
-                Read -> read = true
-                Recheck -> {
-                    recheck.arrived()
-                    hintedStates += node.component.contexts.keys
-                }
-                GraceOver -> {
-                    graceOver.arrived()
-                    if (states.awaitingConfirmation) read = true
-                }
-                is Tick -> tick()
-                is Probed -> when (val outcome = item.outcome) {
-                    // Read as this monitor last knew it: the states it found are news.
-                    is StateProbe.Outcome.Changed -> if (outcome.epoch == epoch) probed = outcome else tick()
-                    is StateProbe.Outcome.Unsettled -> tick()
-                }
-                // The hints sent before the held read are in: a fresh read of the states decides, once settled.
-                is Marked -> if (marker.cameBack(item.hint)) {
-                    states.flushed()
-                    if (states.settlesIn(now()) == 0L) hintedStates += node.component.contexts.keys
-                }
-                Settled -> {
-                    settled.arrived()
-                    if (states.holding && !marker.isPending) hintedStates += node.component.contexts.keys
-                }
-                Liveness -> read = checkLiveness() || read
-                is Reconfigure -> Unit
-            }
-        }
+        watch.statesOnly = registrations.statesOnly
+        watch.observed = link.observer != null
+        val decision = watch.decide(batch.map { it.input }, now())
+        decision.marker?.let(link::sendMarker)
+        publish(decision.events)
         try {
-            when {
-                liveness.state == ComponentLiveness.State.FINALIZED -> return
-                reconfigurations.isNotEmpty() -> reconfigure()
-                read -> readAndPublish()
-                hintedStates.isNotEmpty() -> readStates(hintedStates)
-                probed != null -> takeStates(probed.states, probed.stamp)
+            when (val step = decision.step) {
+                WatchStep.Idle -> Unit
+                WatchStep.Reconfigure -> reconfigure()
+                WatchStep.ReadAll -> readAndPublish()
+                is WatchStep.ReadStates -> readStates(step.handles)
+                is WatchStep.TakeStates -> {
+                    node.component.publishStates(step.states, step.stamp)
+                    carryOut(watch.statesRead(step.states, now(), lateHints()))
+                }
             }
         } finally {
             // Before the ticks are done: the probe of the next one expects what this batch found.
-            expectProbes()
-            reconfigurations.forEach { it.done?.complete(Unit) }
-            batch.forEach { item ->
-                when (item) {
-                    is Tick -> item.done()
-                    is Probed -> item.outcome.done()
-                    else -> Unit
-                }
-            }
+            probe?.expect(watch.last?.takeIf { watch.settled }?.let { StateProbe.Expectation.of(it, node.component.contexts, watch.epoch) })
+            batch.forEach { it.ready?.complete(Unit); it.done?.invoke() }
         }
     }
 
-    /**
-     * Tells the probe what its reads should find, when a read finding that needs nothing of this monitor:
-     * every registration wants states alone, the component answers, and its hints and reads agree.
-     */
-    private fun expectProbes() {
-        val probe = probe ?: return
-        val settled = registrations.isNotEmpty() && registrations.all { it.statesOnly } &&
-            liveness.state == ComponentLiveness.State.ANSWERING && !states.awaitingConfirmation && !states.holding
-        probe.expect(last?.takeIf { settled }?.let { StateProbe.Expectation.of(it, node.component.contexts, epoch) })
-    }
-
-    /**
-     * Takes a hint in. A lifecycle hint adds its context's handle to [hintedStates] (reading that state
-     * is enough); returns whether anything else calls for reading the whole component.
-     */
-    private fun take(hint: Hint, hintedStates: MutableSet<Int>): Boolean {
-        liveness.hinted(now(), finalize = hint.isFinalize)
-        return when {
-            hint.isHeartbeat || hint.kind == HintKind.OTHER -> false
-            // The read this asks for finds the component gone, and it is finalized.
-            hint.isFinalize -> true
-            hint.kind == HintKind.RTC_STATUS -> states.hinted(hint)?.also { hintedStates += it } == null
-            else -> true
-        }
-    }
-
-    /** Reads only the states of the contexts [handles] and reconciles them with the hints. */
+    /** Reads only the states of the contexts [handles] and hands them to the machine. */
     private suspend fun readStates(handles: Set<Int>) {
-        val previous = last ?: return readAndPublish()
         val contexts = node.component.contexts
-        // Only a whole read brings a silent or unreachable component back, observer and all.
-        if (handles.any { it !in contexts } || liveness.state != ComponentLiveness.State.ANSWERING) return readAndPublish()
+        if (handles.any { it !in contexts }) return readAndPublish()
         suspend fun state(handle: Int) = LifeCycle.of(core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) })
         val stamp = node.component.stamp()
         val states = try {
@@ -285,99 +164,66 @@ internal class ComponentMonitor(
             handles.singleOrNull()?.let { mapOf(it to state(it)) }
                 ?: coroutineScope { handles.associateWith { async { state(it) } }.mapValues { it.value.await() } }
         } catch (e: RtcException) {
-            failed(e)
-            return
+            return carryOut(watch.failed(e, now(), expectedInterval()))
         }
-        takeStates(states, stamp)
-    }
-
-    /** Takes [states], just read by context handle by the read stamped [stamp], as the component's and publishes what changed. */
-    private fun takeStates(states: Map<Int, LifeCycle>, stamp: Long) {
-        val previous = last ?: return
-        liveness.answered(now())
-        // Onto the component's latest snapshot, not this monitor's: an operation may have published a newer one since.
         node.component.publishStates(states, stamp)
-        val snapshot = previous.copy(contexts = previous.contexts.map { context -> states[context.handle]?.let { context.copy(state = it) } ?: context })
-        last = snapshot
-        epoch++
-        publish(stateEvents(snapshot))
+        carryOut(watch.statesRead(states, now(), lateHints()))
     }
 
-    /** Reconciles each context's state in [snapshot] with its tracker; schedules a re-read where hints and reads disagree. */
-    private fun stateEvents(snapshot: ComponentSnapshot): List<RtcEvent> {
-        val late = takeLateStateHints()
-        val events = states.read(last, snapshot, now(), GRACE_MILLIS, hintsExpected = link.observer != null)
-        if (states.awaitingConfirmation) {
-            // A late hint may lead past what the read found: read again now rather than after the grace period.
-            if (late) carried += Read
-            decideAfterGrace()
-        }
-        recheckIfHintsLead()
-        when {
-            !states.holding -> marker.forget()
-            // A deactivation this read confirmed is held until the hints sent before the read are in.
-            !marker.isPending -> {
-                marker.send(link.observer)
-                core.scope.launch { delay(HOLD_LIMIT_MILLIS); work.trySend(Read) }
+    private suspend fun readAndPublish() {
+        val snapshot = try {
+            node.component.refresh(subject)
+            if (registrations.configuration && node.component.snapshot.value?.configuration == null) {
+                node.component.loadConfiguration(subject)
             }
+            node.component.snapshot.value!!
+        } catch (e: RtcException) {
+            return carryOut(watch.failed(e, now(), expectedInterval()))
         }
-        states.settlesIn(now())?.let { if (!settled.isPending) settled.send(after = it) }
-        return events
+        carryOut(watch.read(snapshot, now(), lateHints()))
     }
 
     /**
-     * Asks for the read that decides the oldest disagreement between hints and reads, due when its grace
-     * period is over. One is pending at a time: disagreements that began later end later, and the read that
-     * decides the oldest asks for the next.
+     * The hints that arrived while the component was being read, for the machine to take before it
+     * reconciles: they tell of changes made before it answered. Everything else waits for the next batch.
      */
-    private fun decideAfterGrace() {
-        val since = states.disagreedSince ?: return
-        if (!graceOver.isPending) graceOver.send(after = (since + GRACE_MILLIS - now()).coerceAtLeast(0))
-    }
-
-    /**
-     * Reads the states again soon while hints lead the read, at growing intervals up to the grace period:
-     * OpenRTM-aist sends a transition's hints before its new state shows (its state machine updates the
-     * state once the actions that send them are done), so a read made at once may find the old one.
-     */
-    private fun recheckIfHintsLead() {
-        if (!states.hintsLead) {
-            recheckDelay = 0
-            return
-        }
-        if (recheck.isPending) return
-        recheckDelay = if (recheckDelay == 0L) FIRST_RECHECK_MILLIS else minOf(recheckDelay * 2, GRACE_MILLIS)
-        recheck.send(after = recheckDelay)
-    }
-
-    /**
-     * Takes the lifecycle hints that arrived while the component was being read, before reconciling: they
-     * tell of changes made before it answered. An abort hints INACTIVE then ERROR, and when a reset follows
-     * at once, a read between the two finds INACTIVE, which the first hint alone would confirm as a
-     * deactivation. Returns whether there were any.
-     */
-    private fun takeLateStateHints(): Boolean {
-        var taken = false
+    private fun lateHints(): List<Hint> {
+        val hints = ArrayList<Hint>()
         while (true) {
-            val item = work.tryReceive().getOrNull() ?: return taken
-            val hint = (item as? Received)?.hint
-            if (hint != null && hint.kind == HintKind.RTC_STATUS && !hint.isFinalize && states.hinted(hint) != null) {
-                liveness.hinted(now())
-                taken = true
-            } else {
-                carried += item
-            }
+            val item = work.tryReceive().getOrNull() ?: return hints
+            val hint = (item.input as? WatchInput.Hinted)?.hint
+            if (hint != null && hint.kind == HintKind.RTC_STATUS) hints += hint else carried += item
         }
     }
 
-    /** Whether the component must be read: it is probed while unreachable, and read once it went silent, which is announced. */
-    private fun checkLiveness(): Boolean {
-        liveness.hinted(timers.heardAt)
-        if (liveness.state == ComponentLiveness.State.UNREACHABLE) return true
-        val limit = pushRegistration()?.options?.takeIf { link.observer != null }?.let { it.heartbeat * it.missedBeats }
-        val lost = liveness.checked(now(), limit?.inWholeMilliseconds) ?: return false
-        publish(listOf(HeartbeatLost(node, lost.silentMillis)))
-        return true
+    private suspend fun carryOut(outcome: WatchOutcome) {
+        carried += outcome.untaken.map { Work(WatchInput.Hinted(it)) }
+        if (outcome.readAgain) carried += Work(WatchInput.ReadWanted)
+        outcome.marker?.let(link::sendMarker)
+        for ((timer, after) in outcome.timers) {
+            armed[timer] = core.scope.launch { delay(after); work.trySend(Work(WatchInput.Fired(timer))) }
+        }
+        when {
+            outcome.finalized -> {
+                log.info("{}: finalized", subject)
+                timers.stop()
+                link.drop()
+            }
+            outcome.unreachable -> {
+                log.info("{}: {}; probing until it answers again", subject, (outcome.events.lastOrNull() as? org.rtcoord.BecameZombie)?.cause?.reason)
+                // Keep probing while unreachable, even when only the observer watched it.
+                if (timers.pollPeriod == null) timers.poll(registrations.push?.options?.heartbeat)
+                // Its manager may have died with it, and with every other component it hosted.
+                core.watcher.componentSilent(node, timers.pollPeriod ?: 1.seconds)
+            }
+            outcome.recovered -> {
+                log.info("{}: answers again", subject)
+                // The component may have dropped an observer it could not reach, or restarted without it.
+                link.detach()
+                if (registrations.push != null) work.trySend(Work(WatchInput.Reconfigured))
+            }
+        }
+        publish(outcome.events)
     }
 
     private suspend fun reconfigure() {
@@ -387,134 +233,70 @@ internal class ComponentMonitor(
             return
         }
         readAndPublish()
-        if (liveness.state == ComponentLiveness.State.FINALIZED) return
-        val push = pushRegistration()
+        if (watch.answers == ComponentLiveness.State.FINALIZED) return
+        val push = registrations.push
         // Asking for data hints (or no longer) takes an observer attached with the new interval.
-        if (link.observer != null && attachedTraffic != trafficInterval()) link.detach()
+        if (link.observer != null && link.traffic != registrations.trafficInterval()) link.detach()
         if (push != null && link.observer == null) {
-            attachment = if (liveness.state == ComponentLiveness.State.UNREACHABLE) {
+            attachment = if (watch.answers == ComponentLiveness.State.UNREACHABLE) {
                 Attachment.Failed("it does not answer")
             } else {
-                val traffic = trafficInterval()
-                link.attach(last?.properties?.get("sdo.service.consumer.available_services"), push.options.heartbeat, traffic, ::received).also {
+                val advertised = watch.last?.properties?.get("sdo.service.consumer.available_services")
+                link.attach(advertised, push.options.heartbeat, registrations.trafficInterval(), ::received).also {
                     if (it is Attachment.Attached) {
-                        liveness.hinted(now())
+                        watch.attached(now())
                         timers.heard()
-                        attachedTraffic = traffic
                     }
                 }
             }
             // A change between that read and the attachment sent its hint to nobody: read once more.
-            if (link.observer != null) readAndPublish()
+            if (link.observer != null) {
+                watch.observed = true
+                readAndPublish()
+            }
         }
         val method = decideWatchMethod(registrations.map { it.options }, attachment)
         timers.poll(method?.pollPeriod)
         if (method != null) {
             if (method != this.method) log.debug("{}: watched by {}", subject, method)
-            core.watcher.announce(this, method, registrations)
+            core.watcher.announce(this, method, registrations.toList())
         }
         timers.watch(push?.options?.heartbeat)
     }
 
     /**
-     * What the observer received. A heartbeat only says when (see [MonitorTimers]); data flowing changes
-     * nothing a read would show, and goes straight to the registrations that asked for [PortTraffic].
+     * What the observer received, on the ORB's thread. A heartbeat only says when (see [MonitorTimers]);
+     * data flowing changes nothing a read would show, and goes straight to the registrations that asked
+     * for [PortTraffic].
      */
     private fun received(hint: Hint) {
         val traffic = hint.traffic()
         when {
-            marker.isMarker(hint) -> work.trySend(Marked(hint))
+            hint.kind == HintKind.OTHER && hint.text.startsWith(ComponentWatch.MARKER_PREFIX) -> work.trySend(Work(WatchInput.MarkerBack(hint.text)))
             hint.isHeartbeat -> timers.heard()
             traffic != null -> {
                 timers.heard()
                 val event = PortTraffic(node, traffic.first, traffic.second)
                 core.model.publish(listOf(event)) { registrations.forEach { registration -> if (registration.traffic) registration.sink.offer(it) } }
             }
-            else -> work.trySend(Received(hint))
+            else -> work.trySend(Work(WatchInput.Hinted(hint)))
         }
     }
 
-    /** The shortest traffic interval a push registration that wants traffic asks for; an hour (next to none) when none does. */
-    private fun trafficInterval(): Duration =
-        registrations.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval } ?: NO_TRAFFIC
-
-    private fun pushRegistration(): MonitorRegistration? =
-        registrations.filter { it.options.mode != WatchMode.POLL }.minByOrNull { it.options.heartbeat }
-
-    private suspend fun readAndPublish() {
-        val snapshot = try {
-            node.component.refresh(subject)
-            if (registrations.any { it.configuration } && node.component.snapshot.value?.configuration == null) {
-                node.component.loadConfiguration(subject)
-            }
-            node.component.snapshot.value!!
-        } catch (e: RtcException) {
-            failed(e)
-            return
-        }
-        val events = mutableListOf<RtcEvent>()
-        if (liveness.answered(now()).isNotEmpty()) {
-            log.info("{}: answers again", subject)
-            events += Recovered(node)
-            // The component may have dropped an observer it could not reach, or restarted without it.
-            link.detach()
-            if (pushRegistration() != null) work.trySend(Reconfigure())
-        }
-        val previous = last
-        events += stateEvents(snapshot)
-        if (previous != null) events += differences(node, previous, snapshot)
-        last = snapshot
-        epoch++
-        publish(events)
+    /** The watchdog's check, on its timer's thread: what the machine needs to judge the silence. */
+    private fun overdue(): WatchInput.Overdue {
+        val options = registrations.push?.options?.takeIf { link.observer != null }
+        return WatchInput.Overdue(timers.heardAt, options?.heartbeat?.inWholeMilliseconds, options?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })
     }
 
-    private fun failed(e: RtcException) {
-        epoch++
-        val unreachable = e is UnreachableException
-        val changes = liveness.failed(now(), gone = unreachable && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable)
-        if (ComponentLiveness.Change.Finalized in changes) {
-            log.info("{}: finalized", subject)
-            timers.stop()
-            link.drop()
-            publish(listOf(ComponentFinalized(node)))
-            return
-        }
-        if (changes.isEmpty()) return
-        log.info("{}; probing until it answers again", e.message)
-        publish(changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, e) })
-        // Keep probing while unreachable, even when only the observer watched it.
-        if (timers.pollPeriod == null) timers.poll(pushRegistration()?.options?.heartbeat)
-        // Its manager may have died with it, and with every other component it hosted.
-        core.watcher.componentSilent(node, timers.pollPeriod ?: 1.seconds)
-    }
-
-    /** Where the registrations' events go. */
-    fun sinks(): List<EventSink> = registrations.map { it.sink }
+    /** How often the component should give a sign of life: its heartbeat when observed, else its poll period. */
+    private fun expectedInterval(): Long? =
+        (registrations.push?.options?.heartbeat?.takeIf { link.observer != null } ?: timers.pollPeriod)?.inWholeMilliseconds
 
     /** Publishes [events] through the tree's model, with the states they leave the component in. */
     private fun publish(events: List<RtcEvent>) {
-        core.model.publish(events, node.component, states.published) { event -> registrations.forEach { it.sink.offer(event) } }
+        core.model.publish(events, node.component, watch.published) { event -> registrations.forEach { it.sink.offer(event) } }
     }
 
-    private companion object {
-        /** How long hints and reads may disagree before a read decides: hints late under load still count. */
-        const val GRACE_MILLIS = 500L
-
-        /** The first wait before reading again when hints lead the read: their state shows a moment after them. */
-        const val FIRST_RECHECK_MILLIS = 1L
-
-        /** How long a hinted deactivation may wait for its [HintMarker]: as long as hints and reads may disagree. */
-        const val HOLD_LIMIT_MILLIS = GRACE_MILLIS
-
-        /**
-         * How long a hinted deactivation is held at least, for an abort's ERROR hint that its marker may
-         * overtake: a few of the scheduler's time slices on a busy machine.
-         */
-        const val SETTLE_MILLIS = 10L
-
-        /** The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default. */
-        val NO_TRAFFIC = 1.hours
-
-        fun now(): Long = MonitorTimers.now()
-    }
+    private fun now(): Long = core.clock.now()
 }

@@ -30,20 +30,32 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     /** How long after [now] the first held deactivation has settled (0 if it has); null when none is held. */
     fun settlesIn(now: Long): Long? = trackers.values.mapNotNull { it.settlesIn(now) }.minOrNull()
 
-    /** The hints sent before the latest read have all been taken: held deactivations end at the next read once settled. */
+    /** Whether a possible deactivation was hinted and is not published yet. */
+    val deactivationPending: Boolean get() = trackers.values.any { it.deactivationPending }
+
+    /** When the first held deactivation is published whatever else happens; null when none is held. */
+    fun heldUntil(): Long? = trackers.values.mapNotNull { it.heldUntil() }.minOrNull()
+
+    /** Whether the RTC_STATUS [hint] would begin a possible deactivation, which wants a marker. */
+    fun deactivates(hint: Hint): Boolean {
+        val (state, handle) = hint.lifeCycle() ?: return false
+        return trackers[handle]?.deactivates(state) == true
+    }
+
+    /** The hints sent before the latest marker have all been taken: possible deactivations end once settled. */
     fun flushed() {
         trackers.values.forEach(StateTracker::flushed)
     }
 
     /**
-     * Takes an RTC_STATUS [hint]; returns the handle of the context whose state is then worth reading,
-     * or null when the hint names no state or a context the component is not known to be in: only
-     * reading the whole component tells what, if anything, happened.
+     * Takes an RTC_STATUS [hint] that came at [now]; returns the handle of the context whose state is
+     * then worth reading, or null when the hint names no state or a context the component is not known to
+     * be in: only reading the whole component tells what, if anything, happened.
      */
-    fun hinted(hint: Hint): Int? {
+    fun hinted(hint: Hint, now: Long): Int? {
         val (state, handle) = hint.lifeCycle() ?: return null
         val tracker = trackers[handle] ?: return null
-        tracker.hint(state)
+        tracker.hint(state, now)
         return handle
     }
 

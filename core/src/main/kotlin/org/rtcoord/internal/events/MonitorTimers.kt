@@ -4,24 +4,42 @@ import org.rtcoord.internal.TreeCore
 import kotlin.time.Duration
 
 /**
- * The timers of one component's monitor: its [member]ship of the tree's poll schedule, and the watchdog
+ * The timers of one component's monitor: its membership of the tree's poll schedule, and the watchdog
  * of its observer's heartbeats, which only posts work to the monitor ([check], a liveness check). A sign
  * of life (a heartbeat, a poll read that found nothing new) only records when it came ([heard]), on the
  * ORB's thread, and wakes the monitor only once a beat is overdue.
  */
-internal class MonitorTimers(private val core: TreeCore, private val member: PollSchedule.Member, private val check: () -> Unit) {
+internal class MonitorTimers(
+    private val core: TreeCore,
+    private val probe: StateProbe?,
+    private val clock: MillisClock,
+    private val tick: (done: () -> Unit) -> Unit,
+    private val check: () -> Unit,
+) {
+    /** Its place in the poll schedule: a tick is sent as a [probe] when it can go without the monitor. */
+    private val member = object : PollSchedule.Member {
+        override fun tick(done: () -> Unit) = this@MonitorTimers.tick(done)
+
+        override fun probe(done: () -> Unit): Boolean = probe?.send(done) ?: false
+
+        override fun late() {
+            probe?.late()
+        }
+    }
+
     /** The period it is polled at, or null. */
     var pollPeriod: Duration? = null
         private set
 
     private var watchdog: Pair<Duration, () -> Unit>? = null
 
-    /** When the last sign of life came, in [now]'s milliseconds. */
-    @Volatile var heardAt: Long = now()
+    /** When the last sign of life came, in the [clock]'s milliseconds. */
+    @Volatile var heardAt: Long = clock.now()
         private set
 
+    /** A sign of life came just now. */
     fun heard() {
-        heardAt = now()
+        heardAt = clock.now()
     }
 
     /** Polls the component every [period], or no more when null. */
@@ -32,14 +50,17 @@ internal class MonitorTimers(private val core: TreeCore, private val member: Pol
         period?.let { core.watcher.poll(it, member) }
     }
 
-    /** Checks, every half [heartbeat], whether a beat is overdue; no more when null. */
+    /**
+     * Checks, every tenth of [heartbeat], whether a beat is overdue; no more when null. A check costs a
+     * comparison, and a process that died is found out within a tenth of a beat of its beat being overdue.
+     */
     fun watch(heartbeat: Duration?) {
         watchdog?.let { (period, overdue) -> core.watcher.watchdogs.remove(period, overdue) }
         watchdog = heartbeat?.let {
             val beat = it.inWholeMilliseconds
-            val overdue = { if (now() - heardAt >= beat) check() }
-            core.watcher.watchdogs.add(it / 2, overdue)
-            it / 2 to overdue
+            val overdue = { if (clock.now() - heardAt >= beat) check() }
+            core.watcher.watchdogs.add(it / CHECKS_PER_BEAT, overdue)
+            it / CHECKS_PER_BEAT to overdue
         }
     }
 
@@ -48,8 +69,7 @@ internal class MonitorTimers(private val core: TreeCore, private val member: Pol
         watch(null)
     }
 
-    companion object {
-        /** Milliseconds of the monotonic clock every monitor uses. */
-        fun now(): Long = System.nanoTime() / 1_000_000
+    private companion object {
+        const val CHECKS_PER_BEAT = 10
     }
 }

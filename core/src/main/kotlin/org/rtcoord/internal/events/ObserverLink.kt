@@ -26,6 +26,10 @@ internal class ObserverLink(
     var observer: ObserverHost.Observer? = null
         private set
 
+    /** The traffic interval the attached observer was asked for; null when none is attached. */
+    var traffic: Duration? = null
+        private set
+
     /**
      * Attaches an observer of a flavour listed in [advertised] (the component's
      * `sdo.service.consumer.available_services`; either flavour when it lists none) that passes its hints
@@ -63,6 +67,7 @@ internal class ObserverLink(
             }
             if (accepted) {
                 observer = candidate
+                this.traffic = traffic
                 return Attachment.Attached(flavour)
             }
             candidate.close()
@@ -74,6 +79,7 @@ internal class ObserverLink(
     suspend fun detach() {
         val attached = observer ?: return
         observer = null
+        traffic = null
         try {
             val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
             core.remote.call(subject, "remove_service_profile") { configuration.remove_service_profile(attached.profileId) }
@@ -84,9 +90,22 @@ internal class ObserverLink(
         }
     }
 
+    /**
+     * Sends [marker] through the attached observer (see [ObserverHost.Observer.sendMarker]); one that
+     * cannot be sent never comes back, and what waits for it waits for its limit.
+     */
+    fun sendMarker(marker: String) {
+        try {
+            observer?.sendMarker(marker)
+        } catch (e: Exception) {
+            log.debug("{}: marker not sent: {}", subject, e.toString())
+        }
+    }
+
     /** Forgets the observer without asking the component: it is gone, and the observer with it. */
     fun drop() {
         observer?.close()
         observer = null
+        traffic = null
     }
 }

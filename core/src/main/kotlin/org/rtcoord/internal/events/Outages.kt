@@ -32,6 +32,8 @@ internal class Outages<T : Node>(
     private val probe: suspend (T) -> Unit,
     private val lost: (T, RtcException) -> RtcEvent,
     private val back: (T, Long) -> RtcEvent,
+    /** Called once [node] is found lost, after its event. */
+    private val whenLost: (T) -> Unit = {},
 ) {
     private val log = LoggerFactory.getLogger(Outages::class.java)
 
@@ -50,6 +52,7 @@ internal class Outages<T : Node>(
             val event = lost(node, failure)
             log.info("{}: {}", node.path, failure.reason)
             publish(node, event)
+            whenLost(node)
             while (true) {
                 delay(period)
                 if (sinksOf(node).isEmpty()) return

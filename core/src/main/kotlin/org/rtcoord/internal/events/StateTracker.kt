@@ -12,13 +12,14 @@ import org.rtcoord.LifeCycle
  * read. So the published stream has no phantom transition, keeps every transition the hints reported and
  * the reads confirmed, and always ends in the real state.
  *
- * A hinted deactivation (ACTIVE to INACTIVE) that a read confirms is held for [settleMillis], and then
- * until every hint the component sent before that read has been taken ([flushed]), or [holdLimitMillis]
- * at most: an abort hints INACTIVE then ERROR, and when a reset follows at once, a read that overtook the
- * ERROR hint finds INACTIVE too. The ERROR hint arriving meanwhile turns the pair into the abort it was.
- * [flushed] alone cannot tell that every hint is in: the hints and the read's reply travel different
- * connections, and a connection whose reader thread is kept waiting by the scheduler (or by the network,
- * for a remote component) delivers late.
+ * A hinted deactivation (ACTIVE to INACTIVE) that a read confirms is held until [settleMillis] after its
+ * INACTIVE hint came and every hint the component sent before a marker sent then has been taken
+ * ([flushed]), or [holdLimitMillis] after the hint at most: an abort hints INACTIVE then ERROR, and when a
+ * reset follows at once, a read that overtook the ERROR hint finds INACTIVE too. The ERROR hint arriving
+ * meanwhile turns the pair into the abort it was. [flushed] alone cannot tell that every hint is in: the
+ * hints and the marker travel different connections, and a connection whose reader thread is kept
+ * waiting by the scheduler delivers late; the ERROR hint leaves the component right after the INACTIVE
+ * one, on the same connection, so the settling time is how much later the ORB may take it.
  */
 internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Long = 0, private val settleMillis: Long = 0) {
     /** The last published state. */
@@ -31,6 +32,8 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
     var disagreedSince: Long? = null
         private set
 
+    /** When the INACTIVE hint of a possible deactivation came; null when none is pending. */
+    private var deactivationHintedAt: Long? = null
     private var heldSince: Long? = null
     private var flushed = false
 
@@ -40,21 +43,34 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
     /** Whether hints lead to a state the last read did not find yet. */
     val hintsLead: Boolean get() = hinted.isNotEmpty() && disagreedSince != null
 
+    /** Whether a possible deactivation was hinted and is not published yet. */
+    val deactivationPending: Boolean get() = deactivationHintedAt != null
+
     /** Whether a hinted deactivation is held, until it settled and [flushed], or the hold limit. */
     val holding: Boolean get() = heldSince != null
 
     /** How long after [now] the held deactivation has settled (0 if it has); null when none is held. */
     fun settlesIn(now: Long): Long? = heldSince?.let { (it + settleMillis - now).coerceAtLeast(0) }
 
-    /** Every hint sent before the read that began the hold has been taken: the first reconciliation once it settled ends it. */
+    /** When the held deactivation is published whatever else happens; null when none is held. */
+    fun heldUntil(): Long? = heldSince?.let { it + holdLimitMillis }
+
+    /** Every hint sent before the latest possible deactivation's marker has been taken: once settled, it need not wait. */
     fun flushed() {
-        if (heldSince != null) flushed = true
+        if (deactivationHintedAt != null) flushed = true
     }
 
-    /** Takes a hinted state; duplicates and impossible transitions are ignored (the next read decides). */
-    fun hint(state: LifeCycle) {
+    /** Whether hinting [state] would begin a possible deactivation, which wants a marker. */
+    fun deactivates(state: LifeCycle): Boolean = state == LifeCycle.INACTIVE && (hinted.lastOrNull() ?: confirmed) == LifeCycle.ACTIVE
+
+    /** Takes a state hinted at [now]; duplicates and impossible transitions are ignored (the next read decides). */
+    fun hint(state: LifeCycle, now: Long) {
         val last = hinted.lastOrNull() ?: confirmed
         if (state == last || !possible(last, state)) return
+        if (deactivates(state)) {
+            deactivationHintedAt = now
+            flushed = false
+        }
         hinted += state
     }
 
@@ -72,11 +88,12 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
         val hintedPath = hinted.lastOrNull() == real
         val path = if (hintedPath) listOf(confirmed) + hinted else listOf(confirmed, real)
         if (hintedPath && hintsExpected && path.takeLast(2) == listOf(LifeCycle.ACTIVE, LifeCycle.INACTIVE)) {
-            val since = heldSince ?: now.also { heldSince = it }
+            val since = heldSince ?: (deactivationHintedAt ?: now).also { heldSince = it }
             val settled = flushed && now - since >= settleMillis
             if (!settled && now - since < holdLimitMillis) return emptyList()
         }
         heldSince = null
+        deactivationHintedAt = null
         flushed = false
         hinted.clear()
         disagreedSince = null

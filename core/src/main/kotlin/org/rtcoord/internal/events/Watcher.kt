@@ -58,6 +58,7 @@ internal class Watcher(private val core: TreeCore) {
         core, { manager -> sinksOf(manager) + reporters }, probe = { it.profile() },
         lost = { manager, cause -> ManagerDied(manager, manager.listed.value.orEmpty().filterIsInstance<ComponentNode>(), cause) },
         back = { manager, _ -> ManagerReturned(manager) },
+        whenLost = ::managerLost,
     )
     private val nameServers = Outages<NameServerNode>(
         core, { server -> sinksOf(server) + reporters }, probe = { it.relist() }, lost = ::NameServerLost, back = ::NameServerReturned,
@@ -207,6 +208,12 @@ internal class Watcher(private val core: TreeCore) {
                 schedule.stop()
             }
         }
+    }
+
+    /** [manager] died: each component it hosted is read at once, rather than at its next beat or tick, and found gone with it. */
+    private fun managerLost(manager: ManagerNode) {
+        val hosted = manager.listed.value.orEmpty().filterIsInstance<ComponentNode>().map { it.component }.toSet()
+        synchronized(components) { components.filterKeys { it in hosted }.values.toList() }.forEach { it.suspect() }
     }
 
     /** [node] stopped answering: the managers that list it are asked whether they still answer, every [period] once dead. */

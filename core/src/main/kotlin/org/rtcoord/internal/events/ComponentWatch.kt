@@ -1,0 +1,269 @@
+package org.rtcoord.internal.events
+
+import org.rtcoord.BecameZombie
+import org.rtcoord.ComponentFinalized
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.HeartbeatLost
+import org.rtcoord.LifeCycle
+import org.rtcoord.Recovered
+import org.rtcoord.RtcEvent
+import org.rtcoord.RtcException
+import org.rtcoord.UnreachableException
+
+/**
+ * What the tree believes of one watched component and when it says so: a pure state machine with no
+ * clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks, timers,
+ * markers, watchdog checks; then [read], [statesRead] or [failed] with what the read it asked for found),
+ * each with the time `now` in milliseconds of one monotonic clock, and carries out what it returns: the
+ * read to make ([WatchStep]), the events to publish, the [Timer]s to arm, the marker to send ([WatchOutcome]).
+ *
+ * Its lifecycle states, per execution context, are reconciled by [ContextStates]; whether it answers by
+ * [ComponentLiveness]. The phases of the reconciliation, each context's and so the component's:
+ *
+ * | phase | hints and reads | leaves when | to |
+ * |---|---|---|---|
+ * | AGREED | the last read found where the hints lead | a lifecycle hint: its context's state is read | LEADING, HELD or AGREED |
+ * | LEADING | hints lead to a state the last read did not find (OpenRTM-aist hints before the state shows) | [Timer.RECHECK] after 1, 2, 4... ms up to the grace period: read again | AGREED, HELD, DISAGREEING |
+ * | DISAGREEING | a read found what no hint announced, or the hints lead elsewhere | [Timer.GRACE], the grace period after the first read that disagreed: a read decides | AGREED |
+ * | HELD | a read confirmed a hinted deactivation, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in | the ERROR hint: a read confirms the abort; the deactivation has [Timer.SETTLED] and the marker sent when its hint came is back: a read publishes it; [Timer.HOLD_LIMIT]: a read decides | AGREED |
+ *
+ * A hold is counted from the INACTIVE hint, not from the read: an abort's ERROR hint leaves the component
+ * right after its INACTIVE hint, on the same connection, so the settling time is how late the ORB may take
+ * the one after the other. The marker goes out when the hint comes, beside the read rather than after it.
+ *
+ * One timer of each kind is pending at a time; a timer that fires is reported by [WatchInput.Fired].
+ */
+internal class ComponentWatch(private val node: ComponentNode, now: Long, private val timing: Timing = Timing()) {
+    /** The machine's durations, in milliseconds. */
+    class Timing(
+        /** How long hints and reads may disagree before a read decides: hints late under load still count. */
+        val graceMillis: Long = 500,
+        /** The first wait before reading again while hints lead the read: their state shows a moment after them. */
+        val firstRecheckMillis: Long = 1,
+        /** How long a hinted deactivation may be held at most, waiting for its marker. */
+        val holdLimitMillis: Long = 500,
+        /** How long after its INACTIVE hint a deactivation is held at least, for an abort's ERROR hint to be taken. */
+        val settleMillis: Long = 2,
+    )
+
+    /** The timers the monitor arms for the machine. */
+    enum class Timer { RECHECK, GRACE, SETTLED, HOLD_LIMIT }
+
+    private val states = ContextStates(node, timing.holdLimitMillis, timing.settleMillis)
+    private val liveness = ComponentLiveness(now)
+    private val pending = HashSet<Timer>()
+    private var markers = 0L
+
+    /** The marker on its way while a deactivation may be held; null when none is. */
+    var marker: String? = null
+        private set
+
+    /** The last read, with the states the machine confirmed; null before the first. */
+    var last: ComponentSnapshot? = null
+        private set
+
+    /** Counts the reads reconciled (and failures): a probe expecting an older one tells nothing new. */
+    var epoch: Long = 0
+        private set
+
+    /** Whether an observer announces the component's changes, so that its hints are awaited. */
+    var observed: Boolean = false
+
+    /** Whether every registration wants states alone, so that a tick reads states only. */
+    var statesOnly: Boolean = false
+
+    /** Where the component stands: answering, silent, unreachable or finalized. */
+    val answers: ComponentLiveness.State get() = liveness.state
+
+    /** The states as the published events tell them, by context handle. */
+    val published: Map<Int, LifeCycle> get() = states.published
+
+    /** Whether what the last read found is what a poll probe should expect: hints and reads agree, nothing held. */
+    val settled: Boolean
+        get() = statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && !states.awaitingConfirmation && !states.holding
+
+    /** Takes a batch of [inputs] at [now]; says what to read. */
+    fun decide(inputs: List<WatchInput>, now: Long): WatchDecision {
+        var readAll = false
+        var reconfigure = false
+        val handles = HashSet<Int>()
+        var probed: WatchInput.Probed? = null
+        var deactivating = false
+        val events = ArrayList<RtcEvent>()
+        val every = last?.contexts?.map { it.handle }.orEmpty()
+        fun tick() {
+            if (statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && every.isNotEmpty()) handles += every else readAll = true
+        }
+        for (input in inputs) {
+            when (input) {
+                is WatchInput.Hinted -> {
+                    deactivating = deactivating || states.deactivates(input.hint)
+                    readAll = take(input.hint, now, handles) || readAll
+                }
+                WatchInput.ReadWanted -> readAll = true
+                WatchInput.Ticked, WatchInput.Unsettled -> tick()
+                is WatchInput.Probed -> if (input.epoch == epoch) probed = input else tick()
+                is WatchInput.Fired -> {
+                    pending -= input.timer
+                    when (input.timer) {
+                        Timer.RECHECK -> handles += every
+                        Timer.GRACE -> if (states.awaitingConfirmation) readAll = true
+                        Timer.SETTLED -> if (states.holding && marker == null) handles += every
+                        Timer.HOLD_LIMIT -> if (states.holding) readAll = true
+                    }
+                }
+                is WatchInput.MarkerBack -> if (input.marker == marker) {
+                    marker = null
+                    states.flushed()
+                    if (states.settlesIn(now) == 0L) handles += every
+                }
+                is WatchInput.Overdue -> readAll = overdue(input, now, events) || readAll
+                WatchInput.Reconfigured -> reconfigure = true
+            }
+        }
+        val step = when {
+            liveness.state == ComponentLiveness.State.FINALIZED -> WatchStep.Idle
+            reconfigure -> WatchStep.Reconfigure
+            readAll -> WatchStep.ReadAll
+            handles.isNotEmpty() -> if (last == null || liveness.state != ComponentLiveness.State.ANSWERING) WatchStep.ReadAll else WatchStep.ReadStates(handles)
+            else -> probed?.let { WatchStep.TakeStates(it.states, it.stamp) } ?: WatchStep.Idle
+        }
+        return WatchDecision(step, events, if (deactivating) newMarker() else null)
+    }
+
+    /** The observer was attached at [now]: its silence counts from then. */
+    fun attached(now: Long) {
+        liveness.hinted(now)
+    }
+
+    /** A whole read found [snapshot] at [now]; [late] are the hints that came meanwhile. */
+    fun read(snapshot: ComponentSnapshot, now: Long, late: List<Hint>): WatchOutcome {
+        val events = ArrayList<RtcEvent>()
+        val recovered = liveness.answered(now).isNotEmpty()
+        if (recovered) {
+            events += Recovered(node)
+            // Its observer is attached anew: until then no hint announces what this read finds.
+            observed = false
+        }
+        val previous = last
+        val reconciled = reconcile(previous, snapshot, now, late)
+        events += reconciled.events
+        if (previous != null) events += differences(node, previous, snapshot)
+        last = snapshot
+        epoch++
+        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, recovered = recovered, marker = reconciled.marker)
+    }
+
+    /** A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile. */
+    fun statesRead(found: Map<Int, LifeCycle>, now: Long, late: List<Hint>): WatchOutcome {
+        val previous = last ?: return WatchOutcome(untaken = late)
+        liveness.answered(now)
+        val snapshot = previous.copy(contexts = previous.contexts.map { context -> found[context.handle]?.let { context.copy(state = it) } ?: context })
+        last = snapshot
+        epoch++
+        return reconcile(snapshot, snapshot, now, late)
+    }
+
+    /** A read failed at [now] with [cause]; [beatMillis] is the interval it was expected to speak at, below which its silence is no news. */
+    fun failed(cause: RtcException, now: Long, beatMillis: Long?): WatchOutcome {
+        epoch++
+        val unreachable = cause is UnreachableException
+        val changes = liveness.failed(now, gone = unreachable && cause.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable, beatMillis)
+        return when {
+            ComponentLiveness.Change.Finalized in changes -> WatchOutcome(listOf(ComponentFinalized(node)), finalized = true)
+            changes.isEmpty() -> WatchOutcome()
+            else -> WatchOutcome(
+                changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, cause) },
+                unreachable = true,
+            )
+        }
+    }
+
+    /**
+     * Takes a hint in. A lifecycle hint adds its context's handle to [handles] (reading that state is
+     * enough) and, when it may begin a deactivation, sends the marker that may end its hold; returns
+     * whether anything else calls for reading the whole component.
+     */
+    private fun take(hint: Hint, now: Long, handles: MutableSet<Int>): Boolean {
+        liveness.hinted(now, finalize = hint.isFinalize)
+        return when {
+            hint.isHeartbeat || hint.kind == HintKind.OTHER -> false
+            // The read this asks for finds the component gone, and it is finalized.
+            hint.isFinalize -> true
+            hint.kind == HintKind.RTC_STATUS -> states.hinted(hint, now)?.also { handles += it } == null
+            else -> true
+        }
+    }
+
+    /** The watchdog's check: a read probes a component whose beat is overdue, and one silent past the limit is lost. */
+    private fun overdue(input: WatchInput.Overdue, now: Long, events: MutableList<RtcEvent>): Boolean {
+        liveness.hinted(input.heardAt)
+        if (liveness.state != ComponentLiveness.State.ANSWERING) return liveness.state == ComponentLiveness.State.UNREACHABLE
+        liveness.checked(now, input.limitMillis)?.let { events += HeartbeatLost(node, it.silentMillis) }
+        // A process that died refuses the read at once: that is known a beat after its last, not at the limit.
+        return input.beatMillis != null && now - liveness.lastHeard >= input.beatMillis + input.beatMillis / OVERDUE_FRACTION
+    }
+
+    /** Reconciles each context's state in [snapshot] with the hints, [late] ones first; arms what the phases call for. */
+    private fun reconcile(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, late: List<Hint>): WatchOutcome {
+        val untaken = ArrayList<Hint>()
+        var taken = false
+        var deactivating = false
+        for (hint in late) {
+            deactivating = deactivating || states.deactivates(hint)
+            // Hints that came during the read tell of changes made before it answered: an abort's ERROR, say.
+            if (hint.kind == HintKind.RTC_STATUS && !hint.isFinalize && states.hinted(hint, now) != null) {
+                liveness.hinted(now)
+                taken = true
+            } else {
+                untaken += hint
+            }
+        }
+        val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = observed)
+        val timers = ArrayList<Pair<Timer, Long>>()
+        fun arm(timer: Timer, after: Long) {
+            if (pending.add(timer)) timers += timer to after.coerceAtLeast(0)
+        }
+        // A late hint may lead past what the read found: read again now rather than after the grace period.
+        val readAgain = taken && states.awaitingConfirmation
+        // One grace read at a time: disagreements that began later end later, and the read deciding the oldest arms the next.
+        states.disagreedSince?.let { arm(Timer.GRACE, it + timing.graceMillis - now) }
+        recheckIfHintsLead(::arm)
+        // A marker sent for a deactivation that is over, or never was, is no longer awaited.
+        if (!states.deactivationPending) marker = null
+        if (states.holding) {
+            states.heldUntil()?.let { arm(Timer.HOLD_LIMIT, it - now) }
+            states.settlesIn(now)?.let { arm(Timer.SETTLED, it) }
+        }
+        return WatchOutcome(events, timers, untaken, readAgain, marker = if (deactivating) newMarker() else null)
+    }
+
+    private var recheckDelay = 0L
+
+    /**
+     * Reads the states again soon while hints lead the read, at growing intervals up to the grace period:
+     * OpenRTM-aist sends a transition's hints before its new state shows (its state machine updates the
+     * state once the actions that send them are done), so a read made at once may find the old one.
+     */
+    private fun recheckIfHintsLead(arm: (Timer, Long) -> Unit) {
+        if (!states.hintsLead) {
+            recheckDelay = 0
+            return
+        }
+        if (Timer.RECHECK in pending) return
+        recheckDelay = if (recheckDelay == 0L) timing.firstRecheckMillis else minOf(recheckDelay * 2, timing.graceMillis)
+        arm(Timer.RECHECK, recheckDelay)
+    }
+
+    /** A new marker, to be sent through the observer now: it comes back once the hints taken before it are. */
+    private fun newMarker(): String = "$MARKER_PREFIX${++markers}".also { marker = it }
+
+    companion object {
+        /** What every marker begins with: a hint that does is a marker, and nothing else. */
+        const val MARKER_PREFIX: String = "rtcoord-marker-"
+
+        /** A beat is overdue a tenth of it late: heartbeats come on time to within a few milliseconds. */
+        private const val OVERDUE_FRACTION = 10
+    }
+}

@@ -1,0 +1,44 @@
+package org.rtcoord.internal.events
+
+import org.rtcoord.LifeCycle
+import org.rtcoord.RtcEvent
+
+/** What a [ComponentWatch] asks its monitor to read, or do, after a batch of [WatchInput]s. */
+internal sealed interface WatchStep {
+    /** Nothing to read. */
+    object Idle : WatchStep
+
+    /** Carry out the registrations (whose read is a whole read). */
+    object Reconfigure : WatchStep
+
+    /** Read the whole component. */
+    object ReadAll : WatchStep
+
+    /** Read the states of the contexts [handles]. */
+    class ReadStates(val handles: Set<Int>) : WatchStep
+
+    /** Take [states], which a probe read in read [stamp]. */
+    class TakeStates(val states: Map<Int, LifeCycle>, val stamp: Long) : WatchStep
+}
+
+/** A batch's step, the events it already decided, and the marker to send through the observer, if any. */
+internal class WatchDecision(val step: WatchStep, val events: List<RtcEvent>, val marker: String?)
+
+/** What a read (or its failure) leads to. */
+internal class WatchOutcome(
+    val events: List<RtcEvent> = emptyList(),
+    /** Timers to arm, with their delays. */
+    val timers: List<Pair<ComponentWatch.Timer, Long>> = emptyList(),
+    /** Hints the reconciliation did not take: the next batch's. */
+    val untaken: List<Hint> = emptyList(),
+    /** Read again at once: a hint that came during the read leads past what it found. */
+    val readAgain: Boolean = false,
+    /** It answers again after being lost: its observer is to be attached anew. */
+    val recovered: Boolean = false,
+    /** It became unreachable: it is to be probed until it answers, and its managers asked. */
+    val unreachable: Boolean = false,
+    /** It is gone for good: watching it ends. */
+    val finalized: Boolean = false,
+    /** The marker to send through the observer, if any. */
+    val marker: String? = null,
+)

@@ -1,0 +1,256 @@
+package org.rtcoord.internal.events
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterAll
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertInstanceOf
+import org.junit.jupiter.api.Assertions.assertNotNull
+import org.junit.jupiter.api.Assertions.assertNull
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.TestInstance
+import org.rtcoord.BecameZombie
+import org.rtcoord.ComponentFinalized
+import org.rtcoord.ComponentNode
+import org.rtcoord.ComponentSnapshot
+import org.rtcoord.HeartbeatLost
+import org.rtcoord.LifeCycle
+import org.rtcoord.LifeCycle.ACTIVE
+import org.rtcoord.LifeCycle.ERROR
+import org.rtcoord.LifeCycle.INACTIVE
+import org.rtcoord.LocalisationSystem
+import org.rtcoord.RtcEvent
+import org.rtcoord.StateChanged
+import org.rtcoord.UnreachableException
+import org.rtcoord.internal.events.ComponentWatch.Timer
+
+/**
+ * The component monitor's machine, step by step on a clock the test turns (milliseconds): the timing
+ * bugs fixed in the monitor, replayed as the exact sequences that showed them, and the orderings
+ * OpenRTM-aist produces (see the fixtures' fidelity table). A real component gives the events their
+ * source and the reads their shape; nothing here waits.
+ */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class ComponentWatchTest {
+    private val localisation = LocalisationSystem()
+    private val node: ComponentNode = runBlocking { localisation.tree.component(localisation.path("laser0.rtc")) }
+    private val base: ComponentSnapshot = runBlocking { node.snapshot() }
+
+    @AfterAll
+    fun stop() = localisation.close()
+
+    private fun found(state: LifeCycle) = base.copy(contexts = base.contexts.take(1).map { it.copy(handle = 0, state = state) })
+
+    private fun lifecycle(text: String) = WatchInput.Hinted(Hint(HintKind.RTC_STATUS, text))
+
+    private fun changed(vararg pairs: Pair<LifeCycle, LifeCycle>): List<RtcEvent> = pairs.map { (from, to) -> StateChanged(node, 0, from, to) }
+
+    private fun stateEvents(events: List<RtcEvent>) = events.filterIsInstance<StateChanged>()
+
+    /** A machine that read the component [state] at 0 ms, observed (hints expected), watched for states. */
+    private fun watching(state: LifeCycle, observed: Boolean = true): ComponentWatch = ComponentWatch(node, 0).apply {
+        this.observed = observed
+        statesOnly = true
+        read(found(state), 0, emptyList())
+    }
+
+    @Test
+    fun `an activation is published at the read its hint asks for`() {
+        val watch = watching(INACTIVE)
+        val decision = watch.decide(listOf(lifecycle("ACTIVE:0")), 10)
+        assertEquals(setOf(0), (decision.step as WatchStep.ReadStates).handles)
+        assertNull(decision.marker, "only a possible deactivation wants a marker")
+        assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 11, emptyList()).events))
+    }
+
+    @Test
+    fun `while hints lead the reads, the state is read again after 1, 2, 4 ms, one recheck pending at a time`() {
+        // OpenRTM-aist hints from the transition's actions, before its state machine shows the new state.
+        val watch = watching(INACTIVE)
+        watch.decide(listOf(lifecycle("ACTIVE:0")), 0)
+        val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        assertEquals(emptyList<RtcEvent>(), first.events)
+        assertEquals(listOf(Timer.RECHECK to 1L, Timer.GRACE to 500L).toSet(), first.timers.toSet())
+        // A hint-driven read meanwhile arms no second recheck (4452470).
+        watch.decide(listOf(WatchInput.Hinted(Hint(HintKind.CONFIGURATION, "UPDATE_CONFIGSET:default"))), 1)
+        assertEquals(emptyList<Pair<Timer, Long>>(), watch.read(found(INACTIVE), 1, emptyList()).timers, "no second recheck, no second grace read")
+
+        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 2).step)
+        assertEquals(listOf(Timer.RECHECK to 2L), watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).timers)
+        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 4)
+        assertEquals(listOf(Timer.RECHECK to 4L), watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList()).timers)
+        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 8)
+        assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 8, emptyList()).events))
+    }
+
+    @Test
+    fun `a change no hint announced waits for one grace read, due 500 ms after the first read that disagreed`() {
+        // OpenRTM-aist announces a deactivation only when on_deactivated succeeds; it ends INACTIVE all the same.
+        val watch = watching(ACTIVE)
+        val first = watch.read(found(INACTIVE), 100, emptyList())
+        assertEquals(emptyList<RtcEvent>(), stateEvents(first.events))
+        assertEquals(listOf(Timer.GRACE to 500L), first.timers)
+        // Reads while they disagree do not pile up grace reads (3236033).
+        assertEquals(emptyList<Pair<Timer, Long>>(), watch.read(found(INACTIVE), 300, emptyList()).timers)
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.GRACE)), 600).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 600, emptyList()).events))
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.GRACE)), 1100).step, "a grace read when they agree reads nothing")
+    }
+
+    @Test
+    fun `an abort, INACTIVE then ERROR hinted, is one transition and never held`() {
+        val watch = watching(ACTIVE)
+        val decision = watch.decide(listOf(lifecycle("INACTIVE:0"), lifecycle("ERROR:0")), 0)
+        assertNotNull(decision.marker)
+        val outcome = watch.statesRead(mapOf(0 to ERROR), 1, emptyList())
+        assertEquals(changed(ACTIVE to ERROR), stateEvents(outcome.events))
+        assertEquals(emptyList<Pair<Timer, Long>>(), outcome.timers)
+    }
+
+    @Test
+    fun `an abort reset at once, whose hints came during the read, is published as an abort (2ae9b13)`() {
+        val watch = watching(ACTIVE)
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        val late = listOf(Hint(HintKind.RTC_STATUS, "ERROR:0"), Hint(HintKind.RTC_STATUS, "INACTIVE:0"))
+        assertEquals(changed(ACTIVE to ERROR, ERROR to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 1, late).events))
+    }
+
+    @Test
+    fun `an abort reset at once, whose ERROR hint comes after the read, is held and then published as an abort`() {
+        val watch = watching(ACTIVE)
+        val marker = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        assertEquals(emptyList<RtcEvent>(), held.events, "the read overtook the ERROR hint: held")
+        assertEquals(setOf(Timer.SETTLED to 1L, Timer.HOLD_LIMIT to 499L), held.timers.toSet())
+        val decision = watch.decide(listOf(lifecycle("ERROR:0"), lifecycle("INACTIVE:0"), WatchInput.MarkerBack(marker!!)), 2)
+        assertInstanceOf(WatchStep.ReadStates::class.java, decision.step)
+        assertEquals(changed(ACTIVE to ERROR, ERROR to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).events))
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 3).step, "the hold's timer finds nothing held")
+    }
+
+    @Test
+    fun `a deactivation is held only until it settled, counted from its hint, and its marker is back`() {
+        val watch = watching(ACTIVE)
+        val marker = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
+        assertTrue(watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList()).events.none { it is StateChanged })
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(marker)), 1).step, "back, but not settled yet")
+        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 2).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).events))
+    }
+
+    @Test
+    fun `a marker back before the read that confirms the deactivation lets it through at once`() {
+        val watch = watching(ACTIVE)
+        val marker = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(marker)), 1).step)
+        // The first read found ACTIVE still (the hint came before the state showed); the recheck finds it INACTIVE.
+        watch.statesRead(mapOf(0 to ACTIVE), 1, emptyList())
+        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 4)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList()).events))
+    }
+
+    @Test
+    fun `a marker coming back ends a hold that settled, even with an earlier hold's timer still pending (83b40df)`() {
+        val watch = watching(ACTIVE)
+        val first = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
+        watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        watch.decide(listOf(WatchInput.MarkerBack(first)), 1)
+        // The first hold's SETTLED timer is still pending when it ends by the hold limit's read.
+        watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT)), 2)
+        watch.read(found(INACTIVE), 3, emptyList())
+        watch.decide(listOf(lifecycle("ACTIVE:0")), 10)
+        watch.statesRead(mapOf(0 to ACTIVE), 10, emptyList())
+        val second = watch.decide(listOf(lifecycle("INACTIVE:0")), 20).marker!!
+        assertTrue(watch.statesRead(mapOf(0 to INACTIVE), 21, emptyList()).events.none { it is StateChanged })
+        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.MarkerBack(second)), 30).step, "settled and back: read at once")
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 30, emptyList()).events))
+    }
+
+    @Test
+    fun `an older marker does not end a later hold, and a lost marker holds until the limit`() {
+        val watch = watching(ACTIVE)
+        val first = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
+        watch.decide(listOf(lifecycle("ACTIVE:0")), 1)
+        watch.statesRead(mapOf(0 to ACTIVE), 1, emptyList())
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 2)
+        watch.statesRead(mapOf(0 to INACTIVE), 3, emptyList())
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(first), WatchInput.Fired(Timer.SETTLED)), 10).step, "the first marker tells nothing of the second hint")
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT)), 502).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 502, emptyList()).events))
+    }
+
+    @Test
+    fun `without an observer nothing is held and no hint is awaited`() {
+        val watch = watching(ACTIVE, observed = false)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 5, emptyList()).events))
+    }
+
+    @Test
+    fun `a failing on_activated is announced as ERROR alone, from INACTIVE`() {
+        val watch = watching(INACTIVE)
+        watch.decide(listOf(lifecycle("ERROR:0")), 0)
+        assertEquals(changed(INACTIVE to ERROR), stateEvents(watch.statesRead(mapOf(0 to ERROR), 1, emptyList()).events))
+    }
+
+    @Test
+    fun `a poll tick reads states only while they agree, and a probe that expected an older read counts as a tick`() {
+        val watch = watching(INACTIVE)
+        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Ticked), 100).step)
+        assertTrue(watch.settled)
+        val stale = WatchInput.Probed(mapOf(0 to ACTIVE), watch.epoch - 1, 7)
+        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(stale), 200).step)
+        val current = WatchInput.Probed(mapOf(0 to ACTIVE), watch.epoch, 8)
+        assertEquals(mapOf(0 to ACTIVE), (watch.decide(listOf(current), 300).step as WatchStep.TakeStates).states)
+        watch.statesOnly = false
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Ticked), 400).step)
+    }
+
+    @Test
+    fun `a beat overdue by a tenth is probed by a read, and silence past the limit is lost once`() {
+        val watch = watching(ACTIVE)
+        fun overdue(now: Long) = watch.decide(listOf(WatchInput.Overdue(heardAt = 0, beatMillis = 1000, limitMillis = 3000)), now)
+        assertEquals(WatchStep.Idle, overdue(1099).step, "a heartbeat a little late is no news")
+        assertEquals(WatchStep.ReadAll, overdue(1100).step)
+        // It answers: the observer alone is quiet. Reads are no heartbeats.
+        watch.read(found(ACTIVE), 1101, emptyList())
+        val lost = overdue(3200)
+        assertEquals(listOf(HeartbeatLost(node, 3200)), lost.events)
+        assertEquals(WatchStep.ReadAll, lost.step)
+        assertTrue(watch.read(found(ACTIVE), 3201, emptyList()).recovered, "answering again: its observer is attached anew")
+    }
+
+    @Test
+    fun `a refused call tells the silence only when a beat was missed, never a silence of a millisecond`() {
+        val refused = UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT("connection refused"))
+        val killed = watching(ACTIVE)
+        killed.decide(listOf(WatchInput.Overdue(heardAt = 0, beatMillis = 1000, limitMillis = 3000)), 1100)
+        val outcome = killed.failed(refused, 1101, beatMillis = 1000)
+        assertEquals(listOf(HeartbeatLost(node, 1101), BecameZombie(node, refused)), outcome.events)
+        assertTrue(outcome.unreachable)
+
+        val suspected = watching(ACTIVE)
+        suspected.decide(listOf(lifecycle("ACTIVE:0")), 500)
+        assertEquals(listOf(BecameZombie(node, refused)), suspected.failed(refused, 501, beatMillis = 1000).events)
+        assertEquals(emptyList<RtcEvent>(), suspected.failed(refused, 700, beatMillis = 1000).events, "probes that fail are no news")
+        assertEquals(WatchStep.ReadAll, suspected.decide(listOf(lifecycle("ACTIVE:0")), 800).step, "a hint does not bring it back: a whole read does")
+    }
+
+    @Test
+    fun `the read that brings it back publishes what it finds at once, as no hint announced it`() {
+        val watch = watching(ACTIVE)
+        watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT()), 100, beatMillis = 1000)
+        val back = watch.read(found(INACTIVE), 200, emptyList())
+        assertTrue(back.recovered)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(back.events))
+    }
+
+    @Test
+    fun `a component that announced FINALIZE and then cannot be reached is finalized`() {
+        val watch = watching(INACTIVE)
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(lifecycle("FINALIZE:0")), 10).step)
+        val outcome = watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.COMM_FAILURE()), 11, beatMillis = 1000)
+        assertEquals(listOf(ComponentFinalized(node)), outcome.events)
+        assertTrue(outcome.finalized)
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Ticked), 12).step, "nothing is read once it is gone")
+    }
+}
