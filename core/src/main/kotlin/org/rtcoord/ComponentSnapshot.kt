@@ -68,10 +68,10 @@ public data class ConnectorSnapshot(
 public data class ContextSnapshot(
     /** The component's handle for it: owned contexts 0.., participating ones from 1000. */
     val handle: Int,
-    val owned: Boolean,
+    @get:JvmName("isOwned") val owned: Boolean,
     val kind: String,
     val rate: Double,
-    val running: Boolean,
+    @get:JvmName("isRunning") val running: Boolean,
     /** The component's state in this context. */
     val state: LifeCycle,
     /** How many components take part in it. */

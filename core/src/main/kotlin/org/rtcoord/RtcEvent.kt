@@ -62,10 +62,10 @@ public data class ConfigurationSetRemoved(override val source: ComponentNode, va
 public data class ContextRateChanged(override val source: ComponentNode, val handle: Int, val old: Double, val new: Double) : RtcEvent()
 
 /** Execution context [handle] started ([running] true) or stopped. */
-public data class ContextRunningChanged(override val source: ComponentNode, val handle: Int, val running: Boolean) : RtcEvent()
+public data class ContextRunningChanged(override val source: ComponentNode, val handle: Int, @get:JvmName("isRunning") val running: Boolean) : RtcEvent()
 
 /** The component joined ([attached] true) or left execution context [handle]. */
-public data class ContextAttachmentChanged(override val source: ComponentNode, val handle: Int, val attached: Boolean) : RtcEvent()
+public data class ContextAttachmentChanged(override val source: ComponentNode, val handle: Int, @get:JvmName("isAttached") val attached: Boolean) : RtcEvent()
 
 /** Manager [source] created ([created] true) or deleted component [instanceName]. */
 public data class ManagerComponentChanged(override val source: ManagerNode, val instanceName: String, val created: Boolean) : RtcEvent()

@@ -14,8 +14,9 @@ public sealed class RtcException(
 ) : Exception("$subject: $reason", cause) {
     /**
      * Whether the object this failed on is taken for dead: unreachable or hung. A directory shows such
-     * a child as a [ZombieNode]; a tool reading one component can mark it dead the same way.
+     * a child as a [ZombieNode]; a tool reading one component can mark it dead the same way. Java: `isDead()`.
      */
+    @get:JvmName("isDead")
     public val meansDead: Boolean get() = this is UnreachableException || this is TimedOutException
 }
 

@@ -11,8 +11,9 @@ import kotlin.time.toKotlinDuration
  * @property nameServers name servers added at creation: `host`, `host:port` or `corbaloc:` addresses.
  * @property callTimeout the deadline of every remote call unless the call gives its own.
  * @property concurrency how many remote calls discovery keeps in flight at once.
- * @property orb an ORB owned by the host application; the tree then neither configures nor destroys it.
- *   By default the tree creates and owns a JacORB ORB.
+ * @property orb an `org.omg.CORBA.ORB` owned by the host application; the tree then neither configures nor
+ *   destroys it. By default the tree creates and owns a JacORB ORB. Typed `Any` so that the API names no
+ *   CORBA type: in the OSGi bundle, CORBA's packages are private, and the host's own would not be the same.
  * @property listenAddress the one address the tree's own ORB listens on for callbacks (observers), and the
  *   only one its object references carry. By default (null) the address this host uses to reach the first
  *   name server the tree has when it makes its first remote call: loopback for a name server on this
@@ -29,7 +30,7 @@ public class TreeConfig(
     @get:JvmSynthetic
     public val callTimeout: Duration = 3.seconds,
     public val concurrency: Int = 32,
-    public val orb: org.omg.CORBA.ORB? = null,
+    public val orb: Any? = null,
     public val listenAddress: String? = null,
     public val listenerFailures: ListenerFailureHandler = ListenerFailureHandler.LOG,
 ) {
@@ -42,6 +43,7 @@ public class TreeConfig(
     init {
         require(callTimeout.isPositive()) { "callTimeout must be positive, was $callTimeout" }
         require(concurrency > 0) { "concurrency must be positive, was $concurrency" }
+        require(orb == null || orb is org.omg.CORBA.ORB) { "orb: a ${orb!!.javaClass.name} is not an org.omg.CORBA.ORB" }
         val problem = listenAddress?.let(::listenAddressProblem)
         require(problem == null) { "listen address: $problem" }
     }
@@ -51,7 +53,7 @@ public class TreeConfig(
         private val nameServers = mutableListOf<String>()
         private var callTimeout: Duration = 3.seconds
         private var concurrency = 32
-        private var orb: org.omg.CORBA.ORB? = null
+        private var orb: Any? = null
         private var listenAddress: String? = null
         private var listenerFailures = ListenerFailureHandler.LOG
 
@@ -64,8 +66,8 @@ public class TreeConfig(
         /** Sets [TreeConfig.concurrency]. */
         public fun concurrency(calls: Int): Builder = apply { concurrency = calls }
 
-        /** Sets [TreeConfig.orb]: an ORB the host application owns. */
-        public fun orb(orb: org.omg.CORBA.ORB?): Builder = apply { this.orb = orb }
+        /** Sets [TreeConfig.orb]: an `org.omg.CORBA.ORB` the host application owns. */
+        public fun orb(orb: Any?): Builder = apply { this.orb = orb }
 
         /** Sets [TreeConfig.listenAddress]. */
         public fun listenAddress(address: String?): Builder = apply { listenAddress = address }

@@ -1,7 +1,16 @@
 package org.rtcoord;
 
-import kotlin.jvm.JvmClassMappingKt;
-import kotlin.reflect.KVisibility;
+import kotlin.Metadata;
+import kotlin.metadata.Attributes;
+import kotlin.metadata.KmClass;
+import kotlin.metadata.KmConstructor;
+import kotlin.metadata.KmDeclarationContainer;
+import kotlin.metadata.KmFunction;
+import kotlin.metadata.KmProperty;
+import kotlin.metadata.Visibility;
+import kotlin.metadata.jvm.JvmExtensionsKt;
+import kotlin.metadata.jvm.JvmMethodSignature;
+import kotlin.metadata.jvm.KotlinClassMetadata;
 
 import java.io.IOException;
 import java.lang.reflect.Constructor;
@@ -16,7 +25,9 @@ import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
@@ -26,7 +37,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * A module's public API as Java sees it (reflection over the compiled classes, so it is what javac
- * sees), dumped one class and its members a block, and compared with the dump checked in at
+ * sees, less what Kotlin's metadata says is {@code internal} or private: the bytecode leaves those public),
+ * dumped one class and its members a block, and compared with the dump checked in at
  * {@code <module>/api/<module>.api}. Core's {@link ApiGuardTest} and the dsl's API guard share it (the
  * dsl through core's test jar). With {@code -Drtcoord.api.update=true} the dump is rewritten instead.
  */
@@ -58,7 +70,7 @@ public final class ApiDump {
                     String name = root.relativize(file).toString().replace(java.io.File.separatorChar, '.').replaceAll("\\.class$", "");
                     if (name.contains(".internal.") || name.endsWith("module-info")) continue;
                     Class<?> type = Class.forName(name, false, anchor.getClassLoader());
-                    if (isVisible(type)) classes.add(type);
+                    if (isVisible(type) && !isEmptyFacade(type)) classes.add(type);
                 }
                 return classes;
             }
@@ -93,39 +105,122 @@ public final class ApiDump {
     }
 
     /** Public to Java and, for a Kotlin class, not `internal` (which the bytecode leaves public). */
-    private static boolean isVisible(Class<?> type) {
+    static boolean isVisible(Class<?> type) {
         for (Class<?> t = type; t != null; t = t.getDeclaringClass()) {
             if (!Modifier.isPublic(t.getModifiers()) || t.isSynthetic() || t.isAnonymousClass() || t.isLocalClass()) return false;
-            if (t.isAnnotationPresent(kotlin.Metadata.class) && JvmClassMappingKt.getKotlinClass(t).getVisibility() != KVisibility.PUBLIC) return false;
+            Object metadata = metadata(t);
+            if (metadata instanceof KotlinClassMetadata.Class && !isPublic(Attributes.getVisibility(((KotlinClassMetadata.Class) metadata).getKmClass()))) return false;
+            if (metadata instanceof KotlinClassMetadata.SyntheticClass) return false;
         }
         return true;
+    }
+
+    /** A class of top-level declarations (`RtcTreeKt`) that are all internal: nothing of it is API. */
+    private static boolean isEmptyFacade(Class<?> type) {
+        return metadata(type) instanceof KotlinClassMetadata.FileFacade && visibleMethods(type).isEmpty()
+                && Arrays.stream(type.getDeclaredFields()).noneMatch(f -> isVisible(f.getModifiers()) && !f.isSynthetic());
     }
 
     private static boolean isVisible(int modifiers) {
         return Modifier.isPublic(modifiers) || Modifier.isProtected(modifiers);
     }
 
-    /** Kotlin's `internal` members keep public bytecode but get a `$module` suffix, or take internal types. */
-    private static boolean isKotlinInternal(Executable member) {
-        return member.getName().contains("$") || member.toGenericString().contains(".internal.");
+    private static boolean isPublic(Visibility visibility) {
+        return visibility == Visibility.PUBLIC || visibility == Visibility.PROTECTED;
+    }
+
+    /** Kotlin's metadata of [type], or null for a Java class. */
+    private static KotlinClassMetadata metadata(Class<?> type) {
+        Metadata annotation = type.getAnnotation(Metadata.class);
+        return annotation == null ? null : KotlinClassMetadata.readLenient(annotation);
+    }
+
+    /**
+     * The JVM signatures (name and descriptor) of the members of [type] that Kotlin declares `internal` or
+     * private: public in the bytecode, but not part of the API.
+     */
+    private static Set<String> hiddenByKotlin(Class<?> type) {
+        Set<String> hidden = new HashSet<>();
+        KotlinClassMetadata metadata = metadata(type);
+        KmDeclarationContainer container = null;
+        if (metadata instanceof KotlinClassMetadata.Class) {
+            KmClass kotlinClass = ((KotlinClassMetadata.Class) metadata).getKmClass();
+            container = kotlinClass;
+            for (KmConstructor constructor : kotlinClass.getConstructors()) {
+                if (!isPublic(Attributes.getVisibility(constructor))) add(hidden, JvmExtensionsKt.getSignature(constructor));
+            }
+        } else if (metadata instanceof KotlinClassMetadata.FileFacade) {
+            container = ((KotlinClassMetadata.FileFacade) metadata).getKmPackage();
+        } else if (metadata instanceof KotlinClassMetadata.MultiFileClassPart) {
+            container = ((KotlinClassMetadata.MultiFileClassPart) metadata).getKmPackage();
+        }
+        if (container == null) return hidden;
+        for (KmFunction function : container.getFunctions()) {
+            if (!isPublic(Attributes.getVisibility(function))) add(hidden, JvmExtensionsKt.getSignature(function));
+        }
+        for (KmProperty property : container.getProperties()) {
+            if (!isPublic(Attributes.getVisibility(property))) {
+                add(hidden, JvmExtensionsKt.getGetterSignature(property));
+                add(hidden, JvmExtensionsKt.getSetterSignature(property));
+                if (JvmExtensionsKt.getFieldSignature(property) != null) hidden.add(JvmExtensionsKt.getFieldSignature(property).getName());
+            } else if (property.getSetter() != null && !isPublic(Attributes.getVisibility(property.getSetter()))) {
+                add(hidden, JvmExtensionsKt.getSetterSignature(property));
+            }
+        }
+        return hidden;
+    }
+
+    private static void add(Set<String> signatures, JvmMethodSignature signature) {
+        if (signature != null) signatures.add(signature.toString());
+    }
+
+    private static String signature(Executable member) {
+        StringBuilder descriptor = new StringBuilder(member instanceof Constructor ? "<init>" : member.getName()).append('(');
+        for (Class<?> parameter : member.getParameterTypes()) descriptor.append(parameter.descriptorString());
+        descriptor.append(')').append(member instanceof Method ? ((Method) member).getReturnType().descriptorString() : "V");
+        return descriptor.toString();
+    }
+
+    /** Kotlin's `internal` members keep public bytecode: the metadata says which they are; `$module` names or internal types give away the rest. */
+    private static boolean isKotlinInternal(Executable member, Set<String> hidden) {
+        return hidden.contains(signature(member)) || member.getName().contains("$") || member.toGenericString().contains(".internal.");
+    }
+
+    /**
+     * What javac lets Java use of [type]: its visible constructors and methods as name and descriptor
+     * ({@code <init>(Ljava/lang/String;)V}), and its visible fields by name.
+     */
+    public static Set<String> javaUsableMembers(Class<?> type) {
+        Set<String> hidden = hiddenByKotlin(type);
+        Set<String> usable = new HashSet<>();
+        for (Constructor<?> constructor : type.getDeclaredConstructors()) {
+            if (isVisible(constructor.getModifiers()) && !constructor.isSynthetic() && !isKotlinInternal(constructor, hidden)) usable.add(signature(constructor));
+        }
+        for (Method method : visibleMethods(type)) usable.add(signature(method));
+        for (Field field : type.getDeclaredFields()) {
+            if (isVisible(field.getModifiers()) && !field.isSynthetic() && !hidden.contains(field.getName())) usable.add(field.getName());
+        }
+        return usable;
     }
 
     /** The methods of [type] Java can call. */
     public static List<Method> visibleMethods(Class<?> type) {
+        Set<String> hidden = hiddenByKotlin(type);
         return Arrays.stream(type.getDeclaredMethods())
-                .filter(m -> isVisible(m.getModifiers()) && !m.isSynthetic() && !m.isBridge() && !isKotlinInternal(m))
+                .filter(m -> isVisible(m.getModifiers()) && !m.isSynthetic() && !m.isBridge() && !isKotlinInternal(m, hidden))
                 .collect(Collectors.toList());
     }
 
     /** One class and its visible members, one per line, sorted: what javac can use. */
     private static String describe(Class<?> type) {
         TreeMap<String, String> members = new TreeMap<>();
+        Set<String> hidden = hiddenByKotlin(type);
         for (Constructor<?> constructor : type.getDeclaredConstructors()) {
-            if (isVisible(constructor.getModifiers()) && !constructor.isSynthetic() && !isKotlinInternal(constructor)) members.put(constructor.toGenericString(), "");
+            if (isVisible(constructor.getModifiers()) && !constructor.isSynthetic() && !isKotlinInternal(constructor, hidden)) members.put(constructor.toGenericString(), "");
         }
         for (Method method : visibleMethods(type)) members.put(method.toGenericString(), "");
         for (Field field : type.getDeclaredFields()) {
-            if (isVisible(field.getModifiers()) && !field.isSynthetic()) members.put(field.toGenericString(), "");
+            if (isVisible(field.getModifiers()) && !field.isSynthetic() && !hidden.contains(field.getName())) members.put(field.toGenericString(), "");
         }
         StringBuilder text = new StringBuilder(header(type)).append(" {\n");
         members.keySet().forEach(member -> text.append("  ").append(member).append('\n'));

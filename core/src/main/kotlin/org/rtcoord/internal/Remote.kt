@@ -2,9 +2,9 @@ package org.rtcoord.internal
 
 import RTC.ReturnCode_t
 import kotlinx.coroutines.CoroutineDispatcher
-import kotlinx.coroutines.Dispatchers
-import kotlinx.coroutines.runInterruptible
-import kotlinx.coroutines.withContext
+import kotlinx.coroutines.suspendCancellableCoroutine
+import kotlinx.coroutines.sync.Semaphore
+import kotlinx.coroutines.sync.withPermit
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.BadParameterException
 import org.rtcoord.NotFoundException
@@ -14,23 +14,26 @@ import org.rtcoord.PreconditionNotMetException
 import org.rtcoord.RtcException
 import org.rtcoord.TimedOutException
 import org.rtcoord.UnreachableException
+import kotlin.coroutines.resume
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * Runs blocking CORBA calls on a bounded [dispatcher], turning every failure into an [RtcException]
+ * Runs blocking CORBA calls, [concurrency] at a time, turning every failure into an [RtcException]
  * about the call's subject. The tree's own ORB times every call out at the tree's deadline; a coroutine
  * backstop ends the wait at a call's own (shorter) deadline, and is the only guard on an ORB a host
- * application supplied ([orbEnforcesDeadline] false). One hung object holds at most the threads of the
- * calls made to it.
+ * application supplied ([orbEnforcesDeadline] false).
+ *
+ * Each call blocks a thread of [threads] and not the caller's: JacORB ignores interrupts until the call
+ * times out, so a caller that gives up (a cancelled future, an interrupted Java thread) returns at once
+ * and frees its slot, and the one thread is left to the ORB's timeout. One hung object holds at most the
+ * threads of the calls made to it.
  */
-internal class Remote(concurrency: Int, val defaultDeadline: Duration, private val orbEnforcesDeadline: Boolean) {
-    /**
-     * Where calls run, [concurrency] at a time. Work that makes many calls (discovery, reading a
-     * component) runs here too: a call made from this dispatcher runs on the caller's thread, without
-     * the two thread hand-overs per call that cost discovery more than the calls themselves.
-     */
-    val dispatcher: CoroutineDispatcher = Dispatchers.IO.limitedParallelism(concurrency)
+internal class Remote(concurrency: Int, val defaultDeadline: Duration, private val orbEnforcesDeadline: Boolean, private val threads: TreeThreads) {
+    private val slots = Semaphore(concurrency)
+
+    /** Where work that makes many calls (discovery, reading a component) runs: the tree's dispatcher. */
+    val dispatcher: CoroutineDispatcher get() = threads.dispatcher
 
     /**
      * Runs [block] once one of the tree's call slots is free; the deadline counts from then, so calls
@@ -38,7 +41,7 @@ internal class Remote(concurrency: Int, val defaultDeadline: Duration, private v
      */
     suspend fun <T> call(subject: String, operation: String, deadline: Duration? = null, block: () -> T): T {
         val limit = deadline ?: defaultDeadline
-        val outcome = withContext(dispatcher) {
+        val outcome = slots.withPermit {
             if (orbEnforcesDeadline && limit >= defaultDeadline) {
                 attempt(subject, operation, limit, block)
             } else {
@@ -49,12 +52,17 @@ internal class Remote(concurrency: Int, val defaultDeadline: Duration, private v
     }
 
     private suspend fun <T> attempt(subject: String, operation: String, limit: Duration, block: () -> T): Result<T> =
-        runInterruptible {
-            try {
-                Result.success(block())
-            } catch (e: Exception) {
-                Result.failure(translate(e, subject, operation, limit))
+        suspendCancellableCoroutine { waiting ->
+            val running = threads.submit {
+                val result = try {
+                    Result.success(block())
+                } catch (e: Exception) {
+                    Result.failure(translate(e, subject, operation, limit))
+                }
+                // Ignored when the caller has given up.
+                waiting.resume(result)
             }
+            waiting.invokeOnCancellation { running.cancel(true) }
         }
 
     private companion object {

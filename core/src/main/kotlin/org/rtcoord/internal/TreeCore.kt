@@ -5,6 +5,7 @@ import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
+import kotlinx.coroutines.job
 import org.rtcoord.NameServerNode
 import org.rtcoord.TreeConfig
 import org.rtcoord.internal.data.DataTaps
@@ -24,13 +25,14 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
 
     val orb = OrbHolder(
-        config.orb,
+        config.orb as org.omg.CORBA.ORB?,
         { config.listenAddress ?: listenAddressToward(nameServers().firstOrNull()?.address?.substringBeforeLast(':')) },
         config.callTimeout,
     )
-    val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned)
+    private val threads = TreeThreads(config.concurrency)
+    val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned, threads)
     val scope = CoroutineScope(
-        SupervisorJob() + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
+        SupervisorJob() + threads.dispatcher + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
             ListenerFailures(config.listenerFailures),
     )
     /** The monotonic clock of every component monitor. */
@@ -46,6 +48,11 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     /** Poll ticks that found the previous one still waiting and were folded into it (see [RtcTree.missedPollTicks]). */
     val missedPollTicks = AtomicLong()
     private val closed = AtomicBoolean()
+
+    init {
+        // The threads end once the last of the tree's coroutines has (see TreeThreads.close).
+        scope.coroutineContext.job.invokeOnCompletion { threads.close() }
+    }
 
     private fun listenAddressToward(nameServer: String?): String =
         ListenAddress.toward(nameServer).also { log.debug("listening on {}, the address that reaches {}", it, nameServer ?: "this host") }

@@ -18,28 +18,28 @@ import kotlin.time.toKotlinDuration
  * A lifecycle operation acts on [context] (the first owned context unless given) and waits for the state
  * within [deadline] (the tree's call deadline unless given), as [ComponentNode.activate] does.
  */
-public class JavaComponent(
+public class JavaComponent internal constructor(
     /** The component this facade drives. */
-    public val node: ComponentNode,
+    @get:JvmSynthetic public val node: ComponentNode,
 ) {
     private val calls = JavaCalls(node.core.scope)
 
     /** The latest snapshot, read now if there is none yet. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun snapshot(): ComponentSnapshot = calls.await { node.snapshot() }
 
     /** [snapshot], when done. */
     public fun snapshotAsync(): CompletableFuture<ComponentSnapshot> = calls.future { node.snapshot() }
 
     /** Reads the component again (see [ComponentNode.refresh]). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun refresh(): Unit = calls.await { node.refresh() }
 
     /** [refresh], when done. */
     public fun refreshAsync(): CompletableFuture<Void?> = calls.done { node.refresh() }
 
     /** What a listing shows of the component, read now (see [ComponentNode.refreshSummary]). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun refreshSummary(): ComponentSummary = calls.await { node.refreshSummary() }
 
     /** [refreshSummary], when done. */
@@ -47,7 +47,7 @@ public class JavaComponent(
 
     /** The component's state in [context], read now. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle = calls.await { node.state(context) }
 
     /** [state], when done. */
@@ -56,7 +56,7 @@ public class JavaComponent(
 
     /** Activates the component and waits until it is ACTIVE. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
         calls.await { node.activate(context, deadline?.toKotlinDuration()) }
 
@@ -67,7 +67,7 @@ public class JavaComponent(
 
     /** Deactivates the component and waits until it is INACTIVE. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
         calls.await { node.deactivate(context, deadline?.toKotlinDuration()) }
 
@@ -78,7 +78,7 @@ public class JavaComponent(
 
     /** Resets the component from ERROR and waits until it is INACTIVE. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
         calls.await { node.reset(context, deadline?.toKotlinDuration()) }
 
@@ -88,28 +88,28 @@ public class JavaComponent(
         calls.done { node.reset(context, deadline?.toKotlinDuration()) }
 
     /** Asks the component to exit and waits until naming no longer shows it (see [ComponentNode.exit]). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun exit(): Unit = calls.await { node.exit() }
 
     /** [exit], when done. */
     public fun exitAsync(): CompletableFuture<Void?> = calls.done { node.exit() }
 
     /** Whether the component is a composite and whether it is part of one, read now. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun composition(): Composition = calls.await { node.composition() }
 
     /** [composition], when done. */
     public fun compositionAsync(): CompletableFuture<Composition> = calls.future { node.composition() }
 
     /** The port named [name] (without the instance prefix). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun port(name: String): JavaPort = calls.await { JavaPort(node.port(name)) }
 
     /** [port], when done. */
     public fun portAsync(name: String): CompletableFuture<JavaPort> = calls.future { JavaPort(node.port(name)) }
 
     /** Disconnects every connection of every port. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun disconnectAll(): Unit = calls.await { node.disconnectAll() }
 
     /** [disconnectAll], when done. */
@@ -117,7 +117,7 @@ public class JavaComponent(
 
     /** The execution context [context] of this component. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun executionContext(context: ContextSelector = ContextSelector.DEFAULT): JavaExecutionContext =
         calls.await { JavaExecutionContext(node.executionContext(context)) }
 
@@ -127,7 +127,7 @@ public class JavaComponent(
         calls.future { JavaExecutionContext(node.executionContext(context)) }
 
     /** The configuration sets, read now if they never were. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun configuration(): ConfigurationSnapshot = calls.await { node.configuration() }
 
     /** [configuration], when done. */
@@ -135,7 +135,7 @@ public class JavaComponent(
 
     /** Sets [parameter] to [value] in configuration set [set] (the active one when null); see [ComponentNode.setParameters]. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun setParameter(parameter: String, value: String, set: String? = null): Unit = calls.await { node.setParameter(parameter, value, set) }
 
     /** [setParameter], when done. */
@@ -145,7 +145,7 @@ public class JavaComponent(
 
     /** Sets several parameters of configuration set [set] (the active one when null) at once; see [ComponentNode.setParameters]. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun setParameters(values: Map<String, String>, set: String? = null): Unit = calls.await { node.setParameters(values, set) }
 
     /** [setParameters], when done. */
@@ -154,14 +154,14 @@ public class JavaComponent(
         calls.done { node.setParameters(values, set) }
 
     /** Makes configuration set [id] the active one. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun activateConfigurationSet(id: String): Unit = calls.await { node.activateConfigurationSet(id) }
 
     /** [activateConfigurationSet], when done. */
     public fun activateConfigurationSetAsync(id: String): CompletableFuture<Void?> = calls.done { node.activateConfigurationSet(id) }
 
     /** Adds configuration set [id] holding [values]. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun addConfigurationSet(id: String, values: Map<String, String>): Unit = calls.await { node.addConfigurationSet(id, values) }
 
     /** [addConfigurationSet], when done. */
@@ -169,7 +169,7 @@ public class JavaComponent(
         calls.done { node.addConfigurationSet(id, values) }
 
     /** Removes configuration set [id]. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun removeConfigurationSet(id: String): Unit = calls.await { node.removeConfigurationSet(id) }
 
     /** [removeConfigurationSet], when done. */

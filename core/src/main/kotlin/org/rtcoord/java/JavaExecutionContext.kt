@@ -6,42 +6,42 @@ import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 
 /** An [ExecutionContextView] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
-public class JavaExecutionContext(
+public class JavaExecutionContext internal constructor(
     /** The execution context this facade drives. */
-    public val context: ExecutionContextView,
+    @get:JvmSynthetic public val context: ExecutionContextView,
 ) {
     private val calls = JavaCalls(context.component.core.scope)
 
     /** The rate in Hz. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun rate(): Double = calls.await { context.rate() }
 
     /** [rate], when done. */
     public fun rateAsync(): CompletableFuture<Double> = calls.future { context.rate() }
 
     /** Sets the rate to [hz]. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun setRate(hz: Double): Unit = calls.await { context.setRate(hz) }
 
     /** [setRate], when done. */
     public fun setRateAsync(hz: Double): CompletableFuture<Void?> = calls.done { context.setRate(hz) }
 
     /** Whether the context is running. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun isRunning(): Boolean = calls.await { context.isRunning() }
 
     /** [isRunning], when done. */
     public fun isRunningAsync(): CompletableFuture<Boolean> = calls.future { context.isRunning() }
 
     /** Makes [participant] take part in this context. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun add(participant: JavaComponent): Unit = calls.await { context.add(participant.node) }
 
     /** [add], when done. */
     public fun addAsync(participant: JavaComponent): CompletableFuture<Void?> = calls.done { context.add(participant.node) }
 
     /** Removes [participant] from this context. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun remove(participant: JavaComponent): Unit = calls.await { context.remove(participant.node) }
 
     /** [remove], when done. */

@@ -1,34 +1,33 @@
 package org.rtcoord.java
 
 import org.rtcoord.ManagerNode
-import org.rtcoord.Node
 import org.rtcoord.RtcException
 import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 
 /** A [ManagerNode] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
-public class JavaManager(
+public class JavaManager internal constructor(
     /** The manager this facade drives. */
-    public val node: ManagerNode,
+    @get:JvmSynthetic public val node: ManagerNode,
 ) {
     private val calls = JavaCalls(node.core.scope)
 
     /** Its slave managers and the components it hosts itself, listed now if they never were. */
-    @Throws(RtcException::class)
-    public fun children(): List<Node> = calls.await { node.children() }
+    @Throws(RtcException::class, InterruptedException::class)
+    public fun children(): List<JavaNode> = calls.await { node.children().map(::JavaNode) }
 
     /** [children], when done. */
-    public fun childrenAsync(): CompletableFuture<List<Node>> = calls.future { node.children() }
+    public fun childrenAsync(): CompletableFuture<List<JavaNode>> = calls.future { node.children().map(::JavaNode) }
 
     /** The manager's profile properties (`instance_name`, `pid`, ...). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun profile(): Map<String, String> = calls.await { node.profile() }
 
     /** [profile], when done. */
     public fun profileAsync(): CompletableFuture<Map<String, String>> = calls.future { node.profile() }
 
     /** Whether it is a master manager. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun isMaster(): Boolean = calls.await { node.isMaster() }
 
     /** [isMaster], when done. */
@@ -39,7 +38,7 @@ public class JavaManager(
      * creation [options] (see [ManagerNode.create]).
      */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun create(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): JavaComponent =
         calls.await { JavaComponent(node.create(type, instanceName, options)) }
 
@@ -49,7 +48,7 @@ public class JavaManager(
         calls.future { JavaComponent(node.create(type, instanceName, options)) }
 
     /** Deletes component [instanceName] through the manager that hosts it (see [ManagerNode.delete]). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun delete(instanceName: String): Unit = calls.await { node.delete(instanceName) }
 
     /** [delete], when done. */
@@ -57,7 +56,7 @@ public class JavaManager(
 
     /** Loads module [path], calling [initFunction] in it if the manager needs one. */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun loadModule(path: String, initFunction: String = ""): Unit = calls.await { node.loadModule(path, initFunction) }
 
     /** [loadModule], when done. */
@@ -65,28 +64,28 @@ public class JavaManager(
     public fun loadModuleAsync(path: String, initFunction: String = ""): CompletableFuture<Void?> = calls.done { node.loadModule(path, initFunction) }
 
     /** Unloads module [path]. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun unloadModule(path: String): Unit = calls.await { node.unloadModule(path) }
 
     /** [unloadModule], when done. */
     public fun unloadModuleAsync(path: String): CompletableFuture<Void?> = calls.done { node.unloadModule(path) }
 
     /** Modules the manager could load, as their profile properties. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun loadableModules(): List<Map<String, String>> = calls.await { node.loadableModules() }
 
     /** [loadableModules], when done. */
     public fun loadableModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future { node.loadableModules() }
 
     /** Modules the manager has loaded. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun loadedModules(): List<Map<String, String>> = calls.await { node.loadedModules() }
 
     /** [loadedModules], when done. */
     public fun loadedModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future { node.loadedModules() }
 
     /** The component types the manager can create, as their factory profiles. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun factories(): List<Map<String, String>> = calls.await { node.factories() }
 
     /** [factories], when done. */

@@ -12,9 +12,9 @@ import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 
 /** A [Port] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
-public class JavaPort(
+public class JavaPort internal constructor(
     /** The port this facade drives. */
-    public val port: Port,
+    @get:JvmSynthetic public val port: Port,
 ) {
     private val calls = JavaCalls(port.component.core.scope)
 
@@ -22,7 +22,7 @@ public class JavaPort(
     public val path: RtcPath get() = port.path
 
     /** The port as last read. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun snapshot(): PortSnapshot = calls.await { port.snapshot() }
 
     /** [snapshot], when done. */
@@ -33,7 +33,7 @@ public class JavaPort(
      * returns the new connector (see [Port.connect]).
      */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun connect(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: String? = null): ConnectorSnapshot =
         calls.await { port.connect(others.map { it.port }, properties, name) }
 
@@ -43,21 +43,21 @@ public class JavaPort(
         calls.future { port.connect(others.map { it.port }, properties, name) }
 
     /** Removes the connection [connectorId] from this port and its peers. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun disconnect(connectorId: String): Unit = calls.await { port.disconnect(connectorId) }
 
     /** [disconnect], when done. */
     public fun disconnectAsync(connectorId: String): CompletableFuture<Void?> = calls.done { port.disconnect(connectorId) }
 
     /** Removes every connection of this port. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun disconnectAll(): Unit = calls.await { port.disconnectAll() }
 
     /** [disconnectAll], when done. */
     public fun disconnectAllAsync(): CompletableFuture<Void?> = calls.done { port.disconnectAll() }
 
     /** This port's connections, read now. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun connections(): List<Connection> = calls.await { port.connections() }
 
     /** [connections], when done. */
@@ -67,7 +67,7 @@ public class JavaPort(
      * Subscribes [listener] to this out-port's data and returns once subscribed; cancel the returned
      * [Subscription] to stop (see [Port.tap]).
      */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun tap(listener: DataListener): Subscription = calls.await { port.tap(listener) }
 
     /** [tap], when subscribed. */

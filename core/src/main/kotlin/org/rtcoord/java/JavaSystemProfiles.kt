@@ -6,6 +6,7 @@ import org.rtcoord.RtcPath
 import org.rtcoord.internal.JavaCalls
 import org.rtcoord.profile.OrderedAction
 import org.rtcoord.profile.ProfileDifference
+import org.rtcoord.profile.ProfileRefusedException
 import org.rtcoord.profile.RestoreReport
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.StepOutcome
@@ -24,7 +25,7 @@ public class JavaSystemProfiles(
 
     /** The running system below [below] as a profile (see [SystemProfiles.save]). */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun save(below: String = "/", onlyConnected: Boolean = false): RtsProfile = calls.await { profiles.save(RtcPath.parse(below), onlyConnected) }
 
     /** [save], when done. */
@@ -34,7 +35,7 @@ public class JavaSystemProfiles(
 
     /** Restores [profile] onto the running system (see [SystemProfiles.restore]). */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, ProfileRefusedException::class, InterruptedException::class)
     public fun restore(profile: RtsProfile, createMissing: Boolean = false): RestoreReport = calls.await { profiles.restore(profile, createMissing) }
 
     /** [restore], when done. */
@@ -44,7 +45,7 @@ public class JavaSystemProfiles(
 
     /** How the live system differs from [profile], components compared against [state] when not null (see [SystemProfiles.check]). */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun check(profile: RtsProfile, state: LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> = calls.await { profiles.check(profile, state) }
 
     /** [check], when done. */
@@ -54,7 +55,7 @@ public class JavaSystemProfiles(
 
     /** Runs [action] in the profile's order, each step within [stepDeadline] beyond its condition (see [SystemProfiles.run]). */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, ProfileRefusedException::class, InterruptedException::class)
     public fun run(profile: RtsProfile, action: OrderedAction, stepDeadline: Duration = Duration.ofSeconds(10)): List<StepOutcome> =
         calls.await { profiles.run(profile, action, stepDeadline.toKotlinDuration()) }
 
@@ -64,7 +65,7 @@ public class JavaSystemProfiles(
         calls.future { profiles.run(profile, action, stepDeadline.toKotlinDuration()) }
 
     /** Removes the connections [profile] names; returns what was removed. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun teardown(profile: RtsProfile): List<String> = calls.await { profiles.teardown(profile) }
 
     /** [teardown], when done. */

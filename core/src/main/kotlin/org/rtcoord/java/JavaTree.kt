@@ -7,11 +7,12 @@ import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventListener
 import org.rtcoord.EventOptions
+import org.rtcoord.NameServerNode
 import org.rtcoord.NamingDirectory
-import org.rtcoord.Node
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
+import org.rtcoord.RootNode
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
 import org.rtcoord.SystemSnapshot
@@ -27,59 +28,66 @@ import java.util.function.Predicate
 /**
  * An [RtcTree] for Java callers: every operation as a blocking call (which throws the [RtcException]
  * the operation failed with) and as a [CompletableFuture] (`...Async`), paths as strings, events
- * delivered on an [Executor] the caller chooses. Nodes come back as the tree's own [Node]s; operate on
- * them through [JavaComponent], [JavaManager] and [JavaPort]. Closing it closes the tree.
+ * delivered on an [Executor] the caller chooses. Nodes come back as [JavaNode]s; operate on them through
+ * [JavaComponent], [JavaManager] and [JavaPort]. Closing it closes the tree, and ends its threads.
  *
  * ```java
- * try (JavaTree tree = JavaTree.create(new TreeConfig(List.of("127.0.0.1:2809")))) {
+ * try (JavaTree tree = new JavaTree(new TreeConfig(List.of("127.0.0.1:2809")))) {
  *     JavaComponent laser = tree.component("/127.0.0.1:2809/host.host_cxt/laser0.rtc");
  *     laser.deactivate();
  * }
  * ```
  */
-public class JavaTree(
+public class JavaTree internal constructor(
     /** The tree this facade drives; Kotlin code shares it with the suspend API. */
-    public val tree: RtcTree,
+    @get:JvmSynthetic public val tree: RtcTree,
 ) : AutoCloseable {
+    /** A tree configured by [config] (the defaults unless given), with its facade. */
+    @JvmOverloads
+    public constructor(config: TreeConfig = TreeConfig()) : this(RtcTree.create(config))
+
+    /** How the tree talks to the system. */
+    public val config: TreeConfig get() = tree.config
+
     private val calls = JavaCalls(tree.core.scope)
 
     /** The node at [path] (absolute; a name server it names is added). */
-    @Throws(RtcException::class)
-    public fun node(path: String): Node = calls.await { tree.node(path) }
+    @Throws(RtcException::class, InterruptedException::class)
+    public fun node(path: String): JavaNode = calls.await { JavaNode(tree.node(path)) }
 
     /** [node], when done. */
-    public fun nodeAsync(path: String): CompletableFuture<Node> = calls.future { tree.node(path) }
+    public fun nodeAsync(path: String): CompletableFuture<JavaNode> = calls.future { JavaNode(tree.node(path)) }
 
     /** The children of the naming context, name server, manager or root at [path], listed now if they never were. */
-    @Throws(RtcException::class)
-    public fun children(path: String): List<Node> = calls.await { directory(path).children() }
+    @Throws(RtcException::class, InterruptedException::class)
+    public fun children(path: String): List<JavaNode> = calls.await { directory(path).children().map(::JavaNode) }
 
     /** [children], when done. */
-    public fun childrenAsync(path: String): CompletableFuture<List<Node>> = calls.future { directory(path).children() }
+    public fun childrenAsync(path: String): CompletableFuture<List<JavaNode>> = calls.future { directory(path).children().map(::JavaNode) }
 
     /** The component at [path]. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun component(path: String): JavaComponent = calls.await { JavaComponent(tree.component(path)) }
 
     /** [component], when done. */
     public fun componentAsync(path: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.component(path)) }
 
     /** The component named [name] (`laser0.rtc` or `laser0`) wherever it is registered (see [RtcTree.componentNamed]). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun componentNamed(name: String): JavaComponent = calls.await { JavaComponent(tree.componentNamed(name)) }
 
     /** [componentNamed], when done. */
     public fun componentNamedAsync(name: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.componentNamed(name)) }
 
     /** The manager at [path]. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun manager(path: String): JavaManager = calls.await { JavaManager(tree.manager(path)) }
 
     /** [manager], when done. */
     public fun managerAsync(path: String): CompletableFuture<JavaManager> = calls.future { JavaManager(tree.manager(path)) }
 
     /** The port at `component.rtc:port`. */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun port(path: String): JavaPort = calls.await { JavaPort(tree.port(path)) }
 
     /** [port], when done. */
@@ -87,7 +95,7 @@ public class JavaTree(
 
     /** Connects the ports at [from] and [to] with connector [properties] (see [RtcTree.connect]). */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun connect(from: String, to: String, properties: Map<String, String> = emptyMap()): ConnectorSnapshot =
         calls.await { tree.connect(from, to, properties) }
 
@@ -101,7 +109,7 @@ public class JavaTree(
      * [depth] levels, concurrently (see [DirectoryNode.survey]).
      */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun survey(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { directory(path).survey(depth) }
 
     /** [survey], when done. */
@@ -109,7 +117,7 @@ public class JavaTree(
     public fun surveyAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> = calls.done { directory(path).survey(depth) }
 
     /** Removes the binding at [path] from its naming context, whatever it is bound to, dead or alive (as `rtdel`). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun unbind(path: String): Unit = calls.await { unbindAt(path) }
 
     /** [unbind], when done. */
@@ -117,7 +125,7 @@ public class JavaTree(
 
     /** Reads the subtree at [path] again, [depth] levels deep (the whole of it by default). */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun refresh(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { tree.refresh(RtcPath.parse(path), depth) }
 
     /** [refresh], when done. */
@@ -127,17 +135,18 @@ public class JavaTree(
 
     /**
      * Every node below [from] (included), at most [maxDepth] levels down, that [filter] accepts, in
-     * depth-first order; unreachable branches are skipped (see [RtcTree.find]). [filter] sees each node
-     * as it was last read.
+     * depth-first order (see [RtcTree.find]). [filter] sees each node as it was last read. Unreachable
+     * contexts and managers below are skipped; [from], or a name server the walk reaches, that cannot be
+     * listed fails the call as [children] does: a search of a dead name server is not an empty one.
      */
     @JvmOverloads
-    @Throws(RtcException::class)
-    public fun find(from: String, filter: Predicate<Node>, maxDepth: Int = Int.MAX_VALUE): List<Node> =
+    @Throws(RtcException::class, InterruptedException::class)
+    public fun find(from: String, filter: Predicate<JavaNode>, maxDepth: Int = Int.MAX_VALUE): List<JavaNode> =
         calls.await { findAll(from, filter, maxDepth) }
 
     /** [find], when done. */
     @JvmOverloads
-    public fun findAsync(from: String, filter: Predicate<Node>, maxDepth: Int = Int.MAX_VALUE): CompletableFuture<List<Node>> =
+    public fun findAsync(from: String, filter: Predicate<JavaNode>, maxDepth: Int = Int.MAX_VALUE): CompletableFuture<List<JavaNode>> =
         calls.future { findAll(from, filter, maxDepth) }
 
     /**
@@ -148,7 +157,7 @@ public class JavaTree(
      * Returns once the node is watched; close the [Subscription] to stop.
      */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun <E : RtcEvent> subscribe(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions = EventOptions()): Subscription =
         calls.await { on(path, type, executor, listener, options) }
 
@@ -179,7 +188,7 @@ public class JavaTree(
      * Returns once [start] was called; close the [Subscription] to stop.
      */
     @JvmOverloads
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun <E : RtcEvent> follow(
         paths: List<String>,
         type: Class<E>,
@@ -217,8 +226,15 @@ public class JavaTree(
         parent.unbind(parsed.name)
     }
 
-    private suspend fun findAll(from: String, filter: Predicate<Node>, maxDepth: Int): List<Node> =
-        tree.find(RtcPath.parse(from), maxDepth) { filter.test(it) }.toList()
+    private suspend fun findAll(from: String, filter: Predicate<JavaNode>, maxDepth: Int): List<JavaNode> {
+        val start = tree.node(from)
+        // Listed first, so that their failure is thrown: the walk skips what it cannot list.
+        if (maxDepth > 0) {
+            (start as? DirectoryNode)?.children()
+            if (start is RootNode && maxDepth > 1) start.children().forEach { (it as? NameServerNode)?.children() }
+        }
+        return tree.find(start.path, maxDepth) { filter.test(JavaNode(it)) }.toList().map(::JavaNode)
+    }
 
     private suspend fun <E : RtcEvent> followed(
         paths: List<String>,
@@ -237,12 +253,4 @@ public class JavaTree(
 
     private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription =
         tree.on(path, type, options, JavaListenerCall(listener, executor.asCoroutineDispatcher()))
-
-    /** How Java callers get a [JavaTree]. */
-    public companion object {
-        /** A tree configured by [config], with its facade. */
-        @JvmStatic
-        @JvmOverloads
-        public fun create(config: TreeConfig = TreeConfig()): JavaTree = JavaTree(RtcTree.create(config))
-    }
 }

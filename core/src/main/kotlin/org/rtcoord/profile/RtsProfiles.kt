@@ -36,6 +36,7 @@ public class ProfileFormatException(
 public object RtsProfiles {
     /** Reads the profile in [file], in the form its name or content says. */
     @JvmStatic
+    @Throws(ProfileFormatException::class)
     public fun read(file: Path): RtsProfile {
         val text = try {
             Files.readString(file)
@@ -47,6 +48,8 @@ public object RtsProfiles {
 
     /** Reads a profile from [text] in [format]; [source] names it in errors. */
     @JvmStatic
+    @JvmOverloads
+    @Throws(ProfileFormatException::class)
     public fun parse(text: String, format: ProfileFormat, source: String = "-"): RtsProfile = when (format) {
         ProfileFormat.XML -> XmlProfileReader(source).read(text)
         ProfileFormat.YAML -> YamlProfileReader(source).read(text)

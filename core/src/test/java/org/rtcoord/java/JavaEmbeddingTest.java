@@ -3,10 +3,10 @@ package org.rtcoord.java;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.rtcoord.ConnectorSnapshot;
 import org.rtcoord.EventOptions;
 import org.rtcoord.LifeCycle;
-import org.rtcoord.Node;
 import org.rtcoord.NodeKind;
 import org.rtcoord.NotFoundException;
 import org.rtcoord.ParameterChanged;
@@ -22,7 +22,12 @@ import org.rtcoord.fixtures.FixtureRuntime;
 import org.rtcoord.fixtures.RtSystem;
 import org.rtcoord.fixtures.Scenarios;
 import org.rtcoord.fixtures.naming.NamingService;
+import org.rtcoord.profile.ProfileFormatException;
+import org.rtcoord.profile.ProfileRefusedException;
+import org.rtcoord.profile.RtsProfile;
+import org.rtcoord.profile.RtsProfiles;
 
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
@@ -39,6 +44,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
 
 /**
  * What a Java tool embedding rtcoord does (RTSystemEditor's operations), written in Java against the
@@ -58,7 +64,7 @@ class JavaEmbeddingTest {
                 .nameServer(naming.getAddress())
                 .callTimeout(Duration.ofSeconds(5))
                 .build();
-        tree = JavaTree.create(config);
+        tree = new JavaTree(config);
         host = "/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext();
     }
 
@@ -78,7 +84,7 @@ class JavaEmbeddingTest {
         TreeConfig plain = new TreeConfig(List.of("127.0.0.1:2810"));
         assertEquals(List.of("127.0.0.1:2810"), plain.getNameServers());
         assertEquals(3000, plain.getCallTimeoutMillis());
-        assertEquals(5000, tree.getTree().getConfig().getCallTimeoutMillis());
+        assertEquals(5000, tree.getConfig().getCallTimeoutMillis());
         EventOptions options = EventOptions.builder().mode(WatchMode.POLL).pollPeriod(Duration.ofMillis(200)).build();
         assertEquals(200, options.getPollPeriodMillis());
         assertEquals(1000, new EventOptions().getHeartbeatMillis());
@@ -88,13 +94,13 @@ class JavaEmbeddingTest {
     }
 
     @Test
-    void listsTheSystem() throws RtcException {
-        Set<String> names = tree.children(host).stream().map(Node::getName).collect(Collectors.toSet());
+    void listsTheSystem() throws RtcException, InterruptedException {
+        Set<String> names = tree.children(host).stream().map(JavaNode::getName).collect(Collectors.toSet());
         assertTrue(names.containsAll(Set.of("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc", "manager.mgr")), names.toString());
 
-        List<Node> components = tree.find("/", node -> node.getKind() == NodeKind.COMPONENT && node.getPath().toString().startsWith(host + "/"));
+        List<JavaNode> components = tree.find("/", node -> node.getKind() == NodeKind.COMPONENT && node.getPath().startsWith(host + "/"));
         assertEquals(Set.of("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"),
-                components.stream().map(Node::getName).collect(Collectors.toSet()));
+                components.stream().map(JavaNode::getName).collect(Collectors.toSet()));
 
         NotFoundException missing = assertThrows(NotFoundException.class, () -> tree.component(path("sonar0.rtc")));
         assertEquals(path("sonar0.rtc") + ": not found", missing.getMessage());
@@ -114,7 +120,7 @@ class JavaEmbeddingTest {
     }
 
     @Test
-    void disconnectsAndConnectsPorts() throws RtcException {
+    void disconnectsAndConnectsPorts() throws RtcException, InterruptedException {
         JavaPort out = tree.port(path("laser0.rtc:laser"));
         JavaPort in = tree.port(path("laser_localise0.rtc:laser"));
         assertEquals(1, out.connections().size());
@@ -175,7 +181,7 @@ class JavaEmbeddingTest {
     }
 
     @Test
-    void createsAndDeletesAComponentThroughAManager() throws RtcException {
+    void createsAndDeletesAComponentThroughAManager() throws RtcException, InterruptedException {
         JavaManager master = tree.manager(path("manager.mgr"));
         assertTrue(master.isMaster());
         JavaComponent created = master.create("odo_localise", "from_java");
@@ -225,5 +231,31 @@ class JavaEmbeddingTest {
         var thrown = assertThrows(java.util.concurrent.ExecutionException.class, () -> failed.get(10, TimeUnit.SECONDS));
         assertTrue(thrown.getCause() instanceof PreconditionNotMetException, thrown.getCause().toString());
         assertNotNull(tree.node(path("gyro0.rtc")));
+    }
+
+    /** Java catches each checked exception by its type: a {@code catch} of one the method does not declare does not compile. */
+    @Test
+    void aRefusedRestoreIsCaughtAsProfileRefusedException() throws Exception {
+        JavaSystemProfiles profiles = new JavaSystemProfiles(tree);
+        RtsProfile saved = profiles.save();
+        tree.component(path("gyro0.rtc")).exit();
+        try {
+            profiles.restore(saved);
+            fail("restored a profile whose component is gone");
+        } catch (ProfileRefusedException refused) {
+            assertTrue(refused.getReason().contains("gyro0.rtc is not running"), refused.getReason());
+        }
+    }
+
+    @Test
+    void aMissingProfileFileIsCaughtAsProfileFormatException(@TempDir Path directory) {
+        Path missing = directory.resolve("missing.xml");
+        try {
+            RtsProfiles.read(missing);
+            fail("read a file that is not there");
+        } catch (ProfileFormatException unreadable) {
+            assertEquals(missing.toString(), unreadable.getSource());
+            assertTrue(unreadable.getMessage().startsWith(missing + ": cannot read"), unreadable.getMessage());
+        }
     }
 }

@@ -9,7 +9,7 @@ import org.rtcoord.fixtures.FixtureRuntime
 import java.util.concurrent.Executor
 
 /**
- * A tool that closes its [JavaTree] leaves no thread behind: its ORB's threads and the tree's work end.
+ * A tool that closes its [JavaTree] leaves no thread behind: its ORB's threads and the tree's own end.
  * The system runs in another process so that every thread started here is the tree's.
  */
 class JavaTreeThreadsTest {
@@ -17,22 +17,18 @@ class JavaTreeThreadsTest {
     fun `closing a tree ends every thread it started`() {
         FixtureProcess.start("--scenario", "localisation").use { system ->
             val before = Thread.getAllStackTraces().keys
-            JavaTree.create(TreeConfig(listOf(system.address))).use { tree ->
+            JavaTree(TreeConfig(listOf(system.address))).use { tree ->
                 tree.survey("/")
                 val gyro = "/${system.address}/${FixtureRuntime.hostContext}/gyro0.rtc"
                 tree.subscribe(gyro, StateChanged::class.java, Executor(Runnable::run), { }).use {
                     tree.component(gyro).deactivate()
                 }
             }
-            // The coroutine dispatchers' pools belong to the whole process and outlive any one tree.
+            // Every thread, the coroutines' too: the tree's dispatchers are its own (kotlinx's shared ones outlived it).
             val deadline = System.nanoTime() + 10_000_000_000
-            var left: List<String>
-            do {
-                left = Thread.getAllStackTraces().keys.filter { it !in before && it.isAlive }.map { it.name }
-                    .filterNot { it.startsWith("DefaultDispatcher") || it.startsWith("kotlinx.coroutines") }
-                if (left.isEmpty()) break
-                Thread.sleep(50)
-            } while (System.nanoTime() < deadline)
+            fun left() = Thread.getAllStackTraces().keys.filter { it !in before && it.isAlive }
+            left().forEach { it.join(maxOf(1, (deadline - System.nanoTime()) / 1_000_000)) }
+            val left = left().map { it.name }
             assertEquals(emptyList<String>(), left)
         }
     }

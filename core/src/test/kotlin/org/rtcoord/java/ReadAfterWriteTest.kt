@@ -20,7 +20,7 @@ import java.util.concurrent.Executor
 class ReadAfterWriteTest {
     private val naming = NamingService.start()
     private val system = Scenarios.localisation(naming.corbaloc)
-    private val tree = JavaTree.create(TreeConfig(listOf(naming.address)))
+    private val tree = JavaTree(TreeConfig(listOf(naming.address)))
     private val host = "/${naming.address}/${FixtureRuntime.hostContext}"
 
     @AfterEach

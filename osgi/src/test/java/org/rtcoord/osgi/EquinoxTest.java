@@ -13,11 +13,21 @@ import org.rtcoord.fixtures.RtSystem;
 import org.rtcoord.fixtures.Scenarios;
 import org.rtcoord.fixtures.naming.NamingService;
 
+import ch.qos.logback.classic.Level;
+import ch.qos.logback.classic.Logger;
+import ch.qos.logback.classic.spi.ILoggingEvent;
+import ch.qos.logback.core.read.ListAppender;
+import org.junit.jupiter.api.io.TempDir;
+import org.slf4j.LoggerFactory;
+
 import java.io.File;
 import java.lang.reflect.Method;
 import java.lang.reflect.Proxy;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -34,49 +44,75 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * rtcoord's bundle in Equinox, RTSystemEditor's framework: it resolves with nothing but the framework
  * (the JRE's packages from the system bundle), starts, and drives a fixture system from inside: discovery,
- * an operation and an event, through the exported API only, loaded by the bundle's class loader.
+ * an operation and an event, through the exported API only, loaded by the bundle's class loader. Once
+ * stopped and uninstalled, none of its threads is left; its logging goes to the framework's SLF4J when
+ * there is one; and its API names no type a plug-in cannot see.
  */
 class EquinoxTest {
     private NamingService naming;
     private RtSystem system;
     private Framework framework;
 
+    @TempDir
+    Path storage;
+
     @BeforeEach
-    void start(@org.junit.jupiter.api.io.TempDir Path storage) throws Exception {
+    void start() {
         naming = NamingService.Companion.start(0, null, "127.0.0.1");
         system = Scenarios.INSTANCE.localisation(naming.getCorbaloc(), "127.0.0.1");
-        framework = new EquinoxFactory().newFramework(Map.of(
+    }
+
+    /** Equinox with nothing but the JRE's packages, and [extraPackages] of this class path when not empty. */
+    private void startFramework(String extraPackages) throws Exception {
+        Map<String, String> properties = new HashMap<>(Map.of(
                 Constants.FRAMEWORK_STORAGE, storage.toString(),
                 Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT));
+        if (!extraPackages.isEmpty()) properties.put(Constants.FRAMEWORK_SYSTEMPACKAGES_EXTRA, extraPackages);
+        framework = new EquinoxFactory().newFramework(properties);
         framework.start();
+    }
+
+    private Bundle installBundle() throws Exception {
+        File built = new File(System.getProperty("rtcoord.bundle"));
+        assertTrue(Files.exists(built.toPath().resolve("META-INF/MANIFEST.MF")), "no bundle at " + built);
+        Bundle bundle = framework.getBundleContext().installBundle("reference:" + built.toURI());
+        bundle.start();
+        assertEquals(Bundle.ACTIVE, bundle.getState());
+        return bundle;
+    }
+
+    /** A tree of the fixture system made through the bundle's exported API, as a plug-in would. */
+    private AutoCloseable createTree(Bundle bundle) throws Exception {
+        Class<?> treeConfig = bundle.loadClass("org.rtcoord.TreeConfig");
+        Class<?> javaTree = bundle.loadClass("org.rtcoord.java.JavaTree");
+        Object config = treeConfig.getConstructor(List.class).newInstance(List.of(naming.getAddress()));
+        return (AutoCloseable) javaTree.getConstructor(treeConfig).newInstance(config);
     }
 
     @AfterEach
     void stop() throws Exception {
-        framework.stop();
-        framework.waitForStop(10_000);
+        if (framework != null) {
+            framework.stop();
+            framework.waitForStop(10_000);
+        }
         system.close();
         naming.close();
     }
 
     @Test
     void theBundleResolvesStartsAndDrivesASystem() throws Exception {
-        File built = new File(System.getProperty("rtcoord.bundle"));
-        assertTrue(Files.exists(built.toPath().resolve("META-INF/MANIFEST.MF")), "no bundle at " + built);
-        Bundle bundle = framework.getBundleContext().installBundle("reference:" + built.toURI());
-        bundle.start();
-        assertEquals(Bundle.ACTIVE, bundle.getState());
+        startFramework("");
+        Bundle bundle = installBundle();
         Set<String> exported = bundle.adapt(BundleWiring.class).getCapabilities("osgi.wiring.package").stream()
                 .map(capability -> (String) capability.getAttributes().get("osgi.wiring.package")).collect(Collectors.toSet());
         assertEquals(Set.of("org.rtcoord", "org.rtcoord.java", "org.rtcoord.profile"), exported);
 
         // The test runs outside the framework: it reaches the API through the bundle's class loader, as a
         // plug-in importing org.rtcoord.java would.
-        Class<?> treeConfig = bundle.loadClass("org.rtcoord.TreeConfig");
         Class<?> javaTree = bundle.loadClass("org.rtcoord.java.JavaTree");
         assertFalse(javaTree.getClassLoader() == getClass().getClassLoader());
-        Object config = treeConfig.getConstructor(List.class).newInstance(List.of(naming.getAddress()));
-        try (AutoCloseable tree = (AutoCloseable) javaTree.getMethod("create", treeConfig).invoke(null, config)) {
+        ClassLoader loader = bundle.adapt(BundleWiring.class).getClassLoader();
+        try (AutoCloseable tree = createTree(bundle)) {
             String host = "/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext();
 
             List<?> children = (List<?>) javaTree.getMethod("children", String.class).invoke(tree, host);
@@ -99,6 +135,74 @@ class EquinoxTest {
         }
         bundle.stop();
         assertEquals(Bundle.RESOLVED, bundle.getState());
+        bundle.uninstall();
+        // Before, 18 of kotlinx's DefaultDispatcher workers outlived the bundle, and its class loader with them.
+        assertEquals(List.of(), threadsLeft(loader, Duration.ofSeconds(20)));
+    }
+
+    @Test
+    void theBundleLogsThroughTheFrameworksSlf4j() throws Exception {
+        ListAppender<ILoggingEvent> logged = new ListAppender<>();
+        logged.start();
+        Logger library = (Logger) LoggerFactory.getLogger("org.rtcoord");
+        Level level = library.getLevel();
+        library.setLevel(Level.DEBUG);
+        library.addAppender(logged);
+        try {
+            // This class path's SLF4J, with logback behind it, stands in for Eclipse's slf4j.api and its provider.
+            startFramework("org.slf4j;version=2");
+            Bundle bundle = installBundle();
+            try (AutoCloseable tree = createTree(bundle)) {
+                bundle.loadClass("org.rtcoord.java.JavaTree").getMethod("children", String.class).invoke(tree, "/" + naming.getAddress());
+            }
+            // The tree logs at DEBUG where its ORB listens once it starts; before, the bundle's own SLF4J swallowed it.
+            assertTrue(logged.list.stream().anyMatch(event -> event.getLoggerName().equals("org.rtcoord.RtcTree") && event.getFormattedMessage().startsWith("listening on ")),
+                    logged.list.toString());
+        } finally {
+            library.detachAppender(logged);
+            library.setLevel(level);
+        }
+    }
+
+    @Test
+    void theExportedApiNamesNoTypeTheBundleKeepsPrivate() throws Exception {
+        startFramework("");
+        Bundle bundle = installBundle();
+        Set<String> exported = Set.of("org.rtcoord", "org.rtcoord.java", "org.rtcoord.profile");
+        List<String> privateTypes = new ArrayList<>();
+        for (String name : List.of("org.rtcoord.TreeConfig", "org.rtcoord.TreeConfig$Builder")) {
+            for (Method method : bundle.loadClass(name).getMethods()) {
+                List<Class<?>> types = new ArrayList<>(List.of(method.getParameterTypes()));
+                types.add(method.getReturnType());
+                for (Class<?> type : types) {
+                    while (type.isArray()) type = type.getComponentType();
+                    String packageName = type.getPackageName();
+                    if (!type.isPrimitive() && !packageName.startsWith("java.") && !exported.contains(packageName)) {
+                        privateTypes.add(name + "." + method.getName() + ": " + type.getName());
+                    }
+                }
+            }
+        }
+        // Before, TreeConfig.Builder.orb took an org.omg.CORBA.ORB, which no plug-in can name.
+        assertEquals(List.of(), privateTypes);
+    }
+
+    /**
+     * The names of the live threads that hold [loader] (as their context loader, or through their own
+     * class) once each has had until [patience] is over to end.
+     */
+    private static List<String> threadsLeft(ClassLoader loader, Duration patience) throws InterruptedException {
+        long deadline = System.nanoTime() + patience.toNanos();
+        for (Thread thread : holding(loader)) {
+            thread.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+        }
+        return holding(loader).stream().map(Thread::getName).sorted().collect(Collectors.toList());
+    }
+
+    private static List<Thread> holding(ClassLoader loader) {
+        return Thread.getAllStackTraces().keySet().stream()
+                .filter(thread -> thread.getContextClassLoader() == loader || thread.getClass().getClassLoader() == loader)
+                .collect(Collectors.toList());
     }
 
     private static Object call(Object target, String getter) {

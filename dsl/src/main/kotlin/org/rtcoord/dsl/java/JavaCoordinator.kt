@@ -6,11 +6,19 @@ import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.asCoroutineDispatcher
 import kotlinx.coroutines.cancel
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.merge
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
 import org.rtcoord.EventOptions
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.RtcException
+import org.rtcoord.Subscription
 import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.runtime.RuleActivity
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.internal.JavaCalls
@@ -18,7 +26,10 @@ import org.rtcoord.java.JavaTree
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.CompletableFuture
+import java.util.concurrent.Executor
+import java.util.function.BiConsumer
 import java.util.function.Consumer
+import java.util.function.IntConsumer
 
 /**
  * A `.coord.kts` coordinator for Java callers: loaded from a file or from its text, started and stopped
@@ -36,16 +47,41 @@ public class JavaCoordinator private constructor(
     public val coordinator: Coordinator,
 ) : AutoCloseable {
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator"))
-    private val calls = JavaCalls(scope)
+    private val calls = JavaCalls(scope, "coordinator")
 
     /** Subscribes the rules and starts timers, machines and supervisors (see [Coordinator.start]). */
-    @Throws(RtcException::class)
+    @Throws(RtcException::class, InterruptedException::class)
     public fun start() {
         calls.await { coordinator.start() }
     }
 
     /** [start], when done. */
     public fun startAsync(): CompletableFuture<Void?> = calls.done { coordinator.start() }
+
+    /**
+     * Calls [listener] on [executor] with each rule's description and status (see [RuleActivity]): the
+     * current one of every rule at once, then each change, one at a time. Close the [Subscription] to stop;
+     * closing the coordinator stops it too.
+     */
+    public fun subscribeRules(executor: Executor, listener: BiConsumer<String, RuleActivity.Status>): Subscription =
+        follow(executor, coordinator.rules.map { rule -> rule.status.map { rule.description to it } }) { (description, status) -> listener.accept(description, status) }
+
+    /**
+     * Calls [listener] on [executor] with each mode machine's name and active mode (null before it has
+     * one): the current mode of every machine at once, then each change. Close the [Subscription] to stop.
+     */
+    public fun subscribeModes(executor: Executor, listener: BiConsumer<String, String?>): Subscription =
+        follow(executor, coordinator.machines.map { machine -> machine.mode.map { machine.name to it } }) { (name, mode) -> listener.accept(name, mode) }
+
+    /** Calls [listener] on [executor] with how many handler runs have failed: the count now, then each change. */
+    public fun subscribeFailures(executor: Executor, listener: IntConsumer): Subscription =
+        follow(executor, listOf(coordinator.failureCounts)) { listener.accept(it) }
+
+    private fun <T> follow(executor: Executor, flows: List<Flow<T>>, deliver: (T) -> Unit): Subscription {
+        val dispatcher = executor.asCoroutineDispatcher()
+        val job = scope.launch { flows.merge().collect { withContext(dispatcher) { deliver(it) } } }
+        return Subscription { job.cancel() }
+    }
 
     /** Stops the coordinator: cancels its handlers and detaches its observers. Idempotent. */
     override fun close() {
@@ -57,7 +93,7 @@ public class JavaCoordinator private constructor(
     public companion object {
         private val host by lazy { ScriptHost() }
         // A supervisor: a script that fails to load must not cancel the loads after it.
-        private val loading = JavaCalls(CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator loading")))
+        private val loading = JavaCalls(CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator loading")), "coordinator loading")
 
         /**
          * Compiles (or takes from the cache) and evaluates the script at [script] with [args], for [tree];
@@ -65,7 +101,7 @@ public class JavaCoordinator private constructor(
          */
         @JvmStatic
         @JvmOverloads
-        @Throws(ScriptFailure::class)
+        @Throws(ScriptFailure::class, InterruptedException::class)
         public fun load(tree: JavaTree, script: Path, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): JavaCoordinator =
             loading.await(loadAsync(tree, script, args, log))
 
@@ -85,7 +121,7 @@ public class JavaCoordinator private constructor(
          */
         @JvmStatic
         @JvmOverloads
-        @Throws(ScriptFailure::class)
+        @Throws(ScriptFailure::class, InterruptedException::class)
         public fun fromText(tree: JavaTree, name: String, text: String, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): JavaCoordinator {
             require(name.endsWith(".coord.kts")) { "a coordinator script's name ends in .coord.kts, not '$name'" }
             val directory = Files.createTempDirectory("rtcoord-script")

@@ -3,7 +3,9 @@ package org.rtcoord.dsl.java;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.rtcoord.ClosedException;
 import org.rtcoord.LifeCycle;
+import org.rtcoord.Subscription;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.dsl.script.ScriptFailure;
 import org.rtcoord.fixtures.FixtureRuntime;
@@ -15,10 +17,12 @@ import org.rtcoord.java.JavaTree;
 
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -32,7 +36,7 @@ class JavaCoordinatorTest {
     void start() {
         naming = NamingService.Companion.start(0, null, "127.0.0.1");
         system = Scenarios.INSTANCE.localisation(naming.getCorbaloc(), "127.0.0.1");
-        tree = JavaTree.create(new TreeConfig(List.of(naming.getAddress())));
+        tree = new JavaTree(new TreeConfig(List.of(naming.getAddress())));
     }
 
     @AfterEach
@@ -65,6 +69,35 @@ class JavaCoordinatorTest {
         while (gyro.state() != LifeCycle.ERROR && System.nanoTime() < deadline) Thread.sleep(20);
         assertEquals(LifeCycle.ERROR, gyro.state());
         assertEquals(null, log.poll(500, TimeUnit.MILLISECONDS));
+    }
+
+    @Test
+    void aJavaListenerFollowsEachRulesStatus() throws Exception {
+        BlockingQueue<String> statuses = new LinkedBlockingQueue<>();
+        BlockingQueue<Integer> failures = new LinkedBlockingQueue<>();
+        String script = "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n";
+        try (JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "reset.coord.kts", script)) {
+            coordinator.subscribeRules(Runnable::run, (rule, status) -> statuses.add(rule + ": " + status.getFirings()));
+            Subscription counted = coordinator.subscribeFailures(Runnable::run, failures::add);
+            assertEquals(0, failures.poll(10, TimeUnit.SECONDS));
+            counted.close();
+            coordinator.start();
+            assertEquals("gyro0.rtc enters ERROR: 0", statuses.poll(10, TimeUnit.SECONDS));
+            system.component("gyro0").fail();
+            assertEquals("gyro0.rtc enters ERROR: 1", statuses.poll(20, TimeUnit.SECONDS));
+        }
+    }
+
+    @Test
+    void aClosedCoordinatorSaysItIsClosed() throws Exception {
+        JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "idle.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n");
+        coordinator.start();
+        coordinator.close();
+        // Before, kotlinx's JobCancellationException.
+        ClosedException closed = assertThrows(ClosedException.class, coordinator::start);
+        assertEquals("coordinator: closed", closed.getMessage());
+        ExecutionException async = assertThrows(ExecutionException.class, () -> coordinator.startAsync().get(10, TimeUnit.SECONDS));
+        assertInstanceOf(ClosedException.class, async.getCause());
     }
 
     @Test
