@@ -128,7 +128,7 @@ class RunCommand : TreeCommand("run") {
             val attempted = coordinator.failedActions.count { it.bestEffort }
             confirm(
                 "${now()} stopped${signal?.let { " by $it" }.orEmpty()}; ${count(handlers.size, "handler failure")}; " +
-                    "${count(failed.values.sum(), "failed action")} ($attempted attempted, went on)$machines",
+                    "${count(failed.values.sum(), "failed action")}${if (attempted > 0) " ($attempted attempted, went on)" else ""}$machines",
             )
             handlers.forEach { confirm("  $it") }
             for ((action, times) in failed) {
