@@ -15,12 +15,12 @@ import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
-import org.rtcoord.NameServerNode
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
 import org.rtcoord.cli.serve.LiveService
 import org.rtcoord.cli.serve.ServeOptions
 import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.runtime.LiveCheck
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import java.time.LocalTime
@@ -32,8 +32,10 @@ import kotlin.time.TimeSource
 /**
  * Runs a coordinator script against the live system until SIGINT/SIGTERM or `--for` elapses, logging
  * how each component is watched, managers that die, each rule firing, action and mode transition. On
- * the way out the coordinator's observers are detached and a summary says which actions failed, and
- * whether each stopped its handler or was only attempted; a stop by signal is a clean exit (status 0).
+ * the way out the coordinator's observers are detached and a summary lists each handler that failed, with
+ * the line of the script it failed at, and each action that failed, and whether it stopped its handler or
+ * was only attempted; a stop by signal is a clean exit (status 0). A rule that can never fire (what it
+ * names lacks its port, parameter or configuration set) is a warning at start, an error with `--strict`.
  * With `--fail-on-handler-error` the first handler that fails stops the run with status 1, so that a
  * service manager restarts it.
  */
@@ -58,6 +60,11 @@ class RunCommand : TreeCommand("run") {
         "--require-name-servers",
         help = "Exit 1 when a name server does not answer at start, instead of saying so and trying again until it does.",
     ).flag()
+    private val strict by option(
+        "--strict",
+        help = "Exit 1 at start when a rule or mode can never fire: what it names lacks the parameter or configuration set it is about " +
+            "(without it, a warning says so and the coordinator runs).",
+    ).flag()
     private val serve by option("--serve", help = "Serve a live view of the system and the coordinator (see rtcoord serve).").flag()
     private val serving by ServeOptions(prefix = "serve-")
 
@@ -80,11 +87,17 @@ class RunCommand : TreeCommand("run") {
             // that stops or starts answering; the coordinator says which managers die.
             tree.onWatching { event -> if (event !is ManagerDied && event !is ManagerReturned) echo("${now()} ${event.path} ${event.what()}") }
             if (!awaitNameServers(signals, duration)) return
+            val check = if (tree.nameServers.isEmpty()) null else LiveCheck(tree).check(coordination, script)
+            val cannotFire = check?.cannotFire.orEmpty()
+            cannotFire.forEach { echo("rtcoord: warning: $it; what names it can never fire", err = true) }
+            if (strict && cannotFire.isNotEmpty()) fail("$script: ${count(cannotFire.size, "rule or mode")} can never fire (--strict)")
             try {
                 coordinator.start()
             } catch (e: RtcException) {
-                // A rule's target that does not exist, is ambiguous or is of the wrong kind: nothing was started.
-                fail("$script: ${explain(e)}", e)
+                // A rule's target that does not exist, is ambiguous or is of the wrong kind: nothing was started. Said where, as check says it.
+                val lines = check?.let { missingLines(it.missing - cannotFire.toSet(), tree) }.orEmpty()
+                lines.dropLast(1).forEach { echo("rtcoord: $it", err = true) }
+                fail(lines.lastOrNull() ?: "$script: ${explain(e)}", e)
             }
             confirm("${now()} coordinating:")
             coordination.description.forEach { confirm("  $it") }
@@ -96,6 +109,7 @@ class RunCommand : TreeCommand("run") {
             }
 
             val signal = coroutineScope {
+                if (session.verbose) launch { coordinator.failureCounts.collect { printFramesFrom(coordinator) } }
                 if (failOnHandlerError) {
                     launch {
                         coordinator.failureCounts.first { it > 0 }
@@ -106,18 +120,35 @@ class RunCommand : TreeCommand("run") {
             }
             service?.close()
             // Detached while the ORB still works; after a signal, a second one ends the process at once.
-            coordinator.close()
+            coordinator.stop()
             // Events the machine watched for that no transition took in the mode it was in (RunningMachine.unconsumed).
             val machines = coordinator.machines.joinToString("") { "; ${it.name} in ${it.mode.value}, ${it.unconsumed} events no transition took" }
+            val handlers = coordinator.handlerFailures
             val failed = coordinator.failedActions.groupingBy { it }.eachCount()
-            confirm("${now()} stopped${signal?.let { " by $it" }.orEmpty()}; ${coordinator.failures} handler failures; ${failed.values.sum()} failed actions$machines")
+            val attempted = coordinator.failedActions.count { it.bestEffort }
+            confirm(
+                "${now()} stopped${signal?.let { " by $it" }.orEmpty()}; ${count(handlers.size, "handler failure")}; " +
+                    "${count(failed.values.sum(), "failed action")}${if (attempted > 0) " ($attempted attempted, went on)" else ""}$machines",
+            )
+            handlers.forEach { confirm("  $it") }
             for ((action, times) in failed) {
                 val effect = if (action.bestEffort) "attempted, went on" else "stopped its handler"
-                confirm("  failed: ${action.action}: ${action.reason} ($effect${if (times > 1) ", $times times" else ""})")
+                confirm("  failed action: ${action.action}: ${action.reason} ($effect${if (times > 1) ", $times times" else ""})")
             }
             if (signal == HANDLER_FAILED) throw ProgramResult(1)
         }
     }
+
+    private var framesShown = 0
+
+    /** With -v: the script's frames of each handler failure not shown yet, under its log line. */
+    private fun printFramesFrom(coordinator: Coordinator) {
+        val failures = coordinator.handlerFailures
+        failures.drop(framesShown).forEach { failure -> failure.scriptFrames.forEach { echo("    at $it") } }
+        framesShown = failures.size
+    }
+
+    private fun count(n: Int, what: String): String = "$n ${if (n == 1) what else what.split(" or ").joinToString(" or ") { "${it}s" }}"
 
     /**
      * Waits until every name server answers, saying which do not and when each is reached; false when
@@ -139,14 +170,6 @@ class RunCommand : TreeCommand("run") {
             echo("${now()} name server ${server.address} reached after ${lost.elapsedNow().inWholeMilliseconds / 1000.0} s")
         }
         return true
-    }
-
-    /** Why [server] does not answer a listing now; null when it does. */
-    private suspend fun unreachable(server: NameServerNode): RtcException? = try {
-        server.refresh()
-        null
-    } catch (e: RtcException) {
-        e
     }
 
     private fun now(): String = LocalTime.now().format(TIME)

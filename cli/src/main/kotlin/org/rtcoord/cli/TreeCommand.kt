@@ -8,6 +8,7 @@ import kotlinx.coroutines.runBlocking
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.ManagerNode
+import org.rtcoord.NameServerNode
 import org.rtcoord.Node
 import org.rtcoord.NotFoundException
 import org.rtcoord.Port
@@ -65,6 +66,14 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
 
     /** Ends the command with a usage error (status 2) about this command's arguments. */
     protected fun usage(what: String): Nothing = throw UsageError(what).apply { context = currentContext }
+
+    /** Why [server] does not answer a listing now; null when it does. */
+    protected suspend fun unreachable(server: NameServerNode): RtcException? = try {
+        server.refresh()
+        null
+    } catch (e: RtcException) {
+        e
+    }
 
     /** Prints [value] as JSON. */
     protected fun echoJson(value: Any?) {

@@ -152,17 +152,17 @@ class BadInputTest {
                 "rtcoord: $localiser: no parameter 'nope' in configuration set 'default' (parameters: fail, gain)"),
             Row("unknown component of a manager", listOf("mgr", manager, "delete", "sonar0"),
                 "rtcoord: $manager: no component 'sonar0' is hosted by this manager or its slaves"),
-            Row("unknown component in a script", run(unknown), "rtcoord: $unknown: sonar0: no such component on $ns"),
-            Row("unknown manager in a script", run(noManager), "rtcoord: $noManager: sonar.mgr: no such manager on $ns"),
+            Row("unknown component in a script", run(unknown), "rtcoord: $unknown:1:14: sonar0: no such component on $ns"),
+            Row("unknown manager in a script", run(noManager), "rtcoord: $noManager:1:12: sonar.mgr: no such manager on $ns"),
             // Ambiguous names.
             Row("ambiguous component in a script", run(ambiguous),
-                "rtcoord: $ambiguous: twin0: ambiguous: matches /$ns/left.host_cxt/twin0.rtc, /$ns/right.host_cxt/twin0.rtc"),
+                "rtcoord: $ambiguous:1:14: twin0: ambiguous: matches /$ns/left.host_cxt/twin0.rtc, /$ns/right.host_cxt/twin0.rtc"),
             // Wrong node kinds.
             Row("a context for a component", listOf("act", host), "rtcoord: $host: is a context, not a component"),
             Row("a component for a port", listOf("con", localisation.path("laser0.rtc"), "$localiser:laser"),
                 "rtcoord: ${localisation.path("laser0.rtc")}: bad path: no port given (component.rtc:port) (segment 3)"),
             Row("a component for a manager in a script", run(wrongKind),
-                "rtcoord: $wrongKind: ${localisation.path("laser0.rtc")}: is a component, not a manager"),
+                "rtcoord: $wrongKind:1:12: ${localisation.path("laser0.rtc")}: is a component, not a manager"),
             // Invalid connector properties.
             Row("a dataflow type the port does not offer", listOf("con", laser, "$localiser:laser", "--allow-duplicate", "-p", "dataport.dataflow_type=telepathy"),
                 "rtcoord: $laser: connect rejected: $laser does not offer dataport.dataflow_type=telepathy (offers push)"),
@@ -244,10 +244,11 @@ class BadInputTest {
         try {
             val log = runRtcoord("-n", ns, "run", "--for", "3s", handler).ok().lines()
             val created = log.single { "created " in it }.substringAfter("created ")
-            val failure = log.single { "timer after 0s failed:" in it }
+            // The first: the summary repeats it.
+            val failure = log.first { "timer after 0s failed at create-then-connect.coord.kts:3: " in it }
             assertTrue(
                 failure.endsWith(
-                    "timer after 0s failed: ${localisation.path("gyro0.rtc:gyro")}: connect rejected: incompatible data types: " +
+                    "${localisation.path("gyro0.rtc:gyro")}: connect rejected: incompatible data types: " +
                         "${localisation.path("gyro0.rtc:gyro")} carries IDL:RTC/TimedDouble:1.0, $created:odo carries IDL:RTC/TimedDoubleSeq:1.0",
                 ),
                 log.joinToString("\n"),
@@ -268,8 +269,8 @@ class BadInputTest {
         val failing = script("failing.coord.kts", "every(200.milliseconds) { error(\"the handler gives up\") }\n")
         val stopped = runRtcoord("-n", ns, "run", "--for", "20s", "--fail-on-handler-error", failing)
         assertEquals(1, stopped.statusCode, stopped.output)
-        assertTrue(stopped.output.contains("failed: the handler gives up"), stopped.output)
-        assertTrue(stopped.output.contains("stopped by a handler that failed (--fail-on-handler-error); 1 handler failures"), stopped.output)
+        assertTrue(stopped.output.contains("timer every 200ms failed at failing.coord.kts:1: IllegalStateException: the handler gives up"), stopped.output)
+        assertTrue(stopped.output.contains("stopped by a handler that failed (--fail-on-handler-error); 1 handler failure;"), stopped.output)
 
         val kept = runRtcoord("-n", ns, "run", "--for", "1s", failing).ok()
         assertTrue(Regex("stopped; [2-9]\\d* handler failures").containsMatchIn(kept), kept)
@@ -284,7 +285,7 @@ class BadInputTest {
         val before = liveState()
         val log = runRtcoord("-n", ns, "run", "--for", "2s", configure).ok()
         assertTrue(
-            log.lines().any { it.endsWith("timer after 0s failed: $localiser: no parameter 'nope' in configuration set 'default' (parameters: fail, gain)") },
+            log.lines().any { it.endsWith("timer after 0s failed at configure.coord.kts:2: NotFoundException: $localiser: no parameter 'nope' in configuration set 'default' (parameters: fail, gain)") },
             log,
         )
         assertEquals(before, liveState())

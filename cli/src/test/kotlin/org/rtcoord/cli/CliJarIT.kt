@@ -77,6 +77,17 @@ class CliJarIT {
     }
 
     @Test
+    fun `-v prints the script's frames of a failed handler under its line`(@TempDir directory: Path) {
+        // In a process of its own, as -v's logging is configured once per JVM.
+        val script = directory.resolve("parse.coord.kts").also { Files.writeString(it, "fun parse(text: String) = text.toInt()\nafter(0.seconds) { parse(\"three\") }\n") }
+        val address = localisation.host.removePrefix("/").substringBefore('/')
+        val ran = rtcoord("-v", "-n", address, "run", "--for", "2s", script.toString())
+        assertEquals(0, ran.status, ran.stderr)
+        val failed = """timer after 0s failed at parse\.coord\.kts:1: NumberFormatException: For input string: "three"\n"""
+        assertTrue(Regex("""$failed    at parse\.coord\.kts:1 \(.+\)\n    at parse\.coord\.kts:2 \(.+\)\n""").containsMatchIn(ran.stdout), ran.stdout)
+    }
+
+    @Test
     fun `the jar exits promptly after watching, observers detached`() {
         val watched = rtcoord("watch", localisation.path("gyro0.rtc"), "--for", "1s")
         assertEquals(0, watched.status, watched.stderr)

@@ -61,6 +61,104 @@ class ScriptCommandsTest {
     }
 
     @Test
+    fun `check with a name server checks what handlers and data rules name, and says what the script creates and what it computes`() {
+        Localisation().use { localisation ->
+            val handlers = script(
+                "handlers.coord.kts",
+                """
+                val target = args.firstOrNull() ?: "gyro0.rtc"
+                on(port("laser0.rtc:scan")).silentFor(500.milliseconds) { log("quiet") }
+                every(5.seconds) {
+                    component("lazer0.rtc").reset()
+                    manager().create("odo_localise")
+                    component("odo_localise0.rtc").activate()
+                    component(target).reset()
+                    manager().create("odo_lokalise")
+                }
+                """.trimIndent() + "\n",
+            )
+            val result = runRtcoord("-n", localisation.naming.address, "check", handlers.toString())
+            assertEquals(1, result.statusCode, result.output)
+            val errors = result.stderr.lines().filter { it.isNotEmpty() }
+            assertEquals(listOf("$handlers:2:9: laser0.rtc:scan", "$handlers:4:15: lazer0.rtc", "$handlers:8:22: odo_lokalise"), errors.map { it.split(": ").take(2).joinToString(": ") }, result.stderr)
+            assertTrue(errors[1].endsWith("did you mean laser0.rtc?"), errors[1])
+            assertTrue(errors[2].contains("no manager can create or load 'odo_lokalise' (factories: ") && "odo_localise" in errors[2], errors[2])
+            assertTrue("$handlers:6:15: odo_localise0.rtc: created by the script at $handlers:5\n" in result.stdout, result.stdout)
+            assertTrue("$handlers: not checked: 1 name computed as the script runs, at 7:15 (target)\n" in result.stdout, result.stdout)
+            assertTrue("everything it names is there" !in result.stdout, result.stdout)
+        }
+    }
+
+    @Test
+    fun `check with a name server that does not answer is an error, not a pass`() {
+        val good = script("good.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) { reset() }\n")
+        val server = deadNameServer()
+        val result = runRtcoord("-n", server, "check", good.toString())
+        assertEquals(1, result.statusCode, result.output)
+        assertTrue(result.stderr.startsWith("$good: its names cannot be checked: name server $server: "), result.stderr)
+        assertTrue("everything it names is there" !in result.stdout, result.stdout)
+    }
+
+    @Test
+    fun `every example passes check against the fixtures, modes creating what its network names`() {
+        Localisation().use { localisation ->
+            val examples = Files.list(Path.of("..", "examples")).use { files -> files.filter { it.toString().endsWith(".coord.kts") }.sorted().toList() }
+            assertTrue(examples.size >= 6, examples.toString())
+            for (example in examples) {
+                val output = runRtcoord("-n", localisation.naming.address, "check", example.toString()).ok()
+                assertTrue("$example: everything it names is there" in output, output)
+            }
+            val modes = runRtcoord("-n", localisation.naming.address, "check", "../examples/modes.coord.kts").ok()
+            assertTrue(Regex("""modes\.coord\.kts:\d+:\d+: odo_localise0\.rtc: created by the script at \S+modes\.coord\.kts:\d+""").containsMatchIn(modes), modes)
+        }
+    }
+
+    @Test
+    fun `run names the line, type and message of each handler failure, and the summary lists them`() {
+        Localisation().use { localisation ->
+            val failing = script(
+                "three.coord.kts",
+                "after(0.seconds) {\n    log(\"parsing\")\n    val n = \"three\".toInt()\n}\nafter(0.seconds) {\n    component(\"lazer0.rtc\").deactivate()\n}\n",
+            )
+            val result = runRtcoord("-n", localisation.naming.address, "run", "--for", "2s", failing.toString())
+            assertEquals(0, result.statusCode, result.output)
+            val thrown = "timer after 0s failed at three.coord.kts:3: NumberFormatException: For input string: \"three\""
+            assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} ${Regex.escape(thrown)}\n""").containsMatchIn(result.stdout), result.stdout)
+            val lookup = "timer after 0s failed at three.coord.kts:6: NotFoundException: lazer0.rtc: "
+            assertTrue(lookup in result.stdout, result.stdout)
+            assertTrue("stopped; 2 handler failures; 1 failed action\n" in result.stdout, result.stdout)
+            assertTrue("\n  $thrown\n" in result.stdout, result.stdout)
+            assertTrue("\n  $lookup" in result.stdout, result.stdout)
+            assertTrue("\n  failed action: deactivate lazer0.rtc: " in result.stdout, result.stdout)
+        }
+    }
+
+    @Test
+    fun `run says where a misspelt target is, warns of rules that can never fire, and refuses them with --strict`() {
+        Localisation().use { localisation ->
+            val misspelt = script("misspelt.coord.kts", "on(component(\"lazer0.rtc\")).state(ERROR) { reset() }\n")
+            val refused = runRtcoord("-n", localisation.naming.address, "run", "--for", "1s", misspelt.toString()).failure()
+            assertTrue(refused.startsWith("rtcoord: $misspelt:1:14: lazer0.rtc: ") && refused.endsWith("did you mean laser0.rtc?"), refused)
+
+            val silent = script("silent.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) { }\non(port(\"laser0.rtc:scan\")).silentFor(1.seconds) { }\n")
+            val noPort = runRtcoord("-n", localisation.naming.address, "run", "--for", "1s", silent.toString())
+            assertEquals(1, noPort.statusCode, noPort.output)
+            assertEquals("rtcoord: $silent:2:9: laser0.rtc:scan: no such port (ports: laser)\n", noPort.stderr)
+
+            val never = script("never.coord.kts", "on(component(\"laser_localise0.rtc\")).configParam(\"gian\") { _, _ -> }\n")
+            val warned = runRtcoord("-n", localisation.naming.address, "run", "--for", "1s", never.toString())
+            assertEquals(0, warned.statusCode, warned.output)
+            assertEquals(
+                "rtcoord: warning: $never:1:50: gian: laser_localise0.rtc has no parameter 'gian' (parameters: fail, gain); what names it can never fire\n",
+                warned.stderr,
+            )
+            val strict = runRtcoord("-n", localisation.naming.address, "run", "--strict", never.toString())
+            assertEquals(1, strict.statusCode, strict.output)
+            assertTrue(strict.stderr.endsWith("rtcoord: $never: 1 rule or mode can never fire (--strict)\n"), strict.stderr)
+        }
+    }
+
+    @Test
     fun `run coordinates until --for elapses, then detaches its observers`() {
         Localisation().use { localisation ->
             val gyro = localisation.system.component("gyro0")
@@ -227,9 +325,11 @@ class ScriptCommandsTest {
             val result = run.get()
             assertEquals(0, result.statusCode, result.stderr)
             val path = localisation.path("gyro0.rtc")
-            assertTrue("stopped; 1 handler failures; 2 failed actions\n" in result.stdout, result.stdout)
-            assertTrue("  failed: reset $path: reset failed: RTC_ERROR (in context 0) (attempted, went on)\n" in result.stdout, result.stdout)
-            assertTrue("  failed: reset $path: reset failed: RTC_ERROR (in context 0) (stopped its handler)\n" in result.stdout, result.stdout)
+            assertTrue("stopped; 1 handler failure; 2 failed actions (1 attempted, went on)\n" in result.stdout, result.stdout)
+            // The reset that stopped the handler is on line 3; its failure surfaced after the call suspended.
+            assertTrue("  rule 'gyro0.rtc enters ERROR' failed at broken.coord.kts:3: OperationFailedException: $path: reset failed: RTC_ERROR (in context 0)\n" in result.stdout, result.stdout)
+            assertTrue("  failed action: reset $path: reset failed: RTC_ERROR (in context 0) (attempted, went on)\n" in result.stdout, result.stdout)
+            assertTrue("  failed action: reset $path: reset failed: RTC_ERROR (in context 0) (stopped its handler)\n" in result.stdout, result.stdout)
         }
     }
 

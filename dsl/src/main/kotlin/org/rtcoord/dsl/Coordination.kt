@@ -80,6 +80,25 @@ public open class Coordination(
     }
 
     /**
+     * Runs [action] once when the coordinator starts, once its rules, machines and supervisors watch:
+     * `onStart { log("coordinating ${components("*").size} components") }`. A handler like a timer's.
+     */
+    public fun onStart(action: suspend Reaction.() -> Unit) {
+        timers += Timer("on start", Duration.ZERO, null, action, subject = "on start")
+    }
+
+    /**
+     * Runs [action] when the coordinator stops ([org.rtcoord.dsl.runtime.Coordinator.stop]; `rtcoord run`
+     * at a signal or the end of `--for`), before its rules stop watching: `onStop { component("odo_localise0.rtc").deactivate() }`.
+     * Each such action gets the stop's deadline; its failures are logged and counted like a handler's.
+     */
+    public fun onStop(action: suspend Reaction.() -> Unit) {
+        stopActions += action
+    }
+
+    internal val stopActions = mutableListOf<suspend Reaction.() -> Unit>()
+
+    /**
      * Declares the modes of the whole system, a hierarchical state machine named [name] (see
      * [ModeBuilder]): `modes("system") { initial("nominal"); mode("nominal") { ... } }`. The declaration
      * is checked as a whole when [declare] returns and rejected with an [InvalidMachineException] naming
@@ -100,7 +119,7 @@ public open class Coordination(
      * indented by nesting: what `check` shows and tools can draw.
      */
     public val description: List<String>
-        get() = rules.map { "on ${it.description}" } + dataRules.map { "on ${it.description}" } + timers.map { it.description } + supervisions.map { it.description } +
+        get() = rules.map { "on ${it.description}" } + dataRules.map { "on ${it.description}" } + timers.map { it.description } + stopActions.map { "on stop" } + supervisions.map { it.description } +
             machineList.flatMap { it.description }
 
     internal val dataRules = mutableListOf<DataRule>()
@@ -114,5 +133,5 @@ public open class Coordination(
     }
 
     /** What was declared so far, frozen: later declarations do not change it. */
-    internal fun plan(): Plan = Plan(rules.toList(), dataRules.toList(), timers.toList(), supervisions.toList(), machineList.toList(), nameServers.toList(), managers.toList(), watching, directory)
+    internal fun plan(): Plan = Plan(rules.toList(), dataRules.toList(), timers.toList(), stopActions.toList(), supervisions.toList(), machineList.toList(), nameServers.toList(), managers.toList(), watching, directory)
 }

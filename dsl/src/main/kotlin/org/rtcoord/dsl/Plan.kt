@@ -16,6 +16,8 @@ internal class Plan(
     val rules: List<Rule<*>>,
     val dataRules: List<DataRule>,
     val timers: List<Timer>,
+    /** What runs when a run stops, before it stops watching. */
+    val stopActions: List<suspend Reaction.() -> Unit>,
     val supervisions: List<Supervision>,
     val machines: List<ModeMachine>,
     val nameServers: List<String>,

@@ -2,19 +2,23 @@ package org.rtcoord.dsl
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.TimeoutCancellationException
+import kotlinx.coroutines.delay
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
+import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.ComponentNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcEvent
 import org.rtcoord.dsl.runtime.ActionJournal
 import org.rtcoord.dsl.runtime.BestEffort
 import org.rtcoord.dsl.runtime.Engine
+import org.rtcoord.dsl.runtime.ScriptCallSite
 import org.rtcoord.dsl.runtime.Undo
 import org.rtcoord.profile.ProfileDifference
 import org.rtcoord.profile.RestoreReport
 import org.rtcoord.profile.SystemProfiles
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 
 /**
  * What a rule's handler (or a timer) can do. Every action suspends until done, is logged, and fails with
@@ -50,7 +54,10 @@ public class Reaction internal constructor(
      * `components("*_localise?").forEach { it.deactivate() }`. Empty when none matches a glob; a name or
      * path that names nothing fails.
      */
-    public suspend fun components(pattern: String): List<ComponentRef> = engine.identities.nodes(pattern).map(engine::reference)
+    public suspend fun components(pattern: String): List<ComponentRef> {
+        ScriptCallSite.mark()
+        return engine.identities.nodes(pattern).map(engine::reference)
+    }
 
     /** A port, as `component:port`. */
     public fun port(path: String): PortRef = portRef(path)
@@ -216,6 +223,18 @@ public class Reaction internal constructor(
         withTimeout(timeout) { block() }
     } catch (e: TimeoutCancellationException) {
         throw TimedOut("did not finish within $timeout")
+    }
+
+    /**
+     * Waits until [condition] holds, reading it every [poll], and fails with [TimedOut] when it still does
+     * not after [timeout]: `await(5.seconds) { component("odo_localise0.rtc").state() == ACTIVE }`. A
+     * condition that throws ends the wait with its failure. To wait a fixed time, `delay(500.milliseconds)`.
+     */
+    public suspend fun await(timeout: Duration, poll: Duration = 100.milliseconds, condition: suspend Reaction.() -> Boolean) {
+        ScriptCallSite.mark()
+        withTimeoutOrNull(timeout) {
+            while (!condition()) delay(poll)
+        } ?: throw TimedOut("the condition did not hold within $timeout")
     }
 
     /** Writes [message] to the coordinator's log. */

@@ -2,10 +2,12 @@ package org.rtcoord.dsl
 
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.Connection
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerNode
 import org.rtcoord.Port
+import org.rtcoord.PortSnapshot
 import org.rtcoord.RtcPath
 import org.rtcoord.dsl.runtime.Engine
 import org.rtcoord.dsl.runtime.Undo
@@ -32,8 +34,14 @@ public class ComponentRef internal constructor(
     /** Its state in its default execution context, read now (from the component answering to the name now). */
     public suspend fun state(): LifeCycle = Engine.current().withComponent(selector) { it.state() }
 
-    /** What was last read of it. */
+    /** What was last read of it: its profile, ports with their connectors, execution contexts with its state in each. */
     public suspend fun snapshot(): ComponentSnapshot = node().snapshot()
+
+    /**
+     * Its configuration: every set by id with its parameters, and which set is active
+     * ([ConfigurationSnapshot.value] reads a parameter in force); read the first time, kept up to date after.
+     */
+    public suspend fun configuration(): ConfigurationSnapshot = Engine.current().withComponent(selector) { it.configuration() }
 
     /** Activates it and waits until it is ACTIVE. Undone by a deactivation. */
     public suspend fun activate(): Unit = Engine.current().actReversibly("activate", this) { it.activate(); { deactivate() } }
@@ -79,6 +87,24 @@ public class ComponentRef internal constructor(
 @RtcDsl
 public class PortRef internal constructor(public val component: ComponentRef, public val name: String) {
     internal suspend fun port(): Port = component.node().port(name)
+
+    /** What was last read of it: its kind, data type, properties and connectors (ids, names, properties). */
+    public suspend fun snapshot(): PortSnapshot = port().snapshot()
+
+    /** Its connections, read now, each with both its ends ([Connection.ports]: OpenRTM's full name and, where known, the path). */
+    public suspend fun connections(): List<Connection> = port().connections()
+
+    /**
+     * The ports at the far end of its connections, read now, each once: what a connector's snapshot alone
+     * does not say. `port("laser0.rtc:laser").peers()` gives `[laser_localise0.rtc:laser]`-like refs,
+     * named by path where the tree knows the far component, else by OpenRTM's `instance.port`.
+     */
+    public suspend fun peers(): List<PortRef> {
+        val here = port()
+        return here.connections().flatMap { it.ports }.filter { it.path != here.path }.map { end ->
+            end.path?.let { portRef(it.toString()) } ?: PortRef(ComponentRef(end.fullName.substringBeforeLast('.')), end.fullName.substringAfterLast('.'))
+        }.distinctBy { it.toString() }
+    }
 
     /** Disconnects every connection of this port. Undone by making the same connections again. */
     public suspend fun disconnectAll() {

@@ -40,5 +40,11 @@ internal class Rule<E : RtcEvent>(
     val target: Target get() = pattern.target
 }
 
-/** A timer: [action] after [delay], then every [period] if there is one. */
-internal class Timer(val description: String, val delay: Duration, val period: Duration?, val action: suspend Reaction.() -> Unit)
+/** A timer: [action] after [delay], then every [period] if there is one; [subject] names its runs in the log. */
+internal class Timer(
+    val description: String,
+    val delay: Duration,
+    val period: Duration?,
+    val action: suspend Reaction.() -> Unit,
+    val subject: String = "timer $description",
+)

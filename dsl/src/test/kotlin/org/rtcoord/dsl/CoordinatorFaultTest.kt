@@ -197,6 +197,6 @@ class CoordinatorFaultTest {
         await("every transition to reach the slow handler", 20.seconds) { slow.size == 40 }
         assertEquals(List(20) { listOf(LifeCycle.INACTIVE, LifeCycle.ACTIVE) }.flatten(), slow.toList())
         await("every failure to be counted") { coordinator.failures == 40 }
-        assertTrue(log.any { it == "rule 'busy0 changes state' failed: handler bug" }, log.toString())
+        assertTrue(log.any { it == "rule 'busy0 changes state' failed: IllegalStateException: handler bug" }, log.toString())
     }
 }

@@ -34,7 +34,7 @@ class CoordinatorTest : CoordinatedSystem() {
             coordinator.start()
             system.component("gyro0").fail()
             await("the failure to be counted") { coordinator.failures == 1 }
-            assertTrue(log.any { it.contains("failed: first reaction fails after the reset") }, log.toString())
+            assertTrue(log.any { it.contains("failed: IllegalStateException: first reaction fails after the reset") }, log.toString())
             system.component("gyro0").activate()
             system.component("gyro0").fail()
             await("the second reaction to reactivate gyro0") { calls == 2 && system.component("gyro0").state == RTC.LifeCycleState.ACTIVE_STATE }

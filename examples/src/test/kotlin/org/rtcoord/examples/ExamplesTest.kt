@@ -160,6 +160,18 @@ class ExamplesTest {
     }
 
     @Test
+    fun `bounded restart - a gyro whose reset fails is left in ERROR, and the coordinator says so`(): Unit = runBlocking {
+        ExampleSystem("bounded-restart.coord.kts", Mode.PUSH.options, args = listOf("3")).use { example ->
+            example.coordinator.start()
+            val gyro = example.system.component("gyro0")
+            gyro.breakDown()
+            await("the coordinator to say it leaves the gyro") { example.log.any { it.contains("gyro0 cannot be reset: leaving it in ERROR") } }
+            assertEquals(RTC.LifeCycleState.ERROR_STATE, gyro.state)
+            assertEquals(0, example.coordinator.failures, "a failed reset is expected, not a handler failure")
+        }
+    }
+
+    @Test
     fun `gain schedule - a gain above 2 switches to the precise set`(): Unit = runBlocking {
         ExampleSystem("gain-schedule.coord.kts", Mode.PUSH.options).use { example ->
             example.coordinator.start()

@@ -14,6 +14,7 @@ import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
+import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
 import org.rtcoord.Node
@@ -31,6 +32,7 @@ import org.rtcoord.dsl.Rule
 import org.rtcoord.dsl.Supervision
 import org.rtcoord.dsl.Target
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * Runs a [Coordination]'s plan against a live system: subscribes its rules, starts its timers, mode
@@ -67,9 +69,13 @@ public class Coordinator(
     private val supervisors = CopyOnWriteArrayList<Supervisor>()
     private val dataRuns = CopyOnWriteArrayList<DataRuleRun>()
     private val failureCount = MutableStateFlow(0)
+    private val failureList = CopyOnWriteArrayList<HandlerFailure>()
 
-    /** How many handler runs failed so far. */
+    /** How many handler runs failed so far: the size of [handlerFailures]. */
     public val failures: Int get() = failureCount.value
+
+    /** Every handler run that failed so far, in order, each with its subject and the line of the script it failed at. */
+    public val handlerFailures: List<HandlerFailure> get() = failureList.toList()
 
     /** [failures] as it changes, for those who wait for the first: `failureCounts.first { it > 0 }`. */
     public val failureCounts: StateFlow<Int> = failureCount.asStateFlow()
@@ -128,7 +134,7 @@ public class Coordinator(
             scope.launch {
                 delay(timer.delay)
                 while (isActive) {
-                    run("timer ${timer.description}") { Reaction(engine, null).handle(timer.action) }
+                    run(timer.subject) { Reaction(engine, null).handle(timer.action) }
                     delay(timer.period ?: break)
                 }
             }
@@ -243,7 +249,7 @@ public class Coordinator(
 
     private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {
         try {
-            block()
+            ScriptCallSite.tracking(block)
         } catch (e: CancellationException) {
             throw e
         } catch (e: Exception) {
@@ -252,13 +258,28 @@ public class Coordinator(
         }
     }
 
-    /** Logs the failure, then counts it: whoever sees the count can read the line. */
+    /** Logs the failure and lists it, then counts it: whoever sees the count can read the line and the list. */
     private fun failed(what: String, e: Throwable) {
-        log("$what failed: ${e.message ?: e}")
+        val failure = HandlerFailure.of(what, e)
+        log(failure.toString())
+        failureList += failure
         failureCount.update { it + 1 }
     }
 
-    /** Cancels running handlers and timers and detaches the rules' observers. Idempotent. */
+    /**
+     * Runs the script's `onStop` actions, each within 10 s (one that takes longer is cut short and
+     * logged), then [close]s: what a host calls to end a run the script is told of.
+     */
+    public suspend fun stop() {
+        withContext(engine) {
+            for (action in plan.stopActions) {
+                withTimeoutOrNull(STOP_LIMIT) { run("on stop") { Reaction(engine, null).handle(action) } } ?: log("on stop did not finish within $STOP_LIMIT: cut short")
+            }
+        }
+        close()
+    }
+
+    /** Cancels running handlers and timers and detaches the rules' observers, without the script's `onStop` actions ([stop] runs them). Idempotent. */
     override fun close() {
         supervisors.forEach(Supervisor::close)
         dataRuns.forEach(DataRuleRun::stop)
@@ -272,6 +293,9 @@ public class Coordinator(
     }
 
     private companion object {
+        /** How long each `onStop` action may take: a stop must end, even with a handler that hangs. */
+        val STOP_LIMIT = 10.seconds
+
         fun describe(event: RtcEvent): String = "${event.javaClass.simpleName} at ${(event.source as? ComponentNode)?.path ?: event.path}"
     }
 }

@@ -71,7 +71,8 @@ internal class Engine(
      * records the action with its undo once it succeeded. A failure is recorded in [failedActions].
      */
     suspend fun actReversibly(what: String, ref: ComponentRef, namesItself: Boolean = false, action: suspend (ComponentNode) -> Undo?) {
-        var line = what
+        // Named by the script's selector until the component is found, so that a failed lookup still says what it was for.
+        var line = if (namesItself) what else "$what ${ref.selector}"
         fun describe(node: ComponentNode) = (if (namesItself) what else "$what ${node.path}").also { line = it }
         val undo = recorded({ line }) {
             withComponent(ref.selector, { log(describe(it)) }, { log("${describe(it)} (looked up again)") }, action)
@@ -90,6 +91,7 @@ internal class Engine(
 
     /** Runs [action], recording its failure as one of [what]'s. */
     private suspend fun <T> recorded(what: () -> String, action: suspend () -> T): T = try {
+        ScriptCallSite.mark()
         action()
     } catch (e: CancellationException) {
         throw e
@@ -180,8 +182,12 @@ internal class Engine(
     }
 
     companion object Key : CoroutineContext.Key<Engine> {
-        /** The engine of the run the caller executes in. */
-        suspend fun current(): Engine = currentCoroutineContext()[Engine]
-            ?: throw IllegalStateException("a component, port or manager acts only while a coordinator runs: in a rule's handler, a timer, a mode's action or an escalation handler")
+        /** The engine of the run the caller executes in; notes where in its script the caller is (see [ScriptCallSite]). */
+        suspend fun current(): Engine {
+            val engine = currentCoroutineContext()[Engine]
+                ?: throw IllegalStateException("a component, port or manager acts only while a coordinator runs: in a rule's handler, a timer, a mode's action or an escalation handler")
+            ScriptCallSite.mark()
+            return engine
+        }
     }
 }

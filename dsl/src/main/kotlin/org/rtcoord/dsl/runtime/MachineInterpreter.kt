@@ -175,7 +175,7 @@ internal class MachineInterpreter(
     }
 
     private suspend fun holds(transition: Transition, reaction: Reaction): Boolean = try {
-        transition.guards.all { guard -> reaction.guard() }
+        ScriptCallSite.tracking { transition.guards.all { guard -> reaction.guard() } }
     } catch (e: CancellationException) {
         throw e
     } catch (e: Exception) {
@@ -241,7 +241,7 @@ internal class MachineInterpreter(
     private suspend fun run(what: String, actions: List<suspend Reaction.() -> Unit>, reaction: Reaction) {
         for (action in actions) {
             try {
-                reaction.action()
+                ScriptCallSite.tracking { reaction.action() }
             } catch (e: CancellationException) {
                 throw e
             } catch (e: Exception) {

@@ -15,7 +15,7 @@ import kotlin.script.experimental.jvm.jvm
 
 /**
  * The script definition of `*.coord.kts` coordinators: the script body is a [Coordination], with the
- * core API, the DSL, lifecycle states (`ERROR`, `ACTIVE`, ...) and duration units imported; [directory]
+ * core API, the DSL, lifecycle states (`ERROR`, `ACTIVE`, ...), duration units and `delay` imported; [directory]
  * is the script's own.
  */
 @KotlinScript(
@@ -34,6 +34,7 @@ public object CoordinatorScriptCompilation : ScriptCompilationConfiguration({
         "kotlin.time.Duration.Companion.milliseconds",
         "kotlin.time.Duration.Companion.seconds",
         "kotlin.time.Duration.Companion.minutes",
+        "kotlinx.coroutines.delay",
     )
     jvm {
         dependenciesFromCurrentContext(wholeClasspath = true)
