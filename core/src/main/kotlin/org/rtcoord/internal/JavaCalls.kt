@@ -20,7 +20,8 @@ public class JavaCalls(private val scope: CoroutineScope, private val subject: S
     /** Runs [operation] in the scope; cancelling the future cancels it. */
     public fun <T> future(operation: suspend () -> T): CompletableFuture<T> {
         val result = CompletableFuture<T>()
-        val job = scope.launch {
+        // The caller may give up: its remote calls must not hold it (see Remote).
+        val job = scope.launch(AbandonableCalls) {
             try {
                 result.complete(operation())
             } catch (e: Throwable) {

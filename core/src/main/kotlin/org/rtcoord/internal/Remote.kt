@@ -2,9 +2,12 @@ package org.rtcoord.internal
 
 import RTC.ReturnCode_t
 import kotlinx.coroutines.CoroutineDispatcher
+import kotlinx.coroutines.currentCoroutineContext
+import kotlinx.coroutines.runInterruptible
 import kotlinx.coroutines.suspendCancellableCoroutine
 import kotlinx.coroutines.sync.Semaphore
 import kotlinx.coroutines.sync.withPermit
+import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.BadParameterException
 import org.rtcoord.NotFoundException
@@ -14,6 +17,7 @@ import org.rtcoord.PreconditionNotMetException
 import org.rtcoord.RtcException
 import org.rtcoord.TimedOutException
 import org.rtcoord.UnreachableException
+import kotlin.coroutines.CoroutineContext
 import kotlin.coroutines.resume
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
@@ -24,16 +28,18 @@ import kotlin.time.Duration.Companion.milliseconds
  * backstop ends the wait at a call's own (shorter) deadline, and is the only guard on an ORB a host
  * application supplied ([orbEnforcesDeadline] false).
  *
- * Each call blocks a thread of [threads] and not the caller's: JacORB ignores interrupts until the call
- * times out, so a caller that gives up (a cancelled future, an interrupted Java thread) returns at once
- * and frees its slot, and the one thread is left to the ORB's timeout. One hung object holds at most the
- * threads of the calls made to it.
+ * A call runs on the caller's thread when the caller is on [dispatcher], as discovery and the component
+ * monitors are: a call costs no thread hand-over there, and hand-overs cost discovery more than the calls
+ * themselves. A call made for a caller who may give up ([AbandonableCalls]: the Java facades' futures
+ * and blocking calls) blocks a thread of its own instead: JacORB ignores interrupts until the call times
+ * out, so the caller returns at once and frees its slot, and the one thread is left to the ORB's timeout.
+ * One hung object holds at most the threads of the calls made to it.
  */
 internal class Remote(concurrency: Int, val defaultDeadline: Duration, private val orbEnforcesDeadline: Boolean, private val threads: TreeThreads) {
     private val slots = Semaphore(concurrency)
 
-    /** Where work that makes many calls (discovery, reading a component) runs: the tree's dispatcher. */
-    val dispatcher: CoroutineDispatcher get() = threads.dispatcher
+    /** Where calls run, [concurrency] at a time, and work that makes many calls (discovery, reading a component). */
+    val dispatcher: CoroutineDispatcher = threads.calls.limitedParallelism(concurrency)
 
     /**
      * Runs [block] once one of the tree's call slots is free; the deadline counts from then, so calls
@@ -51,23 +57,28 @@ internal class Remote(concurrency: Int, val defaultDeadline: Duration, private v
         return outcome.getOrThrow()
     }
 
-    private suspend fun <T> attempt(subject: String, operation: String, limit: Duration, block: () -> T): Result<T> =
-        suspendCancellableCoroutine { waiting ->
-            val running = threads.submit {
-                val result = try {
-                    Result.success(block())
-                } catch (e: Exception) {
-                    Result.failure(translate(e, subject, operation, limit))
-                }
-                // Ignored when the caller has given up.
-                waiting.resume(result)
-            }
+    private suspend fun <T> attempt(subject: String, operation: String, limit: Duration, block: () -> T): Result<T> {
+        fun run(): Result<T> = try {
+            Result.success(block())
+        } catch (e: Exception) {
+            Result.failure(translate(e, subject, operation, limit))
+        }
+        if (currentCoroutineContext()[AbandonableCalls] == null) return withContext(dispatcher) { runInterruptible { run() } }
+        return suspendCancellableCoroutine { waiting ->
+            // Resuming is ignored when the caller has given up.
+            val running = threads.submit { waiting.resume(run()) }
             waiting.invokeOnCancellation { running.cancel(true) }
         }
+    }
 
     private companion object {
         val BACKSTOP = 200.milliseconds
     }
+}
+
+/** Marks the calls made for a caller who may give up waiting: each blocks a thread of its own (see [Remote]). */
+internal object AbandonableCalls : CoroutineContext.Element, CoroutineContext.Key<AbandonableCalls> {
+    override val key: CoroutineContext.Key<*> get() = this
 }
 
 /** Throws the error a `ReturnCode_t` other than `RTC_OK` stands for. */

@@ -21,7 +21,8 @@ import java.util.concurrent.atomic.AtomicInteger
  * [dispatcher] runs the tree's coroutines and their timers on up to [concurrency] threads, as many as
  * remote calls in flight: work that makes calls may block in JacORB (connecting, sending) besides the
  * calls themselves. [submit] runs each blocking remote call on a thread of its own, so that a caller who
- * gives up is not held by a call JacORB will not interrupt (it ignores interrupts until its own timeout).
+ * gives up is not held by a call JacORB will not interrupt (it ignores interrupts until its own timeout);
+ * [calls] runs the calls of callers who wait for them, and the work that makes many, on the same threads.
  */
 internal class TreeThreads(concurrency: Int) : AutoCloseable {
     private val scheduled = ScheduledThreadPoolExecutor(concurrency, factory("rtcoord-tree")).apply {
@@ -30,14 +31,17 @@ internal class TreeThreads(concurrency: Int) : AutoCloseable {
         setKeepAliveTime(IDLE_SECONDS, TimeUnit.SECONDS)
         allowCoreThreadTimeOut(true)
     }
-    private val calls: ExecutorService = ThreadPoolExecutor(0, Int.MAX_VALUE, IDLE_SECONDS, TimeUnit.SECONDS, SynchronousQueue(), factory("rtcoord-call"))
+    private val callThreads: ExecutorService = ThreadPoolExecutor(0, Int.MAX_VALUE, IDLE_SECONDS, TimeUnit.SECONDS, SynchronousQueue(), factory("rtcoord-call"))
 
     /** Where the tree's coroutines run. */
     val dispatcher: CoroutineDispatcher = scheduled.asCoroutineDispatcher()
 
+    /** The threads that block in remote calls, as many as needed: [Remote] limits how many run at once. */
+    val calls: CoroutineDispatcher = callThreads.asCoroutineDispatcher()
+
     /** Runs the blocking [call] on a thread of its own; fails with [ClosedException] once the tree is closed. */
     fun submit(call: Runnable): Future<*> = try {
-        calls.submit(call)
+        callThreads.submit(call)
     } catch (e: RejectedExecutionException) {
         throw ClosedException("tree")
     }
@@ -49,7 +53,7 @@ internal class TreeThreads(concurrency: Int) : AutoCloseable {
      */
     override fun close() {
         scheduled.shutdown()
-        calls.shutdown()
+        callThreads.shutdown()
     }
 
     private companion object {
