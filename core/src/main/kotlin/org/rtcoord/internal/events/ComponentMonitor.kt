@@ -54,6 +54,7 @@ internal class ComponentMonitor(
     private val armed = EnumMap<ComponentWatch.Timer, Job>(ComponentWatch.Timer::class.java)
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
+    private val stopped = CompletableFuture<Unit>()
     /** Work that arrived during a read and was not taken with it: the next batch's. */
     private val carried = ArrayList<Work>()
     private val probe: StateProbe? = core.requests.takeIf { it.supports(node.component.ref) }?.let { requests ->
@@ -94,8 +95,6 @@ internal class ComponentMonitor(
     fun stop() {
         work.close()
     }
-
-    private val stopped = CompletableFuture<Unit>()
 
     /**
      * Waits, at most [timeout], until the monitor's coroutine has finished (its observer detached), on
@@ -274,10 +273,8 @@ internal class ComponentMonitor(
         when {
             hint.kind == HintKind.OTHER && hint.text.startsWith(ComponentWatch.MARKER_PREFIX) -> work.trySend(Work(WatchInput.MarkerBack(hint.text)))
             hint.isHeartbeat -> timers.heard()
-            traffic != null -> {
-                timers.heard()
-                val event = PortTraffic(node, traffic.first, traffic.second)
-                core.model.publish(listOf(event)) { registrations.forEach { registration -> if (registration.traffic) registration.sink.offer(it) } }
+            traffic != null -> timers.heard().also {
+                core.model.publish(listOf(PortTraffic(node, traffic.first, traffic.second))) { event -> registrations.filter { it.traffic }.forEach { it.sink.offer(event) } }
             }
             else -> work.trySend(Work(WatchInput.Hinted(hint)))
         }
