@@ -54,6 +54,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     private val liveness = ComponentLiveness(now)
     private val pending = HashSet<Timer>()
     private var markers = 0L
+    /** The wait of the latest [Timer.RECHECK] while hints lead the reads; 0 once they no longer do. */
+    private var recheckDelay = 0L
 
     /** The marker on its way while a deactivation may be held; null when none is. */
     var marker: String? = null
@@ -238,8 +240,6 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         }
         return WatchOutcome(events, timers, untaken, readAgain, marker = if (deactivating) newMarker() else null)
     }
-
-    private var recheckDelay = 0L
 
     /**
      * Reads the states again soon while hints lead the read, at growing intervals up to the grace period:
