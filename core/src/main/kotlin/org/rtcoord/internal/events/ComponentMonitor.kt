@@ -140,10 +140,7 @@ internal class ComponentMonitor(
                 WatchStep.Reconfigure -> reconfigure()
                 WatchStep.ReadAll -> readAndPublish()
                 is WatchStep.ReadStates -> readStates(step.handles)
-                is WatchStep.TakeStates -> {
-                    node.component.publishStates(step.states, step.stamp)
-                    carryOut(watch.statesRead(step.states, now(), lateHints()))
-                }
+                is WatchStep.TakeStates -> takeStates(step.states, step.stamp)
             }
         } finally {
             // Before the ticks are done: the probe of the next one expects what this batch found.
@@ -165,6 +162,11 @@ internal class ComponentMonitor(
         } catch (e: RtcException) {
             return carryOut(watch.failed(e, now(), expectedInterval()))
         }
+        takeStates(states, stamp)
+    }
+
+    /** Hands [states], read by the read stamped [stamp], to the component (for reads after writes) and to the machine. */
+    private suspend fun takeStates(states: Map<Int, LifeCycle>, stamp: Long) {
         node.component.publishStates(states, stamp)
         carryOut(watch.statesRead(states, now(), lateHints()))
     }
@@ -249,10 +251,8 @@ internal class ComponentMonitor(
                 }
             }
             // A change between that read and the attachment sent its hint to nobody: read once more.
-            if (link.observer != null) {
-                watch.observed = true
-                readAndPublish()
-            }
+            watch.observed = link.observer != null
+            if (watch.observed) readAndPublish()
         }
         val method = decideWatchMethod(registrations.map { it.options }, attachment)
         timers.poll(method?.pollPeriod)
@@ -281,9 +281,8 @@ internal class ComponentMonitor(
     }
 
     /** The watchdog's check, on its timer's thread: what the machine needs to judge the silence. */
-    private fun overdue(): WatchInput.Overdue {
-        val options = registrations.push?.options?.takeIf { link.observer != null }
-        return WatchInput.Overdue(timers.heardAt, options?.heartbeat?.inWholeMilliseconds, options?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })
+    private fun overdue(): WatchInput.Overdue = registrations.push?.options?.takeIf { link.observer != null }.let { options ->
+        WatchInput.Overdue(timers.heardAt, options?.heartbeat?.inWholeMilliseconds, options?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })
     }
 
     /** How often the component should give a sign of life: its heartbeat when observed, else its poll period. */
