@@ -132,7 +132,6 @@ internal class ComponentMonitor(
         watch.statesOnly = registrations.statesOnly
         watch.observed = link.observer != null
         val decision = watch.decide(batch.map { it.input }, now())
-        decision.marker?.let(link::sendMarker)
         publish(decision.events)
         try {
             when (val step = decision.step) {
@@ -141,6 +140,7 @@ internal class ComponentMonitor(
                 WatchStep.ReadAll -> readAndPublish()
                 is WatchStep.ReadStates -> readStates(step.handles)
                 is WatchStep.TakeStates -> takeStates(step.states, step.stamp)
+                WatchStep.Settle -> carryOut(watch.settle(now(), lateHints()))
             }
         } finally {
             // Before the ticks are done: the probe of the next one expects what this batch found.

@@ -26,11 +26,14 @@ import org.rtcoord.UnreachableException
  * | AGREED | the last read found where the hints lead | a lifecycle hint: its context's state is read | LEADING, HELD or AGREED |
  * | LEADING | hints lead to a state the last read did not find (OpenRTM-aist hints before the state shows) | [Timer.RECHECK] after 1, 2, 4... ms up to the grace period: read again | AGREED, HELD, DISAGREEING |
  * | DISAGREEING | a read found what no hint announced, or the hints lead elsewhere | [Timer.GRACE], the grace period after the first read that disagreed: a read decides | AGREED |
- * | HELD | a read confirmed a hinted deactivation, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in | the ERROR hint: a read confirms the abort; the deactivation has [Timer.SETTLED] and the marker sent when its hint came is back: a read publishes it; [Timer.HOLD_LIMIT]: a read decides | AGREED |
+ * | HELD | a read confirmed a hinted deactivation, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in | the ERROR hint: a read confirms the abort; the deactivation has [Timer.SETTLED] and the marker sent after that read is back: it is published as the confirming read found it ([settle]), hints come since taken first; [Timer.HOLD_LIMIT]: a read decides | AGREED |
  *
- * A hold is counted from the INACTIVE hint, not from the read: an abort's ERROR hint leaves the component
- * right after its INACTIVE hint, on the same connection, so the settling time is how late the ORB may take
- * the one after the other. The marker goes out when the hint comes, beside the read rather than after it.
+ * An abort's ERROR hint leaves the component before the read that overtook it answered, on the connection
+ * its INACTIVE hint came by: when the read is taken, it is already in this host's socket, waiting for the
+ * ORB's thread that reads that connection. So the marker goes out after the read, through the ORB like a
+ * hint, and comes back once the threads that take calls have taken what was waiting before it: under load
+ * it waits as long as they are late, where a fixed time would not. A hold lasts at least [Timing.settleMillis]
+ * from the INACTIVE hint besides.
  *
  * One timer of each kind is pending at a time; a timer that fires is reported by [WatchInput.Fired].
  */
@@ -91,7 +94,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         var reconfigure = false
         val handles = HashSet<Int>()
         var probed: WatchInput.Probed? = null
-        var deactivating = false
+        var settle = false
         val events = ArrayList<RtcEvent>()
         val every = last?.contexts?.map { it.handle }.orEmpty()
         fun tick() {
@@ -99,10 +102,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         }
         for (input in inputs) {
             when (input) {
-                is WatchInput.Hinted -> {
-                    deactivating = deactivating || states.deactivates(input.hint)
-                    readAll = take(input.hint, now, handles) || readAll
-                }
+                is WatchInput.Hinted -> readAll = take(input.hint, now, handles) || readAll
                 WatchInput.ReadWanted -> readAll = true
                 WatchInput.Ticked, WatchInput.Unsettled -> tick()
                 is WatchInput.Probed -> if (input.epoch == epoch) probed = input else tick()
@@ -111,14 +111,14 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                     when (input.timer) {
                         Timer.RECHECK -> handles += every
                         Timer.GRACE -> if (states.awaitingConfirmation) readAll = true
-                        Timer.SETTLED -> if (states.holding && marker == null) handles += every
+                        Timer.SETTLED -> settle = settle || (states.holding && marker == null)
                         Timer.HOLD_LIMIT -> if (states.holding) readAll = true
                     }
                 }
                 is WatchInput.MarkerBack -> if (input.marker == marker) {
                     marker = null
                     states.flushed()
-                    if (states.settlesIn(now) == 0L) handles += every
+                    settle = settle || states.settlesIn(now) == 0L
                 }
                 is WatchInput.Overdue -> readAll = overdue(input, now, events) || readAll
                 WatchInput.Reconfigured -> reconfigure = true
@@ -129,9 +129,10 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             reconfigure -> WatchStep.Reconfigure
             readAll -> WatchStep.ReadAll
             handles.isNotEmpty() -> if (last == null || liveness.state != ComponentLiveness.State.ANSWERING) WatchStep.ReadAll else WatchStep.ReadStates(handles)
+            settle -> WatchStep.Settle
             else -> probed?.let { WatchStep.TakeStates(it.states, it.stamp) } ?: WatchStep.Idle
         }
-        return WatchDecision(step, events, if (deactivating) newMarker() else null)
+        return WatchDecision(step, events)
     }
 
     /** The observer was attached at [now]: its silence counts from then. */
@@ -167,6 +168,16 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         return reconcile(snapshot, snapshot, now, late)
     }
 
+    /**
+     * Reconciles again at [now] with what the last read found, [late] hints first: a held deactivation
+     * that has settled is published without reading again, as the hold waited for hints, not for the
+     * component, and a hint come meanwhile (an abort's ERROR) is taken before.
+     */
+    fun settle(now: Long, late: List<Hint>): WatchOutcome {
+        val snapshot = last ?: return WatchOutcome(untaken = late)
+        return reconcile(snapshot, snapshot, now, late)
+    }
+
     /** A read failed at [now] with [cause]; [beatMillis] is the interval it was expected to speak at, below which its silence is no news. */
     fun failed(cause: RtcException, now: Long, beatMillis: Long?): WatchOutcome {
         epoch++
@@ -184,8 +195,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
     /**
      * Takes a hint in. A lifecycle hint adds its context's handle to [handles] (reading that state is
-     * enough) and, when it may begin a deactivation, sends the marker that may end its hold; returns
-     * whether anything else calls for reading the whole component.
+     * enough); returns whether anything else calls for reading the whole component.
      */
     private fun take(hint: Hint, now: Long, handles: MutableSet<Int>): Boolean {
         liveness.hinted(now, finalize = hint.isFinalize)
@@ -211,9 +221,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     private fun reconcile(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, late: List<Hint>): WatchOutcome {
         val untaken = ArrayList<Hint>()
         var taken = false
-        var deactivating = false
         for (hint in late) {
-            deactivating = deactivating || states.deactivates(hint)
             // Hints that came during the read tell of changes made before it answered: an abort's ERROR, say.
             if (hint.kind == HintKind.RTC_STATUS && !hint.isFinalize && states.hinted(hint, now) != null) {
                 liveness.hinted(now)
@@ -238,7 +246,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             states.heldUntil()?.let { arm(Timer.HOLD_LIMIT, it - now) }
             states.settlesIn(now)?.let { arm(Timer.SETTLED, it) }
         }
-        return WatchOutcome(events, timers, untaken, readAgain, marker = if (deactivating) newMarker() else null)
+        // Each read that leaves a hold waiting for its hints sends a marker of its own: an older one tells nothing of what came since.
+        return WatchOutcome(events, timers, untaken, readAgain, marker = if (states.awaitingHints) newMarker() else null)
     }
 
     /**
@@ -256,7 +265,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         arm(Timer.RECHECK, recheckDelay)
     }
 
-    /** A new marker, to be sent through the observer now: it comes back once the hints taken before it are. */
+    /** A new marker, to be sent through the observer now: it comes back once the hints waiting before it are taken. */
     private fun newMarker(): String = "$MARKER_PREFIX${++markers}".also { marker = it }
 
     companion object {

@@ -36,11 +36,8 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     /** When the first held deactivation is published whatever else happens; null when none is held. */
     fun heldUntil(): Long? = trackers.values.mapNotNull { it.heldUntil() }.minOrNull()
 
-    /** Whether the RTC_STATUS [hint] would begin a possible deactivation, which wants a marker. */
-    fun deactivates(hint: Hint): Boolean {
-        val (state, handle) = hint.lifeCycle() ?: return false
-        return trackers[handle]?.deactivates(state) == true
-    }
+    /** Whether a deactivation is held somewhere and the hints that may turn it into an abort are not known to be in: it wants a marker. */
+    val awaitingHints: Boolean get() = trackers.values.any { it.awaitingHints }
 
     /** The hints sent before the latest marker have all been taken: possible deactivations end once settled. */
     fun flushed() {

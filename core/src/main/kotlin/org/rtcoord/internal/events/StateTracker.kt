@@ -13,13 +13,11 @@ import org.rtcoord.LifeCycle
  * the reads confirmed, and always ends in the real state.
  *
  * A hinted deactivation (ACTIVE to INACTIVE) that a read confirms is held until [settleMillis] after its
- * INACTIVE hint came and every hint the component sent before a marker sent then has been taken
- * ([flushed]), or [holdLimitMillis] after the hint at most: an abort hints INACTIVE then ERROR, and when a
- * reset follows at once, a read that overtook the ERROR hint finds INACTIVE too. The ERROR hint arriving
- * meanwhile turns the pair into the abort it was. [flushed] alone cannot tell that every hint is in: the
- * hints and the marker travel different connections, and a connection whose reader thread is kept
- * waiting by the scheduler delivers late; the ERROR hint leaves the component right after the INACTIVE
- * one, on the same connection, so the settling time is how much later the ORB may take it.
+ * INACTIVE hint came and a marker sent after that read came back ([flushed]), or [holdLimitMillis] after
+ * the hint at most: an abort hints INACTIVE then ERROR, and when a reset follows at once, a read that
+ * overtook the ERROR hint finds INACTIVE too. The ERROR hint arriving meanwhile turns the pair into the
+ * abort it was. The ERROR hint was sent before the read answered, so it waits in this host's socket when
+ * the marker is sent; the marker comes back once the ORB took what waited before it.
  */
 internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Long = 0, private val settleMillis: Long = 0) {
     /** The last published state. */
@@ -60,14 +58,14 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
         if (deactivationHintedAt != null) flushed = true
     }
 
-    /** Whether hinting [state] would begin a possible deactivation, which wants a marker. */
-    fun deactivates(state: LifeCycle): Boolean = state == LifeCycle.INACTIVE && (hinted.lastOrNull() ?: confirmed) == LifeCycle.ACTIVE
+    /** Whether a deactivation is held and not [flushed] yet. */
+    val awaitingHints: Boolean get() = holding && !flushed
 
     /** Takes a state hinted at [now]; duplicates and impossible transitions are ignored (the next read decides). */
     fun hint(state: LifeCycle, now: Long) {
         val last = hinted.lastOrNull() ?: confirmed
         if (state == last || !possible(last, state)) return
-        if (deactivates(state)) {
+        if (state == LifeCycle.INACTIVE && last == LifeCycle.ACTIVE) {
             deactivationHintedAt = now
             flushed = false
         }

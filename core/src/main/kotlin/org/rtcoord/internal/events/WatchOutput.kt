@@ -17,12 +17,15 @@ internal sealed interface WatchStep {
     /** Read the states of the contexts [handles]. */
     class ReadStates(val handles: Set<Int>) : WatchStep
 
+    /** Publish the held deactivation the last read confirmed, taking the hints come since first: see [ComponentWatch.settle]. */
+    object Settle : WatchStep
+
     /** Take [states], which a probe read in read [stamp]. */
     class TakeStates(val states: Map<Int, LifeCycle>, val stamp: Long) : WatchStep
 }
 
-/** A batch's step, the events it already decided, and the marker to send through the observer, if any. */
-internal class WatchDecision(val step: WatchStep, val events: List<RtcEvent>, val marker: String?)
+/** A batch's step, and the events it already decided. */
+internal class WatchDecision(val step: WatchStep, val events: List<RtcEvent>)
 
 /** What a read (or its failure) leads to. */
 internal class WatchOutcome(

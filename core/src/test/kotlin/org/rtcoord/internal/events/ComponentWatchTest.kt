@@ -59,7 +59,6 @@ class ComponentWatchTest {
         val watch = watching(INACTIVE)
         val decision = watch.decide(listOf(lifecycle("ACTIVE:0")), 10)
         assertEquals(setOf(0), (decision.step as WatchStep.ReadStates).handles)
-        assertNull(decision.marker, "only a possible deactivation wants a marker")
         assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 11, emptyList()).events))
     }
 
@@ -100,11 +99,11 @@ class ComponentWatchTest {
     @Test
     fun `an abort, INACTIVE then ERROR hinted, is one transition and never held`() {
         val watch = watching(ACTIVE)
-        val decision = watch.decide(listOf(lifecycle("INACTIVE:0"), lifecycle("ERROR:0")), 0)
-        assertNotNull(decision.marker)
+        watch.decide(listOf(lifecycle("INACTIVE:0"), lifecycle("ERROR:0")), 0)
         val outcome = watch.statesRead(mapOf(0 to ERROR), 1, emptyList())
         assertEquals(changed(ACTIVE to ERROR), stateEvents(outcome.events))
         assertEquals(emptyList<Pair<Timer, Long>>(), outcome.timers)
+        assertNull(outcome.marker, "nothing held: no marker")
     }
 
     @Test
@@ -118,10 +117,12 @@ class ComponentWatchTest {
     @Test
     fun `an abort reset at once, whose ERROR hint comes after the read, is held and then published as an abort`() {
         val watch = watching(ACTIVE)
-        val marker = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertEquals(emptyList<RtcEvent>(), held.events, "the read overtook the ERROR hint: held")
         assertEquals(setOf(Timer.SETTLED to 1L, Timer.HOLD_LIMIT to 499L), held.timers.toSet())
+        val marker = held.marker
+        assertNotNull(marker, "the read that holds sends a marker")
         val decision = watch.decide(listOf(lifecycle("ERROR:0"), lifecycle("INACTIVE:0"), WatchInput.MarkerBack(marker!!)), 2)
         assertInstanceOf(WatchStep.ReadStates::class.java, decision.step)
         assertEquals(changed(ACTIVE to ERROR, ERROR to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).events))
@@ -129,54 +130,80 @@ class ComponentWatchTest {
     }
 
     @Test
-    fun `a deactivation is held only until it settled, counted from its hint, and its marker is back`() {
+    fun `a deactivation is held until it settled, counted from its hint, and the marker sent after its read is back`() {
         val watch = watching(ACTIVE)
-        val marker = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
-        assertTrue(watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList()).events.none { it is StateChanged })
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(marker)), 1).step, "back, but not settled yet")
-        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 2).step)
-        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).events))
+        assertEquals(setOf(0), (watch.decide(listOf(lifecycle("INACTIVE:0")), 0).step as WatchStep.ReadStates).handles)
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        assertTrue(held.events.none { it is StateChanged })
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 2).step, "settled, but its marker is not back")
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 3).step, "settled and back: published without reading again")
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(3, emptyList()).events))
     }
 
     @Test
-    fun `a marker back before the read that confirms the deactivation lets it through at once`() {
+    fun `a marker back before the hold settled waits for the settling time`() {
         val watch = watching(ACTIVE)
-        val marker = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(marker)), 1).step)
-        // The first read found ACTIVE still (the hint came before the state showed); the recheck finds it INACTIVE.
-        watch.statesRead(mapOf(0 to ACTIVE), 1, emptyList())
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 1).step, "back, but not settled yet")
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 2).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(2, emptyList()).events))
+    }
+
+    @Test
+    fun `an abort's ERROR hint that comes as the hold settles turns it into the abort, read again`() {
+        val watch = watching(ACTIVE)
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!), WatchInput.Fired(Timer.SETTLED)), 2).step)
+        val settling = watch.settle(2, listOf(Hint(HintKind.RTC_STATUS, "ERROR:0")))
+        assertEquals(emptyList<StateChanged>(), stateEvents(settling.events), "no deactivation once its ERROR hint is in")
+        assertTrue(settling.readAgain, "the hints lead past the last read: read again now")
+        assertEquals(changed(ACTIVE to ERROR), stateEvents(watch.statesRead(mapOf(0 to ERROR), 3, emptyList()).events))
+    }
+
+    @Test
+    fun `a deactivation whose first read found it ACTIVE still is held from the recheck that confirms it`() {
+        val watch = watching(ACTIVE)
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        // The first read found ACTIVE still (the hint came before the state showed): nothing held, no marker.
+        assertNull(watch.statesRead(mapOf(0 to ACTIVE), 1, emptyList()).marker)
         watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 4)
-        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList()).events))
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList())
+        assertEquals(emptyList<StateChanged>(), stateEvents(held.events), "settled, but the hints before the read are not known to be in")
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 5).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(5, emptyList()).events))
     }
 
     @Test
     fun `a marker coming back ends a hold that settled, even with an earlier hold's timer still pending (83b40df)`() {
         val watch = watching(ACTIVE)
-        val first = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
-        watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList()).marker!!
         watch.decide(listOf(WatchInput.MarkerBack(first)), 1)
         // The first hold's SETTLED timer is still pending when it ends by the hold limit's read.
         watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT)), 2)
         watch.read(found(INACTIVE), 3, emptyList())
         watch.decide(listOf(lifecycle("ACTIVE:0")), 10)
         watch.statesRead(mapOf(0 to ACTIVE), 10, emptyList())
-        val second = watch.decide(listOf(lifecycle("INACTIVE:0")), 20).marker!!
-        assertTrue(watch.statesRead(mapOf(0 to INACTIVE), 21, emptyList()).events.none { it is StateChanged })
-        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.MarkerBack(second)), 30).step, "settled and back: read at once")
-        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 30, emptyList()).events))
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 20)
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 21, emptyList())
+        assertTrue(held.events.none { it is StateChanged })
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 30).step, "settled and back: published at once")
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(30, emptyList()).events))
     }
 
     @Test
     fun `an older marker does not end a later hold, and a lost marker holds until the limit`() {
         val watch = watching(ACTIVE)
-        val first = watch.decide(listOf(lifecycle("INACTIVE:0")), 0).marker!!
-        watch.decide(listOf(lifecycle("ACTIVE:0")), 1)
-        watch.statesRead(mapOf(0 to ACTIVE), 1, emptyList())
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 2)
-        watch.statesRead(mapOf(0 to INACTIVE), 3, emptyList())
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(first), WatchInput.Fired(Timer.SETTLED)), 10).step, "the first marker tells nothing of the second hint")
-        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT)), 502).step)
-        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 502, emptyList()).events))
+        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList()).marker!!
+        // Read again while held (a grace read, say): the hints before this read are what the hold waits for now.
+        val second = watch.statesRead(mapOf(0 to INACTIVE), 3, emptyList()).marker!!
+        assertTrue(first != second)
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(first), WatchInput.Fired(Timer.SETTLED)), 10).step, "the first marker tells nothing of what came before the second read")
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT)), 500).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 500, emptyList()).events))
     }
 
     @Test
