@@ -280,8 +280,8 @@ class CoordinatorTest : CoordinatedSystem() {
         assertEquals(1, system.component("gyro0").observerIds.size)
         coordinator.close()
         await("the observer to be detached") { system.component("gyro0").observerIds.isEmpty() }
+        await("every coroutine of the coordinator to end") { coordinator.ended }
         val after = ticks
-        Thread.sleep(100)
         assertEquals(after, ticks, "no tick after close")
     }
 }

@@ -232,12 +232,14 @@ class SupervisionTest : CoordinatedSystem(
             assertEquals("${path("gyro0.rtc")} entered ERROR after 2 restarts within 1m", escalation.reason)
             await("the escalation handler to deactivate odometry0") { system.component("odometry0").state == LifeCycleState.INACTIVE_STATE }
             await("the supervisor to stop watching gyro0") { gyro.observerIds.isEmpty() }
+            // Stopped, it has nothing left to run: whatever happens to gyro0 now, nothing of it restarts it.
+            await("the supervisor's coroutine to end") { coordinator.supervisors.single().quiet }
 
             witness.component(path("gyro0.rtc")).reset()
             witness.component(path("gyro0.rtc")).activate()
             gyro.fail()
             await("gyro0 to fail once more") { gyro.state == LifeCycleState.ERROR_STATE }
-            Thread.sleep(500)
+            assertTrue(coordinator.supervisors.single().quiet)
             assertEquals(LifeCycleState.ERROR_STATE, gyro.state, "no restart after the escalation")
             assertEquals(2, log.count { "activate ${path("gyro0.rtc")}" in it })
             assertEquals(1, escalations.size)
@@ -272,7 +274,8 @@ class SupervisionTest : CoordinatedSystem(
 
             laser.fail()
             await("the supervisor to let laser0 go") { logged("${path("laser0.rtc")}: it is temporary: not restarted") }
-            Thread.sleep(500)
+            // Every failure it was told of is answered: nothing it decided is still to come.
+            await("the supervisor to answer every failure") { coordinator.supervisors.single().quiet }
             assertEquals(LifeCycleState.ERROR_STATE, laser.state)
             assertTrue(system.runtime.components.none { it.instanceName == "odometry0" }, "odometry0 not re-created")
             assertEquals(listOf(recreated), system.runtime.components.filter { it.instanceName == "gyro0" })

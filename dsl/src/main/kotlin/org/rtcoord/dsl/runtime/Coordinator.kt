@@ -66,7 +66,8 @@ public class Coordinator(
     /** The listeners of followed names, and the subscriptions to nodes that are not followed. */
     private val listeners = CopyOnWriteArrayList<Subscription>()
     private val subscriptions = CopyOnWriteArrayList<Subscription>()
-    private val supervisors = CopyOnWriteArrayList<Supervisor>()
+    /** The running supervisors, in declaration order; empty until [start]. */
+    internal val supervisors = CopyOnWriteArrayList<Supervisor>()
     private val dataRuns = CopyOnWriteArrayList<DataRuleRun>()
     private val failureCount = MutableStateFlow(0)
     private val failureList = CopyOnWriteArrayList<HandlerFailure>()
@@ -93,6 +94,9 @@ public class Coordinator(
 
     /** The coordination's mode machines as they run, in declaration order. */
     public val machines: List<RunningMachine> = interpreters.map { it.running }
+
+    /** Whether every coroutine of the coordinator has ended, once [close]d: nothing it ran can act any more. */
+    internal val ended: Boolean get() = job.isCompleted
 
     /** How many subscriptions to the tree the coordinator holds now: one per followed component, one per other node watched. */
     internal val treeSubscriptions: Int get() = identities.subscriptions + subscriptions.size

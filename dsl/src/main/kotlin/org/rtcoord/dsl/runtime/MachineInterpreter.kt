@@ -52,6 +52,8 @@ internal class MachineInterpreter(
     /** Watches the network components that exist now and were not watched yet. */
     private val watchNetwork: suspend (MachineInterpreter) -> Unit = {},
     private val now: () -> Instant = Instant::now,
+    /** What the network's reconfiguration is timed with: tests turn it by hand, with the timeouts' delays. */
+    private val time: TimeSource = TimeSource.Monotonic,
 ) {
     /** What others may watch. */
     val running = RunningMachine(machine)
@@ -228,7 +230,7 @@ internal class MachineInterpreter(
         val current = generation
         reconfiguration = scope.launch(CoroutineName("network of $mode")) {
             log("mode $mode: bringing the system to its network")
-            val started = TimeSource.Monotonic.markNow()
+            val started = time.markNow()
             val outcome = configurator.apply(network)
             val took = started.elapsedNow().inWholeMilliseconds
             val failure = (outcome as? Configurator.Outcome.Failed)?.reason

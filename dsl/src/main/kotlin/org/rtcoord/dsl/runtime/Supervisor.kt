@@ -2,6 +2,7 @@ package org.rtcoord.dsl.runtime
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Job
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.toList
@@ -24,6 +25,7 @@ import org.rtcoord.dsl.Escalation
 import org.rtcoord.dsl.RestartType
 import org.rtcoord.dsl.Strategy
 import org.rtcoord.dsl.Supervision
+import java.util.concurrent.atomic.AtomicInteger
 import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.TimeSource
 
@@ -41,6 +43,8 @@ internal class Supervisor(
     private val engine: Engine,
     private val scope: CoroutineScope,
     log: (String) -> Unit,
+    /** What the restart intensity is counted on: tests turn it by hand, with the back-off's delays. */
+    time: TimeSource = TimeSource.Monotonic,
     private val escalate: suspend (Escalation) -> Unit,
 ) {
     /** A failure to handle: [child] did [what] while it was [node]. [exited]: it ended by itself. */
@@ -57,8 +61,14 @@ internal class Supervisor(
     private val sequence = AtomicLong()
     /** Per child: the last failure number its latest restart answers (only the handling coroutine touches it). */
     private val covered = HashMap<SupervisedChild, Long>()
-    private val policy = TimeSource.Monotonic.markNow().let { start -> RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() } }
+    private val policy = time.markNow().let { start -> RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() } }
     @Volatile private var stopped = false
+    /** Failures reported and not answered yet: restarted, left, or found to be no news. */
+    private val unanswered = AtomicInteger()
+    @Volatile private var handling: Job? = null
+
+    /** Whether every failure reported so far is answered, or the supervisor has stopped: nothing it was told of is still to come. */
+    internal val quiet: Boolean get() = handling?.isActive != true || unanswered.get() == 0
 
     /** What it has done, for those who show it. */
     val activity = SupervisorActivity(name, supervision.strategy.name)
@@ -75,7 +85,7 @@ internal class Supervisor(
         }
         activity.children(children.map { it.toString() })
         say.line("supervising ${children.joinToString()} (${supervision.strategy})")
-        scope.launch {
+        handling = scope.launch {
             for (failure in failures) {
                 if (stopped) break
                 // Failures reported together (one process killed) are one episode.
@@ -86,6 +96,8 @@ internal class Supervisor(
                     throw e
                 } catch (e: Exception) {
                     say.line("recovering ${reported.joinToString { it.node.path.toString() }} failed: ${e.message ?: e}")
+                } finally {
+                    unanswered.addAndGet(-reported.size)
                 }
             }
         }
@@ -121,7 +133,8 @@ internal class Supervisor(
     }
 
     private fun report(child: SupervisedChild, node: ComponentNode, what: String, exited: Boolean) {
-        failures.trySend(Failure(child, node, what, exited, sequence.incrementAndGet()))
+        unanswered.incrementAndGet()
+        if (failures.trySend(Failure(child, node, what, exited, sequence.incrementAndGet())).isFailure) unanswered.decrementAndGet()
     }
 
     /**
