@@ -215,7 +215,7 @@ internal class ComponentMonitor(
                 // Keep probing while unreachable, even when only the observer watched it.
                 if (timers.pollPeriod == null) timers.poll(registrations.push?.options?.heartbeat)
                 // Its manager may have died with it, and with every other component it hosted.
-                core.watcher.componentSilent(node, timers.pollPeriod ?: 1.seconds)
+                core.watcher.outages.componentSilent(node, timers.pollPeriod ?: 1.seconds)
             }
             outcome.recovered -> {
                 log.info("{}: answers again", subject)
@@ -258,7 +258,7 @@ internal class ComponentMonitor(
         timers.poll(method?.pollPeriod)
         if (method != null) {
             if (method != this.method) log.debug("{}: watched by {}", subject, method)
-            core.watcher.announce(this, method, registrations.toList())
+            core.watcher.reports.announce(this, method, registrations.toList())
         }
         timers.watch(push?.options?.heartbeat)
     }

@@ -62,7 +62,7 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
                     } catch (e: RtcException) {
                         if (!failing) {
                             log.info("{}; listing it again every {}", e.message, every)
-                            core.watcher.listingFailed(directory, e, every)
+                            core.watcher.outages.listingFailed(directory, e, every)
                         }
                         failing = true
                         continue

@@ -45,9 +45,9 @@ internal class MonitorTimers(
     /** Polls the component every [period], or no more when null. */
     fun poll(period: Duration?) {
         if (period == pollPeriod) return
-        pollPeriod?.let { core.watcher.unpoll(it, member) }
+        pollPeriod?.let { core.watcher.polls.remove(it, member) }
         pollPeriod = period
-        period?.let { core.watcher.poll(it, member) }
+        period?.let { core.watcher.polls.add(it, member) }
     }
 
     /**
