@@ -72,14 +72,20 @@ public class EventOptions(
         require(!trafficInterval.isNegative()) { "trafficInterval must not be negative, was $trafficInterval" }
     }
 
+    /** A [Builder] holding these options, to change some and keep the rest: `options.newBuilder().overlap(Overlap.QUEUE).build()`. */
+    public fun newBuilder(): Builder = Builder(this)
+
     /** Builds [EventOptions] step by step, for Java callers: `EventOptions.builder().mode(WatchMode.POLL).build()`. */
-    public class Builder {
-        private var mode = WatchMode.AUTO
-        private var pollPeriod: Duration = 1.seconds
-        private var overlap = Overlap.QUEUE
-        private var heartbeat: Duration = 1.seconds
-        private var missedBeats = 3
-        private var trafficInterval: Duration = 1.seconds
+    public class Builder internal constructor(from: EventOptions) {
+        /** A builder holding the defaults. */
+        public constructor() : this(DEFAULTS)
+
+        private var mode = from.mode
+        private var pollPeriod: Duration = from.pollPeriod
+        private var overlap = from.overlap
+        private var heartbeat: Duration = from.heartbeat
+        private var missedBeats = from.missedBeats
+        private var trafficInterval: Duration = from.trafficInterval
 
         /** Sets [EventOptions.mode]. */
         public fun mode(mode: WatchMode): Builder = apply { this.mode = mode }
@@ -105,6 +111,8 @@ public class EventOptions(
 
     /** How Java callers get a [Builder]. */
     public companion object {
+        private val DEFAULTS = EventOptions()
+
         /** A [Builder] holding the defaults. */
         @JvmStatic
         public fun builder(): Builder = Builder()

@@ -51,4 +51,4 @@ internal class HandlerQueue<E>(scope: CoroutineScope, overlap: Overlap, private 
  * These options with every event queued: a subscription shared by several listeners must lose nothing;
  * the listeners that drop events under load do so in their own [HandlerQueue].
  */
-internal fun EventOptions.queued(): EventOptions = EventOptions(mode, pollPeriod, Overlap.QUEUE, heartbeat, missedBeats)
+internal fun EventOptions.queued(): EventOptions = newBuilder().overlap(Overlap.QUEUE).build()
