@@ -1,7 +1,11 @@
 package org.rtcoord.cli.serve
 
+import kotlinx.coroutines.flow.Flow
+import kotlinx.coroutines.flow.conflate
+import kotlinx.coroutines.flow.distinctUntilChanged
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.merge
 import org.rtcoord.dsl.runtime.Coordinator
-
 
 /**
  * What the page shows of a running [Coordinator]: each rule with its last firing and failures, each
@@ -9,6 +13,15 @@ import org.rtcoord.dsl.runtime.Coordinator
  * back-off. Read from the coordinator's observable state, never from its log.
  */
 internal class CoordinatorView(private val coordinator: Coordinator) {
+    /** The view, and again each time anything it shows changes: the coordinator's own flows, merged. */
+    fun updates(): Flow<Map<String, Any?>> {
+        val sources: List<Flow<Any?>> = listOf(coordinator.failureCounts) +
+            coordinator.rules.map { it.status } +
+            coordinator.machines.flatMap { listOf(it.mode, it.history, it.unconsumedCounts) } +
+            coordinator.supervision.map { it.status }
+        return sources.merge().conflate().map { toJson() }.distinctUntilChanged()
+    }
+
     /** The view as JSON-ready maps. */
     fun toJson(): Map<String, Any?> = mapOf(
         "failures" to coordinator.failures,

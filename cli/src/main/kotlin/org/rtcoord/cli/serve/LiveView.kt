@@ -152,14 +152,9 @@ internal class LiveView(
     }
 
     private suspend fun followCoordinator(following: Coordinator) {
-        val view = CoordinatorView(following)
-        while (true) {
-            val state = view.toJson()
-            if (state != coordinatorState) {
-                coordinatorState = state
-                broadcast.tryEmit(Update("coordinator", toJson(state, pretty = false)))
-            }
-            delay(COORDINATOR_PERIOD)
+        CoordinatorView(following).updates().collect { state ->
+            coordinatorState = state
+            broadcast.tryEmit(Update("coordinator", toJson(state, pretty = false)))
         }
     }
 
@@ -183,7 +178,6 @@ internal class LiveView(
         const val BUFFERED = 10_000
         const val RECENT_KEPT = 500
         val RESHAPE_SETTLE = 150.milliseconds
-        val COORDINATOR_PERIOD = 100.milliseconds
 
         /** The timeline's filter groups: state, port, configuration, liveness, manager, structure. */
         fun kindOf(event: RtcEvent): String = when (event) {

@@ -6,7 +6,6 @@ import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
 import org.rtcoord.dsl.ModeMachine
 import java.time.Instant
-import java.util.concurrent.atomic.AtomicInteger
 
 /** A move of a machine: [from] (null for the start) to [to], both paths like `system/nominal/tracking`, on [trigger], at [at]. */
 public data class ModeTransition(val from: String?, val to: String, val trigger: String, val at: Instant)
@@ -21,7 +20,7 @@ public class RunningMachine internal constructor(
 ) {
     private val current = MutableStateFlow<String?>(null)
     private val moves = MutableStateFlow<List<ModeTransition>>(emptyList())
-    private val unconsumedCount = AtomicInteger()
+    private val unconsumedCount = MutableStateFlow(0)
 
     /** The machine's name. */
     public val name: String get() = model.name
@@ -40,7 +39,10 @@ public class RunningMachine internal constructor(
      * mode had a transition for them (or none whose guards held), `done`/`failed` nobody waited for,
      * and timeouts or outcomes that came after their mode was left. Each is also logged at debug level.
      */
-    public val unconsumed: Int get() = unconsumedCount.get()
+    public val unconsumed: Int get() = unconsumedCount.value
+
+    /** [unconsumed] as it changes, for those who show it. */
+    public val unconsumedCounts: StateFlow<Int> = unconsumedCount.asStateFlow()
 
     internal fun moved(transition: ModeTransition) {
         moves.update { (it + transition).takeLast(HISTORY_LIMIT) }
@@ -48,7 +50,7 @@ public class RunningMachine internal constructor(
     }
 
     internal fun notConsumed() {
-        unconsumedCount.incrementAndGet()
+        unconsumedCount.update { it + 1 }
     }
 
     public companion object {
