@@ -68,10 +68,14 @@ public class ComponentRef internal constructor(
     /**
      * Sets parameters of its active configuration set (or of `inSet(...)`'s set), all in one change:
      * `configure { set("gain", "2.0") }`. An unknown parameter or a value the component refuses changes none.
+     * A value outside the constraint the component declares is written, as OpenRTM-aist writes it, and logged as a warning.
      */
     public suspend fun configure(changes: ConfigurationChanges.() -> Unit) {
         val requested = ConfigurationChanges().apply(changes)
-        Engine.current().act("configure ${requested.describe()}", this) { node -> node.setParameters(requested.values, requested.set) }
+        val engine = Engine.current()
+        engine.act("configure ${requested.describe()}", this) { node ->
+            node.setParameters(requested.values, requested.set).forEach { engine.log("  warning: ${node.path}: $it") }
+        }
     }
 
     /** Makes configuration set [id] the active one. */
