@@ -77,19 +77,27 @@ public class ComponentNode internal constructor(
     /** The component's state in [context], read now. */
     public suspend fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle = calls.state(context)
 
-    /** Activates the component in [context] and waits until it is ACTIVE. */
+    /**
+     * Activates the component in [context] and waits until it is ACTIVE, within [deadline] (the tree's
+     * call timeout by default). A context that answers `RTC_ERROR` because its transition timeout passed
+     * first is not a failure while the state arrives before [deadline]: the outcome says it was slow.
+     */
     @JvmSynthetic
-    public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.ACTIVATE, context, deadline)
 
-    /** Deactivates the component in [context] and waits until it is INACTIVE. */
+    /** Deactivates the component in [context] and waits until it is INACTIVE; slow transitions as in [activate]. */
     @JvmSynthetic
-    public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.DEACTIVATE, context, deadline)
 
-    /** Resets the component from ERROR in [context] and waits until it is INACTIVE. */
+    /**
+     * Resets the component from ERROR in [context] and waits until it is INACTIVE; slow transitions as in
+     * [activate]. A reset whose `on_reset` fails looks like a slow one until [deadline], since the
+     * component stays in ERROR either way: it fails then, naming the state.
+     */
     @JvmSynthetic
-    public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.RESET, context, deadline)
 
     /**

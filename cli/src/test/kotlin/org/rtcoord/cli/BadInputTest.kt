@@ -223,7 +223,7 @@ class BadInputTest {
             runRtcoord("deact", gyro, odometry).ok()
             val line = runRtcoord("act", gyro, refusing, odometry).failure()
             assertEquals(
-                "rtcoord: $refusing: activate failed: RTC_ERROR (in context 0); activated: $gyro; not attempted: $odometry",
+                "rtcoord: $refusing: activate failed: RTC_ERROR (the component went to ERROR in context 0); activated: $gyro; not attempted: $odometry",
                 line,
             )
             val states = listOf("gyro0", "stubborn0", "odometry0").map { localisation.system.component(it).state }
