@@ -77,19 +77,27 @@ public class ComponentNode internal constructor(
     /** The component's state in [context], read now. */
     public suspend fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle = calls.state(context)
 
-    /** Activates the component in [context] and waits until it is ACTIVE. */
+    /**
+     * Activates the component in [context] and waits until it is ACTIVE, within [deadline] (the tree's
+     * call timeout by default). A context that answers `RTC_ERROR` because its transition timeout passed
+     * first is not a failure while the state arrives before [deadline]: the outcome says it was slow.
+     */
     @JvmSynthetic
-    public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.ACTIVATE, context, deadline)
 
-    /** Deactivates the component in [context] and waits until it is INACTIVE. */
+    /** Deactivates the component in [context] and waits until it is INACTIVE; slow transitions as in [activate]. */
     @JvmSynthetic
-    public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.DEACTIVATE, context, deadline)
 
-    /** Resets the component from ERROR in [context] and waits until it is INACTIVE. */
+    /**
+     * Resets the component from ERROR in [context] and waits until it is INACTIVE; slow transitions as in
+     * [activate]. A reset whose `on_reset` fails looks like a slow one until [deadline], since the
+     * component stays in ERROR either way: it fails then, naming the state.
+     */
     @JvmSynthetic
-    public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.RESET, context, deadline)
 
     /**
@@ -143,22 +151,29 @@ public class ComponentNode internal constructor(
     }
 
     /**
-     * Sets [parameter] to [value] in configuration set [set] (the active one by default); see [setParameters].
+     * Sets [parameter] to [value] in configuration set [set] (the active one by default), refusing a value
+     * outside its constraint only when [strict]; see [setParameters].
      */
-    public suspend fun setParameter(parameter: String, value: String, set: String? = null): Unit = setParameters(mapOf(parameter to value), set)
+    public suspend fun setParameter(parameter: String, value: String, set: String? = null, strict: Boolean = false): List<String> =
+        setParameters(mapOf(parameter to value), set, strict)
 
     /**
      * Sets several parameters of configuration set [set] (the active one by default) in one call, so
      * either all change or none does, and makes the change take effect. Checked first, before anything
-     * changes: the set and every parameter must exist, and each value must meet the constraint the
-     * component declares for it in its `__constraints__` set (`0<x<10`, `(slow,fast)`). OpenRTM-aist
-     * leaves a component with no active set after a write, applying nothing: so the set that was active
-     * (or [set], when none was) is activated again, and the values are read back with a set active.
-     * A component with no active set needs [set] named.
+     * changes: the set and every parameter must exist. A value outside the constraint the component
+     * declares for it in its `__constraints__` set (`0<x<10`, `(slow,fast)`) is written, as OpenRTM-aist
+     * writes it (it never checks them), and returned as a warning; with [strict] it is refused
+     * ([BadParameterException]) and nothing changes. A value the set holds already is never refused.
+     * OpenRTM-aist leaves a component with no active set after a write, applying nothing: so the set
+     * that was active (or [set], when none was) is activated again, and the values are read back with a
+     * set active. A component with no active set needs [set] named.
+     *
+     * @return one line per value written outside its constraint (`gain: '42' is outside 0<x<10`), empty when none was.
      */
-    public suspend fun setParameters(values: Map<String, String>, set: String? = null) {
-        calls.configuration().setValues(values, set)
+    public suspend fun setParameters(values: Map<String, String>, set: String? = null, strict: Boolean = false): List<String> {
+        val warnings = calls.configuration().setValues(values, set, strict)
         refresh()
+        return warnings
     }
 
     /** Makes configuration set [id] the active one; this works on a component that has no active set too. */

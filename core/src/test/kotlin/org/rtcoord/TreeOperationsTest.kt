@@ -113,7 +113,7 @@ class TreeOperationsTest {
         assertEquals("2.5", runPeer("rtconf", path("laser_localise0.rtc"), "get", "gain").ok().output.trim())
         assertEquals("+default*\n+precise", rtconfList())
         await("the component to use gain 2.5") { fixture.parameter("gain") == "2.5" }
-        assertThrows(BadParameterException::class.java) { runBlocking { localiser.setParameter("gain", "fast") } }
+        assertThrows(BadParameterException::class.java) { runBlocking { localiser.setParameter("gain", "fast", strict = true) } }
         assertThrows(NotFoundException::class.java) { runBlocking { localiser.setParameter("speed", "1") } }
 
         localiser.activateConfigurationSet("precise")

@@ -16,6 +16,7 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.OperationUnsupportedException
 import org.rtcoord.PreconditionNotMetException
 import org.rtcoord.RtcException
+import org.rtcoord.TransitionOutcome
 
 /**
  * A lifecycle transition of several components (`act`, `deact`, `reset`), all or nothing as far as
@@ -40,7 +41,7 @@ abstract class LifecycleCommand(
     /** Example command lines, each with what it does. */
     private val usage: List<Pair<String, String>>,
     /** Performs the transition on one component. */
-    private val transition: suspend ComponentNode.(ContextSelector) -> Unit,
+    private val transition: suspend ComponentNode.(ContextSelector) -> TransitionOutcome,
 ) : TreeCommand(name) {
     override fun help(context: Context): String =
         "$does Every PATH is checked first (a live component, $fromWords or already ${stateLabel(to)}): if one is not, nothing changes."
@@ -58,7 +59,13 @@ abstract class LifecycleCommand(
 
     override suspend fun execute() {
         val pending = paths.map { checked(it) }.filter { (_, state) -> state != to }.map { (component, _) -> component }
-        eachInTurn(pending, done, { it.path.toString() }) { it.transition(context) }
+        eachInTurn(pending, done, { it.path.toString() }) { component ->
+            val outcome = component.transition(context)
+            // rtact is silent on success; a transition that outlasted the context's timeout is worth a line.
+            if (outcome.slow) {
+                confirm("${component.path}: $done slowly: its context answered ${outcome.lateAnswer} once its transition timeout passed, ${outcome.state} after ${outcome.elapsedMillis} ms")
+            }
+        }
     }
 
     /** The component at [text] and its state now, if the transition can start from it. */

@@ -9,7 +9,9 @@ class ProfileRestoreCommand : ProfileFileCommand("restore") {
     override fun help(context: Context): String =
         "Restore a profile onto the running system: make its connections (identical ones are kept), write its " +
             "configuration sets and activate its active set, set execution context rates. Everything is checked first: " +
-            "a missing required component, port or incompatible connection, or a value out of range, changes nothing."
+            "a missing required component, port or incompatible connection changes nothing. A value outside the constraint " +
+            "its component declares is written, as rtresurrect and OpenRTM-aist write it, with a warning; a value the " +
+            "component holds is not written, so a profile always restores onto the system it was saved from."
 
     private val create by option(
         "--create",
@@ -17,11 +19,23 @@ class ProfileRestoreCommand : ProfileFileCommand("restore") {
             "by the type in their component id; a restore refused after that deletes them again.",
     ).flag()
 
+    private val strict by option(
+        "--strict",
+        help = "Refuse the restore, changing nothing, when it would write a value outside the constraint its component " +
+            "declares in __constraints__ (without it, a warning names each such value).",
+    ).flag()
+
     override suspend fun execute() {
         val profile = profile()
-        val report = refusing { profiles.restore(profile, createMissing = create) }
+        val report = refusing { profiles.restore(profile, createMissing = create, strict = strict) }
+        report.warnings.forEach { echo("rtcoord: warning: $it", err = true) }
         if (session.json) {
-            echoJson(mapOf("done" to report.done, "kept" to report.kept, "missingOptional" to report.missingOptional, "created" to report.created))
+            echoJson(
+                mapOf(
+                    "done" to report.done, "kept" to report.kept, "missingOptional" to report.missingOptional, "created" to report.created,
+                    "warnings" to report.warnings,
+                ),
+            )
             return
         }
         report.done.forEach { confirm(it) }

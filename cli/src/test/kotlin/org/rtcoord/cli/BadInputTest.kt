@@ -174,9 +174,9 @@ class BadInputTest {
             Row("two out-ports", listOf("con", laser, odometry), "rtcoord: $laser: connect rejected: a data connection needs an out-port and an in-port"),
             Row("a port to itself", listOf("con", laser, laser), "rtcoord: $laser: connect rejected: $laser is given twice: a port cannot connect to itself"),
             // Invalid configuration values.
-            Row("a value of the wrong type for the declared constraint", listOf("conf", localiser, "set", "gain", "abc"),
+            Row("a value of the wrong type for the declared constraint, --strict", listOf("conf", localiser, "set", "--strict", "gain", "abc"),
                 "rtcoord: $localiser: set gain rejected: 'abc' is not a number (constraint 0<x<10)"),
-            Row("a value outside the declared constraint", listOf("conf", localiser, "set", "gain", "42"),
+            Row("a value outside the declared constraint, --strict", listOf("conf", localiser, "set", "--strict", "gain", "42"),
                 "rtcoord: $localiser: set gain rejected: '42' is outside 0<x<10"),
             // Unknown configuration sets.
             Row("set in an unknown set", listOf("conf", localiser, "set", "gain", "2", "--set", "nosuch"),
@@ -223,7 +223,7 @@ class BadInputTest {
             runRtcoord("deact", gyro, odometry).ok()
             val line = runRtcoord("act", gyro, refusing, odometry).failure()
             assertEquals(
-                "rtcoord: $refusing: activate failed: RTC_ERROR (in context 0); activated: $gyro; not attempted: $odometry",
+                "rtcoord: $refusing: activate failed: RTC_ERROR (the component went to ERROR in context 0); activated: $gyro; not attempted: $odometry",
                 line,
             )
             val states = listOf("gyro0", "stubborn0", "odometry0").map { localisation.system.component(it).state }

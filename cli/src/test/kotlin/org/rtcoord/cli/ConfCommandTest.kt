@@ -80,10 +80,15 @@ class ConfCommandTest {
     }
 
     @Test
-    fun `an invalid value is refused and the old one kept`() {
-        val line = runRtcoord("conf", localiser, "set", "gain", "fast").failure()
-        assertEquals("rtcoord: $localiser: set gain rejected: 'fast' is not a number (constraint 0<x<10)", line)
+    fun `a value outside the declared constraint is written with a warning, as OpenRTM-aist writes it, and --strict refuses it`() {
+        val line = runRtcoord("conf", localiser, "set", "--strict", "gain", "42").failure()
+        assertEquals("rtcoord: $localiser: set gain rejected: '42' is outside 0<x<10", line)
         assertEquals("1.0", fixture.parameter("gain"))
+
+        val written = runRtcoord("conf", localiser, "set", "gain", "42")
+        assertEquals(0, written.statusCode, written.stderr)
+        assertEquals("rtcoord: warning: $localiser: gain: '42' is outside 0<x<10 (written: OpenRTM-aist does not check constraints)\n", written.stderr)
+        await("the component to use gain 42") { fixture.parameter("gain") == "42" }
     }
 
     @Test

@@ -3,12 +3,14 @@ package org.rtcoord.cli
 import RTC.LifeCycleState
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.Behaviour
 import org.rtcoord.fixtures.ComponentContext
 import org.rtcoord.fixtures.ComponentType
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.rtSystem
+import kotlin.time.Duration.Companion.milliseconds
 
 /** `act`, `deact` and `reset`: they wait for the state, check everything first and report return codes. */
 class LifecycleCommandTest {
@@ -78,8 +80,20 @@ class LifecycleCommandTest {
         val stubborn = ComponentType("stubborn", behaviour = { Refusing })
         rtSystem(localisation.naming.corbaloc) { component(stubborn) }.use {
             val line = runRtcoord("act", localisation.path("stubborn0.rtc")).failure()
-            assertEquals("rtcoord: ${localisation.path("stubborn0.rtc")}: activate failed: RTC_ERROR (in context 0)", line)
+            assertEquals("rtcoord: ${localisation.path("stubborn0.rtc")}: activate failed: RTC_ERROR (the component went to ERROR in context 0)", line)
         }
+    }
+
+    @Test
+    fun `a transition that outlasts the context's transition timeout succeeds, and one line says it was slow`() {
+        localisation.system.component("laser_localise0").slowTransitions(900.milliseconds)
+        val localiser = localisation.path("laser_localise0.rtc")
+        for ((command, done, state) in listOf(Triple("deact", "deactivated", "INACTIVE"), Triple("act", "activated", "ACTIVE"))) {
+            val line = runRtcoord(command, localiser).ok()
+            val slow = Regex("""\Q$localiser\E: $done slowly: its context answered RTC_ERROR once its transition timeout passed, $state after \d+ ms\n""")
+            assertTrue(slow.matches(line), line)
+        }
+        assertEquals(LifeCycleState.ACTIVE_STATE, state("laser_localise0"))
     }
 
     @Test

@@ -5,6 +5,9 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.naming.NamingService
 import java.nio.file.Files
 import java.nio.file.Path
 
@@ -42,6 +45,27 @@ class ProfileCommandTest {
         assertEquals("created $localiser (laser_localise) through ${localisation.path("manager.mgr")}", restored.first())
         assertEquals(2, restored.count { it.startsWith("connected") }, restored.toString())
         assertEquals("", runRtcoord("profile", "check", "--state", "any", file).ok())
+    }
+
+    @Test
+    fun `ConfigSample's profile restores onto it unchanged, a value written outside its constraint warns, and --strict refuses it`(@TempDir dir: Path) {
+        val naming = NamingService.start()
+        Scenarios.configSample(naming.corbaloc).use {
+            val file = dir.resolve("s.xml").toString()
+            val sample = "/${naming.address}/${FixtureRuntime.hostContext}/ConfigSample0.rtc"
+            runRtcoord("-n", naming.address, "profile", "save", "-o", file).ok()
+            assertEquals("nothing to change (0 connections already there)\n", runRtcoord("-n", naming.address, "profile", "restore", "--strict", file).ok())
+
+            runRtcoord("-n", naming.address, "conf", sample, "set", "--set", "mode0", "int_param0", "100").ok()
+            val refused = runRtcoord("-n", naming.address, "profile", "restore", "--strict", file).failure()
+            assertEquals("rtcoord: $file: nothing changed: $sample: configuration set 'mode0': int_param0: '12345' is outside 0<=x<=150", refused)
+            val restored = runRtcoord("-n", naming.address, "profile", "restore", file)
+            assertEquals(0, restored.statusCode, restored.stderr)
+            assertEquals("rtcoord: warning: $sample: configuration set 'mode0': int_param0: '12345' is outside 0<=x<=150\n", restored.stderr)
+            assertEquals("$sample: set int_param0 in 'mode0'\n", restored.stdout)
+            assertEquals("", runRtcoord("-n", naming.address, "profile", "check", "--state", "any", file).ok())
+        }
+        naming.close()
     }
 
     @Test

@@ -327,9 +327,9 @@ class ScriptCommandsTest {
             val path = localisation.path("gyro0.rtc")
             assertTrue("stopped; 1 handler failure; 2 failed actions (1 attempted, went on)\n" in result.stdout, result.stdout)
             // The reset that stopped the handler is on line 3; its failure surfaced after the call suspended.
-            assertTrue("  rule 'gyro0.rtc enters ERROR' failed at broken.coord.kts:3: OperationFailedException: $path: reset failed: RTC_ERROR (in context 0)\n" in result.stdout, result.stdout)
-            assertTrue("  failed action: reset $path: reset failed: RTC_ERROR (in context 0) (attempted, went on)\n" in result.stdout, result.stdout)
-            assertTrue("  failed action: reset $path: reset failed: RTC_ERROR (in context 0) (stopped its handler)\n" in result.stdout, result.stdout)
+            assertTrue("  rule 'gyro0.rtc enters ERROR' failed at broken.coord.kts:3: OperationFailedException: $path: reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)\n" in result.stdout, result.stdout)
+            assertTrue("  failed action: reset $path: reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline) (attempted, went on)\n" in result.stdout, result.stdout)
+            assertTrue("  failed action: reset $path: reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline) (stopped its handler)\n" in result.stdout, result.stdout)
         }
     }
 
@@ -347,7 +347,7 @@ class ScriptCommandsTest {
         assertEquals(0, result.statusCode, result.stderr)
         assertTrue("coordinator: create odo_localise through" in result.stdout, result.stdout)
         assertTrue(Regex("""Recovered \d+ ms after the laser failed""").containsMatchIn(result.stdout), result.stdout)
-        assertTrue("laser0 could not be reset (reset failed: RTC_ERROR (in context 0)): it stays in ERROR" in result.stdout, result.stdout)
+        assertTrue("laser0 could not be reset (reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)): it stays in ERROR" in result.stdout, result.stdout)
     }
 
     /** What [run] printed so far, once it finished; empty while it runs (the harness hands it over at the end). */

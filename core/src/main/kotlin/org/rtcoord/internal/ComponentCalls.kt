@@ -11,8 +11,10 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.NotFoundException
 import org.rtcoord.OperationFailedException
 import org.rtcoord.TimedOutException
+import org.rtcoord.TransitionOutcome
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeMark
 import kotlin.time.TimeSource
 
 /** A lifecycle operation, with the state it starts from, the one it leads to, and its call on a context. */
@@ -56,33 +58,61 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
 
     /**
      * Performs [operation] in [selector]'s context, waits until the component is in the state it leads to
-     * (within [deadline], else the tree's), and publishes that state.
+     * (within [deadline], else the tree's), and publishes that state. A context that answers `RTC_ERROR`,
+     * or no answer within the deadline, may only have stopped waiting for a slow callback (OpenRTM-aist's
+     * `transition_timeout`, `ExecutionContextBase.waitForActivated` and the like): the state is read until
+     * the deadline, and one that arrives makes a slow success.
      */
-    suspend fun perform(operation: LifecycleOperation, selector: ContextSelector, deadline: Duration?) {
+    suspend fun perform(operation: LifecycleOperation, selector: ContextSelector, deadline: Duration?): TransitionOutcome {
         val (handle, ec) = context(selector)
-        val code = core.remote.call(subject, operation.verb, deadline) { operation.call(ec, component.ref) }
+        val limit = deadline ?: core.remote.defaultDeadline
+        val started = TimeSource.Monotonic.markNow()
+        val code = try {
+            core.remote.call(subject, operation.verb, limit) { operation.call(ec, component.ref) }
+        } catch (e: TimedOutException) {
+            null
+        }
         if (code == ReturnCode_t.PRECONDITION_NOT_MET) {
             val now = runCatching { state(ec) }.getOrDefault(LifeCycle.UNKNOWN)
             code.orFail(subject, operation.verb, "the component is $now in context $handle, not ${operation.from}")
         }
-        code.orFail(subject, operation.verb, "in context $handle")
-        val stamp = awaitState(operation.verb, ec, handle, operation.to, deadline ?: core.remote.defaultDeadline)
+        val late = when (code) {
+            ReturnCode_t.RTC_OK -> null
+            ReturnCode_t.RTC_ERROR -> code.name()
+            null -> "no answer"
+            else -> {
+                code.orFail(subject, operation.verb, "in context $handle") // throws: any other code is a failure
+                null
+            }
+        }
+        val stamp = awaitState(operation, ec, handle, started + limit, limit, late)
         component.publishStates(mapOf(handle to operation.to), stamp)
+        return TransitionOutcome(operation.to, late, started.elapsedNow().inWholeMilliseconds)
     }
 
     /**
-     * Polls the state until it is [target], fails at once if the component fell into ERROR instead;
-     * returns the stamp of the read that found [target] (see [ComponentObject.stamp]).
+     * Polls the state until it is [operation]'s target, failing at once if the component fell into ERROR
+     * instead (a reset's ERROR is the state it leaves); returns the stamp of the read that found the
+     * target (see [ComponentObject.stamp]). [late] is what the context answered when it did not report
+     * the target itself: the failure at [deadline] names it with the state found.
      */
-    private suspend fun awaitState(operation: String, ec: ExecutionContext, handle: Int, target: LifeCycle, limit: Duration): Long {
-        val deadline = TimeSource.Monotonic.markNow() + limit
+    private suspend fun awaitState(operation: LifecycleOperation, ec: ExecutionContext, handle: Int, deadline: TimeMark, limit: Duration, late: String?): Long {
+        val verb = operation.verb
+        val target = operation.to
         var pause = 1.milliseconds
         while (true) {
             val stamp = component.stamp()
             val state = state(ec)
             if (state == target) return stamp
-            if (state == LifeCycle.ERROR) throw OperationFailedException(subject, operation, ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
-            if (deadline.hasPassedNow()) throw TimedOutException(subject, "$operation (waiting for $target, still $state)", limit.inWholeMilliseconds)
+            if (state == LifeCycle.ERROR && operation.from != LifeCycle.ERROR) {
+                throw OperationFailedException(subject, verb, late ?: ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
+            }
+            if (deadline.hasPassedNow()) {
+                throw when (late) {
+                    null, "no answer" -> TimedOutException(subject, "$verb (waiting for $target, still $state)", limit.inWholeMilliseconds)
+                    else -> OperationFailedException(subject, verb, late, "in context $handle; still $state at its ${limit.inWholeMilliseconds} ms deadline")
+                }
+            }
             delay(pause)
             pause = (pause * 2).coerceAtMost(20.milliseconds)
         }

@@ -25,9 +25,11 @@ internal class ConfigurationWriter(private val remote: Remote, private val orb: 
     /**
      * Writes [values] into set [set] (the active one when null), checked first against the set's
      * parameters and the `__constraints__` the component declares, then activates the set that was
-     * active, or [set] when none was, and reads the values back.
+     * active, or [set] when none was, and reads the values back. A value outside its constraint is
+     * written, as OpenRTM-aist writes it, and returned as a warning (`gain: '42' is outside 0<x<10`);
+     * [strict] refuses it instead.
      */
-    suspend fun setValues(values: Map<String, String>, set: String?) {
+    suspend fun setValues(values: Map<String, String>, set: String?, strict: Boolean): List<String> {
         require(values.isNotEmpty()) { "no parameters to set" }
         val operation = "set ${values.keys.joinToString()}"
         val (configuration, sets, active) = read()
@@ -38,11 +40,9 @@ internal class ConfigurationWriter(private val remote: Remote, private val orb: 
         values.keys.firstOrNull { it !in parameters }?.let { missing ->
             throw NotFoundException(subject, "no parameter '$missing' in configuration set '$target' (parameters: ${parameters.sorted().joinToString()})")
         }
-        val constraints = sets.firstOrNull { it.id == CONSTRAINTS }?.configuration_data?.toMap().orEmpty()
-        for ((name, value) in values) {
-            val violation = constraints[name]?.let { ParameterConstraint.violation(it, value) } ?: continue
-            throw BadParameterException(subject, "set $name", violation)
-        }
+        val constraints = sets.firstOrNull { it.id == ParameterConstraint.SET }?.configuration_data?.toMap().orEmpty()
+        val violations = ParameterConstraint.violations(values, current.configuration_data.toMap(), constraints)
+        if (strict) violations.entries.firstOrNull()?.let { (name, why) -> throw BadParameterException(subject, "set $name", why) }
         // Only the changed values: the component merges them into the set, leaving the others as they are now.
         val changes = values.map { (name, value) -> NameValue(name, orb.create_any().apply { insert_string(value) }) }.toTypedArray()
         val accepted = remote.call(subject, operation) { configuration.set_configuration_set_values(ConfigurationSet(target, current.description, changes)) }
@@ -53,6 +53,7 @@ internal class ConfigurationWriter(private val remote: Remote, private val orb: 
         if (lost.isNotEmpty()) {
             throw OperationFailedException(subject, operation, "read back", "set '$target' holds ${lost.keys.joinToString { "$it=${stored[it]}" }}")
         }
+        return violations.map { (name, why) -> "$name: $why" }
     }
 
     /** Makes set [id] the active one; checks that a set is active then. */
@@ -110,11 +111,6 @@ internal class ConfigurationWriter(private val remote: Remote, private val orb: 
     private fun noSuchSet(id: String, sets: List<ConfigurationSet>) = NotFoundException(subject, "no configuration set '$id' (sets: ${sets.ids()})")
 
     private fun List<ConfigurationSet>.ids(): String = map { it.id }.sorted().joinToString()
-
-    private companion object {
-        /** The hidden configuration set where a component declares its parameters' constraints. */
-        const val CONSTRAINTS = "__constraints__"
-    }
 }
 
 /** The active configuration set's id, or null while the component has none (OpenRTM-aist, after a set was written, added or removed). */

@@ -36,12 +36,13 @@ public class JavaSystemProfiles(
     /** Restores [profile] onto the running system (see [SystemProfiles.restore]). */
     @JvmOverloads
     @Throws(RtcException::class, ProfileRefusedException::class, InterruptedException::class)
-    public fun restore(profile: RtsProfile, createMissing: Boolean = false): RestoreReport = calls.await { profiles.restore(profile, createMissing) }
+    public fun restore(profile: RtsProfile, createMissing: Boolean = false, strict: Boolean = false): RestoreReport =
+        calls.await { profiles.restore(profile, createMissing, strict) }
 
     /** [restore], when done. */
     @JvmOverloads
-    public fun restoreAsync(profile: RtsProfile, createMissing: Boolean = false): CompletableFuture<RestoreReport> =
-        calls.future { profiles.restore(profile, createMissing) }
+    public fun restoreAsync(profile: RtsProfile, createMissing: Boolean = false, strict: Boolean = false): CompletableFuture<RestoreReport> =
+        calls.future { profiles.restore(profile, createMissing, strict) }
 
     /** How the live system differs from [profile], components compared against [state] when not null (see [SystemProfiles.check]). */
     @JvmOverloads

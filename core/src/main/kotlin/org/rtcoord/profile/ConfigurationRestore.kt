@@ -16,22 +16,33 @@ internal object ConfigurationRestore {
      */
     fun restorable(wanted: ProfileComponent): List<ConfigurationSet> = wanted.configurationSets.filter { !SystemCapture.isHidden(it.id) }
 
-    /** Why [wanted] cannot be written to the component with [live] configuration, or null if it can. */
-    fun problem(wanted: ProfileComponent, live: ConfigurationSnapshot): String? {
-        val constraints = live.sets["__constraints__"].orEmpty()
+    /**
+     * Why [wanted] cannot be written to the component with [live] configuration, or null if it can; with
+     * [strict], a value outside its constraint is a reason too (see [constraintWarnings]).
+     */
+    fun problem(wanted: ProfileComponent, live: ConfigurationSnapshot, strict: Boolean): String? {
         for (set in restorable(wanted)) {
-            val current = live.sets[set.id]
-            for ((name, value) in set.data) {
-                if (current != null && name !in current) return "no parameter '$name' in configuration set '${set.id}'"
-                val constraint = constraints[name] ?: continue
-                ParameterConstraint.violation(constraint, value)?.let { return "configuration set '${set.id}': $it" }
-            }
+            val current = live.sets[set.id] ?: continue
+            set.data.keys.firstOrNull { it !in current }?.let { return "no parameter '$it' in configuration set '${set.id}'" }
         }
+        if (strict) constraintWarnings(wanted, live).firstOrNull()?.let { return it }
         val active = wanted.activeConfigurationSet
         if (active.isNotEmpty() && active !in live.sets && wanted.configurationSet(active) == null) {
             return "no configuration set '$active' to activate"
         }
         return null
+    }
+
+    /**
+     * The values the restore would write outside the constraint their component declares, one line each
+     * (`configuration set 'mode0': int_param0: '12345' is outside 0<=x<=150`). OpenRTM-aist writes them
+     * (it never checks `__constraints__`); a value the component holds already is not written, so never named.
+     */
+    fun constraintWarnings(wanted: ProfileComponent, live: ConfigurationSnapshot): List<String> {
+        val constraints = live.sets[ParameterConstraint.SET].orEmpty()
+        return restorable(wanted).flatMap { set ->
+            ParameterConstraint.violations(set.data, live.sets[set.id].orEmpty(), constraints).map { (name, why) -> "configuration set '${set.id}': $name: $why" }
+        }
     }
 
     /** Writes what differs and activates the profile's set; returns what it did, empty when nothing differed. */
@@ -49,6 +60,7 @@ internal object ConfigurationRestore {
                 else -> {
                     val changed = set.data.filter { (name, value) -> current[name] != value }
                     if (changed.isEmpty()) continue
+                    // Checked, and warned about, before the restore began.
                     node.setParameters(changed, set.id)
                     done += "set ${changed.keys.joinToString()} in '${set.id}'"
                 }

@@ -14,6 +14,7 @@ import org.rtcoord.ContextSelector
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
+import org.rtcoord.TransitionOutcome
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
@@ -40,9 +41,12 @@ public data class PlannedStep(val sequence: Int, val component: String, val cont
     }
 }
 
-/** What became of one step: done (and when, from the start of the run), failed (why) or not done (why). */
+/**
+ * What became of one step: done (and when, from the start of the run; [detail] says if it was slow),
+ * failed (why) or not done (why).
+ */
 public data class StepOutcome(val step: PlannedStep, val done: Boolean, val atMillis: Long, val detail: String) {
-    override fun toString(): String = if (done) "done at $atMillis ms: $step" else "NOT done: $step: $detail"
+    override fun toString(): String = if (done) "done at $atMillis ms: $step" + detail.ifEmpty { null }?.let { " ($it)" }.orEmpty() else "NOT done: $step: $detail"
 }
 
 /** Plans and runs an ordered start or stop. */
@@ -68,6 +72,7 @@ internal class SystemOrdering(private val tree: RtcTree) {
             for (step in steps) launch {
                 // Earlier sequences' time is theirs: a step's deadline starts once they are done.
                 val failed = steps.filter { it.sequence < step.sequence }.firstOrNull { !finished.getValue(it).await() }
+                var slow = ""
                 val outcome = if (failed != null) "not done: ${failed.component} before it was not done" else try {
                     withTimeout(stepDeadline + conditionTime(step.condition)) {
                         when (val c = step.condition) {
@@ -76,7 +81,7 @@ internal class SystemOrdering(private val tree: RtcTree) {
                             Condition.None -> Unit
                         }
                         issued.getValue(step).complete(true)
-                        act(nodes.getValue(step.component), ContextSelector.Handle(step.contextId), action, stepDeadline)
+                        act(nodes.getValue(step.component), ContextSelector.Handle(step.contextId), action, stepDeadline)?.takeIf { it.slow }?.let { slow = "slow: $it" }
                         null
                     }
                 } catch (e: TimeoutCancellationException) {
@@ -84,7 +89,7 @@ internal class SystemOrdering(private val tree: RtcTree) {
                 } catch (e: RtcException) {
                     e.message ?: e.reason
                 }
-                outcomes[step] = StepOutcome(step, outcome == null, start.elapsedNow().inWholeMilliseconds, outcome ?: "")
+                outcomes[step] = StepOutcome(step, outcome == null, start.elapsedNow().inWholeMilliseconds, outcome ?: slow)
                 issued.getValue(step).complete(false)
                 finished.getValue(step).complete(outcome == null)
             }
@@ -93,17 +98,19 @@ internal class SystemOrdering(private val tree: RtcTree) {
     }
 
     /**
-     * Brings [node]'s context to [action]'s state, unless it is there. The calls run in the tree's scope:
+     * Brings [node]'s context to [action]'s state, unless it is there (then null). The calls run in the tree's scope:
      * one blocked in a socket read does not give way to cancellation, and the step's deadline must end
      * the wait for it, not the ORB's; abandoned, it ends there within the tree's call deadline.
      */
-    private suspend fun act(node: ComponentNode, selector: ContextSelector, action: OrderedAction, deadline: Duration) {
+    private suspend fun act(node: ComponentNode, selector: ContextSelector, action: OrderedAction, deadline: Duration): TransitionOutcome? {
         val call = tree.core.scope.async(CoroutineName("${action.name.lowercase()} ${node.path}")) {
-            if (node.state(selector) != action.reaches) {
-                if (action == OrderedAction.START) node.activate(selector, deadline) else node.deactivate(selector, deadline)
+            when {
+                node.state(selector) == action.reaches -> null
+                action == OrderedAction.START -> node.activate(selector, deadline)
+                else -> node.deactivate(selector, deadline)
             }
         }
-        try {
+        return try {
             call.await()
         } catch (e: CancellationException) {
             call.cancel()

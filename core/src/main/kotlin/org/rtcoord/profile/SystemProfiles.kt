@@ -29,8 +29,14 @@ public class SystemProfiles(private val tree: RtcTree) {
      * system lacks are made with their properties (identical ones kept); configuration sets are written
      * and the active set activated; execution context rates set. Everything is checked first: a missing
      * required component, a missing port, incompatible ports, a connection that exists with other
-     * properties or a value out of range is a [ProfileRefusedException] before anything changes. Missing
-     * optional components are reported. Restoring again changes nothing.
+     * properties is a [ProfileRefusedException] before anything changes. Missing optional components are
+     * reported. Restoring again changes nothing.
+     *
+     * A value the restore would write outside the constraint its component declares (`__constraints__`)
+     * is written, as OpenRTM-aist and rtresurrect write it, and named in [RestoreReport.warnings]; with
+     * [strict] it refuses the restore instead. A value the component holds is not written, so a profile
+     * saved from a system always restores onto it unchanged, even where the system holds values outside
+     * their constraints (OpenRTM-aist's own ConfigSample does).
      *
      * With [createMissing], missing components (required or not) are first created through a manager:
      * the one bound in the component's naming context or nearest above it (a master before a slave,
@@ -38,8 +44,8 @@ public class SystemProfiles(private val tree: RtcTree) {
      * instance name. No manager for one of them refuses the restore before anything is created; a
      * restore refused after creating deletes what it created.
      */
-    public suspend fun restore(profile: RtsProfile, createMissing: Boolean = false): RestoreReport =
-        SystemRestore(tree).restore(profile, createMissing)
+    public suspend fun restore(profile: RtsProfile, createMissing: Boolean = false, strict: Boolean = false): RestoreReport =
+        SystemRestore(tree).restore(profile, createMissing, strict)
 
     /**
      * How the live system differs from [profile]: missing components, states other than [state] (not

@@ -21,6 +21,8 @@ public data class RestoreReport(
     val missingOptional: List<String>,
     /** The components created through their managers, by path. */
     val created: List<String> = emptyList(),
+    /** Values written outside the constraint their component declares, one line each naming component, set and parameter. */
+    val warnings: List<String> = emptyList(),
 )
 
 /** A profile that cannot be applied as a whole; nothing was changed. */
@@ -59,11 +61,12 @@ internal class SystemRestore(private val tree: RtcTree) {
 
     /**
      * Restores [profile]; with [createMissing], its missing components are created first, and deleted
-     * again if the restore is then refused, so that a refusal still leaves the system as it was.
+     * again if the restore is then refused, so that a refusal still leaves the system as it was. With
+     * [strict], a value outside its constraint refuses the restore; without, it is a warning.
      */
-    suspend fun restore(profile: RtsProfile, createMissing: Boolean): RestoreReport {
+    suspend fun restore(profile: RtsProfile, createMissing: Boolean, strict: Boolean): RestoreReport {
         val found = ResolvedSystem.of(tree, profile)
-        if (!createMissing || found.missing.isEmpty()) return restore(found, emptyList())
+        if (!createMissing || found.missing.isEmpty()) return restore(found, emptyList(), strict)
         val creation = MissingComponentCreation(tree)
         val planned = creation.plan(found.missing)
         val made = mutableListOf<MissingComponentCreation.Planned>()
@@ -73,7 +76,7 @@ internal class SystemRestore(private val tree: RtcTree) {
                 lines += creation.create(p)
                 made += p
             }
-            val report = restore(ResolvedSystem.of(tree, profile), lines)
+            val report = restore(ResolvedSystem.of(tree, profile), lines, strict)
             return report.copy(created = made.map { it.path })
         } catch (e: ProfileRefusedException) {
             val undone = made.reversed().mapNotNull { p -> try { creation.delete(p); null } catch (d: RtcException) { "${p.path} (${d.reason})" } }
@@ -82,14 +85,17 @@ internal class SystemRestore(private val tree: RtcTree) {
         }
     }
 
-    private suspend fun restore(system: ResolvedSystem, created: List<String>): RestoreReport {
+    private suspend fun restore(system: ResolvedSystem, created: List<String>, strict: Boolean): RestoreReport {
         val profile = system.profile
         system.missing.firstOrNull { it.isRequired }?.let { throw ProfileRefusedException("required component /${it.pathUri.removePrefix("/")} is not running") }
         val kept = mutableListOf<String>()
         val connections = (profile.dataPortConnectors + profile.servicePortConnectors).mapNotNull { plan(system, it, kept) }
+        val warnings = mutableListOf<String>()
         for (c in profile.components) {
             val node = system.nodes[c.instanceName] ?: continue
-            ConfigurationRestore.problem(c, node.configuration())?.let { throw ProfileRefusedException("${node.path}: $it") }
+            val configuration = node.configuration()
+            ConfigurationRestore.problem(c, configuration, strict)?.let { throw ProfileRefusedException("${node.path}: $it") }
+            warnings += ConfigurationRestore.constraintWarnings(c, configuration).map { "${node.path}: $it" }
             for (ec in c.executionContexts) {
                 val handle = ec.id.toIntOrNull() ?: throw ProfileRefusedException("${node.path}: execution context id '${ec.id}' is not a number")
                 if (node.snapshot().context(handle) == null) throw ProfileRefusedException("${node.path}: no execution context $handle")
@@ -111,7 +117,7 @@ internal class SystemRestore(private val tree: RtcTree) {
                 done += "${node.path}: execution context $handle at $rate Hz"
             }
         }
-        return RestoreReport(done, kept, system.missing.map { "/" + it.pathUri.removePrefix("/") })
+        return RestoreReport(done, kept, system.missing.map { "/" + it.pathUri.removePrefix("/") }, warnings = warnings)
     }
 
     /** The connection to make, null when it is there already or an end is an optional missing component. */

@@ -85,10 +85,10 @@ class SystemProfilesTest {
         val noPort = saved.copy(dataPortConnectors = saved.dataPortConnectors.map { c -> if (c.source.instanceName != "laser0") c else c.copy(source = c.source.copy(portName = "laser0.scan")) })
         val cases = listOf(
             missing to "ghost0.rtc is not running", outOfRange to "'99' is outside 0<x<10", incompatible to "incompatible data types",
-            notNumber to "configuration set 'precise': 'fast' is not a number (constraint 0<x<10)", noPort to "laser0.rtc: no port 'scan'",
+            notNumber to "configuration set 'precise': gain: 'fast' is not a number (constraint 0<x<10)", noPort to "laser0.rtc: no port 'scan'",
         )
         for ((profile, reason) in cases) {
-            val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(profile) } }
+            val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(profile, strict = true) } }
             assertTrue(reason in refused.message!! && '\n' !in refused.message!!, refused.message)
             assertEquals(before, shape(profiles.save()), "after refusing: ${refused.message}")
         }
@@ -141,8 +141,8 @@ class SystemProfilesTest {
         val outOfRange = saved.copy(components = saved.components.map { c ->
             if (c !== localiser) c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "default") it.copy(data = it.data + ("gain" to "99")) else it })
         })
-        val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(outOfRange, createMissing = true) } }
-        assertTrue(refused.reason.startsWith("$localiserPath: configuration set 'default': '99' is outside 0<x<10"), refused.reason)
+        val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(outOfRange, createMissing = true, strict = true) } }
+        assertTrue(refused.reason.startsWith("$localiserPath: configuration set 'default': gain: '99' is outside 0<x<10"), refused.reason)
         assertTrue(refused.reason.endsWith("; the components created for it were deleted again") && '\n' !in refused.reason, refused.reason)
         system.tree.refresh(RtcPath.parse(system.host))
         assertThrows<NotFoundException> { runBlocking { system.tree.component(localiserPath) } }

@@ -190,9 +190,11 @@ public class Reaction internal constructor(
      * as `rtcoord profile restore` does: connections made (identical ones kept), configuration sets
      * written and the profile's active set activated, execution context rates set; with [createMissing],
      * missing components created through their managers first. Each change is logged. When the profile
-     * cannot be applied as a whole (a required component missing, incompatible ports, a value out of
-     * range) nothing is changed and the action fails with one line saying why, stopping the handler
-     * unless it runs in [attempt]. Restoring again changes nothing. Not undone by [ReactionFailure.undo].
+     * cannot be applied as a whole (a required component missing, incompatible ports, with [strict] a
+     * value outside the constraint its component declares) nothing is changed and the action fails with
+     * one line saying why, stopping the handler unless it runs in [attempt]; without [strict] such a value
+     * is written, as OpenRTM-aist writes it, and logged as a warning. Restoring again changes nothing. Not
+     * undone by [ReactionFailure.undo].
      *
      * ```
      * mode("navigation") { entry { restoreProfile("nav.xml") } }
@@ -200,9 +202,12 @@ public class Reaction internal constructor(
      *
      * @return what was done, kept and found missing.
      */
-    public suspend fun restoreProfile(file: String, createMissing: Boolean = false): RestoreReport =
+    public suspend fun restoreProfile(file: String, createMissing: Boolean = false, strict: Boolean = false): RestoreReport =
         engine.perform("restore profile $file") {
-            SystemProfiles(engine.tree).restore(engine.directory.profile(file), createMissing).also { report -> report.done.forEach { engine.log("  $it") } }
+            SystemProfiles(engine.tree).restore(engine.directory.profile(file), createMissing, strict).also { report ->
+                report.done.forEach { engine.log("  $it") }
+                report.warnings.forEach { engine.log("  warning: $it") }
+            }
         }
 
     /**

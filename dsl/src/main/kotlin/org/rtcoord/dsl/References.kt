@@ -9,6 +9,7 @@ import org.rtcoord.ManagerNode
 import org.rtcoord.Port
 import org.rtcoord.PortSnapshot
 import org.rtcoord.RtcPath
+import org.rtcoord.TransitionOutcome
 import org.rtcoord.dsl.runtime.Engine
 import org.rtcoord.dsl.runtime.Undo
 
@@ -43,14 +44,22 @@ public class ComponentRef internal constructor(
      */
     public suspend fun configuration(): ConfigurationSnapshot = Engine.current().withComponent(selector) { it.configuration() }
 
-    /** Activates it and waits until it is ACTIVE. Undone by a deactivation. */
-    public suspend fun activate(): Unit = Engine.current().actReversibly("activate", this) { it.activate(); { deactivate() } }
+    /**
+     * Activates it and waits until it is ACTIVE; one that gets there after its context answered `RTC_ERROR`
+     * (its transition timeout passed first) is logged as slow, not failed. Undone by a deactivation.
+     */
+    public suspend fun activate(): Unit = Engine.current().let { engine -> engine.actReversibly("activate", this) { engine.noteSlow(it.activate()); { deactivate() } } }
 
-    /** Deactivates it and waits until it is INACTIVE. Undone by an activation. */
-    public suspend fun deactivate(): Unit = Engine.current().actReversibly("deactivate", this) { it.deactivate(); { activate() } }
+    /** Deactivates it and waits until it is INACTIVE, slow ones as [activate]. Undone by an activation. */
+    public suspend fun deactivate(): Unit = Engine.current().let { engine -> engine.actReversibly("deactivate", this) { engine.noteSlow(it.deactivate()); { activate() } } }
 
-    /** Resets it from ERROR and waits until it is INACTIVE. */
-    public suspend fun reset(): Unit = Engine.current().act("reset", this) { it.reset() }
+    /** Resets it from ERROR and waits until it is INACTIVE, slow ones as [activate]. */
+    public suspend fun reset(): Unit = Engine.current().let { engine -> engine.act("reset", this) { engine.noteSlow(it.reset()) } }
+
+    /** Logs a transition that got there after its context had answered it did not. */
+    private fun Engine.noteSlow(outcome: TransitionOutcome) {
+        if (outcome.slow) log("  slow: $outcome")
+    }
 
     /** Makes it exit. */
     public suspend fun exit(): Unit = Engine.current().act("exit", this) { it.exit() }
@@ -68,10 +77,14 @@ public class ComponentRef internal constructor(
     /**
      * Sets parameters of its active configuration set (or of `inSet(...)`'s set), all in one change:
      * `configure { set("gain", "2.0") }`. An unknown parameter or a value the component refuses changes none.
+     * A value outside the constraint the component declares is written, as OpenRTM-aist writes it, and logged as a warning.
      */
     public suspend fun configure(changes: ConfigurationChanges.() -> Unit) {
         val requested = ConfigurationChanges().apply(changes)
-        Engine.current().act("configure ${requested.describe()}", this) { node -> node.setParameters(requested.values, requested.set) }
+        val engine = Engine.current()
+        engine.act("configure ${requested.describe()}", this) { node ->
+            node.setParameters(requested.values, requested.set).forEach { engine.log("  warning: ${node.path}: $it") }
+        }
     }
 
     /** Makes configuration set [id] the active one. */

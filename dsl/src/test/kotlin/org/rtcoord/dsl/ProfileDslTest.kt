@@ -73,7 +73,7 @@ class ProfileDslTest : CoordinatedSystem() {
         val checks = CopyOnWriteArrayList<List<ProfileDifference>>()
         coordinator {
             after(10.milliseconds) {
-                attempt { restoreProfile("bad.xml") }
+                attempt { restoreProfile("bad.xml", strict = true) }
                 checks += checkProfile("sys.xml", state = null)
                 val report = restoreProfile("sys.xml")
                 log("restored: ${report.done.size} changes")

@@ -28,7 +28,7 @@ class ReactionFailureTest : CoordinatedSystem() {
             assertEquals(listOf(false), outcome)
             assertEquals(RTC.LifeCycleState.ERROR_STATE, system.component("laser0").state)
             assertEquals(0, coordinator.failures, "a best effort that fails is no handler failure")
-            assertEquals(listOf(FailedAction("reset $laserPath", "reset failed: RTC_ERROR (in context 0)", bestEffort = true)), coordinator.failedActions)
+            assertEquals(listOf(FailedAction("reset $laserPath", "reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)", bestEffort = true)), coordinator.failedActions)
             assertTrue(log.any { it.startsWith("warning: $laserPath: reset failed: RTC_ERROR") && it.endsWith("going on (attempt)") }, "$log")
         }
     }
@@ -45,7 +45,7 @@ class ReactionFailureTest : CoordinatedSystem() {
             system.component("laser0").breakDown()
             await("the handler to fail") { coordinator.failures == 1 }
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, system.component("laser_localise0").state, "the handler stopped at the reset")
-            assertEquals(listOf(FailedAction("reset $laserPath", "reset failed: RTC_ERROR (in context 0)", bestEffort = false)), coordinator.failedActions)
+            assertEquals(listOf(FailedAction("reset $laserPath", "reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)", bestEffort = false)), coordinator.failedActions)
         }
     }
 

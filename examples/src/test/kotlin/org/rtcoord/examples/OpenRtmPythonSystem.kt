@@ -102,6 +102,36 @@ class OpenRtmPythonSystem private constructor(private val python: String) : Auto
             .start()
     }
 
+    /**
+     * Starts OpenRTM-aist's own ConfigSample (with its `configsample.conf`: sets `mode0` and `mode1` hold
+     * values outside its `__constraints__`) and SeqIO's `SequenceOutComponent` (its `on_execute` sleeps
+     * 1 s) from the installation's examples, inactive, in a manager of their own that is no slave of the
+     * master; returns once both are in naming.
+     */
+    fun startOpenRtmExamples() {
+        val examples = Paths.get(
+            ProcessBuilder(python, "-c", "import os, OpenRTM_aist; print(os.path.dirname(OpenRTM_aist.__file__))").start().inputStream.bufferedReader().readText().trim(),
+            "examples",
+        )
+        val loose = ServerSocket(0, 1, InetAddress.getLoopbackAddress()).use { it.localPort }
+        managers += manager(
+            "examples",
+            directory,
+            // A master nobody listens at: this manager stays on its own, so the master never hands it a creation.
+            "corba.master_manager: 127.0.0.1:$loose",
+            "manager.is_master: NO",
+            "manager.modules.load_path: ${examples.resolve("ConfigSample")}, ${examples.resolve("SeqIO")}",
+            "manager.modules.preload: ConfigSample.py, SeqOut.py",
+            "manager.components.precreate: ConfigSample, SeqOut",
+            "example.ConfigSample.config_file: ${examples.resolve("ConfigSample/configsample.conf")}",
+        )
+        runBlocking {
+            awaitValue("ConfigSample0 and SequenceOutComponent0 in naming", 30.seconds) {
+                runBlocking { runCatching { witness.refresh(); witness.componentNamed("ConfigSample0.rtc"); witness.componentNamed("SequenceOutComponent0.rtc") }.getOrNull() }
+            }
+        }
+    }
+
     /** Kills the slave manager hosting the components with SIGKILL: their bindings stay behind. */
     fun killSlave() {
         managers[1].destroyForcibly().waitFor(10, TimeUnit.SECONDS)
