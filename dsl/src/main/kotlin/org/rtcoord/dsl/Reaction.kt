@@ -1,6 +1,5 @@
 package org.rtcoord.dsl
 
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.withContext
@@ -14,6 +13,7 @@ import org.rtcoord.dsl.runtime.BestEffort
 import org.rtcoord.dsl.runtime.Engine
 import org.rtcoord.dsl.runtime.ScriptCallSite
 import org.rtcoord.dsl.runtime.Undo
+import org.rtcoord.dsl.runtime.catchFailure
 import org.rtcoord.profile.ProfileDifference
 import org.rtcoord.profile.RestoreReport
 import org.rtcoord.profile.SystemProfiles
@@ -124,12 +124,10 @@ public class Reaction internal constructor(
      *
      * @return whether [block] completed.
      */
-    public suspend fun attempt(block: suspend Reaction.() -> Unit): Boolean = try {
+    public suspend fun attempt(block: suspend Reaction.() -> Unit): Boolean = catchFailure({
         withContext(BestEffort.element) { block() }
         true
-    } catch (e: CancellationException) {
-        throw e
-    } catch (e: Exception) {
+    }) { e ->
         engine.log("warning: ${e.message ?: e}; going on (attempt)")
         false
     }
@@ -165,18 +163,10 @@ public class Reaction internal constructor(
      */
     internal suspend fun handle(handler: suspend Reaction.() -> Unit) {
         val journal = ActionJournal().also { this.journal = it }
-        try {
-            withContext(journal) { handler() }
-        } catch (e: CancellationException) {
-            throw e
-        } catch (e: Exception) {
+        catchFailure({ withContext(journal) { handler() } }) { e ->
             val failure = ReactionFailure(e, journal.done) { engine.log(it) }
             for (fallback in fallbacks) {
-                try {
-                    fallback(failure)
-                } catch (c: CancellationException) {
-                    throw c
-                } catch (other: Exception) {
+                catchFailure({ fallback(failure) }) { other ->
                     engine.log("warning: an onFailure block failed: ${other.message ?: other}")
                     e.addSuppressed(other)
                 }

@@ -1,7 +1,7 @@
 package org.rtcoord.dsl
 
-import kotlinx.coroutines.CancellationException
 import org.rtcoord.dsl.runtime.ActionJournal
+import org.rtcoord.dsl.runtime.catchFailure
 
 /**
  * Why a handler stopped, as its [Reaction.onFailure] blocks see it: the failure and the actions the
@@ -36,11 +36,7 @@ public class ReactionFailure internal constructor(
                 complete = false
                 continue
             }
-            try {
-                undo()
-            } catch (e: CancellationException) {
-                throw e
-            } catch (e: Exception) {
+            catchFailure({ undo() }) { e ->
                 log("warning: undoing '${entry.what}' failed: ${e.message ?: e}")
                 complete = false
             }

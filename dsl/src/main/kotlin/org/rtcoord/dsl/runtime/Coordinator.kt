@@ -1,6 +1,5 @@
 package org.rtcoord.dsl.runtime
 
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
@@ -252,11 +251,7 @@ public class Coordinator(
     }
 
     private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {
-        try {
-            ScriptCallSite.tracking(block)
-        } catch (e: CancellationException) {
-            throw e
-        } catch (e: Exception) {
+        catchFailure({ ScriptCallSite.tracking(block) }) { e ->
             failed(what, e)
             failedAs(e.message ?: e.toString())
         }

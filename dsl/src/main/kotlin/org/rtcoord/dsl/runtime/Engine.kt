@@ -1,6 +1,5 @@
 package org.rtcoord.dsl.runtime
 
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.AmbiguousNameException
@@ -90,12 +89,10 @@ internal class Engine(
     }
 
     /** Runs [action], recording its failure as one of [what]'s. */
-    private suspend fun <T> recorded(what: () -> String, action: suspend () -> T): T = try {
+    private suspend fun <T> recorded(what: () -> String, action: suspend () -> T): T = catchFailure({
         ScriptCallSite.mark()
         action()
-    } catch (e: CancellationException) {
-        throw e
-    } catch (e: Exception) {
+    }) { e ->
         val reason = (e as? RtcException)?.reason ?: e.message ?: e.toString()
         failedActions += FailedAction(what(), reason, bestEffort = currentCoroutineContext()[BestEffort] != null)
         throw e

@@ -1,6 +1,5 @@
 package org.rtcoord.dsl.runtime
 
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.launch
@@ -26,13 +25,7 @@ internal class HandlerQueue<E>(scope: CoroutineScope, overlap: Overlap, private 
     init {
         scope.launch {
             for (event in pending) {
-                try {
-                    handler(event)
-                } catch (e: CancellationException) {
-                    throw e
-                } catch (e: Exception) {
-                    logger.warn("handler failed on {}: {}", event, e.toString(), e)
-                }
+                catchFailure({ handler(event) }) { e -> logger.warn("handler failed on {}: {}", event, e.toString(), e) }
             }
         }
     }

@@ -1,6 +1,5 @@
 package org.rtcoord.dsl.runtime
 
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
@@ -176,14 +175,11 @@ internal class MachineInterpreter(
         is Trigger.Timeout -> input is Input.Timeout && input.transition === transition
     }
 
-    private suspend fun holds(transition: Transition, reaction: Reaction): Boolean = try {
-        ScriptCallSite.tracking { transition.guards.all { guard -> reaction.guard() } }
-    } catch (e: CancellationException) {
-        throw e
-    } catch (e: Exception) {
-        failed("guard of ${transition.source.path} $transition", e)
-        false
-    }
+    private suspend fun holds(transition: Transition, reaction: Reaction): Boolean =
+        catchFailure({ ScriptCallSite.tracking { transition.guards.all { guard -> reaction.guard() } } }) { e ->
+            failed("guard of ${transition.source.path} $transition", e)
+            false
+        }
 
     private suspend fun enter(modes: List<Mode>, reaction: Reaction) {
         for (mode in modes) {
@@ -242,13 +238,7 @@ internal class MachineInterpreter(
 
     private suspend fun run(what: String, actions: List<suspend Reaction.() -> Unit>, reaction: Reaction) {
         for (action in actions) {
-            try {
-                ScriptCallSite.tracking { reaction.action() }
-            } catch (e: CancellationException) {
-                throw e
-            } catch (e: Exception) {
-                failed(what, e)
-            }
+            catchFailure({ ScriptCallSite.tracking { reaction.action() } }) { e -> failed(what, e) }
         }
     }
 

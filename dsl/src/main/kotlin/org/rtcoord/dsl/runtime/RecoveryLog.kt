@@ -1,6 +1,5 @@
 package org.rtcoord.dsl.runtime
 
-import kotlinx.coroutines.CancellationException
 
 /** A supervisor's log: each line starts with the supervisor's [name]; a recovery step is logged before it runs, and again if it fails. */
 internal class RecoveryLog(private val name: String, private val log: (String) -> Unit) {
@@ -10,11 +9,7 @@ internal class RecoveryLog(private val name: String, private val log: (String) -
     /** Runs one recovery step, logged as [what]; a failure is logged with the step and gives null. */
     suspend fun <T> attempt(what: String, action: suspend () -> T): T? {
         line(what)
-        return try {
-            action()
-        } catch (e: CancellationException) {
-            throw e
-        } catch (e: Exception) {
+        return catchFailure({ action() }) { e ->
             line("$what failed: ${e.message ?: e}")
             null
         }

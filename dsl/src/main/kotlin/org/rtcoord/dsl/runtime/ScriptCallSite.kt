@@ -1,6 +1,5 @@
 package org.rtcoord.dsl.runtime
 
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.withContext
 import kotlin.coroutines.AbstractCoroutineContextElement
@@ -30,11 +29,7 @@ internal class ScriptCallSite : AbstractCoroutineContextElement(ScriptCallSite) 
         /** Runs [block]; a failure without frames of the script gets those of its last call into the DSL, as a suppressed [CalledFromScript]. */
         suspend fun <T> tracking(block: suspend () -> T): T {
             val site = ScriptCallSite()
-            return try {
-                withContext(site) { block() }
-            } catch (e: CancellationException) {
-                throw e
-            } catch (e: Exception) {
+            return catchFailure({ withContext(site) { block() } }) { e ->
                 if (scriptFrames(e).isEmpty() && site.frames.isNotEmpty()) e.addSuppressed(CalledFromScript(site.frames))
                 throw e
             }

@@ -1,6 +1,5 @@
 package org.rtcoord.dsl.runtime
 
-import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.channels.Channel
@@ -91,11 +90,7 @@ internal class Supervisor(
                 // Failures reported together (one process killed) are one episode.
                 val reported = listOf(failure) + generateSequence { failures.tryReceive().getOrNull() }
                 try {
-                    handle(reported)
-                } catch (e: CancellationException) {
-                    throw e
-                } catch (e: Exception) {
-                    say.line("recovering ${reported.joinToString { it.node.path.toString() }} failed: ${e.message ?: e}")
+                    catchFailure({ handle(reported) }) { e -> say.line("recovering ${reported.joinToString { it.node.path.toString() }} failed: ${e.message ?: e}") }
                 } finally {
                     unanswered.addAndGet(-reported.size)
                 }
