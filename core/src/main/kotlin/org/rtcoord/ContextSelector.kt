@@ -10,6 +10,7 @@ public sealed class ContextSelector {
 
     public companion object {
         /** The component's first owned context, handle 0. */
+        @JvmField
         public val DEFAULT: ContextSelector = Handle(0)
     }
 }

@@ -29,6 +29,7 @@ public class Port internal constructor(
     private val calls: PortCalls get() = PortCalls(component.core, subject, component.component, component.path.toString(), name)
 
     /** The port as last read. */
+    @JvmSynthetic
     public suspend fun snapshot(): PortSnapshot =
         component.snapshot().port(name) ?: throw NotFoundException(subject, "the port is gone")
 
@@ -37,6 +38,7 @@ public class Port internal constructor(
      * usual data port defaults (push, corba_cdr, flush, this port's data type). Incompatible ports or
      * properties are refused before anything changes.
      */
+    @JvmSynthetic
     public suspend fun connect(
         others: List<Port>,
         properties: Map<String, String> = emptyMap(),
@@ -65,16 +67,19 @@ public class Port internal constructor(
     }
 
     /** Removes the connection [connectorId] from this port and its peers. */
+    @JvmSynthetic
     public suspend fun disconnect(connectorId: String) {
         refreshAfter(calls.disconnect(connectorId))
     }
 
     /** Removes every connection of this port, then reads each component involved once. */
+    @JvmSynthetic
     public suspend fun disconnectAll() {
         refreshAfter(snapshot().connectors.flatMap { calls.disconnect(it.id) })
     }
 
     /** This port's connections, each with its ports resolved to tree paths where the tree knows them. */
+    @JvmSynthetic
     public suspend fun connections(): List<Connection> = calls.connections()
 
     /** Reads this component and [peers] again, each once. */
@@ -90,12 +95,14 @@ public class Port internal constructor(
      * does closing the tree; a tree that died leaves its tap behind, and the next tree tapping the port
      * removes it. Fails for a port that is not a data out-port, or that refuses the connection.
      */
+    @JvmSynthetic
     public suspend fun tap(listener: DataListener): Subscription = component.core.taps.subscribe(this, listener)
 
     /**
      * This out-port's samples while the flow is collected (see [tap]). A collector slower than the port
      * loses the oldest samples beyond the [capacity] waiting for it, never the newest.
      */
+    @JvmSynthetic
     public fun data(capacity: Int = 64): Flow<PortData> = callbackFlow {
         val subscription = tap { trySend(it) }
         awaitClose { subscription.cancel() }

@@ -149,6 +149,8 @@ public final class ApiDump {
             for (KmConstructor constructor : kotlinClass.getConstructors()) {
                 if (!isPublic(Attributes.getVisibility(constructor))) add(hidden, JvmExtensionsKt.getSignature(constructor));
             }
+            String companion = kotlinClass.getCompanionObject();
+            if (companion != null && !isVisible(nested(type, companion))) hidden.add(companion);
         } else if (metadata instanceof KotlinClassMetadata.FileFacade) {
             container = ((KotlinClassMetadata.FileFacade) metadata).getKmPackage();
         } else if (metadata instanceof KotlinClassMetadata.MultiFileClassPart) {
@@ -168,6 +170,15 @@ public final class ApiDump {
             }
         }
         return hidden;
+    }
+
+    /** The class nested in [type] as [name]: Kotlin's metadata names a companion this way. */
+    private static Class<?> nested(Class<?> type, String name) {
+        try {
+            return Class.forName(type.getName() + "$" + name, false, type.getClassLoader());
+        } catch (ClassNotFoundException e) {
+            throw new IllegalStateException("the metadata of " + type.getName() + " names a companion " + name + " that is not there", e);
+        }
     }
 
     private static void add(Set<String> signatures, JvmMethodSignature signature) {
@@ -208,6 +219,17 @@ public final class ApiDump {
         Set<String> hidden = hiddenByKotlin(type);
         return Arrays.stream(type.getDeclaredMethods())
                 .filter(m -> isVisible(m.getModifiers()) && !m.isSynthetic() && !m.isBridge() && !isKotlinInternal(m, hidden))
+                .collect(Collectors.toList());
+    }
+
+    /**
+     * The methods of [type] Kotlin callers can call: the visible ones and those {@code @JvmSynthetic} hides
+     * from Java (not what the compiler adds, whose names hold a {@code $}).
+     */
+    public static List<Method> kotlinCallableMethods(Class<?> type) {
+        Set<String> hidden = hiddenByKotlin(type);
+        return Arrays.stream(type.getDeclaredMethods())
+                .filter(m -> isVisible(m.getModifiers()) && !m.isBridge() && !isKotlinInternal(m, hidden))
                 .collect(Collectors.toList());
     }
 
