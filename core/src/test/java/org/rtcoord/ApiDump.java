@@ -125,12 +125,12 @@ public final class ApiDump {
         return Modifier.isPublic(modifiers) || Modifier.isProtected(modifiers);
     }
 
-    private static boolean isPublic(Visibility visibility) {
+    static boolean isPublic(Visibility visibility) {
         return visibility == Visibility.PUBLIC || visibility == Visibility.PROTECTED;
     }
 
     /** Kotlin's metadata of [type], or null for a Java class. */
-    private static KotlinClassMetadata metadata(Class<?> type) {
+    static KotlinClassMetadata metadata(Class<?> type) {
         Metadata annotation = type.getAnnotation(Metadata.class);
         return annotation == null ? null : KotlinClassMetadata.readLenient(annotation);
     }
@@ -185,7 +185,7 @@ public final class ApiDump {
         if (signature != null) signatures.add(signature.toString());
     }
 
-    private static String signature(Executable member) {
+    static String signature(Executable member) {
         StringBuilder descriptor = new StringBuilder(member instanceof Constructor ? "<init>" : member.getName()).append('(');
         for (Class<?> parameter : member.getParameterTypes()) descriptor.append(parameter.descriptorString());
         descriptor.append(')').append(member instanceof Method ? ((Method) member).getReturnType().descriptorString() : "V");
