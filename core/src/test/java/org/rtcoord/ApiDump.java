@@ -92,6 +92,14 @@ public final class ApiDump {
         return mangled;
     }
 
+    /** The data classes among [classes], by binary name, as Kotlin's metadata says. */
+    public static List<String> dataClasses(List<Class<?>> classes) {
+        return classes.stream()
+                .filter(type -> metadata(type) instanceof KotlinClassMetadata.Class && Attributes.isData(((KotlinClassMetadata.Class) metadata(type)).getKmClass()))
+                .map(Class::getName)
+                .collect(Collectors.toList());
+    }
+
     /** The visible methods of the classes of [packageName] that show Java a Kotlin type (a Continuation, Unit, a function type). */
     public static List<String> kotlinTypesShown(List<Class<?>> classes, String packageName) {
         List<String> kotlin = new ArrayList<>();
