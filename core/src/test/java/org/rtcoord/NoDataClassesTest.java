@@ -19,28 +19,19 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
  */
 class NoDataClassesTest {
     private static final Set<String> NOT_YET = Set.of(
-            "org.rtcoord.BecameZombie", "org.rtcoord.ComponentFinalized", "org.rtcoord.ComponentSummary",
-            "org.rtcoord.Composition", "org.rtcoord.ConfigurationSetActivated", "org.rtcoord.ConfigurationSetAdded",
-            "org.rtcoord.ConfigurationSetRemoved", "org.rtcoord.Connection$End", "org.rtcoord.Connection",
-            "org.rtcoord.ContextAttachmentChanged", "org.rtcoord.ContextRateChanged", "org.rtcoord.ContextRunningChanged",
-            "org.rtcoord.ContextSelector$Handle", "org.rtcoord.ContextSelector$Index", "org.rtcoord.HeartbeatLost",
-            "org.rtcoord.ManagerComponentChanged", "org.rtcoord.ManagerDied", "org.rtcoord.ManagerReturned",
-            "org.rtcoord.NameServerLost", "org.rtcoord.NameServerReturned", "org.rtcoord.NodeAppeared",
-            "org.rtcoord.NodeVanished", "org.rtcoord.ParameterChanged", "org.rtcoord.PortConnected",
-            "org.rtcoord.PortDisconnected", "org.rtcoord.PortTraffic", "org.rtcoord.Recovered",
-            "org.rtcoord.StateChanged", "org.rtcoord.TimedBoolean", "org.rtcoord.TimedDouble",
-            "org.rtcoord.TimedDoubleSeq", "org.rtcoord.TimedFloat", "org.rtcoord.TimedFloatSeq",
-            "org.rtcoord.TimedLong", "org.rtcoord.TimedLongSeq", "org.rtcoord.TimedOctet",
-            "org.rtcoord.TimedPoint2D", "org.rtcoord.TimedPose2D", "org.rtcoord.TimedShort",
-            "org.rtcoord.TimedString", "org.rtcoord.TimedVelocity2D", "org.rtcoord.WatchMethod$Polled",
-            "org.rtcoord.WatchMethod$Pushed", "org.rtcoord.WatchMethod$Unwatched", "org.rtcoord.WatchMethodChanged",
-            "org.rtcoord.profile.ComponentGroup", "org.rtcoord.profile.Condition$Preceding", "org.rtcoord.profile.Condition$WaitTime",
-            "org.rtcoord.profile.ConfigurationSet", "org.rtcoord.profile.ExecutionContext", "org.rtcoord.profile.Extension",
-            "org.rtcoord.profile.ForeignElement", "org.rtcoord.profile.Location", "org.rtcoord.profile.OrderedTarget",
-            "org.rtcoord.profile.Ordering", "org.rtcoord.profile.PlannedStep", "org.rtcoord.profile.PortConnector",
-            "org.rtcoord.profile.ProfileComponent", "org.rtcoord.profile.ProfileDifference", "org.rtcoord.profile.ProfilePort",
-            "org.rtcoord.profile.RestoreReport", "org.rtcoord.profile.RtsProfile", "org.rtcoord.profile.StepOutcome",
-            "org.rtcoord.profile.TargetComponent");
+            "org.rtcoord.ComponentSummary", "org.rtcoord.Composition", "org.rtcoord.Connection$End",
+            "org.rtcoord.Connection", "org.rtcoord.ContextSelector$Handle", "org.rtcoord.ContextSelector$Index",
+            "org.rtcoord.TimedBoolean", "org.rtcoord.TimedDouble", "org.rtcoord.TimedDoubleSeq",
+            "org.rtcoord.TimedFloat", "org.rtcoord.TimedFloatSeq", "org.rtcoord.TimedLong",
+            "org.rtcoord.TimedLongSeq", "org.rtcoord.TimedOctet", "org.rtcoord.TimedPoint2D",
+            "org.rtcoord.TimedPose2D", "org.rtcoord.TimedShort", "org.rtcoord.TimedString",
+            "org.rtcoord.TimedVelocity2D", "org.rtcoord.profile.ComponentGroup", "org.rtcoord.profile.Condition$Preceding",
+            "org.rtcoord.profile.Condition$WaitTime", "org.rtcoord.profile.ConfigurationSet", "org.rtcoord.profile.ExecutionContext",
+            "org.rtcoord.profile.Extension", "org.rtcoord.profile.ForeignElement", "org.rtcoord.profile.Location",
+            "org.rtcoord.profile.OrderedTarget", "org.rtcoord.profile.Ordering", "org.rtcoord.profile.PlannedStep",
+            "org.rtcoord.profile.PortConnector", "org.rtcoord.profile.ProfileComponent", "org.rtcoord.profile.ProfileDifference",
+            "org.rtcoord.profile.ProfilePort", "org.rtcoord.profile.RestoreReport", "org.rtcoord.profile.RtsProfile",
+            "org.rtcoord.profile.StepOutcome", "org.rtcoord.profile.TargetComponent");
 
     @Test
     void theApiHasNoDataClass() {
