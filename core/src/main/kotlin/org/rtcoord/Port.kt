@@ -12,6 +12,7 @@ import kotlinx.coroutines.flow.buffer
 import kotlinx.coroutines.flow.callbackFlow
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.PortCalls
+import org.rtcoord.internal.ValueFields
 
 /** A port of a component, addressed as `component.rtc:name`. */
 public class Port internal constructor(
@@ -152,7 +153,17 @@ public class Port internal constructor(
 }
 
 /** A connection as read from one of its ports. */
-public data class Connection(val id: String, val name: String, val properties: Map<String, String>, val ports: List<End>) {
+public class Connection(public val id: String, public val name: String, public val properties: Map<String, String>, public val ports: List<End>) {
     /** One connected port: OpenRTM's name for it and, where the tree knows its component, its path. */
-    public data class End(val fullName: String, val path: RtcPath?)
+    public class End(public val fullName: String, public val path: RtcPath?) {
+        private fun fields() = ValueFields("End", "fullName" to fullName, "path" to path)
+        override fun equals(other: Any?): Boolean = other is End && fields() == other.fields()
+        override fun hashCode(): Int = fields().hashCode()
+        override fun toString(): String = fields().toString()
+    }
+
+    private fun fields() = ValueFields("Connection", "id" to id, "name" to name, "properties" to properties, "ports" to ports)
+    override fun equals(other: Any?): Boolean = other is Connection && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
 }

@@ -19,8 +19,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
  */
 class NoDataClassesTest {
     private static final Set<String> NOT_YET = Set.of(
-            "org.rtcoord.ComponentSummary", "org.rtcoord.Composition", "org.rtcoord.Connection$End",
-            "org.rtcoord.Connection", "org.rtcoord.ContextSelector$Handle", "org.rtcoord.ContextSelector$Index",
             "org.rtcoord.TimedBoolean", "org.rtcoord.TimedDouble", "org.rtcoord.TimedDoubleSeq",
             "org.rtcoord.TimedFloat", "org.rtcoord.TimedFloatSeq", "org.rtcoord.TimedLong",
             "org.rtcoord.TimedLongSeq", "org.rtcoord.TimedOctet", "org.rtcoord.TimedPoint2D",
