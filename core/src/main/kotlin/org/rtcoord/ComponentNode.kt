@@ -44,37 +44,45 @@ public class ComponentNode internal constructor(
     override val kind: NodeKind get() = NodeKind.COMPONENT
 
     /** The latest snapshot, null before the first read. Never waits. */
+    @get:JvmSynthetic
     public val snapshots: StateFlow<ComponentSnapshot?> get() = component.snapshot
 
     /** The latest snapshot, read now if there is none yet. */
+    @JvmSynthetic
     public suspend fun snapshot(): ComponentSnapshot = component.loaded(subject)
 
     /** What a listing shows, as last read by a full read or a summary read; null before either. Never waits. */
+    @get:JvmSynthetic
     public val summaries: StateFlow<ComponentSummary?> get() = component.summary
 
     /**
      * Reads what a listing shows of the component now (see [ComponentSummary]): fewer calls than
      * [refresh]. The [snapshots] stay as they were.
      */
+    @JvmSynthetic
     public suspend fun refreshSummary(): ComponentSummary = component.refreshSummary(subject)
 
+    @JvmSynthetic
     override suspend fun refresh(depth: Int) {
         component.refresh(subject)
     }
 
     /** The configuration sets, read now if they never were (later refreshes keep them up to date). */
+    @JvmSynthetic
     public suspend fun configuration(): ConfigurationSnapshot = snapshot().configuration ?: component.loadConfiguration(subject)
 
     /**
      * Whether the component is a composite and whether it is part of one, read now: snapshots leave it
      * out, since it costs two calls and OpenRTM-aist composites are rare.
      */
+    @JvmSynthetic
     public suspend fun composition(): Composition = calls.composition()
 
     /** Whether this and [other] are the same component, reached by different paths or not. */
     public fun isSameComponent(other: ComponentNode): Boolean = component === other.component
 
     /** The component's state in [context], read now. */
+    @JvmSynthetic
     public suspend fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle = calls.state(context)
 
     /**
@@ -104,6 +112,7 @@ public class ComponentNode internal constructor(
      * Asks the component to exit: it finalises and leaves its contexts; returns once its manager has also
      * unbound it from the naming context the tree found it in, which OpenRTM-aist does shortly after.
      */
+    @JvmSynthetic
     public suspend fun exit() {
         calls.exit()
         awaitUnbound("exit")
@@ -130,6 +139,7 @@ public class ComponentNode internal constructor(
     }
 
     /** The port named [name] (without the instance prefix). */
+    @JvmSynthetic
     public suspend fun port(name: String): Port {
         if (snapshot().port(name) == null) refresh()
         val snapshot = snapshot()
@@ -140,11 +150,13 @@ public class ComponentNode internal constructor(
     }
 
     /** Disconnects every connection of every port. */
+    @JvmSynthetic
     public suspend fun disconnectAll() {
         snapshot().ports.forEach { port(it.name).disconnectAll() }
     }
 
     /** The execution context [context] of this component. */
+    @JvmSynthetic
     public suspend fun executionContext(context: ContextSelector = ContextSelector.DEFAULT): ExecutionContextView {
         val (handle, ec) = calls.context(context)
         return ExecutionContextView(this, handle, calls.onContext(handle, ec))
@@ -154,6 +166,7 @@ public class ComponentNode internal constructor(
      * Sets [parameter] to [value] in configuration set [set] (the active one by default), refusing a value
      * outside its constraint only when [strict]; see [setParameters].
      */
+    @JvmSynthetic
     public suspend fun setParameter(parameter: String, value: String, set: String? = null, strict: Boolean = false): List<String> =
         setParameters(mapOf(parameter to value), set, strict)
 
@@ -170,6 +183,7 @@ public class ComponentNode internal constructor(
      *
      * @return one line per value written outside its constraint (`gain: '42' is outside 0<x<10`), empty when none was.
      */
+    @JvmSynthetic
     public suspend fun setParameters(values: Map<String, String>, set: String? = null, strict: Boolean = false): List<String> {
         val warnings = calls.configuration().setValues(values, set, strict)
         refresh()
@@ -177,18 +191,21 @@ public class ComponentNode internal constructor(
     }
 
     /** Makes configuration set [id] the active one; this works on a component that has no active set too. */
+    @JvmSynthetic
     public suspend fun activateConfigurationSet(id: String) {
         calls.configuration().activate(id)
         refresh()
     }
 
     /** Adds configuration set [id] holding [values]; the active set stays active. */
+    @JvmSynthetic
     public suspend fun addConfigurationSet(id: String, values: Map<String, String>) {
         calls.configuration().add(id, values)
         refresh()
     }
 
     /** Removes configuration set [id] (one added at run time, not the active one); the active set stays active. */
+    @JvmSynthetic
     public suspend fun removeConfigurationSet(id: String) {
         calls.configuration().remove(id)
         refresh()

@@ -1,36 +1,47 @@
 package org.rtcoord
 
+import org.rtcoord.internal.ValueFields
+
 /**
  * What was read from a component at one moment: profile, ports with their connectors, execution
  * contexts with the component's state in each, and configuration once it was asked for
  * ([ComponentNode.configuration]). Immutable; a refresh publishes a new one.
  */
-public data class ComponentSnapshot(
-    val instanceName: String,
-    val typeName: String,
-    val description: String,
-    val version: String,
-    val vendor: String,
-    val category: String,
+public class ComponentSnapshot(
+    public val instanceName: String,
+    public val typeName: String,
+    public val description: String,
+    public val version: String,
+    public val vendor: String,
+    public val category: String,
     /** The instance name of the profile's parent object; null when it has none (OpenRTM-aist never sets one). */
-    val parent: String?,
-    val properties: Map<String, String>,
-    val ports: List<PortSnapshot>,
-    val contexts: List<ContextSnapshot>,
+    public val parent: String?,
+    public val properties: Map<String, String>,
+    public val ports: List<PortSnapshot>,
+    public val contexts: List<ContextSnapshot>,
     /** Null until the configuration was first read; kept up to date by every refresh after that. */
-    val configuration: ConfigurationSnapshot?,
+    public val configuration: ConfigurationSnapshot?,
 ) {
     /** The state in the execution context with handle 0 (the first owned one), as tools show it. */
-    val state: LifeCycle get() = context(0)?.state ?: contexts.firstOrNull()?.state ?: LifeCycle.UNKNOWN
+    public val state: LifeCycle get() = context(0)?.state ?: contexts.firstOrNull()?.state ?: LifeCycle.UNKNOWN
 
     /** The state over all its execution contexts (see [ComponentSummary.overallState]). */
-    val overallState: LifeCycle get() = summary.overallState
+    public val overallState: LifeCycle get() = summary.overallState
 
     /** The execution context with [handle], or null. */
     public fun context(handle: Int): ContextSnapshot? = contexts.firstOrNull { it.handle == handle }
 
     /** The port named [name] (without the instance prefix), or null. */
     public fun port(name: String): PortSnapshot? = ports.firstOrNull { it.name == name }
+
+    /** This snapshot with other [contexts] or [configuration], as the tree re-reads them. */
+    internal fun copy(contexts: List<ContextSnapshot> = this.contexts, configuration: ConfigurationSnapshot? = this.configuration): ComponentSnapshot =
+        ComponentSnapshot(instanceName, typeName, description, version, vendor, category, parent, properties, ports, contexts, configuration)
+
+    private fun fields() = ValueFields("ComponentSnapshot", "instanceName" to instanceName, "typeName" to typeName, "description" to description, "version" to version, "vendor" to vendor, "category" to category, "parent" to parent, "properties" to properties, "ports" to ports, "contexts" to contexts, "configuration" to configuration)
+    override fun equals(other: Any?): Boolean = other is ComponentSnapshot && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
 }
 
 /** The kind of a port, from its `port.port_type` property. */
@@ -40,59 +51,88 @@ public enum class PortKind { DATA_IN, DATA_OUT, SERVICE, OTHER }
  * A port: its short [name], OpenRTM's [fullName] (`instance.port`), kind, data type for data ports,
  * the interfaces a service port provides and requires, advertised properties and current connectors.
  */
-public data class PortSnapshot(
-    val name: String,
-    val fullName: String,
-    val kind: PortKind,
-    val dataType: String?,
+public class PortSnapshot(
+    public val name: String,
+    public val fullName: String,
+    public val kind: PortKind,
+    public val dataType: String?,
     /** The service interfaces, in the order the component registered them; none for data ports. */
-    val interfaces: List<PortInterface>,
-    val properties: Map<String, String>,
-    val connectors: List<ConnectorSnapshot>,
-)
+    public val interfaces: List<PortInterface>,
+    public val properties: Map<String, String>,
+    public val connectors: List<ConnectorSnapshot>,
+) {
+    private fun fields() = ValueFields("PortSnapshot", "name" to name, "fullName" to fullName, "kind" to kind, "dataType" to dataType, "interfaces" to interfaces, "properties" to properties, "connectors" to connectors)
+    override fun equals(other: Any?): Boolean = other is PortSnapshot && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
+}
 
 /** A service interface of a port, from its `PortInterfaceProfile`: [instanceName] of IDL type [typeName]. */
-public data class PortInterface(val instanceName: String, val typeName: String, val polarity: Polarity) {
+public class PortInterface(public val instanceName: String, public val typeName: String, public val polarity: Polarity) {
     /** Whether the port provides the interface (serves it) or requires it (calls one provided elsewhere). */
     public enum class Polarity { PROVIDED, REQUIRED }
+
+    private fun fields() = ValueFields("PortInterface", "instanceName" to instanceName, "typeName" to typeName, "polarity" to polarity)
+    override fun equals(other: Any?): Boolean = other is PortInterface && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
 }
 
 /** A connection as one of its ports records it; [Port.connections] resolves its ends to tree paths. */
-public data class ConnectorSnapshot(
-    val id: String,
-    val name: String,
-    val properties: Map<String, String>,
-)
+public class ConnectorSnapshot(
+    public val id: String,
+    public val name: String,
+    public val properties: Map<String, String>,
+) {
+    private fun fields() = ValueFields("ConnectorSnapshot", "id" to id, "name" to name, "properties" to properties)
+    override fun equals(other: Any?): Boolean = other is ConnectorSnapshot && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
+}
 
 /** An execution context as seen from one component. */
-public data class ContextSnapshot(
+public class ContextSnapshot(
     /** The component's handle for it: owned contexts 0.., participating ones from 1000. */
-    val handle: Int,
-    @get:JvmName("isOwned") val owned: Boolean,
-    val kind: String,
-    val rate: Double,
-    @get:JvmName("isRunning") val running: Boolean,
+    public val handle: Int,
+    @get:JvmName("isOwned") public val owned: Boolean,
+    public val kind: String,
+    public val rate: Double,
+    @get:JvmName("isRunning") public val running: Boolean,
     /** The component's state in this context. */
-    val state: LifeCycle,
+    public val state: LifeCycle,
     /** How many components take part in it. */
-    val participants: Int,
+    public val participants: Int,
     /**
      * The context's profile properties: OpenRTM-aist puts there the options it was created with
      * (`type`, `rate` as configured, `sync_transition`, `transition_timeout`...); empty for a context
      * without a profile.
      */
-    val properties: Map<String, String>,
-)
+    public val properties: Map<String, String>,
+) {
+    /** This context as seen with another [state] (or [handle]). */
+    internal fun copy(handle: Int = this.handle, state: LifeCycle = this.state): ContextSnapshot =
+        ContextSnapshot(handle, owned, kind, rate, running, state, participants, properties)
+
+    private fun fields() = ValueFields("ContextSnapshot", "handle" to handle, "owned" to owned, "kind" to kind, "rate" to rate, "running" to running, "state" to state, "participants" to participants, "properties" to properties)
+    override fun equals(other: Any?): Boolean = other is ContextSnapshot && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
+}
 
 /**
  * Configuration sets by id (hidden `__name__` sets included) and which one is active: null when none is,
  * as OpenRTM-aist leaves a component after a set was written, added or removed until one is activated.
  */
-public data class ConfigurationSnapshot(val sets: Map<String, Map<String, String>>, val activeSet: String?) {
+public class ConfigurationSnapshot(public val sets: Map<String, Map<String, String>>, public val activeSet: String?) {
     /** The value of [parameter] in the active set, or null (also when no set is active). */
     public fun value(parameter: String): String? = activeSet?.let { sets[it]?.get(parameter) }
 
     internal companion object {
         val NONE = ConfigurationSnapshot(emptyMap(), null)
     }
+
+    private fun fields() = ValueFields("ConfigurationSnapshot", "sets" to sets, "activeSet" to activeSet)
+    override fun equals(other: Any?): Boolean = other is ConfigurationSnapshot && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
 }

@@ -1,21 +1,29 @@
 package org.rtcoord
 
+import org.rtcoord.internal.ValueFields
+
 /**
  * What a listing shows of a component (`rtls -l`): its state in each of its execution contexts and its
  * ports with their connectors. [ComponentNode.refreshSummary] reads it in fewer calls than a whole
  * [ComponentSnapshot] (nothing about the execution contexts themselves: two calls fewer for each);
  * every full read brings it up to date as well.
  */
-public data class ComponentSummary(
+public class ComponentSummary(
     /** The component's state in each execution context, by its handle for the context (owned ones first). */
-    val states: Map<Int, LifeCycle>,
-    val ports: List<PortSnapshot>,
+    public val states: Map<Int, LifeCycle>,
+    public val ports: List<PortSnapshot>,
 ) {
+    private fun fields() = ValueFields("ComponentSummary", "states" to states, "ports" to ports)
+    override fun equals(other: Any?): Boolean = other is ComponentSummary && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
+
+
     /**
      * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over
      * ACTIVE over INACTIVE, else CREATED; UNKNOWN only without any context.
      */
-    val overallState: LifeCycle
+    public val overallState: LifeCycle
         get() {
             if (states.isEmpty()) return LifeCycle.UNKNOWN
             return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states.values } ?: LifeCycle.CREATED

@@ -21,15 +21,19 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     private val listingLock = Mutex()
 
     /** The children as last listed, or null before the first listing. Never waits. */
+    @get:JvmSynthetic
     public val listed: StateFlow<List<Node>?> get() = listing
 
     /** The children, listed now if they never were. */
+    @JvmSynthetic
     public suspend fun children(): List<Node> = listing.value ?: relist()
 
     /** The child named [name], listing the children again once if it is not among them. */
+    @JvmSynthetic
     public suspend fun child(name: String): Node? =
         children().firstOrNull { it.name == name } ?: relist().firstOrNull { it.name == name }
 
+    @JvmSynthetic
     override suspend fun refresh(depth: Int): Unit = withContext(core.remote.dispatcher) {
         val children = relist()
         if (depth > 0) children.forEach { child -> launch { buryIfDead(child) { child.refresh(depth - 1) } } }
@@ -41,6 +45,7 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
      * reached by two paths (its naming context and its manager) is read once. Dead and hung components
      * become [ZombieNode]s, as with [refresh].
      */
+    @JvmSynthetic
     public suspend fun survey(depth: Int = Int.MAX_VALUE): Unit = withContext(core.remote.dispatcher + (SurveyReads.current() ?: SurveyReads())) {
         val children = relist()
         if (depth > 0) {

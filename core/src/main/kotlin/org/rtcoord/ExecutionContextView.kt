@@ -11,18 +11,22 @@ public class ExecutionContextView internal constructor(
     private val calls: ContextCalls,
 ) {
     /** The rate in Hz. */
+    @JvmSynthetic
     public suspend fun rate(): Double = calls.rate()
 
     /** Sets the rate to [hz]. */
+    @JvmSynthetic
     public suspend fun setRate(hz: Double) {
         calls.setRate(hz)
         component.refresh()
     }
 
     /** Whether the context is running. */
+    @JvmSynthetic
     public suspend fun isRunning(): Boolean = calls.isRunning()
 
     /** Makes [participant] take part in this context. */
+    @JvmSynthetic
     public suspend fun add(participant: ComponentNode) {
         calls.add(participant.component, participant.path.toString())
         participant.refresh()
@@ -30,6 +34,7 @@ public class ExecutionContextView internal constructor(
     }
 
     /** Removes [participant] from this context. */
+    @JvmSynthetic
     public suspend fun remove(participant: ComponentNode) {
         calls.remove(participant.component, participant.path.toString())
         participant.refresh()

@@ -62,9 +62,11 @@ public class ManagerNode internal constructor(
     }
 
     /** The manager's profile properties (`instance_name`, `pid`, ...). */
+    @JvmSynthetic
     public suspend fun profile(): Map<String, String> = calls.profile()
 
     /** Whether it is a master manager. */
+    @JvmSynthetic
     public suspend fun isMaster(): Boolean = calls.isMaster()
 
     /**
@@ -77,6 +79,7 @@ public class ManagerNode internal constructor(
      * none, the error names it with its factories and loadable modules. A name still held by a component
      * that exited is free once its manager has cleaned it up, which this waits for.
      */
+    @JvmSynthetic
     public suspend fun create(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): ComponentNode {
         if (instanceName != null) awaitNameFree(type, instanceName)
         val settings = buildList {
@@ -131,6 +134,7 @@ public class ManagerNode internal constructor(
      * Deletes component [instanceName] through the manager (this one or a slave) that hosts it, and
      * returns once it has gone from naming too (its manager unbinds it shortly after the component exits).
      */
+    @JvmSynthetic
     public suspend fun delete(instanceName: String) {
         val (owner, node) = hostOf(instanceName) ?: throw NotFoundException(subject, "no component '$instanceName' is hosted by this manager or its slaves")
         owner.calls.delete(instanceName)
@@ -142,6 +146,7 @@ public class ManagerNode internal constructor(
     }
 
     /** Loads module [path] (calling [initFunction] in it, if the manager needs one). */
+    @JvmSynthetic
     public suspend fun loadModule(path: String, initFunction: String = "") {
         if (!calls.loadModule(path, initFunction)) {
             val loadable = loadableModules().mapNotNull { it["module_file_name"] ?: it["module_file_path"] }.sorted()
@@ -150,6 +155,7 @@ public class ManagerNode internal constructor(
     }
 
     /** Unloads module [path]. */
+    @JvmSynthetic
     public suspend fun unloadModule(path: String) {
         if (!calls.unloadModule(path)) {
             val loaded = loadedModules().mapNotNull { it["file_path"] ?: it["module_file_path"] }.sorted()
@@ -158,12 +164,15 @@ public class ManagerNode internal constructor(
     }
 
     /** Modules the manager could load, as their profile properties. */
+    @JvmSynthetic
     public suspend fun loadableModules(): List<Map<String, String>> = calls.loadableModules()
 
     /** Modules the manager has loaded. */
+    @JvmSynthetic
     public suspend fun loadedModules(): List<Map<String, String>> = calls.loadedModules()
 
     /** The component types the manager can create, as their factory profiles. */
+    @JvmSynthetic
     public suspend fun factories(): List<Map<String, String>> = calls.factories()
 
     /** The manager hosting [instanceName] and the component as it lists it. */

@@ -28,6 +28,7 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
     private suspend fun calls(): NamingCalls = NamingCalls(core, path, context())
 
     /** Removes the binding [name] (`id.kind`) from this context, whatever it is bound to. */
+    @JvmSynthetic
     public suspend fun unbind(name: String) {
         calls().unbind(name)
         relist()

@@ -16,6 +16,10 @@ public enum class NodeKind {
  *
  * Nodes keep what they last read (snapshots readable at any time without waiting) and re-read it on
  * [refresh]. A node is the same object across refreshes for as long as its binding exists.
+ *
+ * The suspend members and flows of nodes are for Kotlin: Java does not see them (`@JvmSynthetic`), since
+ * a `Continuation` is no way to call a remote operation from Java. Java calls them through the facades of
+ * `org.rtcoord.java` (`JavaTree`, `JavaComponent`, `JavaPort`, ...), blocking or as a `CompletableFuture`.
  */
 public sealed class Node(
     /** Where the node is: `/host:port/ctx/name.rtc`. */
@@ -33,6 +37,7 @@ public sealed class Node(
      * (0: this node only; [Int.MAX_VALUE]: the whole subtree), concurrently. Descendants that turn out
      * dead or hung become [ZombieNode]s; a failure of this node itself is thrown.
      */
+    @JvmSynthetic
     public abstract suspend fun refresh(depth: Int = 0)
 
     override fun toString(): String = "${kind.name.lowercase()} $path"

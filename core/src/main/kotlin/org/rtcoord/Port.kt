@@ -12,6 +12,7 @@ import kotlinx.coroutines.flow.buffer
 import kotlinx.coroutines.flow.callbackFlow
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.PortCalls
+import org.rtcoord.internal.ValueFields
 
 /** A port of a component, addressed as `component.rtc:name`. */
 public class Port internal constructor(
@@ -29,6 +30,7 @@ public class Port internal constructor(
     private val calls: PortCalls get() = PortCalls(component.core, subject, component.component, component.path.toString(), name)
 
     /** The port as last read. */
+    @JvmSynthetic
     public suspend fun snapshot(): PortSnapshot =
         component.snapshot().port(name) ?: throw NotFoundException(subject, "the port is gone")
 
@@ -37,6 +39,7 @@ public class Port internal constructor(
      * usual data port defaults (push, corba_cdr, flush, this port's data type). Incompatible ports or
      * properties are refused before anything changes.
      */
+    @JvmSynthetic
     public suspend fun connect(
         others: List<Port>,
         properties: Map<String, String> = emptyMap(),
@@ -65,16 +68,19 @@ public class Port internal constructor(
     }
 
     /** Removes the connection [connectorId] from this port and its peers. */
+    @JvmSynthetic
     public suspend fun disconnect(connectorId: String) {
         refreshAfter(calls.disconnect(connectorId))
     }
 
     /** Removes every connection of this port, then reads each component involved once. */
+    @JvmSynthetic
     public suspend fun disconnectAll() {
         refreshAfter(snapshot().connectors.flatMap { calls.disconnect(it.id) })
     }
 
     /** This port's connections, each with its ports resolved to tree paths where the tree knows them. */
+    @JvmSynthetic
     public suspend fun connections(): List<Connection> = calls.connections()
 
     /** Reads this component and [peers] again, each once. */
@@ -90,12 +96,14 @@ public class Port internal constructor(
      * does closing the tree; a tree that died leaves its tap behind, and the next tree tapping the port
      * removes it. Fails for a port that is not a data out-port, or that refuses the connection.
      */
+    @JvmSynthetic
     public suspend fun tap(listener: DataListener): Subscription = component.core.taps.subscribe(this, listener)
 
     /**
      * This out-port's samples while the flow is collected (see [tap]). A collector slower than the port
      * loses the oldest samples beyond the [capacity] waiting for it, never the newest.
      */
+    @JvmSynthetic
     public fun data(capacity: Int = 64): Flow<PortData> = callbackFlow {
         val subscription = tap { trySend(it) }
         awaitClose { subscription.cancel() }
@@ -145,7 +153,17 @@ public class Port internal constructor(
 }
 
 /** A connection as read from one of its ports. */
-public data class Connection(val id: String, val name: String, val properties: Map<String, String>, val ports: List<End>) {
+public class Connection(public val id: String, public val name: String, public val properties: Map<String, String>, public val ports: List<End>) {
     /** One connected port: OpenRTM's name for it and, where the tree knows its component, its path. */
-    public data class End(val fullName: String, val path: RtcPath?)
+    public class End(public val fullName: String, public val path: RtcPath?) {
+        private fun fields() = ValueFields("End", "fullName" to fullName, "path" to path)
+        override fun equals(other: Any?): Boolean = other is End && fields() == other.fields()
+        override fun hashCode(): Int = fields().hashCode()
+        override fun toString(): String = fields().toString()
+    }
+
+    private fun fields() = ValueFields("Connection", "id" to id, "name" to name, "properties" to properties, "ports" to ports)
+    override fun equals(other: Any?): Boolean = other is Connection && fields() == other.fields()
+    override fun hashCode(): Int = fields().hashCode()
+    override fun toString(): String = fields().toString()
 }

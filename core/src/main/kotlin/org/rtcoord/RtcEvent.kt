@@ -1,11 +1,16 @@
 package org.rtcoord
 
+import org.rtcoord.internal.ValueFields
+
 /**
  * Something that happened in the live system, as the paper's external callbacks report it: the
  * [source] node, and for changes the old and new values plus what else identifies the change.
  *
  * Events of one source arrive in the order they happened. The same events come from a component's
  * ComponentObserver (push) or from re-reading it (poll); see [EventOptions.mode].
+ *
+ * Events are plain classes, so that they can gain fields without breaking compiled callers (no
+ * `componentN`, no `copy`); equal when they are of one type and their constructors took equal values.
  */
 public sealed class RtcEvent {
     /** The node the event is about. */
@@ -24,19 +29,36 @@ public sealed class RtcEvent {
 
     /** The source's path. */
     public val path: RtcPath get() = source.path
+
+    /** The event's type and what its constructor took: two events are equal when these are. */
+    internal abstract fun fields(): ValueFields
+
+    final override fun equals(other: Any?): Boolean = other is RtcEvent && fields() == other.fields()
+
+    final override fun hashCode(): Int = fields().hashCode()
+
+    final override fun toString(): String = fields().toString()
 }
 
 /** A component's lifecycle state in execution context [handle] went from [old] to [new]. */
-public data class StateChanged(override val source: ComponentNode, val handle: Int, val old: LifeCycle, val new: LifeCycle) : RtcEvent()
+public class StateChanged(override val source: ComponentNode, public val handle: Int, public val old: LifeCycle, public val new: LifeCycle) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("StateChanged", "source" to source, "handle" to handle, "old" to old, "new" to new)
+}
 
 /** A component finalised (exited) and is gone. */
-public data class ComponentFinalized(override val source: ComponentNode) : RtcEvent()
+public class ComponentFinalized(override val source: ComponentNode) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ComponentFinalized", "source" to source)
+}
 
 /** Port [port] of the component got connection [connector]. */
-public data class PortConnected(override val source: ComponentNode, val port: String, val connector: ConnectorSnapshot) : RtcEvent()
+public class PortConnected(override val source: ComponentNode, public val port: String, public val connector: ConnectorSnapshot) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("PortConnected", "source" to source, "port" to port, "connector" to connector)
+}
 
 /** Port [port] of the component lost connection [connector]. */
-public data class PortDisconnected(override val source: ComponentNode, val port: String, val connector: ConnectorSnapshot) : RtcEvent()
+public class PortDisconnected(override val source: ComponentNode, public val port: String, public val connector: ConnectorSnapshot) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("PortDisconnected", "source" to source, "port" to port, "connector" to connector)
+}
 
 /**
  * Port [port] of the component sent ([outgoing]) or received data: OpenRTM-aist's `SEND:` and `RECEIVE:`
@@ -44,67 +66,105 @@ public data class PortDisconnected(override val source: ComponentNode, val port:
  * Only a component's observer tells this (a read cannot), so polled components send none. Data hints are
  * many: only registrations that name this type (not a supertype such as [RtcEvent]) receive them.
  */
-public data class PortTraffic(override val source: ComponentNode, val port: String, val outgoing: Boolean) : RtcEvent()
+public class PortTraffic(override val source: ComponentNode, public val port: String, public val outgoing: Boolean) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("PortTraffic", "source" to source, "port" to port, "outgoing" to outgoing)
+}
 
 /** Parameter [name] of configuration set [set] changed from [old] to [new] (null: absent). */
-public data class ParameterChanged(override val source: ComponentNode, val set: String, val name: String, val old: String?, val new: String?) : RtcEvent()
+public class ParameterChanged(override val source: ComponentNode, public val set: String, public val name: String, public val old: String?, public val new: String?) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ParameterChanged", "source" to source, "set" to set, "name" to name, "old" to old, "new" to new)
+}
 
 /** The active configuration set changed from [old] to [new]; null is none active (after a set was written, added or removed). */
-public data class ConfigurationSetActivated(override val source: ComponentNode, val old: String?, val new: String?) : RtcEvent()
+public class ConfigurationSetActivated(override val source: ComponentNode, public val old: String?, public val new: String?) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ConfigurationSetActivated", "source" to source, "old" to old, "new" to new)
+}
 
 /** Configuration set [id] was added. */
-public data class ConfigurationSetAdded(override val source: ComponentNode, val id: String) : RtcEvent()
+public class ConfigurationSetAdded(override val source: ComponentNode, public val id: String) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ConfigurationSetAdded", "source" to source, "id" to id)
+}
 
 /** Configuration set [id] was removed. */
-public data class ConfigurationSetRemoved(override val source: ComponentNode, val id: String) : RtcEvent()
+public class ConfigurationSetRemoved(override val source: ComponentNode, public val id: String) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ConfigurationSetRemoved", "source" to source, "id" to id)
+}
 
 /** The rate of execution context [handle] changed from [old] to [new] Hz. */
-public data class ContextRateChanged(override val source: ComponentNode, val handle: Int, val old: Double, val new: Double) : RtcEvent()
+public class ContextRateChanged(override val source: ComponentNode, public val handle: Int, public val old: Double, public val new: Double) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ContextRateChanged", "source" to source, "handle" to handle, "old" to old, "new" to new)
+}
 
 /** Execution context [handle] started ([running] true) or stopped. */
-public data class ContextRunningChanged(override val source: ComponentNode, val handle: Int, @get:JvmName("isRunning") val running: Boolean) : RtcEvent()
+public class ContextRunningChanged(override val source: ComponentNode, public val handle: Int, @get:JvmName("isRunning") public val running: Boolean) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ContextRunningChanged", "source" to source, "handle" to handle, "running" to running)
+}
 
 /** The component joined ([attached] true) or left execution context [handle]. */
-public data class ContextAttachmentChanged(override val source: ComponentNode, val handle: Int, @get:JvmName("isAttached") val attached: Boolean) : RtcEvent()
+public class ContextAttachmentChanged(override val source: ComponentNode, public val handle: Int, @get:JvmName("isAttached") public val attached: Boolean) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ContextAttachmentChanged", "source" to source, "handle" to handle, "attached" to attached)
+}
 
 /** Manager [source] created ([created] true) or deleted component [instanceName]. */
-public data class ManagerComponentChanged(override val source: ManagerNode, val instanceName: String, val created: Boolean) : RtcEvent()
+public class ManagerComponentChanged(override val source: ManagerNode, public val instanceName: String, public val created: Boolean) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ManagerComponentChanged", "source" to source, "instanceName" to instanceName, "created" to created)
+}
 
 /**
  * A binding [child] appeared under [source]. For a component, [snapshot] is what the tree read of it when
  * it appeared: what happened to it between its creation and its discovery (its state, its connections).
  */
-public data class NodeAppeared(override val source: DirectoryNode, val child: Node, val snapshot: ComponentSnapshot? = null) : RtcEvent()
+public class NodeAppeared(override val source: DirectoryNode, public val child: Node, public val snapshot: ComponentSnapshot? = null) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("NodeAppeared", "source" to source, "child" to child, "snapshot" to snapshot)
+}
 
 /** The binding at [child] vanished from [source]. */
-public data class NodeVanished(override val source: DirectoryNode, val child: RtcPath) : RtcEvent()
+public class NodeVanished(override val source: DirectoryNode, public val child: RtcPath) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("NodeVanished", "source" to source, "child" to child)
+}
 
 /** No heartbeat (push) or no answer (poll) for [silentMillis]: the component is presumed dead. */
-public data class HeartbeatLost(override val source: ComponentNode, val silentMillis: Long) : RtcEvent()
+public class HeartbeatLost(override val source: ComponentNode, public val silentMillis: Long) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("HeartbeatLost", "source" to source, "silentMillis" to silentMillis)
+}
 
 /** The component could not be reached at all: [cause]. */
-public data class BecameZombie(override val source: ComponentNode, val cause: RtcException) : RtcEvent()
+public class BecameZombie(override val source: ComponentNode, public val cause: RtcException) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("BecameZombie", "source" to source, "cause" to cause)
+}
 
 /** A component presumed dead answers again. */
-public data class Recovered(override val source: ComponentNode) : RtcEvent()
+public class Recovered(override val source: ComponentNode) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("Recovered", "source" to source)
+}
 
 /** The tree watches the component by [new] from now on; [old] is null when it has just started watching it. */
-public data class WatchMethodChanged(override val source: ComponentNode, val old: WatchMethod?, val new: WatchMethod) : RtcEvent()
+public class WatchMethodChanged(override val source: ComponentNode, public val old: WatchMethod?, public val new: WatchMethod) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("WatchMethodChanged", "source" to source, "old" to old, "new" to new)
+}
 
 /**
  * Manager [source] stopped answering: its process died or hangs. [components] are those its last listing
  * showed; they went silent with it, and each reports its own [HeartbeatLost] and [BecameZombie].
  */
-public data class ManagerDied(override val source: ManagerNode, val components: List<ComponentNode>, val cause: RtcException) : RtcEvent()
+public class ManagerDied(override val source: ManagerNode, public val components: List<ComponentNode>, public val cause: RtcException) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ManagerDied", "source" to source, "components" to components, "cause" to cause)
+}
 
 /** Manager [source], presumed dead, answers again. */
-public data class ManagerReturned(override val source: ManagerNode) : RtcEvent()
+public class ManagerReturned(override val source: ManagerNode) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("ManagerReturned", "source" to source)
+}
 
 /**
  * Name server [source] stopped answering: [cause]. Until [NameServerReturned], nothing is known of what is
  * registered on it; the components themselves may still run.
  */
-public data class NameServerLost(override val source: NameServerNode, val cause: RtcException) : RtcEvent()
+public class NameServerLost(override val source: NameServerNode, public val cause: RtcException) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("NameServerLost", "source" to source, "cause" to cause)
+}
 
 /** Name server [source], lost, answers again after [downMillis] milliseconds. */
-public data class NameServerReturned(override val source: NameServerNode, val downMillis: Long) : RtcEvent()
+public class NameServerReturned(override val source: NameServerNode, public val downMillis: Long) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("NameServerReturned", "source" to source, "downMillis" to downMillis)
+}

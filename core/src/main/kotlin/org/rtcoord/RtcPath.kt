@@ -155,6 +155,7 @@ public class RtcPath internal constructor(
     /** The root and the parsers. */
     public companion object {
         /** The root `/`. */
+        @JvmField
         public val ROOT: RtcPath = RtcPath(null, emptyList(), null, null, true)
 
         /**
@@ -164,6 +165,8 @@ public class RtcPath internal constructor(
          * @throws BadPathException naming the offending segment when [text] does not follow the grammar
          *   or is relative without a working directory.
          */
+        @JvmStatic
+        @JvmOverloads
         public fun parse(text: String, workingDirectory: RtcPath? = null): RtcPath =
             PathParser.parse(text, workingDirectory)
 
@@ -172,6 +175,7 @@ public class RtcPath internal constructor(
          *
          * @throws BadPathException if [address] is none of these.
          */
+        @JvmStatic
         public fun nameServer(address: String): RtcPath = PathParser.nameServer(address)
     }
 }

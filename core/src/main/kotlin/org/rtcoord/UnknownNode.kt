@@ -14,5 +14,6 @@ public class UnknownNode internal constructor(
     /** The kind part of the binding name (`rtc`, `mgr`, anything else). */
     public val bindingKind: String get() = path.kind
 
+    @JvmSynthetic
     override suspend fun refresh(depth: Int): Unit = Unit
 }

@@ -1,5 +1,6 @@
 package org.rtcoord
 
+import org.rtcoord.internal.ValueFields
 import kotlin.time.Duration
 
 /**
@@ -8,11 +9,22 @@ import kotlin.time.Duration
  * observer the component no longer takes falls back to polling); see [WatchMethodChanged].
  */
 public sealed class WatchMethod {
+    /** The method's kind and what its constructor took: two methods are equal when these are. */
+    internal abstract fun fields(): ValueFields
+
+    final override fun equals(other: Any?): Boolean = other is WatchMethod && fields() == other.fields()
+
+    final override fun hashCode(): Int = fields().hashCode()
+
+    final override fun toString(): String = fields().toString()
+
     /**
      * The component's observer of [flavour] pushes its changes, with a heartbeat every [heartbeat];
      * [pollPeriod] is set when a registration asked for polling too.
      */
-    public data class Pushed(val flavour: ObserverFlavour, @get:JvmSynthetic val heartbeat: Duration, @get:JvmSynthetic val pollPeriod: Duration?) : WatchMethod() {
+    public class Pushed(public val flavour: ObserverFlavour, @get:JvmSynthetic public val heartbeat: Duration, @get:JvmSynthetic public val pollPeriod: Duration?) : WatchMethod() {
+        override fun fields(): ValueFields = ValueFields("Pushed", "flavour" to flavour, "heartbeat" to heartbeat, "pollPeriod" to pollPeriod)
+
         /** [heartbeat] in milliseconds, for Java callers. */
         public val heartbeatMillis: Long get() = heartbeat.inWholeMilliseconds
 
@@ -21,11 +33,15 @@ public sealed class WatchMethod {
     }
 
     /** The component is read again every [period], because [reason]. */
-    public data class Polled(@get:JvmSynthetic val period: Duration, val reason: String) : WatchMethod() {
+    public class Polled(@get:JvmSynthetic public val period: Duration, public val reason: String) : WatchMethod() {
+        override fun fields(): ValueFields = ValueFields("Polled", "period" to period, "reason" to reason)
+
         /** [period] in milliseconds, for Java callers. */
         public val periodMillis: Long get() = period.inWholeMilliseconds
     }
 
     /** Nothing tells the tree of changes: only pushed events were asked for, and [reason]. */
-    public data class Unwatched(val reason: String) : WatchMethod()
+    public class Unwatched(public val reason: String) : WatchMethod() {
+        override fun fields(): ValueFields = ValueFields("Unwatched", "reason" to reason)
+    }
 }

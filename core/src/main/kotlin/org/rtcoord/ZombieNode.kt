@@ -17,11 +17,13 @@ public class ZombieNode internal constructor(
 ) : Node(path, core) {
     override val kind: NodeKind get() = NodeKind.ZOMBIE
 
+    @JvmSynthetic
     override suspend fun refresh(depth: Int) {
         parent.refresh(0)
     }
 
     /** Removes the dead binding from its naming context, as `rtdel` does. */
+    @JvmSynthetic
     public suspend fun unbind() {
         val context = parent as? NamingDirectory ?: throw WrongKindException(path.toString(), "binding in a naming context", "object below a manager")
         context.unbind(name)

@@ -92,6 +92,14 @@ public final class ApiDump {
         return mangled;
     }
 
+    /** The data classes among [classes], by binary name, as Kotlin's metadata says. */
+    public static List<String> dataClasses(List<Class<?>> classes) {
+        return classes.stream()
+                .filter(type -> metadata(type) instanceof KotlinClassMetadata.Class && Attributes.isData(((KotlinClassMetadata.Class) metadata(type)).getKmClass()))
+                .map(Class::getName)
+                .collect(Collectors.toList());
+    }
+
     /** The visible methods of the classes of [packageName] that show Java a Kotlin type (a Continuation, Unit, a function type). */
     public static List<String> kotlinTypesShown(List<Class<?>> classes, String packageName) {
         List<String> kotlin = new ArrayList<>();
@@ -125,12 +133,12 @@ public final class ApiDump {
         return Modifier.isPublic(modifiers) || Modifier.isProtected(modifiers);
     }
 
-    private static boolean isPublic(Visibility visibility) {
+    static boolean isPublic(Visibility visibility) {
         return visibility == Visibility.PUBLIC || visibility == Visibility.PROTECTED;
     }
 
     /** Kotlin's metadata of [type], or null for a Java class. */
-    private static KotlinClassMetadata metadata(Class<?> type) {
+    static KotlinClassMetadata metadata(Class<?> type) {
         Metadata annotation = type.getAnnotation(Metadata.class);
         return annotation == null ? null : KotlinClassMetadata.readLenient(annotation);
     }
@@ -149,6 +157,8 @@ public final class ApiDump {
             for (KmConstructor constructor : kotlinClass.getConstructors()) {
                 if (!isPublic(Attributes.getVisibility(constructor))) add(hidden, JvmExtensionsKt.getSignature(constructor));
             }
+            String companion = kotlinClass.getCompanionObject();
+            if (companion != null && !isVisible(nested(type, companion))) hidden.add(companion);
         } else if (metadata instanceof KotlinClassMetadata.FileFacade) {
             container = ((KotlinClassMetadata.FileFacade) metadata).getKmPackage();
         } else if (metadata instanceof KotlinClassMetadata.MultiFileClassPart) {
@@ -170,11 +180,20 @@ public final class ApiDump {
         return hidden;
     }
 
+    /** The class nested in [type] as [name]: Kotlin's metadata names a companion this way. */
+    private static Class<?> nested(Class<?> type, String name) {
+        try {
+            return Class.forName(type.getName() + "$" + name, false, type.getClassLoader());
+        } catch (ClassNotFoundException e) {
+            throw new IllegalStateException("the metadata of " + type.getName() + " names a companion " + name + " that is not there", e);
+        }
+    }
+
     private static void add(Set<String> signatures, JvmMethodSignature signature) {
         if (signature != null) signatures.add(signature.toString());
     }
 
-    private static String signature(Executable member) {
+    static String signature(Executable member) {
         StringBuilder descriptor = new StringBuilder(member instanceof Constructor ? "<init>" : member.getName()).append('(');
         for (Class<?> parameter : member.getParameterTypes()) descriptor.append(parameter.descriptorString());
         descriptor.append(')').append(member instanceof Method ? ((Method) member).getReturnType().descriptorString() : "V");
@@ -208,6 +227,17 @@ public final class ApiDump {
         Set<String> hidden = hiddenByKotlin(type);
         return Arrays.stream(type.getDeclaredMethods())
                 .filter(m -> isVisible(m.getModifiers()) && !m.isSynthetic() && !m.isBridge() && !isKotlinInternal(m, hidden))
+                .collect(Collectors.toList());
+    }
+
+    /**
+     * The methods of [type] Kotlin callers can call: the visible ones and those {@code @JvmSynthetic} hides
+     * from Java (not what the compiler adds, whose names hold a {@code $}).
+     */
+    public static List<Method> kotlinCallableMethods(Class<?> type) {
+        Set<String> hidden = hiddenByKotlin(type);
+        return Arrays.stream(type.getDeclaredMethods())
+                .filter(m -> isVisible(m.getModifiers()) && !m.isBridge() && !isKotlinInternal(m, hidden))
                 .collect(Collectors.toList());
     }
 

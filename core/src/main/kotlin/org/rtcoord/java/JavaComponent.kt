@@ -1,5 +1,6 @@
 package org.rtcoord.java
 
+import org.jspecify.annotations.Nullable
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ComponentSummary
@@ -57,34 +58,34 @@ public class JavaComponent internal constructor(
     /** Activates the component and waits until it is ACTIVE. */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): Unit =
         calls.await { node.activate(context, deadline?.toKotlinDuration()) }
 
     /** [activate], when done. */
     @JvmOverloads
-    public fun activateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): CompletableFuture<Void?> =
+    public fun activateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<Void?> =
         calls.done { node.activate(context, deadline?.toKotlinDuration()) }
 
     /** Deactivates the component and waits until it is INACTIVE. */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): Unit =
         calls.await { node.deactivate(context, deadline?.toKotlinDuration()) }
 
     /** [deactivate], when done. */
     @JvmOverloads
-    public fun deactivateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): CompletableFuture<Void?> =
+    public fun deactivateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<Void?> =
         calls.done { node.deactivate(context, deadline?.toKotlinDuration()) }
 
     /** Resets the component from ERROR and waits until it is INACTIVE. */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): Unit =
+    public fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): Unit =
         calls.await { node.reset(context, deadline?.toKotlinDuration()) }
 
     /** [reset], when done. */
     @JvmOverloads
-    public fun resetAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): CompletableFuture<Void?> =
+    public fun resetAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<Void?> =
         calls.done { node.reset(context, deadline?.toKotlinDuration()) }
 
     /** Asks the component to exit and waits until naming no longer shows it (see [ComponentNode.exit]). */
@@ -136,21 +137,21 @@ public class JavaComponent internal constructor(
     /** Sets [parameter] to [value] in configuration set [set] (the active one when null); see [ComponentNode.setParameters]. */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun setParameter(parameter: String, value: String, set: String? = null): Unit = calls.await { node.setParameter(parameter, value, set) }
+    public fun setParameter(parameter: String, value: String, set: @Nullable String? = null): Unit = calls.await { node.setParameter(parameter, value, set) }
 
     /** [setParameter], when done. */
     @JvmOverloads
-    public fun setParameterAsync(parameter: String, value: String, set: String? = null): CompletableFuture<Void?> =
+    public fun setParameterAsync(parameter: String, value: String, set: @Nullable String? = null): CompletableFuture<Void?> =
         calls.done { node.setParameter(parameter, value, set) }
 
     /** Sets several parameters of configuration set [set] (the active one when null) at once; see [ComponentNode.setParameters]. */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun setParameters(values: Map<String, String>, set: String? = null): Unit = calls.await { node.setParameters(values, set) }
+    public fun setParameters(values: Map<String, String>, set: @Nullable String? = null): Unit = calls.await { node.setParameters(values, set) }
 
     /** [setParameters], when done. */
     @JvmOverloads
-    public fun setParametersAsync(values: Map<String, String>, set: String? = null): CompletableFuture<Void?> =
+    public fun setParametersAsync(values: Map<String, String>, set: @Nullable String? = null): CompletableFuture<Void?> =
         calls.done { node.setParameters(values, set) }
 
     /** Makes configuration set [id] the active one. */

@@ -1,5 +1,6 @@
 package org.rtcoord.java
 
+import org.jspecify.annotations.Nullable
 import org.rtcoord.ManagerNode
 import org.rtcoord.RtcException
 import org.rtcoord.internal.JavaCalls
@@ -39,12 +40,12 @@ public class JavaManager internal constructor(
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun create(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): JavaComponent =
+    public fun create(type: String, instanceName: @Nullable String? = null, options: Map<String, String> = emptyMap()): JavaComponent =
         calls.await { JavaComponent(node.create(type, instanceName, options)) }
 
     /** [create], when done. */
     @JvmOverloads
-    public fun createAsync(type: String, instanceName: String? = null, options: Map<String, String> = emptyMap()): CompletableFuture<JavaComponent> =
+    public fun createAsync(type: String, instanceName: @Nullable String? = null, options: Map<String, String> = emptyMap()): CompletableFuture<JavaComponent> =
         calls.future { JavaComponent(node.create(type, instanceName, options)) }
 
     /** Deletes component [instanceName] through the manager that hosts it (see [ManagerNode.delete]). */

@@ -1,5 +1,6 @@
 package org.rtcoord.java
 
+import org.jspecify.annotations.Nullable
 import org.rtcoord.Node
 import org.rtcoord.NodeKind
 import org.rtcoord.RtcException
@@ -23,9 +24,9 @@ public class JavaNode internal constructor(
     public val kind: NodeKind get() = node.kind
 
     /** Why the object is taken for dead when the node is a zombie ([NodeKind.ZOMBIE]); null otherwise. */
-    public val deathCause: RtcException? get() = (node as? ZombieNode)?.cause
+    public val deathCause: @Nullable RtcException? get() = (node as? ZombieNode)?.cause
 
-    override fun equals(other: Any?): Boolean = other is JavaNode && other.node === node
+    override fun equals(other: @Nullable Any?): Boolean = other is JavaNode && other.node === node
 
     override fun hashCode(): Int = System.identityHashCode(node)
 

@@ -1,5 +1,6 @@
 package org.rtcoord.java
 
+import org.jspecify.annotations.Nullable
 import org.rtcoord.Connection
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.DataListener
@@ -34,12 +35,12 @@ public class JavaPort internal constructor(
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun connect(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: String? = null): ConnectorSnapshot =
+    public fun connect(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: @Nullable String? = null): ConnectorSnapshot =
         calls.await { port.connect(others.map { it.port }, properties, name) }
 
     /** [connect], when done. */
     @JvmOverloads
-    public fun connectAsync(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: String? = null): CompletableFuture<ConnectorSnapshot> =
+    public fun connectAsync(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: @Nullable String? = null): CompletableFuture<ConnectorSnapshot> =
         calls.future { port.connect(others.map { it.port }, properties, name) }
 
     /** Removes the connection [connectorId] from this port and its peers. */

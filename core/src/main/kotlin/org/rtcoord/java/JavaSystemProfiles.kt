@@ -1,5 +1,6 @@
 package org.rtcoord.java
 
+import org.jspecify.annotations.Nullable
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
@@ -47,11 +48,11 @@ public class JavaSystemProfiles(
     /** How the live system differs from [profile], components compared against [state] when not null (see [SystemProfiles.check]). */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun check(profile: RtsProfile, state: LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> = calls.await { profiles.check(profile, state) }
+    public fun check(profile: RtsProfile, state: @Nullable LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> = calls.await { profiles.check(profile, state) }
 
     /** [check], when done. */
     @JvmOverloads
-    public fun checkAsync(profile: RtsProfile, state: LifeCycle? = LifeCycle.ACTIVE): CompletableFuture<List<ProfileDifference>> =
+    public fun checkAsync(profile: RtsProfile, state: @Nullable LifeCycle? = LifeCycle.ACTIVE): CompletableFuture<List<ProfileDifference>> =
         calls.future { profiles.check(profile, state) }
 
     /** Runs [action] in the profile's order, each step within [stepDeadline] beyond its condition (see [SystemProfiles.run]). */

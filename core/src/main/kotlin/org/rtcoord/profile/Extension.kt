@@ -1,13 +1,15 @@
 package org.rtcoord.profile
 
+import org.jspecify.annotations.Nullable
+
 /**
  * The `rts_ext` part of an element (comment, visibility, location, free properties) and whatever else
  * the file had on it that the schema does not name, kept so a round trip loses nothing.
  */
 public data class Extension(
-    val comment: String? = null,
-    val visible: Boolean? = null,
-    val location: Location? = null,
+    val comment: @Nullable String? = null,
+    val visible: @Nullable Boolean? = null,
+    val location: @Nullable Location? = null,
     /** `rtsExt:Properties` in file order. */
     val properties: Map<String, String> = emptyMap(),
     /** Attributes (XML) or scalar keys (YAML) the schema does not name, by the name written. */

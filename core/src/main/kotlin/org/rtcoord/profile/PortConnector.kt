@@ -1,5 +1,7 @@
 package org.rtcoord.profile
 
+import org.jspecify.annotations.Nullable
+
 /**
  * A connection between two ports. Data port connectors carry the data-flow fields; service port
  * connectors [transMethod]. Connector properties (`dataport.*` and others) are in [ext]'s properties,
@@ -10,12 +12,12 @@ public data class PortConnector(
     val name: String,
     val source: TargetComponent,
     val target: TargetComponent,
-    val dataType: String? = null,
-    val interfaceType: String? = null,
-    val dataflowType: String? = null,
-    val subscriptionType: String? = null,
-    val pushInterval: Double? = null,
-    val transMethod: String? = null,
+    val dataType: @Nullable String? = null,
+    val interfaceType: @Nullable String? = null,
+    val dataflowType: @Nullable String? = null,
+    val subscriptionType: @Nullable String? = null,
+    val pushInterval: @Nullable Double? = null,
+    val transMethod: @Nullable String? = null,
     val ext: Extension = Extension(),
 ) {
     /**

@@ -1,5 +1,7 @@
 package org.rtcoord.profile
 
+import org.jspecify.annotations.Nullable
+
 /** One component of a profile, found on the live system by its [pathUri]. */
 public data class ProfileComponent(
     /** `RTC:vendor:category:type:version`. */
@@ -22,7 +24,7 @@ public data class ProfileComponent(
     val ext: Extension = Extension(),
 ) {
     /** The configuration set [id], or null. */
-    public fun configurationSet(id: String): ConfigurationSet? = configurationSets.firstOrNull { it.id == id }
+    public fun configurationSet(id: String): @Nullable ConfigurationSet? = configurationSets.firstOrNull { it.id == id }
 }
 
 /** A data or service port of a component, by its short name. */
@@ -35,7 +37,7 @@ public data class ConfigurationSet(val id: String, val data: Map<String, String>
 public data class ExecutionContext(
     val id: String,
     val kind: String = "PERIODIC",
-    val rate: Double? = null,
+    val rate: @Nullable Double? = null,
     val participants: List<TargetComponent> = emptyList(),
     val ext: Extension = Extension(),
 )

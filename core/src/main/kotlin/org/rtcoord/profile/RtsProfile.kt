@@ -1,5 +1,7 @@
 package org.rtcoord.profile
 
+import org.jspecify.annotations.Nullable
+
 /**
  * An RTSProfile 0.2 document: a whole RT system as RTSystemEditor and rtshell save it. Read and write it
  * with [RtsProfiles]; save, restore, check and order a live system with [SystemProfiles].
@@ -24,7 +26,7 @@ public data class RtsProfile(
     val ext: Extension = Extension(),
 ) {
     /** The component [target] names: by instance name and component id, as rtshell finds it. */
-    public fun component(target: TargetComponent): ProfileComponent? =
+    public fun component(target: TargetComponent): @Nullable ProfileComponent? =
         components.firstOrNull { it.instanceName == target.instanceName && it.id == target.componentId }
             ?: components.firstOrNull { it.instanceName == target.instanceName }
 }

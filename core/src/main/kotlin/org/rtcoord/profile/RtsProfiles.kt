@@ -13,6 +13,7 @@ public enum class ProfileFormat {
 
     public companion object {
         /** The form a file named [fileName] has by its extension (`.yaml`/`.yml`: YAML), else by its [text]. */
+        @JvmStatic
         public fun of(fileName: String, text: String): ProfileFormat = when {
             fileName.endsWith(".yaml", ignoreCase = true) || fileName.endsWith(".yml", ignoreCase = true) -> YAML
             fileName.endsWith(".xml", ignoreCase = true) -> XML

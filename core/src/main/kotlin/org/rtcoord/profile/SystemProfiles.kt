@@ -1,5 +1,6 @@
 package org.rtcoord.profile
 
+import org.jspecify.annotations.Nullable
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
@@ -51,7 +52,7 @@ public class SystemProfiles(private val tree: RtcTree) {
      * How the live system differs from [profile]: missing components, states other than [state] (not
      * compared when null), missing or different connections, configuration and rates.
      */
-    public suspend fun check(profile: RtsProfile, state: LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> =
+    public suspend fun check(profile: RtsProfile, state: @Nullable LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> =
         SystemCheck(tree).check(profile, state)
 
     /** The steps [action] takes for [profile], in order; changes nothing. */

@@ -6,6 +6,7 @@ import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.AmbiguousNameException
+import org.rtcoord.ClosedException
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcTree
@@ -39,6 +40,16 @@ class CoordinatorTest : CoordinatedSystem() {
             system.component("gyro0").fail()
             await("the second reaction to reactivate gyro0") { calls == 2 && system.component("gyro0").state == RTC.LifeCycleState.ACTIVE_STATE }
         }
+    }
+
+    @Test
+    fun `a closed coordinator says so when started again`(): Unit = runBlocking {
+        val coordinator = coordinator { on(component("gyro0")).state(ERROR) { reset() } }
+        coordinator.start()
+        coordinator.close()
+        // Before, kotlinx's JobCancellationException.
+        val closed = assertThrows(ClosedException::class.java) { runBlocking { coordinator.start() } }
+        assertEquals("coordinator: closed", closed.message)
     }
 
     @Test

@@ -13,12 +13,14 @@ import kotlinx.coroutines.flow.map
 import kotlinx.coroutines.flow.merge
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
+import org.rtcoord.ClosedException
 import org.rtcoord.EventOptions
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.RtcException
 import org.rtcoord.Subscription
 import org.rtcoord.dsl.runtime.Coordinator
 import org.rtcoord.dsl.runtime.RuleActivity
+import org.rtcoord.dsl.runtime.SupervisorActivity
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.internal.JavaCalls
@@ -43,11 +45,13 @@ import java.util.function.IntConsumer
  * ```
  */
 public class JavaCoordinator private constructor(
-    /** The coordinator this facade drives: its rules, machines and failures are readable from Java. */
-    public val coordinator: Coordinator,
+    /** The coordinator this facade drives, for Kotlin code: Java follows it through the `subscribe...` listeners. */
+    @get:JvmSynthetic public val coordinator: Coordinator,
+    /** The script's file name, which a closed coordinator's [ClosedException] names. */
+    script: String,
 ) : AutoCloseable {
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator"))
-    private val calls = JavaCalls(scope, "coordinator")
+    private val calls = JavaCalls(scope, "coordinator $script")
 
     /** Subscribes the rules and starts timers, machines and supervisors (see [Coordinator.start]). */
     @Throws(RtcException::class, InterruptedException::class)
@@ -72,6 +76,14 @@ public class JavaCoordinator private constructor(
      */
     public fun subscribeModes(executor: Executor, listener: BiConsumer<String, String?>): Subscription =
         follow(executor, coordinator.machines.map { machine -> machine.mode.map { machine.name to it } }) { (name, mode) -> listener.accept(name, mode) }
+
+    /**
+     * Calls [listener] on [executor] with each supervisor's name and status (see [SupervisorActivity]):
+     * children, restarts, the back-off it waits out, its escalation. Supervisors start with the
+     * coordinator: subscribe after [start]; before it there are none to follow. Close the [Subscription] to stop.
+     */
+    public fun subscribeSupervisors(executor: Executor, listener: BiConsumer<String, SupervisorActivity.Status>): Subscription =
+        follow(executor, coordinator.supervision.map { supervisor -> supervisor.status.map { supervisor.name to it } }) { (name, status) -> listener.accept(name, status) }
 
     /** Calls [listener] on [executor] with how many handler runs have failed: the count now, then each change. */
     public fun subscribeFailures(executor: Executor, listener: IntConsumer): Subscription =
@@ -111,7 +123,7 @@ public class JavaCoordinator private constructor(
         public fun loadAsync(tree: JavaTree, script: Path, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): CompletableFuture<JavaCoordinator> =
             loading.future {
                 val coordination = host.load(script, args, tree.tree.config)
-                JavaCoordinator(Coordinator(tree.tree, coordination, null as EventOptions?) { log.accept(it) })
+                JavaCoordinator(Coordinator(tree.tree, coordination, null as EventOptions?) { log.accept(it) }, script.fileName.toString())
             }
 
         /**

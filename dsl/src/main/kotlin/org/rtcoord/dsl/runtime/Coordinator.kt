@@ -14,6 +14,7 @@ import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
+import org.rtcoord.ClosedException
 import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
 import org.rtcoord.Node
@@ -106,9 +107,12 @@ public class Coordinator(
 
     /**
      * Resolves every rule's target and subscribes it, and starts the supervisors; fails (with nothing
-     * left running) when a target does not exist or is ambiguous.
+     * left running) when a target does not exist or is ambiguous, and with a [ClosedException] once the
+     * coordinator is closed: a closed coordinator does not start again (make a new one).
      */
     public suspend fun start() {
+        // Not kotlinx's JobCancellationException from the first suspension in the cancelled scope.
+        if (!job.isActive) throw ClosedException("coordinator")
         plan.nameServers.forEach(tree::addNameServer)
         try {
             managers.start()

@@ -6,6 +6,7 @@ import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
 import java.time.Instant
 import kotlin.time.Duration
+import kotlin.time.toJavaDuration
 
 /**
  * What one supervisor of a running [Coordinator] has done: its children where they are now, its
@@ -17,22 +18,51 @@ public class SupervisorActivity internal constructor(
     /** How it restarts, `ONE_FOR_ONE` and so on. */
     public val strategy: String,
 ) {
-    /** A supervisor's record at one moment. */
-    public data class Status(
+    /**
+     * A supervisor's record at one moment. A plain class, not a data class, so that it can gain fields
+     * without breaking compiled callers (no `componentN`, no `copy`); equal when every field is.
+     */
+    public class Status internal constructor(
         /** Its children's paths, in declared order (a re-created child's new path). */
-        val children: List<String> = emptyList(),
+        public val children: List<String> = emptyList(),
         /** How many children it restarted. */
-        val restarts: Int = 0,
-        /** When it last restarted a child, and which one. */
-        val lastRestart: Instant? = null,
-        val lastRestarted: String? = null,
-        /** The back-off it is waiting out before the next restart, and until when; null when not waiting. */
-        @get:JvmName("getBackoff")
-        val backoff: Duration? = null,
-        val waitingUntil: Instant? = null,
+        public val restarts: Int = 0,
+        /** When it last restarted a child. */
+        public val lastRestart: Instant? = null,
+        /** The child it last restarted. */
+        public val lastRestarted: String? = null,
+        /** The back-off it is waiting out before the next restart; null when not waiting. */
+        @get:JvmSynthetic
+        public val backoff: Duration? = null,
+        /** Until when it waits out [backoff]; null when not waiting. */
+        public val waitingUntil: Instant? = null,
         /** Why it gave up, once it escalated. */
-        val escalation: String? = null,
-    )
+        public val escalation: String? = null,
+    ) {
+        /** [backoff] for Java callers, as a `java.time.Duration`. */
+        @get:JvmName("getBackoff")
+        public val backoffDuration: java.time.Duration? get() = backoff?.toJavaDuration()
+
+        internal fun copy(
+            children: List<String> = this.children,
+            restarts: Int = this.restarts,
+            lastRestart: Instant? = this.lastRestart,
+            lastRestarted: String? = this.lastRestarted,
+            backoff: Duration? = this.backoff,
+            waitingUntil: Instant? = this.waitingUntil,
+            escalation: String? = this.escalation,
+        ): Status = Status(children, restarts, lastRestart, lastRestarted, backoff, waitingUntil, escalation)
+
+        private fun fields(): List<Any?> = listOf(children, restarts, lastRestart, lastRestarted, backoff, waitingUntil, escalation)
+
+        override fun equals(other: Any?): Boolean = other is Status && fields() == other.fields()
+
+        override fun hashCode(): Int = fields().hashCode()
+
+        override fun toString(): String =
+            "Status(children=$children, restarts=$restarts, lastRestart=$lastRestart, lastRestarted=$lastRestarted, " +
+                "backoff=$backoff, waitingUntil=$waitingUntil, escalation=$escalation)"
+    }
 
     private val current = MutableStateFlow(Status())
 

@@ -15,6 +15,7 @@ import org.rtcoord.fixtures.naming.NamingService;
 import org.rtcoord.java.JavaComponent;
 import org.rtcoord.java.JavaTree;
 
+import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ExecutionException;
@@ -59,7 +60,9 @@ class JavaCoordinatorTest {
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
             while (gyro.state() != LifeCycle.INACTIVE && System.nanoTime() < deadline) Thread.sleep(20);
             assertEquals(LifeCycle.INACTIVE, gyro.state());
-            assertEquals(0, coordinator.getCoordinator().getFailures());
+            BlockingQueue<Integer> failures = new LinkedBlockingQueue<>();
+            coordinator.subscribeFailures(Runnable::run, failures::add);
+            assertEquals(0, failures.poll(10, TimeUnit.SECONDS));
         }
         // Stopped: a new failure is left alone.
         log.clear();
@@ -93,11 +96,25 @@ class JavaCoordinatorTest {
         JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "idle.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n");
         coordinator.start();
         coordinator.close();
-        // Before, kotlinx's JobCancellationException.
+        // Before, kotlinx's JobCancellationException; then "coordinator: closed", not saying which.
         ClosedException closed = assertThrows(ClosedException.class, coordinator::start);
-        assertEquals("coordinator: closed", closed.getMessage());
+        assertEquals("coordinator idle.coord.kts: closed", closed.getMessage());
         ExecutionException async = assertThrows(ExecutionException.class, () -> coordinator.startAsync().get(10, TimeUnit.SECONDS));
         assertInstanceOf(ClosedException.class, async.getCause());
+    }
+
+    @Test
+    void aJavaListenerFollowsEachSupervisor() throws Exception {
+        BlockingQueue<String> statuses = new LinkedBlockingQueue<>();
+        String script = "supervise(component(\"gyro0.rtc\"))\n";
+        try (JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "supervise.coord.kts", script)) {
+            coordinator.start();
+            coordinator.subscribeSupervisors(Runnable::run, (name, status) -> {
+                Duration backoff = status.getBackoff();
+                statuses.add(status.getChildren().size() + " child, backoff " + backoff);
+            });
+            assertEquals("1 child, backoff null", statuses.poll(10, TimeUnit.SECONDS));
+        }
     }
 
     @Test

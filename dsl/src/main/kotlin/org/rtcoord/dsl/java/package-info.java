@@ -1,0 +1,8 @@
+/**
+ * Types are non-null unless marked {@code @Nullable}, for Java tools' null analysis (JSpecify): the
+ * Kotlin signatures' nullability, written where Java reads it.
+ */
+@NullMarked
+package org.rtcoord.dsl.java;
+
+import org.jspecify.annotations.NullMarked;
