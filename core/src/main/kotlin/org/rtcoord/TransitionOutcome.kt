@@ -8,7 +8,7 @@ package org.rtcoord
  * in) runs on; rtcoord then reads the state until the operation's own deadline, and a state that
  * arrives is a success, a slow one.
  */
-public class TransitionOutcome(
+public class TransitionOutcome internal constructor(
     /** The state the component is in now, the one the operation leads to. */
     public val state: LifeCycle,
     /**
@@ -20,6 +20,7 @@ public class TransitionOutcome(
     public val elapsedMillis: Long,
 ) {
     /** Whether the component reached [state] only after its context had answered that it did not. */
+    @get:JvmName("isSlow")
     public val slow: Boolean get() = lateAnswer != null
 
     /** `ACTIVE`, or `ACTIVE, slow: the context answered RTC_ERROR, the state arrived after 812 ms`. */
