@@ -9,7 +9,7 @@ import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordination
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.fixtures.Behaviour
 import org.rtcoord.fixtures.ComponentType
 import org.rtcoord.fixtures.DataType

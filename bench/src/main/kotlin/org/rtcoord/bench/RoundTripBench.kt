@@ -5,7 +5,7 @@ import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.fixtures.RtSystem
 import org.rtcoord.fixtures.Scenarios

@@ -6,8 +6,8 @@ import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.types.path
 import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.runtime.LiveCheck
-import org.rtcoord.dsl.runtime.ScriptCheck
+import org.rtcoord.dsl.LiveCheck
+import org.rtcoord.dsl.ScriptCheck
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import java.nio.file.Path

@@ -7,7 +7,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcTree
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.RtSystem

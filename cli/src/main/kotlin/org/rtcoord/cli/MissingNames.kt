@@ -4,7 +4,7 @@ import kotlinx.coroutines.flow.toList
 import org.rtcoord.NodeFilters
 import org.rtcoord.NodeKind
 import org.rtcoord.RtcTree
-import org.rtcoord.dsl.runtime.NameFinding
+import org.rtcoord.dsl.NameFinding
 
 /**
  * [missing] as `check` and `run` print them, `file:line:col: name: reason`, a component not found with

@@ -19,8 +19,8 @@ import org.rtcoord.RtcException
 import org.rtcoord.WatchMode
 import org.rtcoord.cli.serve.LiveService
 import org.rtcoord.cli.serve.ServeOptions
-import org.rtcoord.dsl.runtime.Coordinator
-import org.rtcoord.dsl.runtime.LiveCheck
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.LiveCheck
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import java.time.LocalTime

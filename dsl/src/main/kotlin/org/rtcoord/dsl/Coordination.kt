@@ -2,7 +2,6 @@ package org.rtcoord.dsl
 
 import org.rtcoord.EventOptions
 import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.runtime.plan
 import java.nio.file.Path
 import java.nio.file.Paths
 import kotlin.time.Duration
@@ -10,7 +9,7 @@ import kotlin.time.Duration
 /**
  * What a coordinator script says: rules (`on(...)`), timers (`every`, `after`), mode machines
  * (`modes(...)`), supervisors (`supervise(...)`), name servers and how to watch. Evaluating a script
- * only declares; a [org.rtcoord.dsl.runtime.Coordinator] runs a [Plan] of what was declared, as many
+ * only declares; a [org.rtcoord.dsl.Coordinator] runs a [Plan] of what was declared, as many
  * times as it is started.
  *
  * @property args the arguments the script was started with.
@@ -88,7 +87,7 @@ public open class Coordination(
     }
 
     /**
-     * Runs [action] when the coordinator stops ([org.rtcoord.dsl.runtime.Coordinator.stop]; `rtcoord run`
+     * Runs [action] when the coordinator stops ([org.rtcoord.dsl.Coordinator.stop]; `rtcoord run`
      * at a signal or the end of `--for`), before its rules stop watching: `onStop { component("odo_localise0.rtc").deactivate() }`.
      * Each such action gets the stop's deadline; its failures are logged and counted like a handler's.
      */

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl
 
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
@@ -23,14 +23,20 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
-import org.rtcoord.dsl.Coordination
-import org.rtcoord.dsl.Escalation
-import org.rtcoord.dsl.EventPattern
-import org.rtcoord.dsl.ManagerRef
-import org.rtcoord.dsl.Reaction
-import org.rtcoord.dsl.Rule
-import org.rtcoord.dsl.Supervision
-import org.rtcoord.dsl.Target
+import org.rtcoord.dsl.internal.Configurator
+import org.rtcoord.dsl.internal.DataRuleRun
+import org.rtcoord.dsl.internal.Engine
+import org.rtcoord.dsl.internal.HandlerQueue
+import org.rtcoord.dsl.internal.Identities
+import org.rtcoord.dsl.internal.MachineInterpreter
+import org.rtcoord.dsl.internal.ManagerWatch
+import org.rtcoord.dsl.internal.NetworkWatch
+import org.rtcoord.dsl.internal.NodeListener
+import org.rtcoord.dsl.internal.ScriptCallSite
+import org.rtcoord.dsl.internal.Supervisor
+import org.rtcoord.dsl.internal.catchFailure
+import org.rtcoord.dsl.internal.plan
+import org.rtcoord.dsl.internal.queued
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.seconds
 

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl
 
 /**
  * An action of the coordinator that failed: [action] as the log wrote it, [reason] as the system

@@ -1,4 +1,6 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl
+
+import org.rtcoord.dsl.internal.scriptFrames
 
 /**
  * A handler run that failed (a rule's, a timer's, a mode's action or guard, an escalation handler):

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl
 
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.toList
@@ -8,13 +8,10 @@ import org.rtcoord.NodeFilters
 import org.rtcoord.NodeKind
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
-import org.rtcoord.dsl.ComponentRef
-import org.rtcoord.dsl.Coordination
-import org.rtcoord.dsl.ManagerRef
-import org.rtcoord.dsl.Plan
-import org.rtcoord.dsl.Target
-import org.rtcoord.dsl.portRef
-import org.rtcoord.dsl.profile
+import org.rtcoord.dsl.internal.Engine
+import org.rtcoord.dsl.internal.Findings
+import org.rtcoord.dsl.internal.Identities
+import org.rtcoord.dsl.internal.plan
 import org.rtcoord.dsl.script.NameKind
 import org.rtcoord.dsl.script.WrittenName
 import org.rtcoord.dsl.script.WrittenNames

@@ -2,7 +2,7 @@ package org.rtcoord.dsl
 
 /**
  * The modes of the whole system a script declares with `modes("system") { ... }`: a tree of [Mode]s
- * under [root], checked when the declaration ends (see [InvalidMachineException]). A [org.rtcoord.dsl.runtime.Coordinator] runs
+ * under [root], checked when the declaration ends (see [InvalidMachineException]). A [org.rtcoord.dsl.Coordinator] runs
  * it; [RunningMachine] shows where it is.
  */
 public class ModeMachine internal constructor(

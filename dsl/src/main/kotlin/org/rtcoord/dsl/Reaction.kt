@@ -8,12 +8,12 @@ import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.ComponentNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcEvent
-import org.rtcoord.dsl.runtime.ActionJournal
-import org.rtcoord.dsl.runtime.BestEffort
-import org.rtcoord.dsl.runtime.Engine
-import org.rtcoord.dsl.runtime.ScriptCallSite
-import org.rtcoord.dsl.runtime.Undo
-import org.rtcoord.dsl.runtime.catchFailure
+import org.rtcoord.dsl.internal.ActionJournal
+import org.rtcoord.dsl.internal.BestEffort
+import org.rtcoord.dsl.internal.Engine
+import org.rtcoord.dsl.internal.ScriptCallSite
+import org.rtcoord.dsl.internal.Undo
+import org.rtcoord.dsl.internal.catchFailure
 import org.rtcoord.profile.ProfileDifference
 import org.rtcoord.profile.RestoreReport
 import org.rtcoord.profile.SystemProfiles
@@ -120,7 +120,7 @@ public class Reaction internal constructor(
      * ```
      *
      * A failing action outside [attempt] still stops the handler. Failed actions, best efforts included,
-     * are listed by [org.rtcoord.dsl.runtime.Coordinator.failedActions].
+     * are listed by [org.rtcoord.dsl.Coordinator.failedActions].
      *
      * @return whether [block] completed.
      */

@@ -1,7 +1,7 @@
 package org.rtcoord.dsl
 
-import org.rtcoord.dsl.runtime.ActionJournal
-import org.rtcoord.dsl.runtime.catchFailure
+import org.rtcoord.dsl.internal.ActionJournal
+import org.rtcoord.dsl.internal.catchFailure
 
 /**
  * Why a handler stopped, as its [Reaction.onFailure] blocks see it: the failure and the actions the

@@ -10,8 +10,8 @@ import org.rtcoord.Port
 import org.rtcoord.PortSnapshot
 import org.rtcoord.RtcPath
 import org.rtcoord.TransitionOutcome
-import org.rtcoord.dsl.runtime.Engine
-import org.rtcoord.dsl.runtime.Undo
+import org.rtcoord.dsl.internal.Engine
+import org.rtcoord.dsl.internal.Undo
 
 /**
  * A component named in a script: a full path, a name searched on every name server, or a glob pattern

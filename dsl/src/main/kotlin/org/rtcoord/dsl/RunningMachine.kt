@@ -1,10 +1,9 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl
 
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
-import org.rtcoord.dsl.ModeMachine
 import java.time.Instant
 
 /** A move of a machine: [from] (null for the start) to [to], both paths like `system/nominal/tracking`, on [trigger], at [at]. */

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl
 
 /**
  * One name [LiveCheck] reports: [at] where the script writes it (`file:line:col`), [name] as written,

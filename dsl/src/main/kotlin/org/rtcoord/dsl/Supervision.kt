@@ -6,7 +6,7 @@ import kotlin.time.Duration.Companion.seconds
 /**
  * A supervisor, as a script declares it with `supervise(component("a.rtc"), component("b.rtc")) { ... }`:
  * the components in their declared order, the [strategy], the restart intensity ([maxRestarts]), the
- * [backoff] and the [restart] type. A [org.rtcoord.dsl.runtime.Coordinator] runs it:
+ * [backoff] and the [restart] type. A [org.rtcoord.dsl.Coordinator] runs it:
  *
  * - a component that enters ERROR is reset and activated again;
  * - one that is lost (no heartbeat, unreachable) is reset and activated if it still answers, else

@@ -13,7 +13,7 @@ import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.fixtures.FixtureModule
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.Scenarios

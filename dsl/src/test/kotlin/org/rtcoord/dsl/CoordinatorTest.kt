@@ -11,7 +11,7 @@ import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcTree
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import java.util.Collections

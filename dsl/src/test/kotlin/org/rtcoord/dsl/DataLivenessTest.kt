@@ -2,8 +2,8 @@ package org.rtcoord.dsl
 
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
-import org.rtcoord.dsl.runtime.DataLiveness
-import org.rtcoord.dsl.runtime.DataLiveness.Finding
+import org.rtcoord.dsl.internal.DataLiveness
+import org.rtcoord.dsl.internal.DataLiveness.Finding
 
 /** The silence and rate watchdog of data rules, on plain numbers for time. */
 class DataLivenessTest {

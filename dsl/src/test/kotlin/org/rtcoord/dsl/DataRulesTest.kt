@@ -12,7 +12,7 @@ import org.rtcoord.TimedDouble
 import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService

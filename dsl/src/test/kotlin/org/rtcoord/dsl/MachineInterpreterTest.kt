@@ -10,11 +10,11 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.runtime.Configurator
-import org.rtcoord.dsl.runtime.Engine
-import org.rtcoord.dsl.runtime.Identities
-import org.rtcoord.dsl.runtime.MachineInterpreter
-import org.rtcoord.dsl.runtime.ModeTransition
+import org.rtcoord.dsl.internal.Configurator
+import org.rtcoord.dsl.internal.Engine
+import org.rtcoord.dsl.internal.Identities
+import org.rtcoord.dsl.internal.MachineInterpreter
+import org.rtcoord.dsl.ModeTransition
 import java.nio.file.Paths
 import java.time.Instant
 import kotlin.time.Duration.Companion.seconds

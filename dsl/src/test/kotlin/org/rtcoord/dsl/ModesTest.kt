@@ -11,8 +11,8 @@ import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.ParameterChanged
 import org.rtcoord.StateChanged
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.Coordinator
-import org.rtcoord.dsl.runtime.RunningMachine
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.RunningMachine
 import org.rtcoord.fixtures.Behaviour
 import org.rtcoord.fixtures.ComponentContext
 import org.rtcoord.fixtures.ComponentType

@@ -5,7 +5,7 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.EventOptions
 import org.rtcoord.Overlap
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.runtime.queued
+import org.rtcoord.dsl.internal.queued
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 

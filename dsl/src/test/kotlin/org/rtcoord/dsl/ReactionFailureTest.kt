@@ -5,7 +5,7 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle.ERROR
-import org.rtcoord.dsl.runtime.FailedAction
+import org.rtcoord.dsl.FailedAction
 import org.rtcoord.fixtures.await
 import java.util.Collections
 

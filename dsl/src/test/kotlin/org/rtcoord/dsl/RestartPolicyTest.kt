@@ -5,9 +5,9 @@ import kotlinx.coroutines.test.currentTime
 import kotlinx.coroutines.test.runTest
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
-import org.rtcoord.dsl.runtime.RestartPolicy
-import org.rtcoord.dsl.runtime.RestartPolicy.Decision.Escalate
-import org.rtcoord.dsl.runtime.RestartPolicy.Decision.Restart
+import org.rtcoord.dsl.internal.RestartPolicy
+import org.rtcoord.dsl.internal.RestartPolicy.Decision.Escalate
+import org.rtcoord.dsl.internal.RestartPolicy.Decision.Restart
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds

@@ -5,7 +5,7 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.fixtures.await
 import java.nio.file.Files

@@ -4,7 +4,7 @@ import kotlinx.coroutines.runBlocking
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.FixtureRuntime

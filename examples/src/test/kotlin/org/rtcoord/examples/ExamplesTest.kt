@@ -12,7 +12,7 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.RtcPath
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Mode
-import org.rtcoord.dsl.runtime.FailedAction
+import org.rtcoord.dsl.FailedAction
 import org.rtcoord.fixtures.FixtureComponent
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue

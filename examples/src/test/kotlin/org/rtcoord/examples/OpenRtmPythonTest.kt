@@ -11,8 +11,8 @@ import org.rtcoord.PortData
 import org.rtcoord.RtcTree
 import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.runtime.Coordinator
-import org.rtcoord.dsl.runtime.FailedAction
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.FailedAction
 import org.rtcoord.fixtures.await
 import java.nio.file.Paths
 import java.util.concurrent.CopyOnWriteArrayList

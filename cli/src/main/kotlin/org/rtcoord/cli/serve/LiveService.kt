@@ -3,7 +3,7 @@ package org.rtcoord.cli.serve
 import org.rtcoord.EventOptions
 import org.rtcoord.Node
 import org.rtcoord.RtcTree
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 
 /**
  * A [LiveView] of [Node]s below a top node served by a [LiveServer], as `serve` and `run --serve` start

@@ -47,7 +47,7 @@ import org.rtcoord.WatchMethodChanged
 import org.rtcoord.cli.discover
 import org.rtcoord.cli.toJson
 import org.rtcoord.cli.what
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import java.time.Instant
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicLong

@@ -12,7 +12,7 @@ import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.cli.Localisation
 import org.rtcoord.fixtures.await
-import org.rtcoord.dsl.runtime.Coordinator
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import java.nio.file.Path
 import java.nio.file.Paths

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 import org.rtcoord.BadParameterException
 import org.rtcoord.ComponentNode

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineName
@@ -7,6 +7,7 @@ import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.async
 import kotlinx.coroutines.withTimeout
 import org.rtcoord.NotFoundException
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.Link
 import org.rtcoord.dsl.Network
 import org.rtcoord.dsl.portRef

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 /**
  * Whether a port's data went silent or slow, from the times samples arrived and checks of the

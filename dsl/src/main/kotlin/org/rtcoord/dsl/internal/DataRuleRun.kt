@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.delay

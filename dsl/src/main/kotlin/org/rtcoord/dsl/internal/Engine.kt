@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.flow.toList
@@ -14,6 +14,7 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.UnreachableException
 import org.rtcoord.dsl.ComponentRef
+import org.rtcoord.dsl.FailedAction
 import org.rtcoord.dsl.ManagerRef
 import org.rtcoord.dsl.portRef
 import java.nio.file.Path

@@ -1,5 +1,8 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
+import org.rtcoord.dsl.LiveCheck
+import org.rtcoord.dsl.NameFinding
+import org.rtcoord.dsl.ScriptCheck
 import org.rtcoord.dsl.script.NameKind
 import org.rtcoord.dsl.script.WrittenName
 import java.nio.file.Path

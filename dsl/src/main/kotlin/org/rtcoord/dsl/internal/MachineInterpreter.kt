@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
@@ -13,9 +13,11 @@ import org.rtcoord.dsl.EventPattern
 import org.rtcoord.dsl.Link
 import org.rtcoord.dsl.Mode
 import org.rtcoord.dsl.ModeMachine
+import org.rtcoord.dsl.ModeTransition
 import org.rtcoord.dsl.Network
 import org.rtcoord.dsl.NetworkOutcome
 import org.rtcoord.dsl.Reaction
+import org.rtcoord.dsl.RunningMachine
 import org.rtcoord.dsl.Transition
 import org.rtcoord.dsl.Trigger
 import org.slf4j.LoggerFactory

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 import org.rtcoord.LifeCycle
 import org.rtcoord.PortDisconnected

@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 
 /** A supervisor's log: each line starts with the supervisor's [name]; a recovery step is logged before it runs, and again if it fails. */

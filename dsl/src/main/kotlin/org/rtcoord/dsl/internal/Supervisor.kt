@@ -1,4 +1,4 @@
-package org.rtcoord.dsl.runtime
+package org.rtcoord.dsl.internal
 
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
@@ -24,6 +24,7 @@ import org.rtcoord.dsl.Escalation
 import org.rtcoord.dsl.RestartType
 import org.rtcoord.dsl.Strategy
 import org.rtcoord.dsl.Supervision
+import org.rtcoord.dsl.SupervisorActivity
 import java.util.concurrent.atomic.AtomicInteger
 import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.TimeSource

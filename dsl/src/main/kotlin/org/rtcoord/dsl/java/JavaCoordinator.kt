@@ -18,9 +18,9 @@ import org.rtcoord.EventOptions
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.RtcException
 import org.rtcoord.Subscription
-import org.rtcoord.dsl.runtime.Coordinator
-import org.rtcoord.dsl.runtime.RuleActivity
-import org.rtcoord.dsl.runtime.SupervisorActivity
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.RuleActivity
+import org.rtcoord.dsl.SupervisorActivity
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.internal.JavaCalls
