@@ -134,25 +134,34 @@ public class JavaComponent internal constructor(
     /** [configuration], when done. */
     public fun configurationAsync(): CompletableFuture<ConfigurationSnapshot> = calls.future { node.configuration() }
 
-    /** Sets [parameter] to [value] in configuration set [set] (the active one when null); see [ComponentNode.setParameters]. */
+    /**
+     * Sets [parameter] to [value] in configuration set [set] (the active one when null); returns a warning
+     * when the value is outside the parameter's constraint, which [strict] refuses instead; see
+     * [ComponentNode.setParameters].
+     */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun setParameter(parameter: String, value: String, set: @Nullable String? = null): Unit = calls.await { node.setParameter(parameter, value, set) }
+    public fun setParameter(parameter: String, value: String, set: @Nullable String? = null, strict: Boolean = false): List<String> =
+        calls.await { node.setParameter(parameter, value, set, strict) }
 
     /** [setParameter], when done. */
     @JvmOverloads
-    public fun setParameterAsync(parameter: String, value: String, set: @Nullable String? = null): CompletableFuture<Void?> =
-        calls.done { node.setParameter(parameter, value, set) }
+    public fun setParameterAsync(parameter: String, value: String, set: @Nullable String? = null, strict: Boolean = false): CompletableFuture<List<String>> =
+        calls.future { node.setParameter(parameter, value, set, strict) }
 
-    /** Sets several parameters of configuration set [set] (the active one when null) at once; see [ComponentNode.setParameters]. */
+    /**
+     * Sets several parameters of configuration set [set] (the active one when null) at once; returns one
+     * warning per value outside its constraint, which [strict] refuses instead; see [ComponentNode.setParameters].
+     */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun setParameters(values: Map<String, String>, set: @Nullable String? = null): Unit = calls.await { node.setParameters(values, set) }
+    public fun setParameters(values: Map<String, String>, set: @Nullable String? = null, strict: Boolean = false): List<String> =
+        calls.await { node.setParameters(values, set, strict) }
 
     /** [setParameters], when done. */
     @JvmOverloads
-    public fun setParametersAsync(values: Map<String, String>, set: @Nullable String? = null): CompletableFuture<Void?> =
-        calls.done { node.setParameters(values, set) }
+    public fun setParametersAsync(values: Map<String, String>, set: @Nullable String? = null, strict: Boolean = false): CompletableFuture<List<String>> =
+        calls.future { node.setParameters(values, set, strict) }
 
     /** Makes configuration set [id] the active one. */
     @Throws(RtcException::class, InterruptedException::class)

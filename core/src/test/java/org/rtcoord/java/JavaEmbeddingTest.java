@@ -169,8 +169,14 @@ class JavaEmbeddingTest {
         assertEquals("precise", localiser.configuration().getActiveSet());
         awaitGain("0.5");
 
-        RtcException refused = assertThrows(RtcException.class, () -> localiser.setParameter("gain", "12"));
+        // OpenRTM-aist never checks constraints: a value outside one is written, with a warning, unless strict.
+        RtcException refused = assertThrows(RtcException.class, () -> localiser.setParameter("gain", "12", null, true));
         assertTrue(refused.getMessage().contains("0<x<10"), refused.getMessage());
+        assertEquals("0.5", localiser.configuration().value("gain"), "a strict refusal changes nothing");
+        List<String> warnings = localiser.setParameter("gain", "12");
+        assertEquals(1, warnings.size(), warnings.toString());
+        assertTrue(warnings.get(0).contains("0<x<10"), warnings.toString());
+        assertEquals("12", localiser.configuration().value("gain"));
     }
 
     /** Waits until the component applies [gain]: as OpenRTM-aist, it does so on its execution thread, a cycle later. */
