@@ -7,7 +7,8 @@
 val manager = manager()
 
 on(component("laser0.rtc")).state(ERROR, includeCurrent = true) {
-    if (!attempt { reset() }) log("laser0 could not be reset: switching to odometry without it")
+    // A reset that fails looks like a slow one until its deadline: a second is enough for a laser.
+    if (!attempt { reset(deadline = 1.seconds) }) log("laser0 could not be reset: switching to odometry without it")
     onFailure { failure ->
         log("the switch to odometry failed (${failure.cause.message}): back to the laser localiser")
         failure.undo()

@@ -25,7 +25,7 @@ modes("localisation") {
 
         mode("odometry") {
             entry {
-                attempt { component("laser0.rtc").reset() }
+                attempt { component("laser0.rtc").reset(deadline = 1.seconds) }
                 try {
                     component("odo_localise0.rtc").state()
                 } catch (absent: NotFoundException) {

@@ -65,14 +65,14 @@ public class Reaction internal constructor(
     /** A manager. */
     public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name)
 
-    /** Activates the component that fired the rule. */
-    public suspend fun activate(): Unit = source.activate()
+    /** Activates the component that fired the rule, within [deadline]; see [ComponentRef.activate]. */
+    public suspend fun activate(deadline: Duration? = null): Unit = source.activate(deadline)
 
-    /** Deactivates the component that fired the rule. */
-    public suspend fun deactivate(): Unit = source.deactivate()
+    /** Deactivates the component that fired the rule, within [deadline]; see [ComponentRef.deactivate]. */
+    public suspend fun deactivate(deadline: Duration? = null): Unit = source.deactivate(deadline)
 
-    /** Resets the component that fired the rule. */
-    public suspend fun reset(): Unit = source.reset()
+    /** Resets the component that fired the rule, within [deadline]; see [ComponentRef.reset]. */
+    public suspend fun reset(deadline: Duration? = null): Unit = source.reset(deadline)
 
     /** Makes the component that fired the rule exit. */
     public suspend fun exit(): Unit = source.exit()

@@ -12,6 +12,7 @@ import org.rtcoord.RtcPath
 import org.rtcoord.TransitionOutcome
 import org.rtcoord.dsl.internal.Engine
 import org.rtcoord.dsl.internal.Undo
+import kotlin.time.Duration
 
 /**
  * A component named in a script: a full path, a name searched on every name server, or a glob pattern
@@ -45,16 +46,25 @@ public class ComponentRef internal constructor(
     public suspend fun configuration(): ConfigurationSnapshot = Engine.current().withComponent(selector) { it.configuration() }
 
     /**
-     * Activates it and waits until it is ACTIVE; one that gets there after its context answered `RTC_ERROR`
-     * (its transition timeout passed first) is logged as slow, not failed. Undone by a deactivation.
+     * Activates it and waits until it is ACTIVE, within [deadline] (the tree's call timeout by default);
+     * one that gets there after its context answered `RTC_ERROR` (its transition timeout passed first) is
+     * logged as slow, not failed. Undone by a deactivation.
      */
-    public suspend fun activate(): Unit = Engine.current().let { engine -> engine.actReversibly("activate", this) { engine.noteSlow(it.activate()); { deactivate() } } }
+    public suspend fun activate(deadline: Duration? = null): Unit =
+        Engine.current().let { engine -> engine.actReversibly("activate", this) { engine.noteSlow(it.activate(deadline = deadline)); { deactivate() } } }
 
-    /** Deactivates it and waits until it is INACTIVE, slow ones as [activate]. Undone by an activation. */
-    public suspend fun deactivate(): Unit = Engine.current().let { engine -> engine.actReversibly("deactivate", this) { engine.noteSlow(it.deactivate()); { activate() } } }
+    /** Deactivates it and waits until it is INACTIVE, within [deadline], slow ones as [activate]. Undone by an activation. */
+    public suspend fun deactivate(deadline: Duration? = null): Unit =
+        Engine.current().let { engine -> engine.actReversibly("deactivate", this) { engine.noteSlow(it.deactivate(deadline = deadline)); { activate() } } }
 
-    /** Resets it from ERROR and waits until it is INACTIVE, slow ones as [activate]. */
-    public suspend fun reset(): Unit = Engine.current().let { engine -> engine.act("reset", this) { engine.noteSlow(it.reset()) } }
+    /**
+     * Resets it from ERROR and waits until it is INACTIVE, within [deadline], slow ones as [activate]. A
+     * reset whose `on_reset` fails is told from a slow one only at [deadline] (the component stays in ERROR
+     * either way, and says nothing): a script that goes on without a component it cannot reset chooses how
+     * long a reset may take, `attempt { reset(deadline = 1.seconds) }`.
+     */
+    public suspend fun reset(deadline: Duration? = null): Unit =
+        Engine.current().let { engine -> engine.act("reset", this) { engine.noteSlow(it.reset(deadline = deadline)) } }
 
     /** Logs a transition that got there after its context had answered it did not. */
     private fun Engine.noteSlow(outcome: TransitionOutcome) {
