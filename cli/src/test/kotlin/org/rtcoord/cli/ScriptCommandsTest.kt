@@ -347,7 +347,7 @@ class ScriptCommandsTest {
         assertEquals(0, result.statusCode, result.stderr)
         assertTrue("coordinator: create odo_localise through" in result.stdout, result.stdout)
         assertTrue(Regex("""Recovered \d+ ms after the laser failed""").containsMatchIn(result.stdout), result.stdout)
-        assertTrue("laser0 could not be reset (reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)): it stays in ERROR" in result.stdout, result.stdout)
+        assertTrue("laser0 could not be reset (reset failed: RTC_ERROR (in context 0; still ERROR at its 1000 ms deadline)): it stays in ERROR" in result.stdout, result.stdout)
     }
 
     /** What [run] printed so far, once it finished; empty while it runs (the harness hands it over at the end). */

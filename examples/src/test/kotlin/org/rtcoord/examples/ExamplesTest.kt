@@ -57,7 +57,7 @@ class ExamplesTest {
             assertTrue(old.ports.all { it.connectors.isEmpty() })
             assertEquals(fault.laserAfter, example.witness.component(example.path("laser0.rtc")).state())
             assertEquals(0, example.coordinator.failures)
-            val resetFailed = FailedAction("reset ${example.path("laser0.rtc")}", "reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)", bestEffort = true)
+            val resetFailed = FailedAction("reset ${example.path("laser0.rtc")}", "reset failed: RTC_ERROR (in context 0; still ERROR at its 1000 ms deadline)", bestEffort = true)
             assertEquals(if (fault == Fault.PERSISTENT) listOf(resetFailed) else emptyList<FailedAction>(), example.coordinator.failedActions)
         }
     }

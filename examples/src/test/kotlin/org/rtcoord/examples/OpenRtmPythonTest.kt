@@ -78,7 +78,7 @@ class OpenRtmPythonTest {
         // A real manager's components are bound twice (naming context and manager): either path is laser0.
         val failed = coordinator.failedActions.single()
         assertTrue(failed.action.startsWith("reset /") && failed.action.endsWith("/laser0.rtc"), failed.action)
-        assertEquals(FailedAction(failed.action, "reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)", bestEffort = true), failed)
+        assertEquals(FailedAction(failed.action, "reset failed: RTC_ERROR (in context 0; still ERROR at its 1000 ms deadline)", bestEffort = true), failed)
         assertEquals(0, coordinator.failures, log.joinToString("\n"))
     }
 
