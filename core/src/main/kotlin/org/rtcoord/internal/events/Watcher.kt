@@ -88,10 +88,11 @@ internal class Watcher(private val core: TreeCore) {
                     }
                 }
                 is DirectoryNode -> synchronized(watched) { watched.add(node.path) }.takeIf { it }?.let {
+                    var failure: RtcException? = null
                     val children = try {
                         node.children()
                     } catch (e: RtcException) {
-                        outages.listingFailed(node, e, options.pollPeriod)
+                        failure = e
                         emptyList()
                     }
                     // Managers listed first, down to their slaves: a component that dies before the walk
@@ -101,6 +102,8 @@ internal class Watcher(private val core: TreeCore) {
                     val monitor = synchronized(listings) { listings.getOrPut(node.path) { ListingMonitor(core, node) } }
                     monitor.add(registration)
                     synchronized(releases) { releases += { release(node, monitor, registration) } }
+                    // Said once this registration is there to hear it: a name server found down at once is reported to it.
+                    failure?.let { outages.listingFailed(node, it, options.pollPeriod) }
                     // Components in naming contexts first, so a monitor's paths are the ones users know.
                     children.sortedBy { it is ManagerNode }.forEach { include(it) }
                 }
