@@ -31,6 +31,14 @@ public class ComponentSnapshot(
     /** The execution context with [handle], or null. */
     public fun context(handle: Int): ContextSnapshot? = contexts.firstOrNull { it.handle == handle }
 
+    /**
+     * Whether it offers FSM4RTC's `ExtendedFsmService` (in `sdo.service.provider.available_services`), as an
+     * FSM component of OpenRTM-aist 2.0 does when the service's module is loaded; see [SystemSnapshot]'s
+     * [ComponentEntry.fsm] for its state.
+     */
+    public val offersFsmService: Boolean
+        get() = properties["sdo.service.provider.available_services"].orEmpty().split(',').any { it.trim() == FsmStatus.SERVICE_ID }
+
     /** The port named [name] (without the instance prefix), or null. */
     public fun port(name: String): PortSnapshot? = ports.firstOrNull { it.name == name }
 

@@ -127,7 +127,8 @@ public class Port internal constructor(
         val data = snapshots.map { it.kind == PortKind.DATA_IN || it.kind == PortKind.DATA_OUT }
         if (data.distinct().size > 1) throw BadParameterException(subject, "connect", "cannot connect a data port to a service port")
         if (!data.first()) return
-        val types = snapshots.mapNotNull { it.dataType }.distinct()
+        // A port of type "any" takes every type: OpenRTM-aist's EventInPort, an FSM's event port, is one.
+        val types = snapshots.mapNotNull { it.dataType }.filterNot { it.equals("any", ignoreCase = true) }.distinct()
         if (types.size > 1) {
             throw BadParameterException(subject, "connect", "incompatible data types: " + ports.zip(snapshots).joinToString { (port, s) -> "${port.path} carries ${s.dataType}" })
         }

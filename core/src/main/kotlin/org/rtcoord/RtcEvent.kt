@@ -50,6 +50,16 @@ public class ComponentFinalized(override val source: ComponentNode) : RtcEvent()
     override fun fields(): ValueFields = ValueFields("ComponentFinalized", "source" to source)
 }
 
+/**
+ * An FSM component's state machine entered state [new], as its FSM4RTC observer told it (StaticFSM's
+ * `<state> POST_ONENTRY`); [old] is the state it entered before, null when none was told since the tree
+ * began watching. A transition into a nested state enters each state on the way down, in order
+ * (`Operational`, then `Idle`), with one event each; leaving a state is no event.
+ */
+public class FsmStateChanged(override val source: ComponentNode, public val old: String?, public val new: String) : RtcEvent() {
+    override fun fields(): ValueFields = ValueFields("FsmStateChanged", "source" to source, "old" to old, "new" to new)
+}
+
 /** Port [port] of the component got connection [connector]. */
 public class PortConnected(override val source: ComponentNode, public val port: String, public val connector: ConnectorSnapshot) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("PortConnected", "source" to source, "port" to port, "connector" to connector)

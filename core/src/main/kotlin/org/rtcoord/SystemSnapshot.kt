@@ -41,6 +41,12 @@ public class ComponentEntry internal constructor(
     public val alive: Boolean,
     /** How the tree watches it; null when nobody watches it. */
     public val watchMethod: WatchMethod?,
+    /**
+     * Its FSM's state as its events last told it, or why that is not known; null for a component not known
+     * to have an FSM: one that neither offers FSM4RTC's `ExtendedFsmService` nor told an FSM state, or
+     * whose profile was never read.
+     */
+    public val fsm: FsmStatus?,
 ) {
     /** Its canonical path. */
     public val path: RtcPath get() = node.path

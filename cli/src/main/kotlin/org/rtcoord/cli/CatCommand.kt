@@ -46,7 +46,7 @@ class CatCommand : TreeCommand("cat") {
             return Report({ port.lines(long, "") }, { port.toJson() + ("path" to path.toString()) })
         }
         return when (val node = node(text)) {
-            is ComponentNode -> ComponentReport.read(node, withConfiguration = long).let { Report({ it.lines(long) }, it::toJson) }
+            is ComponentNode -> ComponentReport.read(tree, node, withConfiguration = long).let { Report({ it.lines(long) }, it::toJson) }
             is ManagerNode -> ManagerReport.read(node).let { Report({ it.lines(long) }, it::toJson) }
             is ZombieNode -> throw node.cause
             else -> throw WrongKindException(node.path.toString(), "component, port or manager", node.kind.label)

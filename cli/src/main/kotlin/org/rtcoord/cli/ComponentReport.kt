@@ -7,7 +7,9 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.Composition
 import org.rtcoord.ConfigurationSnapshot
+import org.rtcoord.FsmStatus
 import org.rtcoord.RtcPath
+import org.rtcoord.RtcTree
 
 /**
  * What `cat` shows of a component: profile with its place in composites, execution contexts, ports
@@ -20,6 +22,7 @@ internal class ComponentReport private constructor(
     private val composition: Composition,
     private val ports: List<PortReport>,
     private val configuration: ConfigurationSnapshot?,
+    private val fsm: FsmStatus?,
 ) {
     /** The report as text; [long] adds properties, connector details and configuration sets. */
     fun lines(long: Boolean): List<String> = buildList {
@@ -33,7 +36,8 @@ internal class ComponentReport private constructor(
                     listOf("Vendor", snapshot.vendor),
                     listOf("Category", snapshot.category),
                     listOf("Description", snapshot.description),
-                ) + listOfNotNull(snapshot.parent?.let { listOf("Parent", it) }) + listOf(listOf("Type", typeLabel)),
+                ) + listOfNotNull(snapshot.parent?.let { listOf("Parent", it) }) + listOf(listOf("Type", typeLabel)) +
+                    listOfNotNull(fsm?.let { listOf("FSM state", it.text()) }),
                 "  ",
             ),
         )
@@ -80,6 +84,7 @@ internal class ComponentReport private constructor(
         put("parent", snapshot.parent)
         put("type", typeLabel)
         put("state", snapshot.overallState.name)
+        fsm?.let { put("fsm", fsm.toJson()) }
         put("properties", snapshot.properties.toSortedMap())
         put(
             "contexts",
@@ -105,14 +110,15 @@ internal class ComponentReport private constructor(
         get() = (if (composition.isComposite) "Composite" else "Monolithic") + if (composition.isMember) " composite member" else ""
 
     companion object {
-        /** Reads [component] now; its configuration too when [withConfiguration]. */
-        suspend fun read(component: ComponentNode, withConfiguration: Boolean): ComponentReport = coroutineScope {
+        /** Reads [component] now, with its FSM's state as [tree]'s model holds it; its configuration too when [withConfiguration]. */
+        suspend fun read(tree: RtcTree, component: ComponentNode, withConfiguration: Boolean): ComponentReport = coroutineScope {
             val composition = async { component.composition() }
             component.refresh()
             val snapshot = component.snapshot()
             val configuration = if (withConfiguration) async { component.configuration() } else null
             val ports = snapshot.ports.map { port -> async { PortReport.read(component.port(port.name)) } }
-            ComponentReport(component.path, snapshot, composition.await(), ports.awaitAll(), configuration?.await())
+            val fsm = tree.snapshot().component(component)?.fsm
+            ComponentReport(component.path, snapshot, composition.await(), ports.awaitAll(), configuration?.await(), fsm)
         }
     }
 }

@@ -9,6 +9,7 @@ import org.rtcoord.ConfigurationSetRemoved
 import org.rtcoord.ContextAttachmentChanged
 import org.rtcoord.ContextRateChanged
 import org.rtcoord.ContextRunningChanged
+import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerComponentChanged
@@ -49,6 +50,7 @@ internal fun RtcEvent.toJson(): Map<String, Any?> = presentJson(noticedAt, path,
 internal fun RtcEvent.what(): String = when (this) {
     is StateChanged -> "state in context $handle: $old -> $new"
     is ComponentFinalized -> "finalized"
+    is FsmStateChanged -> "FSM state: ${old ?: "(not told)"} -> $new"
     is PortConnected -> "port $port connected (connector ${connector.name}, id ${connector.id})"
     is PortDisconnected -> "port $port disconnected (connector ${connector.name}, id ${connector.id})"
     is PortTraffic -> "port $port ${if (outgoing) "sent" else "received"} data"
@@ -90,6 +92,7 @@ internal fun WatchMethod.text(): String = when (this) {
 private fun RtcEvent.fields(): Map<String, Any?> = when (this) {
     is StateChanged -> mapOf("handle" to handle, "old" to old.name, "new" to new.name)
     is ComponentFinalized -> emptyMap()
+    is FsmStateChanged -> mapOf("old" to old, "new" to new)
     is PortConnected -> mapOf("port" to port, "connector" to connector.id, "connectorName" to connector.name)
     is PortDisconnected -> mapOf("port" to port, "connector" to connector.id, "connectorName" to connector.name)
     is PortTraffic -> mapOf("port" to port, "outgoing" to outgoing)

@@ -45,6 +45,18 @@ class CatCommandTest {
     }
 
     @Test
+    fun `an FSM component's state is said unknown by a tree that does not watch it, and why`() {
+        rtSystem(localisation.naming.corbaloc) { component(Scenarios.microwave) }.use {
+            val path = localisation.path("Microwave0.rtc")
+            val shown = runRtcoord("cat", path).ok()
+            assertTrue("  FSM state      unknown (not watched: OpenRTM-aist tells the state only to FSM4RTC observers, as it changes)\n" in shown, shown)
+            val json = runRtcoord("--json", "cat", path).ok()
+            assertTrue("\"fsm\": {" in json && "\"state\": null" in json, json)
+            assertTrue("FSM state" !in runRtcoord("cat", localisation.path("laser0.rtc")).ok(), "a component without an FSM has no such line")
+        }
+    }
+
+    @Test
     fun `-l adds configuration sets, the active one marked, hidden ones left out`() {
         val shown = runRtcoord("cat", "-l", localisation.path("laser_localise0.rtc")).ok()
         assertTrue(shown.endsWith("  Configuration\n    * default\n        fail  0\n        gain  1.0\n      precise\n        fail  0\n        gain  0.5\n"), shown)

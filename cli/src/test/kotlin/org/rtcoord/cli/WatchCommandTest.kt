@@ -148,6 +148,17 @@ class WatchCommandTest {
     }
 
     @Test
+    fun `an FSM component's machine is a line per state it enters`() {
+        val microwave = localisation.system.runtime.create(Scenarios.microwave, "Microwave0")
+        val watching = CompletableFuture.supplyAsync { runRtcoord("watch", localisation.path("Microwave0.rtc"), "--for", "3s") }
+        await("watch's observer attached") { microwave.observerIds.isNotEmpty() }
+        microwave.fsmEvent("minute")
+        microwave.fsmEvent("start")
+        val printed = watching.get().ok()
+        assertTrue(Regex("""/Microwave0\.rtc FSM state: \(not told\) -> Programmed\n.*/Microwave0\.rtc FSM state: Programmed -> Cooking\n""").containsMatchIn(printed), printed)
+    }
+
+    @Test
     fun `durations must be positive and well formed`() {
         runRtcoord("watch", gyro, "--for", "soon").usageError()
         runRtcoord("watch", gyro, "--poll", "0s").usageError()

@@ -5,6 +5,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.ContextRateChanged
+import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerComponentChanged
@@ -86,6 +87,9 @@ internal object EventPatterns {
         "$target is in or enters $state", Target.Component(target), StateChanged::class.java,
         current = { node -> (node as? ComponentNode)?.state()?.takeIf { it == state }?.let { StateChanged(node, 0, it, it) } },
     ) { it.new == state }
+
+    fun fsmState(target: ComponentRef, state: String) =
+        EventPattern("$target's FSM enters $state", Target.Component(target), FsmStateChanged::class.java) { it.new == state }
 
     fun stateChanged(target: ComponentRef) = EventPattern("$target changes state", Target.Component(target), StateChanged::class.java) { true }
 

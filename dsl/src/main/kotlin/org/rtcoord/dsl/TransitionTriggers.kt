@@ -8,6 +8,9 @@ public class ComponentTransitions internal constructor(private val mode: ModeBui
     /** When the component enters [state] (in any execution context). */
     public fun state(state: LifeCycle): TransitionTrigger = mode.trigger(EventPatterns.state(target, state))
 
+    /** When its FSM enters [state] (see [ComponentTriggers.fsmState]). */
+    public fun fsmState(state: String): TransitionTrigger = mode.trigger(EventPatterns.fsmState(target, state))
+
     /** On every lifecycle change. */
     public fun stateChanged(): TransitionTrigger = mode.trigger(EventPatterns.stateChanged(target))
 

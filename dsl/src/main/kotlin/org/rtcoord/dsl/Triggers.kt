@@ -2,6 +2,7 @@ package org.rtcoord.dsl
 
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
+import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerDied
@@ -52,6 +53,16 @@ public class ComponentTriggers internal constructor(
      */
     public fun state(state: LifeCycle, includeCurrent: Boolean = false, handler: suspend Reaction.(StateChanged) -> Unit): Unit =
         add(if (includeCurrent) EventPatterns.inState(target, state) else EventPatterns.state(target, state), handler)
+
+    /**
+     * When its FSM (an OpenRTM-aist 2.0 FSM component's, told by its FSM4RTC observer) enters [state]:
+     * `on(component("Microwave0.rtc")).fsmState("Cooking") { ... }`. A transition enters each state on the
+     * way down to its target: from `Disabled`, `close` enters `Operational`, then `Idle` below it, and fires
+     * the rules of both, in that order.
+     * A component whose observer cannot tell its FSM's state never fires it (see
+     * [org.rtcoord.ComponentEntry.fsm] for why).
+     */
+    public fun fsmState(state: String, handler: suspend Reaction.(FsmStateChanged) -> Unit): Unit = add(EventPatterns.fsmState(target, state), handler)
 
     /** On every lifecycle change. */
     public fun stateChanged(handler: suspend Reaction.(StateChanged) -> Unit): Unit = add(EventPatterns.stateChanged(target), handler)

@@ -74,6 +74,22 @@ class CoordinatorTest : CoordinatedSystem() {
     }
 
     @Test
+    fun `fsmState rules fire as the FSM enters each state, nested ones after the state holding them`(): Unit = runBlocking {
+        val microwave = system.runtime.create(Scenarios.microwave, "Microwave0")
+        val fired = Collections.synchronizedList(mutableListOf<String>())
+        coordinator {
+            on(component("Microwave0")).fsmState("Operational") { fired += "Operational after ${it.old}" }
+            on(component("Microwave0")).fsmState("Idle") { fired += "Idle after ${it.old}" }
+        }.use { coordinator ->
+            coordinator.start()
+            microwave.fsmEvent("open")
+            microwave.fsmEvent("close")
+            await("both rules") { fired.size == 2 }
+            assertEquals(listOf("Operational after Disabled", "Idle after Operational"), fired)
+        }
+    }
+
+    @Test
     fun `guards narrow a rule`(): Unit = runBlocking {
         val fired = Collections.synchronizedList(mutableListOf<String>())
         val guarded = AtomicInteger()

@@ -102,6 +102,11 @@ class OpenRtmPythonSystem private constructor(private val python: String) : Auto
             .start()
     }
 
+    /** The installed `OpenRTM_aist` package's directory, which holds its examples and extension modules. */
+    private val installation: Path by lazy {
+        Paths.get(ProcessBuilder(python, "-c", "import os, OpenRTM_aist; print(os.path.dirname(OpenRTM_aist.__file__))").start().inputStream.bufferedReader().readText().trim())
+    }
+
     /**
      * Starts OpenRTM-aist's own ConfigSample (with its `configsample.conf`: sets `mode0` and `mode1` hold
      * values outside its `__constraints__`) and SeqIO's `SequenceOutComponent` (its `on_execute` sleeps
@@ -109,28 +114,61 @@ class OpenRtmPythonSystem private constructor(private val python: String) : Auto
      * master; returns once both are in naming.
      */
     fun startOpenRtmExamples() {
-        val examples = Paths.get(
-            ProcessBuilder(python, "-c", "import os, OpenRTM_aist; print(os.path.dirname(OpenRTM_aist.__file__))").start().inputStream.bufferedReader().readText().trim(),
+        val examples = installation.resolve("examples")
+        standalone(
             "examples",
-        )
-        val loose = ServerSocket(0, 1, InetAddress.getLoopbackAddress()).use { it.localPort }
-        managers += manager(
-            "examples",
-            directory,
-            // A master nobody listens at: this manager stays on its own, so the master never hands it a creation.
-            "corba.master_manager: 127.0.0.1:$loose",
-            "manager.is_master: NO",
-            "manager.modules.load_path: ${examples.resolve("ConfigSample")}, ${examples.resolve("SeqIO")}",
-            "manager.modules.preload: ConfigSample.py, SeqOut.py",
-            "manager.components.precreate: ConfigSample, SeqOut",
+            listOf(examples.resolve("ConfigSample"), examples.resolve("SeqIO")),
+            listOf("ConfigSample", "SeqOut"),
+            listOf("ConfigSample", "SeqOut"),
+            listOf("ConfigSample0", "SequenceOutComponent0"),
             "example.ConfigSample.config_file: ${examples.resolve("ConfigSample/configsample.conf")}",
         )
+    }
+
+    /**
+     * Starts OpenRTM-aist's StaticFsm `Microwave` from the installation's examples and `fsm_buttons` (from
+     * `examples/openrtm-python`, the example's Inputbutton pressed through configuration), inactive and
+     * unconnected, in a manager of their own that loads the FSM4RTC observer (`ext/fsm4rtc_observer`)
+     * beside the OpenRTM one every Python manager has, and the `ExtendedFsmService` provider
+     * (`ext/extended_fsm`); returns once both are in naming.
+     */
+    fun startMicrowave() {
+        val ext = installation.resolve("ext")
+        standalone(
+            "fsm",
+            listOf(ext.resolve("fsm4rtc_observer"), ext.resolve("extended_fsm"), installation.resolve("examples/StaticFsm"), components.toAbsolutePath()),
+            listOf("ComponentObserverConsumer", "ExtendedFsmServiceProvider", "Microwave", "fsm_buttons"),
+            listOf("Microwave", "fsm_buttons"),
+            listOf("Microwave0", "fsm_buttons0"),
+        )
+    }
+
+    /**
+     * Starts the manager [role], loading [modules] (`.py` files) from [loadPath] and creating [precreate], as
+     * a manager of its own: it knows a master nobody listens at, so the test's master never hands it a
+     * creation. Returns once [instances] are in naming.
+     */
+    private fun standalone(role: String, loadPath: List<Path>, modules: List<String>, precreate: List<String>, instances: List<String>, vararg lines: String) {
+        val loose = ServerSocket(0, 1, InetAddress.getLoopbackAddress()).use { it.localPort }
+        managers += manager(
+            role,
+            directory,
+            "corba.master_manager: 127.0.0.1:$loose",
+            "manager.is_master: NO",
+            "manager.modules.load_path: ${loadPath.joinToString()}",
+            "manager.modules.preload: ${modules.joinToString { "$it.py" }}",
+            "manager.components.precreate: ${precreate.joinToString()}",
+            *lines,
+        )
         runBlocking {
-            awaitValue("ConfigSample0 and SequenceOutComponent0 in naming", 30.seconds) {
-                runBlocking { runCatching { witness.refresh(); witness.componentNamed("ConfigSample0.rtc"); witness.componentNamed("SequenceOutComponent0.rtc") }.getOrNull() }
+            awaitValue("${instances.joinToString(" and ")} in naming", 30.seconds) {
+                runBlocking { runCatching { witness.refresh(); instances.forEach { witness.componentNamed("$it.rtc") } }.getOrNull() }
             }
         }
     }
+
+    /** What the manager [role] (`fsm`, `examples`, ...) and its components printed so far. */
+    fun output(role: String): String = Files.readString(directory.resolve("$role.out"))
 
     /** Kills the slave manager hosting the components with SIGKILL: their bindings stay behind. */
     fun killSlave() {

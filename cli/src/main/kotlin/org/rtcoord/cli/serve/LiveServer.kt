@@ -69,7 +69,7 @@ internal class LiveServer(
                         call.respondText("no component at ${path ?: "(no path given)"}", status = HttpStatusCode.NotFound)
                     } else {
                         val report = try {
-                            ComponentReport.read(component, withConfiguration = true).toJson()
+                            ComponentReport.read(tree, component, withConfiguration = true).toJson()
                         } catch (e: RtcException) {
                             mapOf("path" to path, "error" to (e.message ?: e.reason))
                         }

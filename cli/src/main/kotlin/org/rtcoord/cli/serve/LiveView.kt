@@ -22,6 +22,7 @@ import org.rtcoord.ContextAttachmentChanged
 import org.rtcoord.ContextRateChanged
 import org.rtcoord.ContextRunningChanged
 import org.rtcoord.EventOptions
+import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
@@ -123,7 +124,8 @@ internal class LiveView(
                 "noticedAt" to event.noticedAt,
             ),
         )
-        if (event !is StateChanged) reshaped.trySend(Unit)
+        // The page applies state changes itself; anything else may change what is drawn.
+        if (event !is StateChanged && event !is FsmStateChanged) reshaped.trySend(Unit)
     }
 
     private fun record(entry: Map<String, Any?>) {
@@ -165,12 +167,12 @@ internal class LiveView(
     }
 
     private companion object {
-        /** [network] with each component's state as [model] holds it, and [model]'s sequence. */
+        /** [network] with each component's state and FSM state as [model] holds them, and [model]'s sequence. */
         @Suppress("UNCHECKED_CAST")
         fun withStates(network: Map<String, Any?>, model: SystemSnapshot): Map<String, Any?> {
-            val states = model.components.flatMap { entry -> entry.paths.map { it.toString() to entry.overallState.name } }.toMap()
+            val entries = model.components.flatMap { entry -> entry.paths.map { it.toString() to entry } }.toMap()
             val components = (network["components"] as? List<Map<String, Any?>>).orEmpty().map { component ->
-                states[component["id"]]?.let { component + ("state" to it) } ?: component
+                entries[component["id"]]?.let { component + mapOf("state" to it.overallState.name, "fsm" to it.fsm?.toJson()) } ?: component
             }
             return network + mapOf("components" to components, "sequence" to model.sequence)
         }
@@ -181,7 +183,7 @@ internal class LiveView(
 
         /** The timeline's filter groups: state, port, configuration, liveness, manager, structure. */
         fun kindOf(event: RtcEvent): String = when (event) {
-            is StateChanged, is ContextRunningChanged, is ContextRateChanged, is ContextAttachmentChanged, is ComponentFinalized -> "state"
+            is StateChanged, is ContextRunningChanged, is ContextRateChanged, is ContextAttachmentChanged, is ComponentFinalized, is FsmStateChanged -> "state"
             is PortConnected, is PortDisconnected, is PortTraffic -> "port"
             is ParameterChanged, is ConfigurationSetActivated, is ConfigurationSetAdded, is ConfigurationSetRemoved -> "configuration"
             is HeartbeatLost, is BecameZombie, is Recovered, is WatchMethodChanged -> "liveness"

@@ -7,6 +7,7 @@ import org.rtcoord.Node
 import org.rtcoord.SystemSnapshot
 import org.rtcoord.ZombieNode
 import org.rtcoord.cli.ComponentNetwork
+import org.rtcoord.cli.toJson
 
 /**
  * The system below [top] as the page draws it, from what the tree holds: naming contexts and name
@@ -35,6 +36,7 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
                 // As the tree's events tell it: a read may run ahead of them (a deactivation held).
                 "state" to (model.component(component)?.overallState ?: snapshot.overallState).name,
                 "hostedBy" to managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
+                "fsm" to model.component(component)?.fsm?.toJson(),
             )
         }
         val known = components.map { it["id"] }.toSet()

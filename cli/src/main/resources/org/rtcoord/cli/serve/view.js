@@ -85,7 +85,7 @@ function elementsOf(network) {
     data: { id: c.id, label: c.name + (c.reachable ? '' : ' (unreachable)'), parent: parentOf(c.parent) } }));
   network.managers.forEach(m => nodes.push({ group: 'nodes', classes: 'manager', data: { id: m.id, label: m.name, parent: parentOf(m.parent) } }));
   network.components.forEach(c => nodes.push({ group: 'nodes', classes: 'component',
-    data: { id: c.id, label: c.name, state: c.state, parent: parentOf(c.parent) } }));
+    data: { id: c.id, label: componentLabel(c.name, c.fsm), state: c.state, parent: parentOf(c.parent) } }));
   network.zombies.forEach(z => nodes.push({ group: 'nodes', classes: 'component zombie',
     data: { id: z.id, label: z.name + ' (zombie)', state: 'ZOMBIE', parent: parentOf(z.parent) } }));
   network.external.forEach(x => nodes.push({ group: 'nodes', classes: 'external', data: { id: x.id, label: x.name } }));
@@ -161,6 +161,21 @@ function listComponents() {
   const items = [...view.components.values()].sort((a, b) => a.id.localeCompare(b.id)).map(c =>
     element('li', { 'data-component': c.id, 'data-state': c.state, title: c.id }, stateBadge(c.state), ' ', c.name));
   list.replaceChildren(...items);
+}
+
+/** A component's label: its name, and its FSM's state when known. */
+function componentLabel(name, fsm) {
+  return fsm && fsm.state ? name + ' [' + fsm.state + ']' : name;
+}
+
+/** An FSM state the tree noticed, shown at once as the component's label says it. */
+function applyFsmState(path, state) {
+  const component = view.components.get(path);
+  if (!component) return;
+  component.fsm = { state, unknownBecause: null };
+  const node = cy.getElementById(path);
+  if (!node.empty()) node.data('label', componentLabel(component.name, component.fsm));
+  if (view.selected === path) showDetails(path);
 }
 
 /** A state the tree noticed, shown at once: the next network read agrees with it. */
@@ -252,7 +267,7 @@ async function showDetails(path) {
     parts.push(element('p', { class: 'error' }, report.error));
   } else {
     parts.push(rows([['type', report.typeName], ['version', report.version], ['vendor', report.vendor], ['category', report.category],
-      ['description', report.description]]));
+      ['description', report.description]].concat(report.fsm ? [['FSM state', report.fsm.state || 'unknown (' + report.fsm.unknownBecause + ')']] : [])));
     if (view.operable) {
       parts.push(element('div', {}, ...['activate', 'deactivate', 'reset'].map(action => {
         const button = element('button', { 'data-action': action }, action);
@@ -317,6 +332,7 @@ function connect() {
     const entry = JSON.parse(message.data);
     const news = !entry.sequence || entry.sequence > view.since;
     if (news && entry.event === 'StateChanged' && STATES.includes(entry.new)) applyState(entry.source, entry.new, entry.noticedAt);
+    if (news && entry.event === 'FsmStateChanged') applyFsmState(entry.source, entry.new);
     if (entry.event === 'BecameZombie') cy.getElementById(entry.source).addClass('zombie');
     if (entry.event === 'Recovered') cy.getElementById(entry.source).removeClass('zombie');
     addToTimeline([entry], false);

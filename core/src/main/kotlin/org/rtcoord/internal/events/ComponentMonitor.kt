@@ -10,6 +10,7 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentNode
+import org.rtcoord.FsmStateChanged
 import org.rtcoord.LifeCycle
 import org.rtcoord.PortTraffic
 import org.rtcoord.RtcEvent
@@ -45,6 +46,9 @@ internal class ComponentMonitor(
     private val subject = node.path.toString()
     private val registrations = MonitorRegistrations()
     private val work = Channel<Work>(Channel.UNLIMITED)
+
+    /** The state its FSM last entered, as told since the observer was attached; forgotten at each attachment. */
+    @Volatile private var fsmState: String? = null
 
     /** How the component is watched, once decided; set through [Watcher.announce]. */
     @Volatile var method: WatchMethod? = null
@@ -242,6 +246,7 @@ internal class ComponentMonitor(
             attachment = if (watch.answers == ComponentLiveness.State.UNREACHABLE) {
                 Attachment.Failed("it does not answer")
             } else {
+                fsmState = null
                 val advertised = watch.last?.properties?.get("sdo.service.consumer.available_services")
                 link.attach(advertised, push.options.heartbeat, registrations.trafficInterval(), ::received).also {
                     if (it is Attachment.Attached) {
@@ -275,6 +280,13 @@ internal class ComponentMonitor(
             hint.isHeartbeat -> timers.heard()
             traffic != null -> timers.heard().also {
                 core.model.publish(listOf(PortTraffic(node, traffic.first, traffic.second))) { event -> registrations.filter { it.traffic }.forEach { it.sink.offer(event) } }
+            }
+            // The machine's state is told by hints alone (nothing reads it back), in order: one thread takes them.
+            hint.kind == HintKind.FSM_STATUS -> timers.heard().also {
+                val entered = hint.fsmEntered() ?: return
+                val event = FsmStateChanged(node, fsmState, entered)
+                fsmState = entered
+                core.model.publish(listOf(event)) { registrations.forEach { registration -> registration.sink.offer(it) } }
             }
             else -> work.trySend(Work(WatchInput.Hinted(hint)))
         }

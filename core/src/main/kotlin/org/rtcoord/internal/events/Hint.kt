@@ -3,7 +3,7 @@ package org.rtcoord.internal.events
 import org.rtcoord.LifeCycle
 
 /** What a ComponentObserver hint is about, whichever flavour sent it. */
-internal enum class HintKind { PROFILE, RTC_STATUS, EC_STATUS, PORT_PROFILE, CONFIGURATION, HEARTBEAT, EC_HEARTBEAT, OTHER }
+internal enum class HintKind { PROFILE, RTC_STATUS, EC_STATUS, PORT_PROFILE, CONFIGURATION, HEARTBEAT, EC_HEARTBEAT, FSM_STATUS, OTHER }
 
 /** One `update_status` call as received. */
 internal class Hint(val kind: HintKind, val text: String) {
@@ -41,6 +41,16 @@ internal class Hint(val kind: HintKind, val text: String) {
         return port to outgoing
     }
 
+    /**
+     * For FSM_STATUS: the state an FSM component entered, from StaticFSM's `<state> POST_ONENTRY` (sent
+     * once the state's entry action ran); null for any other hint, the other actions of a transition too.
+     */
+    fun fsmEntered(): String? {
+        if (kind != HintKind.FSM_STATUS) return null
+        val words = text.trim().split(' ').filter { it.isNotEmpty() }
+        return words.takeIf { it.size == 2 && it[1].equals("POST_ONENTRY", ignoreCase = true) }?.first()
+    }
+
     /** Whether it is OpenRTM's `FINALIZE:0`, sent when the component exits. */
     val isFinalize: Boolean get() = kind == HintKind.RTC_STATUS && parts()?.first == "FINALIZE"
 
@@ -58,7 +68,7 @@ internal class Hint(val kind: HintKind, val text: String) {
         private val OPENRTM = listOf(HintKind.PROFILE, HintKind.RTC_STATUS, HintKind.EC_STATUS, HintKind.PORT_PROFILE, HintKind.CONFIGURATION, HintKind.HEARTBEAT)
         private val OMG = listOf(
             HintKind.PROFILE, HintKind.RTC_STATUS, HintKind.EC_STATUS, HintKind.PORT_PROFILE, HintKind.CONFIGURATION,
-            HintKind.HEARTBEAT, HintKind.EC_HEARTBEAT,
+            HintKind.HEARTBEAT, HintKind.EC_HEARTBEAT, HintKind.OTHER, HintKind.FSM_STATUS,
         )
 
         fun openRtm(kind: OpenRTM.StatusKind, text: String?) = Hint(OPENRTM.getOrElse(kind.value()) { HintKind.OTHER }, text.orEmpty())

@@ -39,6 +39,10 @@ internal class ObserverLink(
      */
     suspend fun attach(advertised: String?, heartbeat: Duration, traffic: Duration, receive: (Hint) -> Unit): Attachment {
         val offered = advertised?.split(',')?.map { it.trim() }?.filter { it.isNotEmpty() }
+        // The OpenRTM flavour first, even for an FSM component, whose FSM_STATUS only the FSM4RTC one
+        // carries: attached where both are offered, that one breaks OpenRTM-aist-Python 2.1's FSM at its
+        // first transition (its post-action listeners take one argument and are called with two) and
+        // crashes C++ 2.0.2's rtcd2 built with both (the library and the module define one class twice).
         val flavours = ObserverFlavour.values().filter { offered == null || it.repositoryId in offered }
         if (flavours.isEmpty()) return Attachment.NotOffered(offered.orEmpty())
         val configuration = try {

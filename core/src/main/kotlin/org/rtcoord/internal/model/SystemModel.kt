@@ -5,11 +5,14 @@ import org.rtcoord.ComponentEntry
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
+import org.rtcoord.FsmStateChanged
+import org.rtcoord.FsmStatus
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerNode
 import org.rtcoord.ManagerReturned
 import org.rtcoord.NameServerEntry
+import org.rtcoord.ObserverFlavour
 import org.rtcoord.NameServerLost
 import org.rtcoord.NameServerNode
 import org.rtcoord.NameServerReturned
@@ -42,6 +45,8 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
     private val states = HashMap<ComponentObject, Map<Int, LifeCycle>>()
     private val dead = HashSet<ComponentObject>()
     private val methods = HashMap<ComponentObject, WatchMethod>()
+    /** Each watched FSM component's state as its last [FsmStateChanged] told it. */
+    private val fsmStates = HashMap<ComponentObject, String>()
     private val outages = HashMap<RtcPath, Outage>()
     private val deadManagers = LinkedHashMap<RtcPath, ManagerNode>()
 
@@ -65,6 +70,7 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
         synchronized(this) {
             states.remove(component)
             methods.remove(component)
+            fsmStates.remove(component)
         }
     }
 
@@ -84,7 +90,10 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
         walk(root)
         val components = found.map { (component, node) ->
             val told = states[component] ?: node.snapshots.value?.contexts?.associate { it.handle to it.state }.orEmpty()
-            ComponentEntry(node.canonical, told, alive = component !in dead, watchMethod = methods[component])
+            val method = methods[component]
+            val fsm = fsmStates[component]?.let { FsmStatus(it, null) }
+                ?: FsmStatus.unknown(method).takeIf { node.snapshots.value?.offersFsmService == true }
+            ComponentEntry(node.canonical, told, alive = component !in dead, watchMethod = method, fsm = fsm)
         }
         val servers = nameServers().map { server -> outages[server.path].let { NameServerEntry(server, it?.since, it?.cause) } }
         SystemSnapshot(sequence, components, servers, deadManagers.values.toList())
@@ -96,7 +105,12 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
             is BecameZombie -> dead += event.source.component
             is ComponentFinalized -> dead += event.source.component
             is Recovered -> dead -= event.source.component
-            is WatchMethodChanged -> methods[event.source.component] = event.new
+            is WatchMethodChanged -> {
+                methods[event.source.component] = event.new
+                // Only an FSM4RTC observer hears the machine: watched otherwise, its state is no longer known.
+                if ((event.new as? WatchMethod.Pushed)?.flavour != ObserverFlavour.OMG) fsmStates.remove(event.source.component)
+            }
+            is FsmStateChanged -> fsmStates[event.source.component] = event.new
             is ManagerDied -> deadManagers[event.source.path] = event.source
             is ManagerReturned -> deadManagers.remove(event.source.path)
             is NameServerLost -> outages[event.source.path] = Outage(event.noticedAt, event.cause)
