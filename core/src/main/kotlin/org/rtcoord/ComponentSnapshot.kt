@@ -21,7 +21,7 @@ public class ComponentSnapshot(
     public val contexts: List<ContextSnapshot>,
     /** Null until the configuration was first read; kept up to date by every refresh after that. */
     public val configuration: ConfigurationSnapshot?,
-) {
+) : ValueObject() {
     /** The state in the execution context with handle 0 (the first owned one), as tools show it. */
     public val state: LifeCycle get() = context(0)?.state ?: contexts.firstOrNull()?.state ?: LifeCycle.UNKNOWN
 
@@ -46,10 +46,7 @@ public class ComponentSnapshot(
     internal fun copy(contexts: List<ContextSnapshot> = this.contexts, configuration: ConfigurationSnapshot? = this.configuration): ComponentSnapshot =
         ComponentSnapshot(instanceName, typeName, description, version, vendor, category, parent, properties, ports, contexts, configuration)
 
-    private fun fields() = ValueFields("ComponentSnapshot", "instanceName" to instanceName, "typeName" to typeName, "description" to description, "version" to version, "vendor" to vendor, "category" to category, "parent" to parent, "properties" to properties, "ports" to ports, "contexts" to contexts, "configuration" to configuration)
-    override fun equals(other: Any?): Boolean = other is ComponentSnapshot && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+    override fun fields(): ValueFields = ValueFields("instanceName" to instanceName, "typeName" to typeName, "description" to description, "version" to version, "vendor" to vendor, "category" to category, "parent" to parent, "properties" to properties, "ports" to ports, "contexts" to contexts, "configuration" to configuration)
 }
 
 /** The kind of a port, from its `port.port_type` property. */
@@ -68,22 +65,16 @@ public class PortSnapshot(
     public val interfaces: List<PortInterface>,
     public val properties: Map<String, String>,
     public val connectors: List<ConnectorSnapshot>,
-) {
-    private fun fields() = ValueFields("PortSnapshot", "name" to name, "fullName" to fullName, "kind" to kind, "dataType" to dataType, "interfaces" to interfaces, "properties" to properties, "connectors" to connectors)
-    override fun equals(other: Any?): Boolean = other is PortSnapshot && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("name" to name, "fullName" to fullName, "kind" to kind, "dataType" to dataType, "interfaces" to interfaces, "properties" to properties, "connectors" to connectors)
 }
 
 /** A service interface of a port, from its `PortInterfaceProfile`: [instanceName] of IDL type [typeName]. */
-public class PortInterface(public val instanceName: String, public val typeName: String, public val polarity: Polarity) {
+public class PortInterface(public val instanceName: String, public val typeName: String, public val polarity: Polarity) : ValueObject() {
     /** Whether the port provides the interface (serves it) or requires it (calls one provided elsewhere). */
     public enum class Polarity { PROVIDED, REQUIRED }
 
-    private fun fields() = ValueFields("PortInterface", "instanceName" to instanceName, "typeName" to typeName, "polarity" to polarity)
-    override fun equals(other: Any?): Boolean = other is PortInterface && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+    override fun fields(): ValueFields = ValueFields("instanceName" to instanceName, "typeName" to typeName, "polarity" to polarity)
 }
 
 /** A connection as one of its ports records it; [Port.connections] resolves its ends to tree paths. */
@@ -91,11 +82,8 @@ public class ConnectorSnapshot(
     public val id: String,
     public val name: String,
     public val properties: Map<String, String>,
-) {
-    private fun fields() = ValueFields("ConnectorSnapshot", "id" to id, "name" to name, "properties" to properties)
-    override fun equals(other: Any?): Boolean = other is ConnectorSnapshot && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("id" to id, "name" to name, "properties" to properties)
 }
 
 /** An execution context as seen from one component. */
@@ -116,22 +104,19 @@ public class ContextSnapshot(
      * without a profile.
      */
     public val properties: Map<String, String>,
-) {
+) : ValueObject() {
     /** This context as seen with another [state] (or [handle]). */
     internal fun copy(handle: Int = this.handle, state: LifeCycle = this.state): ContextSnapshot =
         ContextSnapshot(handle, owned, kind, rate, running, state, participants, properties)
 
-    private fun fields() = ValueFields("ContextSnapshot", "handle" to handle, "owned" to owned, "kind" to kind, "rate" to rate, "running" to running, "state" to state, "participants" to participants, "properties" to properties)
-    override fun equals(other: Any?): Boolean = other is ContextSnapshot && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+    override fun fields(): ValueFields = ValueFields("handle" to handle, "owned" to owned, "kind" to kind, "rate" to rate, "running" to running, "state" to state, "participants" to participants, "properties" to properties)
 }
 
 /**
  * Configuration sets by id (hidden `__name__` sets included) and which one is active: null when none is,
  * as OpenRTM-aist leaves a component after a set was written, added or removed until one is activated.
  */
-public class ConfigurationSnapshot(public val sets: Map<String, Map<String, String>>, public val activeSet: String?) {
+public class ConfigurationSnapshot(public val sets: Map<String, Map<String, String>>, public val activeSet: String?) : ValueObject() {
     /** The value of [parameter] in the active set, or null (also when no set is active). */
     public fun value(parameter: String): String? = activeSet?.let { sets[it]?.get(parameter) }
 
@@ -139,8 +124,5 @@ public class ConfigurationSnapshot(public val sets: Map<String, Map<String, Stri
         val NONE = ConfigurationSnapshot(emptyMap(), null)
     }
 
-    private fun fields() = ValueFields("ConfigurationSnapshot", "sets" to sets, "activeSet" to activeSet)
-    override fun equals(other: Any?): Boolean = other is ConfigurationSnapshot && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+    override fun fields(): ValueFields = ValueFields("sets" to sets, "activeSet" to activeSet)
 }

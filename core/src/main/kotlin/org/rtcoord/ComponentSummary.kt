@@ -12,12 +12,8 @@ public class ComponentSummary(
     /** The component's state in each execution context, by its handle for the context (owned ones first). */
     public val states: Map<Int, LifeCycle>,
     public val ports: List<PortSnapshot>,
-) {
-    private fun fields() = ValueFields("ComponentSummary", "states" to states, "ports" to ports)
-    override fun equals(other: Any?): Boolean = other is ComponentSummary && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
-
+) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("states" to states, "ports" to ports)
 
     /**
      * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over

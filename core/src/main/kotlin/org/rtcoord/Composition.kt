@@ -11,9 +11,6 @@ public class Composition(
     public val isComposite: Boolean,
     /** Whether the component belongs to an organisation: it is part of a composite component. */
     public val isMember: Boolean,
-) {
-    private fun fields() = ValueFields("Composition", "isComposite" to isComposite, "isMember" to isMember)
-    override fun equals(other: Any?): Boolean = other is Composition && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("isComposite" to isComposite, "isMember" to isMember)
 }

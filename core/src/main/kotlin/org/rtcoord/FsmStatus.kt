@@ -12,11 +12,8 @@ public class FsmStatus internal constructor(
     public val state: String?,
     /** Why [state] is not known, in words for people; null when it is known. */
     public val unknownBecause: String?,
-) {
-    private fun fields() = ValueFields("FsmStatus", "state" to state, "unknownBecause" to unknownBecause)
-    override fun equals(other: Any?): Boolean = other is FsmStatus && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("state" to state, "unknownBecause" to unknownBecause)
 
     internal companion object {
         /** The repository id of FSM4RTC's `ExtendedFsmService`, which an FSM component offers as an SDO service. */

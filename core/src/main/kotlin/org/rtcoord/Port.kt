@@ -154,17 +154,11 @@ public class Port internal constructor(
 }
 
 /** A connection as read from one of its ports. */
-public class Connection(public val id: String, public val name: String, public val properties: Map<String, String>, public val ports: List<End>) {
+public class Connection(public val id: String, public val name: String, public val properties: Map<String, String>, public val ports: List<End>) : ValueObject() {
     /** One connected port: OpenRTM's name for it and, where the tree knows its component, its path. */
-    public class End(public val fullName: String, public val path: RtcPath?) {
-        private fun fields() = ValueFields("End", "fullName" to fullName, "path" to path)
-        override fun equals(other: Any?): Boolean = other is End && fields() == other.fields()
-        override fun hashCode(): Int = fields().hashCode()
-        override fun toString(): String = fields().toString()
+    public class End(public val fullName: String, public val path: RtcPath?) : ValueObject() {
+        override fun fields(): ValueFields = ValueFields("fullName" to fullName, "path" to path)
     }
 
-    private fun fields() = ValueFields("Connection", "id" to id, "name" to name, "properties" to properties, "ports" to ports)
-    override fun equals(other: Any?): Boolean = other is Connection && fields() == other.fields()
-    override fun hashCode(): Int = fields().hashCode()
-    override fun toString(): String = fields().toString()
+    override fun fields(): ValueFields = ValueFields("id" to id, "name" to name, "properties" to properties, "ports" to ports)
 }

@@ -1,5 +1,6 @@
 package org.rtcoord
 
+import org.rtcoord.internal.ValueFields
 import java.time.Instant
 
 /**
@@ -8,68 +9,98 @@ import java.time.Instant
  * become the classes below, each with the time stamp the writer put in it (`tm`); any other type
  * arrives as [UnknownData]: its type name and the raw bytes.
  */
-public sealed class PortData {
+public sealed class PortData : ValueObject() {
     /** The writer's time stamp (`tm`), null when the type is unknown. */
     public abstract val time: Instant?
 }
 
 /** `RTC::TimedBoolean`. */
-public data class TimedBoolean(override val time: Instant, val data: Boolean) : PortData()
+public class TimedBoolean(override val time: Instant, public val data: Boolean) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedOctet`. */
-public data class TimedOctet(override val time: Instant, val data: Byte) : PortData()
+public class TimedOctet(override val time: Instant, public val data: Byte) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedShort`. */
-public data class TimedShort(override val time: Instant, val data: Short) : PortData()
+public class TimedShort(override val time: Instant, public val data: Short) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedLong` (a 32-bit IDL long). */
-public data class TimedLong(override val time: Instant, val data: Int) : PortData()
+public class TimedLong(override val time: Instant, public val data: Int) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedFloat`. */
-public data class TimedFloat(override val time: Instant, val data: Float) : PortData()
+public class TimedFloat(override val time: Instant, public val data: Float) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedDouble`. */
-public data class TimedDouble(override val time: Instant, val data: Double) : PortData()
+public class TimedDouble(override val time: Instant, public val data: Double) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedString`. */
-public data class TimedString(override val time: Instant, val data: String) : PortData()
+public class TimedString(override val time: Instant, public val data: String) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedLongSeq`. */
-public data class TimedLongSeq(override val time: Instant, val data: List<Int>) : PortData()
+public class TimedLongSeq(override val time: Instant, public val data: List<Int>) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedFloatSeq`. */
-public data class TimedFloatSeq(override val time: Instant, val data: List<Float>) : PortData()
+public class TimedFloatSeq(override val time: Instant, public val data: List<Float>) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedDoubleSeq` (a laser scan's ranges, for instance). */
-public data class TimedDoubleSeq(override val time: Instant, val data: List<Double>) : PortData()
+public class TimedDoubleSeq(override val time: Instant, public val data: List<Double>) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "data" to data)
+}
 
 /** `RTC::TimedPoint2D` of ExtendedDataTypes. */
-public data class TimedPoint2D(override val time: Instant, val x: Double, val y: Double) : PortData()
+public class TimedPoint2D(override val time: Instant, public val x: Double, public val y: Double) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "x" to x, "y" to y)
+}
 
 /** `RTC::TimedPose2D` of ExtendedDataTypes: a position and a [heading] in radians. */
-public data class TimedPose2D(override val time: Instant, val x: Double, val y: Double, val heading: Double) : PortData()
+public class TimedPose2D(override val time: Instant, public val x: Double, public val y: Double, public val heading: Double) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "x" to x, "y" to y, "heading" to heading)
+}
 
 /** `RTC::TimedVelocity2D` of ExtendedDataTypes: velocities along x and y and the angular velocity [va]. */
-public data class TimedVelocity2D(override val time: Instant, val vx: Double, val vy: Double, val va: Double) : PortData()
+public class TimedVelocity2D(override val time: Instant, public val vx: Double, public val vy: Double, public val va: Double) : PortData() {
+    override fun fields(): ValueFields = ValueFields("time" to time, "vx" to vx, "vy" to vy, "va" to va)
+}
 
 /**
  * A sample of a type not decoded here, or one whose bytes did not decode as its type: [typeName] as the
  * port declares it and the [bytes] as they came, in the byte order [littleEndian] says.
  */
 public class UnknownData(public val typeName: String, bytes: ByteArray, public val littleEndian: Boolean) : PortData() {
-    private val raw = bytes.copyOf()
+    private val raw = Bytes(bytes.copyOf())
 
     override val time: Instant? get() = null
 
     /** A copy of the raw CDR bytes. */
-    public val bytes: ByteArray get() = raw.copyOf()
+    public val bytes: ByteArray get() = raw.content.copyOf()
 
-    override fun equals(other: Any?): Boolean =
-        other is UnknownData && other.typeName == typeName && other.littleEndian == littleEndian && other.raw.contentEquals(raw)
+    override fun fields(): ValueFields = ValueFields("typeName" to typeName, "bytes" to raw, "littleEndian" to littleEndian)
 
-    override fun hashCode(): Int = typeName.hashCode() * 31 + raw.contentHashCode()
+    /** Bytes compared by content and shown by their count: a sample can be large. */
+    private class Bytes(val content: ByteArray) {
+        override fun equals(other: Any?): Boolean = other is Bytes && other.content.contentEquals(content)
 
-    override fun toString(): String = "UnknownData($typeName, ${raw.size} bytes)"
+        override fun hashCode(): Int = content.contentHashCode()
+
+        override fun toString(): String = "${content.size} bytes"
+    }
 }
 
 /** Receives a port's samples (see [Port.tap]). */

@@ -12,7 +12,7 @@ import org.rtcoord.internal.ValueFields
  * Events are plain classes, so that they can gain fields without breaking compiled callers (no
  * `componentN`, no `copy`); equal when they are of one type and their constructors took equal values.
  */
-public sealed class RtcEvent {
+public sealed class RtcEvent : ValueObject() {
     /** The node the event is about. */
     public abstract val source: Node
 
@@ -29,25 +29,16 @@ public sealed class RtcEvent {
 
     /** The source's path. */
     public val path: RtcPath get() = source.path
-
-    /** The event's type and what its constructor took: two events are equal when these are. */
-    internal abstract fun fields(): ValueFields
-
-    final override fun equals(other: Any?): Boolean = other is RtcEvent && fields() == other.fields()
-
-    final override fun hashCode(): Int = fields().hashCode()
-
-    final override fun toString(): String = fields().toString()
 }
 
 /** A component's lifecycle state in execution context [handle] went from [old] to [new]. */
 public class StateChanged(override val source: ComponentNode, public val handle: Int, public val old: LifeCycle, public val new: LifeCycle) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("StateChanged", "source" to source, "handle" to handle, "old" to old, "new" to new)
+    override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "old" to old, "new" to new)
 }
 
 /** A component finalised (exited) and is gone. */
 public class ComponentFinalized(override val source: ComponentNode) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ComponentFinalized", "source" to source)
+    override fun fields(): ValueFields = ValueFields("source" to source)
 }
 
 /**
@@ -57,17 +48,17 @@ public class ComponentFinalized(override val source: ComponentNode) : RtcEvent()
  * (`Operational`, then `Idle`), with one event each; leaving a state is no event.
  */
 public class FsmStateChanged(override val source: ComponentNode, public val old: String?, public val new: String) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("FsmStateChanged", "source" to source, "old" to old, "new" to new)
+    override fun fields(): ValueFields = ValueFields("source" to source, "old" to old, "new" to new)
 }
 
 /** Port [port] of the component got connection [connector]. */
 public class PortConnected(override val source: ComponentNode, public val port: String, public val connector: ConnectorSnapshot) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("PortConnected", "source" to source, "port" to port, "connector" to connector)
+    override fun fields(): ValueFields = ValueFields("source" to source, "port" to port, "connector" to connector)
 }
 
 /** Port [port] of the component lost connection [connector]. */
 public class PortDisconnected(override val source: ComponentNode, public val port: String, public val connector: ConnectorSnapshot) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("PortDisconnected", "source" to source, "port" to port, "connector" to connector)
+    override fun fields(): ValueFields = ValueFields("source" to source, "port" to port, "connector" to connector)
 }
 
 /**
@@ -77,47 +68,47 @@ public class PortDisconnected(override val source: ComponentNode, public val por
  * many: only registrations that name this type (not a supertype such as [RtcEvent]) receive them.
  */
 public class PortTraffic(override val source: ComponentNode, public val port: String, public val outgoing: Boolean) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("PortTraffic", "source" to source, "port" to port, "outgoing" to outgoing)
+    override fun fields(): ValueFields = ValueFields("source" to source, "port" to port, "outgoing" to outgoing)
 }
 
 /** Parameter [name] of configuration set [set] changed from [old] to [new] (null: absent). */
 public class ParameterChanged(override val source: ComponentNode, public val set: String, public val name: String, public val old: String?, public val new: String?) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ParameterChanged", "source" to source, "set" to set, "name" to name, "old" to old, "new" to new)
+    override fun fields(): ValueFields = ValueFields("source" to source, "set" to set, "name" to name, "old" to old, "new" to new)
 }
 
 /** The active configuration set changed from [old] to [new]; null is none active (after a set was written, added or removed). */
 public class ConfigurationSetActivated(override val source: ComponentNode, public val old: String?, public val new: String?) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ConfigurationSetActivated", "source" to source, "old" to old, "new" to new)
+    override fun fields(): ValueFields = ValueFields("source" to source, "old" to old, "new" to new)
 }
 
 /** Configuration set [id] was added. */
 public class ConfigurationSetAdded(override val source: ComponentNode, public val id: String) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ConfigurationSetAdded", "source" to source, "id" to id)
+    override fun fields(): ValueFields = ValueFields("source" to source, "id" to id)
 }
 
 /** Configuration set [id] was removed. */
 public class ConfigurationSetRemoved(override val source: ComponentNode, public val id: String) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ConfigurationSetRemoved", "source" to source, "id" to id)
+    override fun fields(): ValueFields = ValueFields("source" to source, "id" to id)
 }
 
 /** The rate of execution context [handle] changed from [old] to [new] Hz. */
 public class ContextRateChanged(override val source: ComponentNode, public val handle: Int, public val old: Double, public val new: Double) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ContextRateChanged", "source" to source, "handle" to handle, "old" to old, "new" to new)
+    override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "old" to old, "new" to new)
 }
 
 /** Execution context [handle] started ([running] true) or stopped. */
 public class ContextRunningChanged(override val source: ComponentNode, public val handle: Int, @get:JvmName("isRunning") public val running: Boolean) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ContextRunningChanged", "source" to source, "handle" to handle, "running" to running)
+    override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "running" to running)
 }
 
 /** The component joined ([attached] true) or left execution context [handle]. */
 public class ContextAttachmentChanged(override val source: ComponentNode, public val handle: Int, @get:JvmName("isAttached") public val attached: Boolean) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ContextAttachmentChanged", "source" to source, "handle" to handle, "attached" to attached)
+    override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "attached" to attached)
 }
 
 /** Manager [source] created ([created] true) or deleted component [instanceName]. */
 public class ManagerComponentChanged(override val source: ManagerNode, public val instanceName: String, public val created: Boolean) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ManagerComponentChanged", "source" to source, "instanceName" to instanceName, "created" to created)
+    override fun fields(): ValueFields = ValueFields("source" to source, "instanceName" to instanceName, "created" to created)
 }
 
 /**
@@ -125,32 +116,32 @@ public class ManagerComponentChanged(override val source: ManagerNode, public va
  * it appeared: what happened to it between its creation and its discovery (its state, its connections).
  */
 public class NodeAppeared(override val source: DirectoryNode, public val child: Node, public val snapshot: ComponentSnapshot? = null) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("NodeAppeared", "source" to source, "child" to child, "snapshot" to snapshot)
+    override fun fields(): ValueFields = ValueFields("source" to source, "child" to child, "snapshot" to snapshot)
 }
 
 /** The binding at [child] vanished from [source]. */
 public class NodeVanished(override val source: DirectoryNode, public val child: RtcPath) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("NodeVanished", "source" to source, "child" to child)
+    override fun fields(): ValueFields = ValueFields("source" to source, "child" to child)
 }
 
 /** No heartbeat (push) or no answer (poll) for [silentMillis]: the component is presumed dead. */
 public class HeartbeatLost(override val source: ComponentNode, public val silentMillis: Long) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("HeartbeatLost", "source" to source, "silentMillis" to silentMillis)
+    override fun fields(): ValueFields = ValueFields("source" to source, "silentMillis" to silentMillis)
 }
 
 /** The component could not be reached at all: [cause]. */
 public class BecameZombie(override val source: ComponentNode, public val cause: RtcException) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("BecameZombie", "source" to source, "cause" to cause)
+    override fun fields(): ValueFields = ValueFields("source" to source, "cause" to cause)
 }
 
 /** A component presumed dead answers again. */
 public class Recovered(override val source: ComponentNode) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("Recovered", "source" to source)
+    override fun fields(): ValueFields = ValueFields("source" to source)
 }
 
 /** The tree watches the component by [new] from now on; [old] is null when it has just started watching it. */
 public class WatchMethodChanged(override val source: ComponentNode, public val old: WatchMethod?, public val new: WatchMethod) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("WatchMethodChanged", "source" to source, "old" to old, "new" to new)
+    override fun fields(): ValueFields = ValueFields("source" to source, "old" to old, "new" to new)
 }
 
 /**
@@ -158,12 +149,12 @@ public class WatchMethodChanged(override val source: ComponentNode, public val o
  * showed; they went silent with it, and each reports its own [HeartbeatLost] and [BecameZombie].
  */
 public class ManagerDied(override val source: ManagerNode, public val components: List<ComponentNode>, public val cause: RtcException) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ManagerDied", "source" to source, "components" to components, "cause" to cause)
+    override fun fields(): ValueFields = ValueFields("source" to source, "components" to components, "cause" to cause)
 }
 
 /** Manager [source], presumed dead, answers again. */
 public class ManagerReturned(override val source: ManagerNode) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("ManagerReturned", "source" to source)
+    override fun fields(): ValueFields = ValueFields("source" to source)
 }
 
 /**
@@ -171,10 +162,10 @@ public class ManagerReturned(override val source: ManagerNode) : RtcEvent() {
  * registered on it; the components themselves may still run.
  */
 public class NameServerLost(override val source: NameServerNode, public val cause: RtcException) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("NameServerLost", "source" to source, "cause" to cause)
+    override fun fields(): ValueFields = ValueFields("source" to source, "cause" to cause)
 }
 
 /** Name server [source], lost, answers again after [downMillis] milliseconds. */
 public class NameServerReturned(override val source: NameServerNode, public val downMillis: Long) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("NameServerReturned", "source" to source, "downMillis" to downMillis)
+    override fun fields(): ValueFields = ValueFields("source" to source, "downMillis" to downMillis)
 }

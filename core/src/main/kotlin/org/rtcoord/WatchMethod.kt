@@ -8,22 +8,13 @@ import kotlin.time.Duration
  * or neither. Decided when the tree starts watching the component, and again when that changes (an
  * observer the component no longer takes falls back to polling); see [WatchMethodChanged].
  */
-public sealed class WatchMethod {
-    /** The method's kind and what its constructor took: two methods are equal when these are. */
-    internal abstract fun fields(): ValueFields
-
-    final override fun equals(other: Any?): Boolean = other is WatchMethod && fields() == other.fields()
-
-    final override fun hashCode(): Int = fields().hashCode()
-
-    final override fun toString(): String = fields().toString()
-
+public sealed class WatchMethod : ValueObject() {
     /**
      * The component's observer of [flavour] pushes its changes, with a heartbeat every [heartbeat];
      * [pollPeriod] is set when a registration asked for polling too.
      */
     public class Pushed(public val flavour: ObserverFlavour, @get:JvmSynthetic public val heartbeat: Duration, @get:JvmSynthetic public val pollPeriod: Duration?) : WatchMethod() {
-        override fun fields(): ValueFields = ValueFields("Pushed", "flavour" to flavour, "heartbeat" to heartbeat, "pollPeriod" to pollPeriod)
+        override fun fields(): ValueFields = ValueFields("flavour" to flavour, "heartbeat" to heartbeat, "pollPeriod" to pollPeriod)
 
         /** [heartbeat] in milliseconds, for Java callers. */
         public val heartbeatMillis: Long get() = heartbeat.inWholeMilliseconds
@@ -34,7 +25,7 @@ public sealed class WatchMethod {
 
     /** The component is read again every [period], because [reason]. */
     public class Polled(@get:JvmSynthetic public val period: Duration, public val reason: String) : WatchMethod() {
-        override fun fields(): ValueFields = ValueFields("Polled", "period" to period, "reason" to reason)
+        override fun fields(): ValueFields = ValueFields("period" to period, "reason" to reason)
 
         /** [period] in milliseconds, for Java callers. */
         public val periodMillis: Long get() = period.inWholeMilliseconds
@@ -42,6 +33,6 @@ public sealed class WatchMethod {
 
     /** Nothing tells the tree of changes: only pushed events were asked for, and [reason]. */
     public class Unwatched(public val reason: String) : WatchMethod() {
-        override fun fields(): ValueFields = ValueFields("Unwatched", "reason" to reason)
+        override fun fields(): ValueFields = ValueFields("reason" to reason)
     }
 }

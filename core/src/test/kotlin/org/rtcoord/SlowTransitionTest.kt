@@ -3,12 +3,15 @@ package org.rtcoord
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.assertThrows
+import org.rtcoord.java.JavaTree
 import org.rtcoord.profile.OrderedAction
 import org.rtcoord.profile.SystemProfiles
+import java.util.concurrent.TimeUnit
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -38,6 +41,22 @@ class SlowTransitionTest {
         fixture.slowTransitions(0.milliseconds)
         val prompt = localiser.deactivate()
         assertNull(prompt.lateAnswer, prompt.toString())
+    }
+
+    @Test
+    fun `Java's transitions, blocking and as futures, return the outcome, slow when it was`() {
+        val localiser = JavaTree(system.tree).component(system.path("laser_localise0.rtc"))
+        fixture.slowTransitions(900.milliseconds)
+        val stopped = localiser.deactivate()
+        assertEquals(LifeCycle.INACTIVE, stopped.state)
+        assertTrue(stopped.slow, stopped.toString())
+        val started = localiser.activateAsync().get(10, TimeUnit.SECONDS)
+        assertEquals(LifeCycle.ACTIVE, started.state)
+        assertTrue(started.slow, started.toString())
+        fixture.slowTransitions(0.milliseconds)
+        val prompt = localiser.deactivate()
+        assertEquals(LifeCycle.INACTIVE, prompt.state)
+        assertFalse(prompt.slow, prompt.toString())
     }
 
     @Test

@@ -1,17 +1,19 @@
 package org.rtcoord.internal
 
+import org.rtcoord.InternalRtcoordApi
+
 /**
- * A public value class's fields by name: its `equals`, `hashCode` and `toString` as a data class would
- * have them. The API has no data classes, since their `componentN` and `copy` tie every compiled caller
- * to the list of fields, and a new field would break them.
+ * The fields of a [org.rtcoord.ValueObject] by name, in declaration order: what its `equals`,
+ * `hashCode` and `toString` are made of. Public for the dsl's values only.
  */
-internal class ValueFields(private val type: String, vararg fields: Pair<String, Any?>) {
+@InternalRtcoordApi
+public class ValueFields(vararg fields: Pair<String, Any?>) {
     private val names = fields.map { it.first }
     private val values = fields.map { it.second }
 
-    override fun equals(other: Any?): Boolean = other is ValueFields && type == other.type && values == other.values
+    override fun equals(other: Any?): Boolean = other is ValueFields && values == other.values
 
     override fun hashCode(): Int = values.hashCode()
 
-    override fun toString(): String = names.zip(values).joinToString(", ", "$type(", ")") { (name, value) -> "$name=$value" }
+    override fun toString(): String = names.zip(values).joinToString(", ") { (name, value) -> "$name=$value" }
 }

@@ -9,6 +9,7 @@ import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.ContextSelector
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcException
+import org.rtcoord.TransitionOutcome
 import org.rtcoord.internal.JavaCalls
 import java.time.Duration
 import java.util.concurrent.CompletableFuture
@@ -55,38 +56,47 @@ public class JavaComponent internal constructor(
     @JvmOverloads
     public fun stateAsync(context: ContextSelector = ContextSelector.DEFAULT): CompletableFuture<LifeCycle> = calls.future { node.state(context) }
 
-    /** Activates the component and waits until it is ACTIVE. */
+    /**
+     * Activates the component and waits until it is ACTIVE; returns how it got there: [TransitionOutcome.isSlow] when the state came only after its
+     * context had answered that it did not.
+     */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): Unit =
+    public fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): TransitionOutcome =
         calls.await { node.activate(context, deadline?.toKotlinDuration()) }
 
     /** [activate], when done. */
     @JvmOverloads
-    public fun activateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<Void?> =
-        calls.done { node.activate(context, deadline?.toKotlinDuration()) }
+    public fun activateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
+        calls.future { node.activate(context, deadline?.toKotlinDuration()) }
 
-    /** Deactivates the component and waits until it is INACTIVE. */
+    /**
+     * Deactivates the component and waits until it is INACTIVE; returns how it got there: [TransitionOutcome.isSlow] when the state came only after its
+     * context had answered that it did not.
+     */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): Unit =
+    public fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): TransitionOutcome =
         calls.await { node.deactivate(context, deadline?.toKotlinDuration()) }
 
     /** [deactivate], when done. */
     @JvmOverloads
-    public fun deactivateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<Void?> =
-        calls.done { node.deactivate(context, deadline?.toKotlinDuration()) }
+    public fun deactivateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
+        calls.future { node.deactivate(context, deadline?.toKotlinDuration()) }
 
-    /** Resets the component from ERROR and waits until it is INACTIVE. */
+    /**
+     * Resets the component from ERROR and waits until it is INACTIVE; returns how it got there: [TransitionOutcome.isSlow] when the state came only after its
+     * context had answered that it did not.
+     */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): Unit =
+    public fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): TransitionOutcome =
         calls.await { node.reset(context, deadline?.toKotlinDuration()) }
 
     /** [reset], when done. */
     @JvmOverloads
-    public fun resetAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<Void?> =
-        calls.done { node.reset(context, deadline?.toKotlinDuration()) }
+    public fun resetAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
+        calls.future { node.reset(context, deadline?.toKotlinDuration()) }
 
     /** Asks the component to exit and waits until naming no longer shows it (see [ComponentNode.exit]). */
     @Throws(RtcException::class, InterruptedException::class)

@@ -2,16 +2,20 @@ package org.rtcoord.profile
 
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcTree
+import org.rtcoord.ValueObject
+import org.rtcoord.internal.ValueFields
 
 /** One way the live system differs from a profile. */
-public data class ProfileDifference(
+public class ProfileDifference(
     /** The component, port or connection concerned. */
-    val subject: String,
+    public val subject: String,
     /** What the profile has. */
-    val expected: String,
+    public val expected: String,
     /** What the system has. */
-    val actual: String,
-) {
+    public val actual: String,
+) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("subject" to subject, "expected" to expected, "actual" to actual)
+
     override fun toString(): String = "$subject: expected $expected, found $actual"
 }
 

@@ -15,6 +15,8 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.TransitionOutcome
+import org.rtcoord.ValueObject
+import org.rtcoord.internal.ValueFields
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
@@ -32,7 +34,9 @@ public enum class OrderedAction(internal val ordering: OrderingKind, internal va
  * One step of an ordered start or stop: act on [component]'s context [contextId] once every step of a
  * lower [sequence] is done and [condition] holds.
  */
-public data class PlannedStep(val sequence: Int, val component: String, val contextId: Int, val condition: Condition) {
+public class PlannedStep(public val sequence: Int, public val component: String, public val contextId: Int, public val condition: Condition) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("sequence" to sequence, "component" to component, "contextId" to contextId, "condition" to condition)
+
     override fun toString(): String = "$sequence $component context $contextId" + when (condition) {
         Condition.None -> ""
         is Condition.WaitTime -> " after waiting ${condition.milliseconds} ms"
@@ -45,7 +49,9 @@ public data class PlannedStep(val sequence: Int, val component: String, val cont
  * What became of one step: done (and when, from the start of the run; [detail] says if it was slow),
  * failed (why) or not done (why).
  */
-public data class StepOutcome(val step: PlannedStep, val done: Boolean, val atMillis: Long, val detail: String) {
+public class StepOutcome(public val step: PlannedStep, public val done: Boolean, public val atMillis: Long, public val detail: String) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("step" to step, "done" to done, "atMillis" to atMillis, "detail" to detail)
+
     override fun toString(): String = if (done) "done at $atMillis ms: $step" + detail.ifEmpty { null }?.let { " ($it)" }.orEmpty() else "NOT done: $step: $detail"
 }
 

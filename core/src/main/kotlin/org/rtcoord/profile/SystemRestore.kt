@@ -9,21 +9,28 @@ import org.rtcoord.NotFoundException
 import org.rtcoord.Port
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
+import org.rtcoord.ValueObject
 import org.rtcoord.ZombieNode
+import org.rtcoord.internal.ValueFields
 
 /** What a restore did, kept as it was, and could not find. */
-public data class RestoreReport(
+public class RestoreReport @JvmOverloads constructor(
     /** Changes made, one line each (`connected a:out to b:in`), components created first. */
-    val done: List<String>,
+    public val done: List<String>,
     /** Connections already there as the profile has them. */
-    val kept: List<String>,
+    public val kept: List<String>,
     /** Optional components the system does not have, by path (none when missing components were created). */
-    val missingOptional: List<String>,
+    public val missingOptional: List<String>,
     /** The components created through their managers, by path. */
-    val created: List<String> = emptyList(),
+    public val created: List<String> = emptyList(),
     /** Values written outside the constraint their component declares, one line each naming component, set and parameter. */
-    val warnings: List<String> = emptyList(),
-)
+    public val warnings: List<String> = emptyList(),
+) : ValueObject() {
+    /** This report with the components made for it, [created]. */
+    internal fun created(created: List<String>): RestoreReport = RestoreReport(done, kept, missingOptional, created, warnings)
+
+    override fun fields(): ValueFields = ValueFields("done" to done, "kept" to kept, "missingOptional" to missingOptional, "created" to created, "warnings" to warnings)
+}
 
 /** A profile that cannot be applied as a whole; nothing was changed. */
 public class ProfileRefusedException(
@@ -77,7 +84,7 @@ internal class SystemRestore(private val tree: RtcTree) {
                 made += p
             }
             val report = restore(ResolvedSystem.of(tree, profile), lines, strict)
-            return report.copy(created = made.map { it.path })
+            return report.created(made.map { it.path })
         } catch (e: ProfileRefusedException) {
             val undone = made.reversed().mapNotNull { p -> try { creation.delete(p); null } catch (d: RtcException) { "${p.path} (${d.reason})" } }
             val after = if (undone.isEmpty()) "the components created for it were deleted again" else "could not delete again ${undone.joinToString()}"

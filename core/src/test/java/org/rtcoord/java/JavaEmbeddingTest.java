@@ -16,6 +16,7 @@ import org.rtcoord.RtcException;
 import org.rtcoord.StateChanged;
 import org.rtcoord.Subscription;
 import org.rtcoord.TimedDoubleSeq;
+import org.rtcoord.TransitionOutcome;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.WatchMode;
 import org.rtcoord.fixtures.FixtureRuntime;
@@ -114,7 +115,9 @@ class JavaEmbeddingTest {
         assertEquals(LifeCycle.INACTIVE, laser.state());
         assertThrows(PreconditionNotMetException.class, laser::deactivate);
 
-        laser.activateAsync().get(10, TimeUnit.SECONDS);
+        TransitionOutcome started = laser.activateAsync().get(10, TimeUnit.SECONDS);
+        assertEquals(LifeCycle.ACTIVE, started.getState());
+        assertFalse(started.isSlow(), started.toString());
         assertEquals(LifeCycle.ACTIVE, laser.stateAsync().get(10, TimeUnit.SECONDS));
         assertEquals(LifeCycle.ACTIVE, laser.snapshot().getState());
     }

@@ -74,7 +74,7 @@ class ProfileCorpusTest {
         // rtsprofile reads compositeType Grouping as None and adds visibility and a location to everything.
         fun ComponentLike(c: ProfileComponent) = listOf(c.id, c.pathUri, c.instanceName, c.activeConfigurationSet, c.isRequired, c.dataPorts.map { it.name }, c.configurationSets, c.executionContexts, c.ext.properties)
         assertEquals(ours.components.map(::ComponentLike), theirs.components.map(::ComponentLike))
-        fun List<PortConnector>.shown() = map { it.copy(ext = it.ext.copy(visible = null)) }
+        fun List<PortConnector>.shown() = map { it.withExt(it.ext.withVisible(null)) }
         assertEquals(ours.dataPortConnectors.shown(), theirs.dataPortConnectors.shown())
         assertEquals(ours.servicePortConnectors.shown(), theirs.servicePortConnectors.shown())
         assertEquals(ours.orderings, theirs.orderings)
@@ -94,8 +94,7 @@ class ProfileCorpusTest {
     }
 
     private fun RtsProfile.withoutForeign(): RtsProfile {
-        fun Extension.known() = copy(unknownAttributes = emptyMap(), unknownElements = emptyList())
-        return copy(ext = ext.known(), components = components.map { it.copy(ext = it.ext.known()) })
+        return withExt(ext.withoutUnknown()).withComponents(components.map { it.withExt(it.ext.withoutUnknown()) })
     }
 
     private fun corpus(name: String): Path = Paths.get(javaClass.getResource("/profiles/$name")!!.toURI())

@@ -71,18 +71,18 @@ class SystemProfilesTest {
         val localiser = system.tree.component(system.path("laser_localise0.rtc"))
         localiser.disconnectAll()
         val before = shape(profiles.save())
-        val missing = saved.copy(components = saved.components + saved.components.first().copy(instanceName = "ghost0", pathUri = saved.components.first().pathUri.replaceAfterLast('/', "ghost0.rtc")))
-        val outOfRange = saved.copy(components = saved.components.map { c ->
-            if (c.instanceName != "laser_localise0") c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "default") it.copy(data = it.data + ("gain" to "99")) else it })
+        val missing = saved.withComponents(saved.components + saved.components.first().let { it.withInstance("ghost0", it.pathUri.replaceAfterLast('/', "ghost0.rtc")) })
+        val outOfRange = saved.withComponents(saved.components.map { c ->
+            if (c.instanceName != "laser_localise0") c else c.withConfigurationSets(c.configurationSets.map { if (it.id == "default") it.withData(it.data + ("gain" to "99")) else it })
         })
         val gyro = saved.components.single { it.instanceName == "gyro0" }
-        val incompatible = saved.copy(dataPortConnectors = saved.dataPortConnectors + saved.dataPortConnectors.first().let { c ->
-            c.copy(connectorId = "", source = TargetComponent(gyro.id, "gyro0", "gyro0.gyro"))
+        val incompatible = saved.withDataPortConnectors(saved.dataPortConnectors + saved.dataPortConnectors.first().let { c ->
+            c.withConnectorId("").withSource(TargetComponent(gyro.id, "gyro0", "gyro0.gyro"))
         })
-        val notNumber = saved.copy(components = saved.components.map { c ->
-            if (c.instanceName != "laser_localise0") c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "precise") it.copy(data = it.data + ("gain" to "fast")) else it })
+        val notNumber = saved.withComponents(saved.components.map { c ->
+            if (c.instanceName != "laser_localise0") c else c.withConfigurationSets(c.configurationSets.map { if (it.id == "precise") it.withData(it.data + ("gain" to "fast")) else it })
         })
-        val noPort = saved.copy(dataPortConnectors = saved.dataPortConnectors.map { c -> if (c.source.instanceName != "laser0") c else c.copy(source = c.source.copy(portName = "laser0.scan")) })
+        val noPort = saved.withDataPortConnectors(saved.dataPortConnectors.map { c -> if (c.source.instanceName != "laser0") c else c.withSource(c.source.withPortName("laser0.scan")) })
         val cases = listOf(
             missing to "ghost0.rtc is not running", outOfRange to "'99' is outside 0<x<10", incompatible to "incompatible data types",
             notNumber to "configuration set 'precise': gain: 'fast' is not a number (constraint 0<x<10)", noPort to "laser0.rtc: no port 'scan'",
@@ -101,7 +101,7 @@ class SystemProfilesTest {
         localiser.setParameter("gain", "3.0", "default")
         localiser.activateConfigurationSet("default")
         val before = shape(profiles.save())
-        val periodic = saved.copy(dataPortConnectors = saved.dataPortConnectors.map { it.copy(subscriptionType = "periodic", ext = it.ext.copy(properties = it.ext.properties - "dataport.subscription_type")) })
+        val periodic = saved.withDataPortConnectors(saved.dataPortConnectors.map { it.withSubscriptionType("periodic").withExt(it.ext.withProperties(it.ext.properties - "dataport.subscription_type")) })
         val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(periodic) } }
         assertTrue("are connected with dataport.subscription_type=new, the profile wants dataport.subscription_type=periodic" in refused.reason && '\n' !in refused.reason, refused.reason)
         assertEquals(before, shape(profiles.save()), "the gain the restore would have written is not")
@@ -133,13 +133,13 @@ class SystemProfilesTest {
         val localiserPath = system.path("laser_localise0.rtc")
         system.tree.manager(system.path("manager.mgr")).delete("laser_localise0")
         val localiser = saved.components.single { it.instanceName == "laser_localise0" }
-        val elsewhere = localiser.copy(instanceName = "far0", pathUri = "${system.naming.address}/elsewhere.cxt/far0.rtc")
-        val noManager = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(saved.copy(components = saved.components + elsewhere), createMissing = true) } }
+        val elsewhere = localiser.withInstance("far0", "${system.naming.address}/elsewhere.cxt/far0.rtc")
+        val noManager = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(saved.withComponents(saved.components + elsewhere), createMissing = true) } }
         assertEquals("/${system.naming.address}/elsewhere.cxt/far0.rtc: no manager in its naming context or above it to create it", noManager.reason)
         assertTrue(system.system.slave!!.get_components().none { it.get_component_profile().instance_name == "laser_localise0" }, "created before refusing")
 
-        val outOfRange = saved.copy(components = saved.components.map { c ->
-            if (c !== localiser) c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "default") it.copy(data = it.data + ("gain" to "99")) else it })
+        val outOfRange = saved.withComponents(saved.components.map { c ->
+            if (c !== localiser) c else c.withConfigurationSets(c.configurationSets.map { if (it.id == "default") it.withData(it.data + ("gain" to "99")) else it })
         })
         val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(outOfRange, createMissing = true, strict = true) } }
         assertTrue(refused.reason.startsWith("$localiserPath: configuration set 'default': gain: '99' is outside 0<x<10"), refused.reason)
@@ -147,7 +147,7 @@ class SystemProfilesTest {
         system.tree.refresh(RtcPath.parse(system.host))
         assertThrows<NotFoundException> { runBlocking { system.tree.component(localiserPath) } }
 
-        val unknownType = saved.copy(components = saved.components.map { if (it !== localiser) it else it.copy(id = "RTC:rtcoord:test:no_such_type:1.0") })
+        val unknownType = saved.withComponents(saved.components.map { if (it !== localiser) it else it.withId("RTC:rtcoord:test:no_such_type:1.0") })
         val notMade = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(unknownType, createMissing = true) } }
         assertTrue(notMade.reason.startsWith("cannot create $localiserPath: ") && "the manager created none" in notMade.reason, notMade.reason)
     }
@@ -156,8 +156,8 @@ class SystemProfilesTest {
     fun `ordered start honours sequence, WaitTime and Preceding`() = runBlocking {
         val saved = profiles.save()
         fun target(name: String) = saved.components.single { it.instanceName == name }.let { TargetComponent(it.id, it.instanceName, contextId = "0") }
-        val ordered = saved.copy(
-            orderings = mapOf(
+        val ordered = saved.withOrderings(
+            mapOf(
                 OrderingKind.ACTIVATION to Ordering(
                     listOf(
                         OrderedTarget(2, target("laser_localise0"), Condition.Preceding(listOf(target("odometry0")), 5000, "SYNC")),
@@ -178,7 +178,7 @@ class SystemProfilesTest {
 
     /** [saved] with an Activation block of [targets], each `(sequence, instance, condition)`. */
     private fun activation(saved: RtsProfile, vararg targets: Triple<Int, String, Condition>): RtsProfile =
-        saved.copy(orderings = mapOf(OrderingKind.ACTIVATION to Ordering(targets.map { (sequence, name, condition) -> OrderedTarget(sequence, target(saved, name), condition) })))
+        saved.withOrderings(mapOf(OrderingKind.ACTIVATION to Ordering(targets.map { (sequence, name, condition) -> OrderedTarget(sequence, target(saved, name), condition) })))
 
     private fun target(saved: RtsProfile, name: String) = saved.components.single { it.instanceName == name }.let { TargetComponent(it.id, it.instanceName, contextId = "0") }
 
@@ -187,7 +187,7 @@ class SystemProfilesTest {
     /** Runs [action] with every component stopped first and [name]'s servant answering nothing until [released] ms into the run. */
     private suspend fun startWithSlow(ordered: RtsProfile, name: String, released: Long, deadline: Duration = 10.seconds, tree: RtcTree = system.tree): Map<String, StepOutcome> =
         coroutineScope {
-            profiles.run(ordered.copy(orderings = emptyMap()), OrderedAction.STOP).forEach { assertTrue(it.done, it.toString()) }
+            profiles.run(ordered.withOrderings(emptyMap()), OrderedAction.STOP).forEach { assertTrue(it.done, it.toString()) }
             val slow = system.system.component(name)
             slow.hang()
             val release = launch {

@@ -16,12 +16,15 @@ import kotlin.time.Duration
  * @property host the tree configuration the host application runs the coordinator with.
  * @property directory what the script's relative file names (profiles) are relative to: the script's own
  *   directory when [org.rtcoord.dsl.script.ScriptHost] loads it, else the working directory.
+ * @property name what its coordinators are called (a closed one's [org.rtcoord.ClosedException] names it):
+ *   the script's file name when [org.rtcoord.dsl.script.ScriptHost] loads it, else the name given.
  */
 @RtcDsl
-public open class Coordination(
+public open class Coordination @JvmOverloads constructor(
     public val args: List<String>,
     public val host: TreeConfig,
     public val directory: Path = Paths.get(""),
+    public val name: String = "unnamed",
 ) {
     internal val rules = mutableListOf<Rule<*>>()
     internal val timers = mutableListOf<Timer>()

@@ -60,6 +60,9 @@ public class Coordinator(
 ) : AutoCloseable {
     private val plan = coordination.plan()
 
+    /** The coordination's [name][Coordination.name]: the script's file name, or the name given in code. */
+    public val name: String = coordination.name
+
     /** How rules, transitions and supervisors watch: the host's choice, else the script's. */
     private val watching: EventOptions = options ?: plan.watching
 
@@ -118,7 +121,7 @@ public class Coordinator(
      */
     public suspend fun start() {
         // Not kotlinx's JobCancellationException from the first suspension in the cancelled scope.
-        if (!job.isActive) throw ClosedException("coordinator")
+        if (!job.isActive) throw ClosedException("coordinator $name")
         plan.nameServers.forEach(tree::addNameServer)
         try {
             managers.start()

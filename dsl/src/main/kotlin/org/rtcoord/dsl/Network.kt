@@ -1,11 +1,18 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl
 
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.ValueObject
+import org.rtcoord.internal.ValueFields
 import org.rtcoord.profile.ProfileFormatException
 import org.rtcoord.profile.RtsProfile
 import kotlin.time.Duration
 
 /** A data connection from out-port [from] to in-port [to], each `component:port` (plain names get `.rtc`). */
-public data class Link(val from: String, val to: String) {
+public class Link(public val from: String, public val to: String) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("from" to from, "to" to to)
+
     override fun toString(): String = "$from -> $to"
 }
 

@@ -1,9 +1,14 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.ValueObject
+import org.rtcoord.internal.ValueFields
 import java.time.Instant
 
 /**
@@ -14,19 +19,30 @@ public class RuleActivity internal constructor(
     /** The rule as the script declared it, `component laser0.rtc: state ERROR`. */
     public val description: String,
 ) {
-    /** A rule's record at one moment. */
-    public data class Status(
+    /** A rule's record at one moment; each change is a new one. */
+    public class Status(
         /** How often its handler ran. */
-        val firings: Int = 0,
+        public val firings: Int = 0,
         /** When its handler last started, null before the first firing. */
-        val lastFired: Instant? = null,
+        public val lastFired: Instant? = null,
         /** What fired it last: the event's type and source. */
-        val lastEvent: String? = null,
+        public val lastEvent: String? = null,
         /** How many handler runs failed. */
-        val failures: Int = 0,
+        public val failures: Int = 0,
         /** The last failure's message. */
-        val lastFailure: String? = null,
-    )
+        public val lastFailure: String? = null,
+    ) : ValueObject() {
+        internal fun copy(
+            firings: Int = this.firings,
+            lastFired: Instant? = this.lastFired,
+            lastEvent: String? = this.lastEvent,
+            failures: Int = this.failures,
+            lastFailure: String? = this.lastFailure,
+        ): Status = Status(firings, lastFired, lastEvent, failures, lastFailure)
+
+        override fun fields(): ValueFields =
+            ValueFields("firings" to firings, "lastFired" to lastFired, "lastEvent" to lastEvent, "failures" to failures, "lastFailure" to lastFailure)
+    }
 
     private val current = MutableStateFlow(Status())
 

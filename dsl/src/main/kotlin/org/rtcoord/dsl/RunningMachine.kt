@@ -1,13 +1,20 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.ValueObject
+import org.rtcoord.internal.ValueFields
 import java.time.Instant
 
 /** A move of a machine: [from] (null for the start) to [to], both paths like `system/nominal/tracking`, on [trigger], at [at]. */
-public data class ModeTransition(val from: String?, val to: String, val trigger: String, val at: Instant)
+public class ModeTransition(public val from: String?, public val to: String, public val trigger: String, public val at: Instant) : ValueObject() {
+    override fun fields(): ValueFields = ValueFields("from" to from, "to" to to, "trigger" to trigger, "at" to at)
+}
 
 /**
  * A [ModeMachine] as a [Coordinator] runs it: where it is, how it got there, and how many events it

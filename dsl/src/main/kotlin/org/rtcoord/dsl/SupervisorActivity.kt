@@ -1,9 +1,14 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.ValueObject
+import org.rtcoord.internal.ValueFields
 import java.time.Instant
 import kotlin.time.Duration
 import kotlin.time.toJavaDuration
@@ -18,10 +23,7 @@ public class SupervisorActivity internal constructor(
     /** How it restarts, `ONE_FOR_ONE` and so on. */
     public val strategy: String,
 ) {
-    /**
-     * A supervisor's record at one moment. A plain class, not a data class, so that it can gain fields
-     * without breaking compiled callers (no `componentN`, no `copy`); equal when every field is.
-     */
+    /** A supervisor's record at one moment; each change is a new one. */
     public class Status internal constructor(
         /** Its children's paths, in declared order (a re-created child's new path). */
         public val children: List<String> = emptyList(),
@@ -38,7 +40,7 @@ public class SupervisorActivity internal constructor(
         public val waitingUntil: Instant? = null,
         /** Why it gave up, once it escalated. */
         public val escalation: String? = null,
-    ) {
+    ) : ValueObject() {
         /** [backoff] for Java callers, as a `java.time.Duration`. */
         @get:JvmName("getBackoff")
         public val backoffDuration: java.time.Duration? get() = backoff?.toJavaDuration()
@@ -53,15 +55,10 @@ public class SupervisorActivity internal constructor(
             escalation: String? = this.escalation,
         ): Status = Status(children, restarts, lastRestart, lastRestarted, backoff, waitingUntil, escalation)
 
-        private fun fields(): List<Any?> = listOf(children, restarts, lastRestart, lastRestarted, backoff, waitingUntil, escalation)
-
-        override fun equals(other: Any?): Boolean = other is Status && fields() == other.fields()
-
-        override fun hashCode(): Int = fields().hashCode()
-
-        override fun toString(): String =
-            "Status(children=$children, restarts=$restarts, lastRestart=$lastRestart, lastRestarted=$lastRestarted, " +
-                "backoff=$backoff, waitingUntil=$waitingUntil, escalation=$escalation)"
+        override fun fields(): ValueFields = ValueFields(
+            "children" to children, "restarts" to restarts, "lastRestart" to lastRestart, "lastRestarted" to lastRestarted,
+            "backoff" to backoff, "waitingUntil" to waitingUntil, "escalation" to escalation,
+        )
     }
 
     private val current = MutableStateFlow(Status())

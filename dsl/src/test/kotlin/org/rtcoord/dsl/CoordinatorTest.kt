@@ -44,12 +44,13 @@ class CoordinatorTest : CoordinatedSystem() {
 
     @Test
     fun `a closed coordinator says so when started again`(): Unit = runBlocking {
-        val coordinator = coordinator { on(component("gyro0")).state(ERROR) { reset() } }
+        val coordination = Coordination(emptyList(), config, name = "gyro watch").apply { on(component("gyro0")).state(ERROR) { reset() } }
+        val coordinator = Coordinator(tree, coordination)
         coordinator.start()
         coordinator.close()
-        // Before, kotlinx's JobCancellationException.
+        // Before, kotlinx's JobCancellationException; then "coordinator: closed", not saying which.
         val closed = assertThrows(ClosedException::class.java) { runBlocking { coordinator.start() } }
-        assertEquals("coordinator: closed", closed.message)
+        assertEquals("coordinator gyro watch: closed", closed.message)
     }
 
     @Test

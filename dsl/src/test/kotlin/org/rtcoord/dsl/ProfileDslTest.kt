@@ -62,8 +62,8 @@ class ProfileDslTest : CoordinatedSystem() {
     fun `restoreProfile and checkProfile are actions, and a refused restore changes nothing and is one failed action`(): Unit = runBlocking {
         val profile = saved("sys.xml")
         saved("bad.xml") { p ->
-            p.copy(components = p.components.map { c ->
-                if (c.instanceName != "laser_localise0") c else c.copy(configurationSets = c.configurationSets.map { if (it.id == "default") it.copy(data = it.data + ("gain" to "99")) else it })
+            p.withComponents(p.components.map { c ->
+                if (c.instanceName != "laser_localise0") c else c.withConfigurationSets(c.configurationSets.map { if (it.id == "default") it.withData(it.data + ("gain" to "99")) else it })
             })
         }
         val localiser = witness.component(path("laser_localise0.rtc"))

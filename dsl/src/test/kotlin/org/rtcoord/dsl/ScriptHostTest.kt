@@ -45,6 +45,7 @@ class ScriptHostTest {
             coordination.description,
         )
         assertEquals(listOf("gyro0.rtc"), coordination.args)
+        assertEquals(file.fileName.toString(), coordination.name)
     }
 
     @Test

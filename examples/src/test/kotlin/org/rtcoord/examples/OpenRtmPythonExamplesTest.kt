@@ -33,7 +33,7 @@ class OpenRtmPythonExamplesTest {
             system.startOpenRtmExamples()
             val profiles = SystemProfiles(system.witness)
             val sample = system.witness.component(system.path("ConfigSample0.rtc"))
-            val saved = profiles.save().let { all -> all.copy(components = all.components.filter { it.instanceName == "ConfigSample0" }, dataPortConnectors = emptyList(), servicePortConnectors = emptyList()) }
+            val saved = profiles.save().let { all -> all.withComponents(all.components.filter { it.instanceName == "ConfigSample0" }).withDataPortConnectors(emptyList()).withServicePortConnectors(emptyList()) }
             assertEquals("12345", saved.components.single().configurationSet("mode0")!!.data["int_param0"], "configsample.conf's mode0")
 
             val unchanged = profiles.restore(saved, strict = true)

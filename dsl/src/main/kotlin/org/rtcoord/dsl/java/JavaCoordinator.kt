@@ -47,11 +47,9 @@ import java.util.function.IntConsumer
 public class JavaCoordinator private constructor(
     /** The coordinator this facade drives, for Kotlin code: Java follows it through the `subscribe...` listeners. */
     @get:JvmSynthetic public val coordinator: Coordinator,
-    /** The script's file name, which a closed coordinator's [ClosedException] names. */
-    script: String,
 ) : AutoCloseable {
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator"))
-    private val calls = JavaCalls(scope, "coordinator $script")
+    private val calls = JavaCalls(scope, "coordinator ${coordinator.name}")
 
     /** Subscribes the rules and starts timers, machines and supervisors (see [Coordinator.start]). */
     @Throws(RtcException::class, InterruptedException::class)
@@ -123,7 +121,7 @@ public class JavaCoordinator private constructor(
         public fun loadAsync(tree: JavaTree, script: Path, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): CompletableFuture<JavaCoordinator> =
             loading.future {
                 val coordination = host.load(script, args, tree.tree.config)
-                JavaCoordinator(Coordinator(tree.tree, coordination, null as EventOptions?) { log.accept(it) }, script.fileName.toString())
+                JavaCoordinator(Coordinator(tree.tree, coordination, null as EventOptions?) { log.accept(it) })
             }
 
         /**

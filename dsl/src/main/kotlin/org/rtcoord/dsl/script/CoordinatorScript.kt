@@ -16,14 +16,14 @@ import kotlin.script.experimental.jvm.jvm
 /**
  * The script definition of `*.coord.kts` coordinators: the script body is a [Coordination], with the
  * core API, the DSL, lifecycle states (`ERROR`, `ACTIVE`, ...), duration units and `delay` imported; [directory]
- * is the script's own.
+ * is the script's own, and [name] its file name.
  */
 @KotlinScript(
     displayName = "rtcoord coordinator",
     fileExtension = "coord.kts",
     compilationConfiguration = CoordinatorScriptCompilation::class,
 )
-public abstract class CoordinatorScript(args: Array<String>, host: TreeConfig, directory: Path) : Coordination(args.toList(), host, directory)
+public abstract class CoordinatorScript(args: Array<String>, host: TreeConfig, directory: Path, name: String) : Coordination(args.toList(), host, directory, name)
 
 /** How coordinator scripts compile: default imports, and the host's class path as the script's. */
 public object CoordinatorScriptCompilation : ScriptCompilationConfiguration({

@@ -59,7 +59,7 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
             is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
         }
         val evaluation = ScriptEvaluationConfiguration {
-            constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent)
+            constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent, script.fileName.toString())
             jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
         }
         return when (val result = evaluator(compiled, evaluation)) {
