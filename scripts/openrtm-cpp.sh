@@ -20,9 +20,10 @@ root="${2:-${XDG_CACHE_HOME:-$HOME/.cache}/rtcoord/openrtm-cpp}"
 components="$(cd "$(dirname "$0")/../examples/openrtm-cpp" && pwd)"
 [ -f "$checkout/src/lib/rtm/Manager.cpp" ] || { echo "openrtm-cpp: $checkout is not an OpenRTM-aist C++ checkout" >&2; exit 1; }
 
-# omniORB 4.2 from Debian: the library and headers, the IDL compiler, and omniNames for the tests.
+# omniORB 4.2 from Debian (the library and headers, the IDL compiler, omniNames), and what the build
+# runs: cmake, g++, pkg-config, python3 (OpenRTM-aist's stub wrapper).
 missing=()
-for package in libomniorb4-dev omniidl omniorb-nameserver uuid-dev cmake g++ pkg-config; do
+for package in libomniorb4-dev omniidl omniorb-nameserver uuid-dev cmake g++ pkg-config python3; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q 'install ok installed' || missing+=("$package")
 done
 if [ "${#missing[@]}" -gt 0 ]; then
