@@ -3,20 +3,15 @@
 
 namespace
 {
-  class Gyro : public rtcoord::Source<RTC::TimedDouble>
-  {
-  public:
-    explicit Gyro(RTC::Manager* manager) : Source(manager, "gyro") {}
+  constexpr char port[] = "gyro";
 
-  protected:
-    void sample(RTC::TimedDouble& rate, long tick) override
-    {
-      rate.data = 0.01 * static_cast<double>(tick % 100);
-    }
-  };
+  void rate(RTC::TimedDouble& turn, long tick)
+  {
+    turn.data = 0.01 * static_cast<double>(tick % 100);
+  }
 } // namespace
 
 extern "C" void gyroInit(RTC::Manager* manager)
 {
-  rtcoord::registerType<Gyro>(manager, rtcoord::spec("gyro", "gyro", {{"broken", "0"}}));
+  rtcoord::registerType<rtcoord::Source<RTC::TimedDouble, port, rate>>(manager, rtcoord::spec("gyro", "gyro", {{"broken", "0"}}));
 }

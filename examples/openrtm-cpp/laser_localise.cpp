@@ -3,14 +3,10 @@
 
 namespace
 {
-  class LaserLocalise : public rtcoord::Localiser<RTC::TimedDoubleSeq>
-  {
-  public:
-    explicit LaserLocalise(RTC::Manager* manager) : Localiser(manager, "laser", true) {}
-  };
-} // namespace
+  constexpr char laser[] = "laser";
+}
 
 extern "C" void laser_localiseInit(RTC::Manager* manager)
 {
-  rtcoord::registerType<LaserLocalise>(manager, rtcoord::spec("laser_localise", "laser-based localiser", {{"gain", "1.0"}}));
+  rtcoord::registerType<rtcoord::Localiser<RTC::TimedDoubleSeq, laser, true>>(manager, rtcoord::spec("laser_localise", "laser-based localiser", {{"gain", "1.0"}}));
 }

@@ -48,22 +48,19 @@ namespace rtcoord
     manager->registerFactory(profile, RTC::Create<Component>, RTC::Delete<Component>);
   }
 
-  // A sensor that writes one sample of Data per period on one out-port. Parameter `broken`: while it
-  // is 1 the sensor's execution fails (the component goes to ERROR) and every reset fails too, as
-  // hardware that stays broken does.
-  template <class Data>
+  // A sensor that writes one sample of Data per period on its out-port Port, made by Sample from the
+  // period's number. Parameter `broken`: while it is 1 the sensor's execution fails (the component goes
+  // to ERROR) and every reset fails too, as hardware that stays broken does.
+  template <class Data, const char* Port, void (*Sample)(Data&, long)>
   class Source : public RTC::DataFlowComponentBase
   {
   public:
-    Source(RTC::Manager* manager, const char* port)
-      : RTC::DataFlowComponentBase(manager), m_portName(port), m_out(port, m_data)
-    {
-    }
+    explicit Source(RTC::Manager* manager) : RTC::DataFlowComponentBase(manager), m_out(Port, m_data) {}
 
     RTC::ReturnCode_t onInitialize() override
     {
       bindParameter("broken", m_broken, "0");
-      addOutPort(m_portName.c_str(), m_out);
+      addOutPort(Port, m_out);
       return RTC::RTC_OK;
     }
 
@@ -73,8 +70,7 @@ namespace rtcoord
         {
           return RTC::RTC_ERROR;
         }
-      ++m_tick;
-      sample(m_data, m_tick);
+      Sample(m_data, ++m_tick);
       m_out.write();
       return RTC::RTC_OK;
     }
@@ -84,42 +80,36 @@ namespace rtcoord
       return m_broken != 0 ? RTC::RTC_ERROR : RTC::RTC_OK;
     }
 
-  protected:
-    // Fills [data] with the sample of period [tick].
-    virtual void sample(Data& data, long tick) = 0;
-
   private:
-    std::string m_portName;
     Data m_data;
     RTC::OutPort<Data> m_out;
     int m_broken{0};
     long m_tick{0};
   };
 
-  // A localiser fusing the odometry's in-port `odo` and one other in-port into a pose (x, y, heading):
-  // the odometry's, when it has one. Parameter `gain`.
-  template <class Other>
+  // A localiser fusing the odometry's in-port `odo` and the in-port Other into a pose (x, y, heading):
+  // the odometry's, when it has one. OtherFirst: Other is registered before `odo`, as the type lists
+  // its ports. Parameter `gain`.
+  template <class OtherData, const char* Other, bool OtherFirst>
   class Localiser : public RTC::DataFlowComponentBase
   {
   public:
-    // [otherFirst]: the other port is registered before `odo`, as the type lists its ports.
-    Localiser(RTC::Manager* manager, const char* other, bool otherFirst)
-      : RTC::DataFlowComponentBase(manager), m_otherName(other), m_otherFirst(otherFirst),
-        m_odoIn("odo", m_odo), m_otherIn(other, m_other), m_poseOut("pose", m_pose)
+    explicit Localiser(RTC::Manager* manager)
+      : RTC::DataFlowComponentBase(manager), m_odoIn("odo", m_odo), m_otherIn(Other, m_other), m_poseOut("pose", m_pose)
     {
     }
 
     RTC::ReturnCode_t onInitialize() override
     {
       bindParameter("gain", m_gain, "1.0");
-      if (m_otherFirst)
+      if (OtherFirst)
         {
-          addInPort(m_otherName.c_str(), m_otherIn);
+          addInPort(Other, m_otherIn);
         }
       addInPort("odo", m_odoIn);
-      if (!m_otherFirst)
+      if (!OtherFirst)
         {
-          addInPort(m_otherName.c_str(), m_otherIn);
+          addInPort(Other, m_otherIn);
         }
       addOutPort("pose", m_poseOut);
       return RTC::RTC_OK;
@@ -144,12 +134,10 @@ namespace rtcoord
     }
 
   private:
-    std::string m_otherName;
-    bool m_otherFirst;
     RTC::TimedDoubleSeq m_odo;
     RTC::InPort<RTC::TimedDoubleSeq> m_odoIn;
-    Other m_other;
-    RTC::InPort<Other> m_otherIn;
+    OtherData m_other;
+    RTC::InPort<OtherData> m_otherIn;
     RTC::TimedDoubleSeq m_pose;
     RTC::OutPort<RTC::TimedDoubleSeq> m_poseOut;
     double m_gain{1.0};

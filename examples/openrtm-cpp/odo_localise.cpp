@@ -3,14 +3,10 @@
 
 namespace
 {
-  class OdoLocalise : public rtcoord::Localiser<RTC::TimedDouble>
-  {
-  public:
-    explicit OdoLocalise(RTC::Manager* manager) : Localiser(manager, "gyro", false) {}
-  };
-} // namespace
+  constexpr char gyro[] = "gyro";
+}
 
 extern "C" void odo_localiseInit(RTC::Manager* manager)
 {
-  rtcoord::registerType<OdoLocalise>(manager, rtcoord::spec("odo_localise", "odometry and gyro localiser", {{"gain", "1.0"}}));
+  rtcoord::registerType<rtcoord::Localiser<RTC::TimedDouble, gyro, false>>(manager, rtcoord::spec("odo_localise", "odometry and gyro localiser", {{"gain", "1.0"}}));
 }

@@ -3,23 +3,18 @@
 
 namespace
 {
-  class Odometry : public rtcoord::Source<RTC::TimedDoubleSeq>
-  {
-  public:
-    explicit Odometry(RTC::Manager* manager) : Source(manager, "odo") {}
+  constexpr char port[] = "odo";
 
-  protected:
-    void sample(RTC::TimedDoubleSeq& pose, long tick) override
-    {
-      pose.data.length(3);
-      pose.data[0] = 0.1 * static_cast<double>(tick);
-      pose.data[1] = 0.0;
-      pose.data[2] = 0.0;
-    }
-  };
+  void pose(RTC::TimedDoubleSeq& xyh, long tick)
+  {
+    xyh.data.length(3);
+    xyh.data[0] = 0.1 * static_cast<double>(tick);
+    xyh.data[1] = 0.0;
+    xyh.data[2] = 0.0;
+  }
 } // namespace
 
 extern "C" void odometryInit(RTC::Manager* manager)
 {
-  rtcoord::registerType<Odometry>(manager, rtcoord::spec("odometry", "wheel odometry", {{"broken", "0"}}));
+  rtcoord::registerType<rtcoord::Source<RTC::TimedDoubleSeq, port, pose>>(manager, rtcoord::spec("odometry", "wheel odometry", {{"broken", "0"}}));
 }
