@@ -85,7 +85,13 @@ internal class ManagerCalls(private val core: TreeCore, private val subject: Str
             null
         }
 
-        /** A manager's name from its profile: its instance name, else its name, else `manager`. */
+        /**
+         * A manager's name from its profile: its instance name, else its name, else `manager`. rtctree
+         * (and so rtls) names a slave by `name` instead, but an OpenRTM-aist C++ slave carries its
+         * master's `manager.name` (it finds the master by it, `ManagerServant::findManager`), so by
+         * `name` every C++ slave of a master would have one path: the slave a master starts in place
+         * of a killed one would take the dead one's, and re-creating through the master fails there.
+         */
         fun nameOf(profile: Map<String, String>): String =
             profile["instance_name"]?.takeIf { it.isNotBlank() } ?: profile["name"]?.takeIf { it.isNotBlank() } ?: "manager"
     }

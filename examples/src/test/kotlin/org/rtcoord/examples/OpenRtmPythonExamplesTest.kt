@@ -4,7 +4,6 @@ import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.junit.jupiter.api.assertThrows
 import org.rtcoord.EventOptions
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.LifeCycle
@@ -13,62 +12,38 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.StateChanged
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMethodChanged
-import org.rtcoord.profile.ProfileRefusedException
 import org.rtcoord.fixtures.awaitValue
-import org.rtcoord.profile.SystemProfiles
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
 import kotlin.time.Duration.Companion.seconds
 
 /**
  * OpenRTM-aist-Python's own example components against rtcoord: ConfigSample, whose sets hold values
- * outside its declared constraints; SequenceOutComponent, whose one-second `on_execute` makes its
+ * outside its declared constraints, and SequenceOutComponent, whose one-second `on_execute` makes its
  * context answer `RTC_ERROR` to transitions that then happen; and StaticFsm's Microwave, an FSM component. Skipped unless `RTCOORD_OPENRTM_PYTHON`
  * names an installation.
  */
 class OpenRtmPythonExamplesTest {
     @Test
-    fun `ConfigSample - a saved profile restores onto it unchanged, a value written outside its constraint warns, and strict refuses it`(): Unit = runBlocking {
-        OpenRtmPythonSystem.start().use { system ->
-            system.startOpenRtmExamples()
-            val profiles = SystemProfiles(system.witness)
-            val sample = system.witness.component(system.path("ConfigSample0.rtc"))
-            val saved = profiles.save().let { all -> all.withComponents(all.components.filter { it.instanceName == "ConfigSample0" }).withDataPortConnectors(emptyList()).withServicePortConnectors(emptyList()) }
-            assertEquals("12345", saved.components.single().configurationSet("mode0")!!.data["int_param0"], "configsample.conf's mode0")
-
-            val unchanged = profiles.restore(saved, strict = true)
-            assertEquals(emptyList<String>(), unchanged.done + unchanged.warnings)
-
-            sample.setParameter("int_param0", "100", "mode0")
-            val outside = "${sample.path}: configuration set 'mode0': int_param0: '12345' is outside 0<=x<=150"
-            assertEquals(outside, assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(saved, strict = true) } }.reason)
-            assertEquals("100", sample.configuration().sets.getValue("mode0")["int_param0"], "the strict restore wrote nothing")
-            val restored = profiles.restore(saved)
-            assertEquals(listOf(outside), restored.warnings)
-            assertEquals("12345", sample.configuration().sets.getValue("mode0")["int_param0"])
+    fun `ConfigSample - a saved profile restores onto it unchanged, a value written outside its constraint warns, and strict refuses it`(): Unit =
+        OpenRtmSystem.start(OpenRtmPython.named()).use { system ->
+            startOpenRtmExamples(system)
+            OpenRtmConfigurationScenarios.roundTrip(system, "ConfigSample0")
         }
-    }
 
     @Test
-    fun `SequenceOutComponent - deactivations behind its one-second on_execute succeed, said to be slow`(): Unit = runBlocking {
-        OpenRtmPythonSystem.start().use { system ->
-            system.startOpenRtmExamples()
-            val sequence = system.witness.component(system.path("SequenceOutComponent0.rtc"))
-            val outcomes = (1..4).map {
-                sequence.activate()
-                sequence.deactivate().also { println("real OpenRTM-aist-Python: SequenceOutComponent0 deactivated: $it") }
-            }
-            assertTrue(outcomes.all { it.state == LifeCycle.INACTIVE }, outcomes.toString())
-            assertEquals(LifeCycle.INACTIVE, sequence.state())
+    fun `SequenceOutComponent - deactivations behind its one-second on_execute succeed, said to be slow`(): Unit =
+        OpenRtmSystem.start(OpenRtmPython.named()).use { system ->
+            startOpenRtmExamples(system)
+            val outcomes = OpenRtmConfigurationScenarios.deactivations(system, "SequenceOutComponent0")
             // The context answers before on_execute returns only when the call came in its last half second.
             assertTrue(outcomes.any { it.slow && it.lateAnswer == "RTC_ERROR" }, outcomes.toString())
         }
-    }
 
     @Test
     fun `StaticFsm Microwave - watched by the OpenRTM observer, its FSM works on, its state said unknown and why`(): Unit = runBlocking {
-        OpenRtmPythonSystem.start().use { system ->
-            system.startMicrowave()
+        OpenRtmSystem.start(OpenRtmPython.named()).use { system ->
+            startMicrowave(system)
             val tree = system.witness
             val microwave = tree.component(system.path("Microwave0.rtc"))
             val buttons = tree.component(system.path("fsm_buttons0.rtc"))
@@ -95,5 +70,40 @@ class OpenRtmPythonExamplesTest {
             assertEquals(null to "its observer, OpenRTM::ComponentObserver, carries no FSM status", fsm?.state to fsm?.unknownBecause)
             assertTrue(told.none { it is FsmStateChanged || (it is StateChanged && it.new == LifeCycle.ERROR) }, told.toString())
         }
+    }
+
+    /**
+     * Starts OpenRTM-aist's own ConfigSample (with its `configsample.conf`: sets `mode0` and `mode1` hold
+     * values outside its `__constraints__`) and SeqIO's `SequenceOutComponent` (its `on_execute` sleeps
+     * 1 s) from the installation's examples, inactive, in a manager of their own.
+     */
+    private fun startOpenRtmExamples(system: OpenRtmSystem) {
+        val examples = (system.installation as OpenRtmPython).examples()
+        system.startOwnManager(
+            "examples",
+            listOf(examples.resolve("ConfigSample"), examples.resolve("SeqIO")),
+            listOf("ConfigSample0", "SequenceOutComponent0"),
+            "manager.modules.preload: ConfigSample.py, SeqOut.py",
+            "manager.components.precreate: ConfigSample, SeqOut",
+            "example.ConfigSample.config_file: ${examples.resolve("ConfigSample/configsample.conf")}",
+        )
+    }
+
+    /**
+     * Starts OpenRTM-aist's StaticFsm `Microwave` from the installation's examples and `fsm_buttons` (from
+     * `examples/openrtm-python`, the example's Inputbutton pressed through configuration), inactive and
+     * unconnected, in a manager of their own that loads the FSM4RTC observer (`ext/fsm4rtc_observer`)
+     * beside the OpenRTM one every Python manager has, and the `ExtendedFsmService` provider (`ext/extended_fsm`).
+     */
+    private fun startMicrowave(system: OpenRtmSystem) {
+        val installation = system.installation as OpenRtmPython
+        val ext = installation.examples().resolveSibling("ext")
+        system.startOwnManager(
+            "fsm",
+            listOf(ext.resolve("fsm4rtc_observer"), ext.resolve("extended_fsm"), installation.examples().resolve("StaticFsm"), installation.components),
+            listOf("Microwave0", "fsm_buttons0"),
+            "manager.modules.preload: ComponentObserverConsumer.py, ExtendedFsmServiceProvider.py, Microwave.py, fsm_buttons.py",
+            "manager.components.precreate: Microwave, fsm_buttons",
+        )
     }
 }
