@@ -79,8 +79,9 @@ class OpenRtmSystem private constructor(val installation: OpenRtmInstallation) :
             *installation.slaveLines.toTypedArray(),
         )
         runBlocking {
+            // All four: the slave binds them one by one, and a read between two finds some missing.
             val laser = awaitValue("the slave's components in naming", 30.seconds) {
-                runBlocking { runCatching { witness.refresh(); witness.componentNamed("laser_localise0.rtc"); witness.componentNamed("laser0.rtc") }.getOrNull() }
+                runBlocking { runCatching { witness.refresh(); types.map { witness.componentNamed("${it}0.rtc") }.first() }.getOrNull() }
             }
             context = laser.path.parent.toString()
             witness.connect(path("laser0.rtc:laser"), path("laser_localise0.rtc:laser"))
