@@ -79,11 +79,17 @@ class OpenRtmSystem private constructor(val installation: OpenRtmInstallation) :
             *installation.slaveLines.toTypedArray(),
         )
         runBlocking {
-            // All four: the slave binds them one by one, and a read between two finds some missing.
+            // All four, each at its naming path: the slave binds them one by one, and a read in between
+            // finds some missing, or some only in the manager's listing.
             val laser = awaitValue("the slave's components in naming", 30.seconds) {
-                runBlocking { runCatching { witness.refresh(); types.map { witness.componentNamed("${it}0.rtc") }.first() }.getOrNull() }
+                runBlocking {
+                    runCatching {
+                        witness.refresh()
+                        types.map { witness.componentNamed("${it}0.rtc").canonicalPath }.takeIf { paths -> paths.none { path -> path.names.any { it.endsWith(".mgr") } } }
+                    }.getOrNull()?.first()
+                }
             }
-            context = laser.path.parent.toString()
+            context = laser.parent.toString()
             witness.connect(path("laser0.rtc:laser"), path("laser_localise0.rtc:laser"))
             witness.connect(path("odometry0.rtc:odo"), path("laser_localise0.rtc:odo"))
             listOf("laser0", "gyro0", "odometry0", "laser_localise0").forEach { witness.component(path("$it.rtc")).activate() }
