@@ -28,15 +28,16 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
         val directories = nodes.filterIsInstance<DirectoryNode>().filter { it !is ManagerNode }
         val components = network.components.map { component ->
             val snapshot = component.snapshots.value!!
+            val entry = model.component(component)
             mapOf(
                 "id" to component.path.toString(),
                 "name" to snapshot.instanceName,
                 "type" to snapshot.typeName,
                 "parent" to component.path.parent?.toString(),
                 // As the tree's events tell it: a read may run ahead of them (a deactivation held).
-                "state" to (model.component(component)?.overallState ?: snapshot.overallState).name,
+                "state" to (entry?.overallState ?: snapshot.overallState).name,
                 "hostedBy" to managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
-                "fsm" to model.component(component)?.fsm?.toJson(),
+                "fsm" to entry?.fsm?.toJson(),
             )
         }
         val known = components.map { it["id"] }.toSet()
