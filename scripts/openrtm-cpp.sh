@@ -7,7 +7,7 @@
 #                   the module ComponentObserverConsumer.so (the test runs it with and without preloading it)
 #   ROOT/observer   OBSERVER_ENABLE=ON: the legacy OpenRTM::ComponentObserver in the library as well
 #
-# and into each, the example components of examples/openrtm-cpp. A prefix already built is kept;
+# and into each, the example components of examples/openrtm-cpp and fsm_microwave, the checkout's StaticFsm Microwave machine. A prefix already built is kept;
 # the components are rebuilt only when their sources changed (cmake decides).
 #
 #   scripts/openrtm-cpp.sh CHECKOUT [ROOT]     ROOT defaults to ~/.cache/rtcoord/openrtm-cpp
@@ -60,9 +60,11 @@ build_openrtm() { # VARIANT OBSERVER_ENABLE
 
 build_components() { # VARIANT
   local prefix="$root/$1" build="$root/build/components-$1"
+  # A build directory configured from another clone of this project cannot be reused.
+  grep -qxF "CMAKE_HOME_DIRECTORY:INTERNAL=$components" "$build/CMakeCache.txt" 2>/dev/null || rm -rf "$build"
   mkdir -p "$build"
   cmake -S "$components" -B "$build" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_INSTALL_PREFIX="$prefix" \
-    -DCMAKE_INSTALL_RPATH="$prefix/lib" >"$build.log" 2>&1 \
+    -DCMAKE_INSTALL_RPATH="$prefix/lib" -DSTATICFSM_SOURCES="$checkout/examples/StaticFsm" >"$build.log" 2>&1 \
     || { echo "openrtm-cpp: cmake of the components failed, see $build.log" >&2; exit 1; }
   nice -n 10 cmake --build "$build" -j2 >>"$build.log" 2>&1 \
     && cmake --install "$build" >>"$build.log" 2>&1 \

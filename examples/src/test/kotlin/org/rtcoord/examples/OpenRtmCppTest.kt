@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.EnumSource
+import org.rtcoord.FsmStateChanged
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerNode
 import org.rtcoord.ObserverFlavour
@@ -21,8 +22,8 @@ import kotlin.time.TimeSource
 
 /**
  * The paper's coordinator against real OpenRTM-aist C++ 2.0 managers (`rtcd2`) and our components in
- * `examples/openrtm-cpp` ([OpenRtmScenarios]), on each of the three observer builds
- * ([OpenRtmCppBuild]): skipped unless `RTCOORD_OPENRTM_CPP` names what `scripts/openrtm-cpp.sh` built.
+ * `examples/openrtm-cpp` ([OpenRtmScenarios]), on each of the three observer builds ([OpenRtmCppBuild]),
+ * and an FSM component on the default one: skipped unless `RTCOORD_OPENRTM_CPP` names what `scripts/openrtm-cpp.sh` built.
  */
 class OpenRtmCppTest {
     @ParameterizedTest
@@ -106,6 +107,52 @@ class OpenRtmCppTest {
             // rtcd2's context waits transition_timeout (0.5 s) for INACTIVE, then answers RTC_ERROR: every time.
             assertTrue(outcomes.all { it.slow && it.lateAnswer == "RTC_ERROR" && it.elapsedMillis >= 500 }, outcomes.toString())
         }
+
+    @Test
+    fun `StaticFsm Microwave - the FSM4RTC observer tells each state the machine enters`(): Unit = runBlocking {
+        OpenRtmSystem.start(OpenRtmCpp.named(OpenRtmCppBuild.DEFAULT)).use { system ->
+            startMicrowave(system)
+            val tree = system.witness
+            val microwave = tree.component(system.path("fsm_microwave0.rtc"))
+            assertTrue(microwave.snapshot().offersFsmService, microwave.snapshot().properties.toString())
+            val told = Channel<RtcEvent>(Channel.UNLIMITED)
+            tree.on(microwave, setOf(WatchMethodChanged::class.java, FsmStateChanged::class.java)) { told.trySend(it) }
+            suspend fun <E : RtcEvent> next(type: Class<E>): E = withTimeout(10.seconds) {
+                var event = told.receive()
+                while (!type.isInstance(event)) event = told.receive()
+                type.cast(event)
+            }
+            assertEquals(ObserverFlavour.OMG, (next(WatchMethodChanged::class.java).new as WatchMethod.Pushed).flavour)
+
+            microwave.activate()
+            val entered = listOf("minute", "start", "tick").mapIndexed { index, event ->
+                microwave.setParameter("press", "$event $index")
+                next(FsmStateChanged::class.java).new
+            }
+            println("${system.installation.label}: fsm_microwave0 entered $entered")
+            assertEquals(listOf("Programmed", "Cooking", "Idle"), entered)
+            assertTrue(system.output("fsm").contains(">>> Finished <<<"), system.output("fsm"))
+            val fsm = tree.snapshot().component(microwave)?.fsm
+            assertEquals("Idle" to null, fsm?.state to fsm?.unknownBecause)
+            assertEquals(LifeCycle.ACTIVE, microwave.state())
+        }
+    }
+
+    /**
+     * Starts `fsm_microwave0` (OpenRTM-aist's StaticFsm Microwave machine, see `fsm_microwave.cpp`),
+     * inactive, in a manager of their own that loads the FSM4RTC observer and the `ExtendedFsmService` provider.
+     */
+    private fun startMicrowave(system: OpenRtmSystem) {
+        val installation = system.installation
+        system.startOwnManager(
+            "fsm",
+            installation.loadPath,
+            listOf("fsm_microwave0"),
+            "manager.preload.modules: ComponentObserverConsumer.so, ExtendedFsmServiceProvider.so",
+            "manager.modules.preload: ${installation.module("fsm_microwave")}",
+            "manager.components.precreate: fsm_microwave",
+        )
+    }
 
     /** Starts `config_sample0` and `slow_stop0`, inactive, in a manager of their own. */
     private fun startOwnComponents(system: OpenRtmSystem) {
