@@ -9,12 +9,21 @@ import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.assertThrows
 import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.EnumSource
+import org.omg.CORBA.OBJ_ADAPTER
+import org.omg.CORBA.ServerRequest
+import org.omg.CosNaming.NamingContextExtHelper
+import org.omg.CosNaming.NamingContextHelper
+import org.omg.PortableServer.DynamicImplementation
+import org.omg.PortableServer.POA
 import org.rtcoord.FaultToleranceTest.NameServerRestart
+import org.rtcoord.fixtures.FixtureOrb
 import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.fixtures.awaitValue
 import java.net.InetAddress
 import java.net.InetSocketAddress
 import java.net.Socket
 import java.util.Collections
+import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 
@@ -88,6 +97,33 @@ class OneTruthTest {
                     val twice = synchronized(appeared) { appeared.groupingBy { it }.eachCount().filterValues { it > 1 } }
                     assertEquals(emptyMap<RtcPath, Int>(), twice, "appeared more than once")
                 }
+            }
+        }
+    }
+
+    @Test
+    fun `a name server that answers wrongly and then not at all is reported lost once it stops answering`(): Unit = runBlocking {
+        // As a name server being shut down does: its POA refuses the listing first, then its port is closed.
+        val lists = AtomicInteger()
+        FixtureOrb.start().use { server ->
+            val refusing = object : DynamicImplementation() {
+                override fun invoke(request: ServerRequest) {
+                    if (request.operation() == "list") lists.incrementAndGet()
+                    throw OBJ_ADAPTER("shutting down")
+                }
+
+                override fun _all_interfaces(poa: POA?, objectId: ByteArray?): Array<String> = arrayOf(NamingContextExtHelper.id(), NamingContextHelper.id())
+            }
+            server.bindKey("NameService", server.activate(refusing))
+            val address = "127.0.0.1:${server.port}"
+            RtcTree.create(TreeConfig(listOf(address))).use { tree ->
+                val recorder = EventRecorder()
+                tree.on("/$address", RtcEvent::class.java, push, recorder.handler)
+                // Listed again and refused at least twice: the watch saw it answer wrongly.
+                awaitValue("two refused listings", 10.seconds) { lists.get().takeIf { it >= 2 } }
+                assertTrue(recorder.drained<NameServerLost>().isEmpty(), "a server that answers is not lost")
+                server.close()
+                assertTrue(recorder.next<NameServerLost>(timeout = 10.seconds).cause is UnreachableException)
             }
         }
     }

@@ -60,10 +60,9 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
                     val after = try {
                         directory.relist()
                     } catch (e: RtcException) {
-                        if (!failing) {
-                            log.info("{}; listing it again every {}", e.message, every)
-                            core.watcher.outages.listingFailed(directory, e, every)
-                        }
+                        if (!failing) log.info("{}; listing it again every {}", e.message, every)
+                        // Every time: a server shutting down first answers wrongly, and only then not at all.
+                        core.watcher.outages.listingFailed(directory, e, every)
                         failing = true
                         continue
                     }

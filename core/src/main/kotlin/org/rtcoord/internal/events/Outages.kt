@@ -67,7 +67,7 @@ internal class Outages<T : Node>(
         }
     }
 
-    /** Why [node] does not answer; null when it does. */
+    /** Why [node] does not answer; null when it does, even wrongly (the next failure behind it asks again). */
     private suspend fun failureOf(node: T): RtcException? = try {
         probe(node)
         null
@@ -75,6 +75,9 @@ internal class Outages<T : Node>(
         e
     } catch (e: TimedOutException) {
         e
+    } catch (e: RtcException) {
+        log.debug("{}: answered the check with {}", node.path, e.reason)
+        null
     }
 
     private fun publish(node: T, event: RtcEvent) {
