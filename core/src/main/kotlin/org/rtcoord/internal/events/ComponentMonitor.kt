@@ -10,7 +10,6 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentNode
-import org.rtcoord.FsmStateChanged
 import org.rtcoord.LifeCycle
 import org.rtcoord.PortTraffic
 import org.rtcoord.RtcEvent
@@ -47,9 +46,6 @@ internal class ComponentMonitor(
     private val registrations = MonitorRegistrations()
     private val work = Channel<Work>(Channel.UNLIMITED)
 
-    /** The state its FSM last entered, as told since the observer was attached; forgotten at each attachment. */
-    @Volatile private var fsmState: String? = null
-
     /** How the component is watched, once decided; set through [Watcher.announce]. */
     @Volatile var method: WatchMethod? = null
 
@@ -61,6 +57,7 @@ internal class ComponentMonitor(
     private val stopped = CompletableFuture<Unit>()
     /** Work that arrived during a read and was not taken with it: the next batch's. */
     private val carried = ArrayList<Work>()
+    private val fsm = ObservedFsmState(node)
     private val probe: StateProbe? = core.requests.takeIf { it.supports(node.component.ref) }?.let { requests ->
         StateProbe(requests, node.component.ref, node.component::stamp, { timers.heard() }) { outcome ->
             val input = if (outcome is StateProbe.Outcome.Changed) WatchInput.Probed(outcome.states, outcome.epoch, outcome.stamp) else WatchInput.Unsettled
@@ -246,7 +243,7 @@ internal class ComponentMonitor(
             attachment = if (watch.answers == ComponentLiveness.State.UNREACHABLE) {
                 Attachment.Failed("it does not answer")
             } else {
-                fsmState = null
+                fsm.forget()
                 val advertised = watch.last?.properties?.get("sdo.service.consumer.available_services")
                 link.attach(advertised, push.options.heartbeat, registrations.trafficInterval(), ::received).also {
                     if (it is Attachment.Attached) {
@@ -270,24 +267,16 @@ internal class ComponentMonitor(
 
     /**
      * What the observer received, on the ORB's thread. A heartbeat only says when (see [MonitorTimers]);
-     * data flowing changes nothing a read would show, and goes straight to the registrations that asked
-     * for [PortTraffic].
+     * data flowing and FSM states entered change nothing a read would show, and go straight to the
+     * registrations ([PortTraffic] to those that asked for it).
      */
     private fun received(hint: Hint) {
         val traffic = hint.traffic()
         when {
             hint.kind == HintKind.OTHER && hint.text.startsWith(ComponentWatch.MARKER_PREFIX) -> work.trySend(Work(WatchInput.MarkerBack(hint.text)))
             hint.isHeartbeat -> timers.heard()
-            traffic != null -> timers.heard().also {
-                core.model.publish(listOf(PortTraffic(node, traffic.first, traffic.second))) { event -> registrations.filter { it.traffic }.forEach { it.sink.offer(event) } }
-            }
-            // The machine's state is told by hints alone (nothing reads it back), in order: one thread takes them.
-            hint.kind == HintKind.FSM_STATUS -> timers.heard().also {
-                val entered = hint.fsmEntered() ?: return
-                val event = FsmStateChanged(node, fsmState, entered)
-                fsmState = entered
-                core.model.publish(listOf(event)) { registrations.forEach { registration -> registration.sink.offer(it) } }
-            }
+            traffic != null -> timers.heard().also { core.model.publish(listOf(PortTraffic(node, traffic.first, traffic.second)), deliver = registrations::offerTraffic) }
+            hint.kind == HintKind.FSM_STATUS -> timers.heard().also { fsm.changedBy(hint)?.let { core.model.publish(listOf(it), deliver = registrations::offer) } }
             else -> work.trySend(Work(WatchInput.Hinted(hint)))
         }
     }
@@ -303,7 +292,7 @@ internal class ComponentMonitor(
 
     /** Publishes [events] through the tree's model, with the states they leave the component in. */
     private fun publish(events: List<RtcEvent>) {
-        core.model.publish(events, node.component, watch.published) { event -> registrations.forEach { it.sink.offer(event) } }
+        core.model.publish(events, node.component, watch.published, registrations::offer)
     }
 
     private fun now(): Long = core.clock.now()

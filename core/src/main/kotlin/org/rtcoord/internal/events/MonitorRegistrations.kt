@@ -1,5 +1,6 @@
 package org.rtcoord.internal.events
 
+import org.rtcoord.RtcEvent
 import org.rtcoord.WatchMode
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration
@@ -20,6 +21,16 @@ internal class MonitorRegistrations : Iterable<MonitorRegistration> {
     }
 
     fun isEmpty(): Boolean = all.isEmpty()
+
+    /** Gives [event] to every registration's sink. */
+    fun offer(event: RtcEvent) {
+        all.forEach { it.sink.offer(event) }
+    }
+
+    /** Gives [event], a port's traffic, to the sinks of the registrations that asked for traffic. */
+    fun offerTraffic(event: RtcEvent) {
+        all.forEach { if (it.traffic) it.sink.offer(event) }
+    }
 
     /** Whether there are some and every one wants states alone. */
     val statesOnly: Boolean get() = all.isNotEmpty() && all.all { it.statesOnly }
