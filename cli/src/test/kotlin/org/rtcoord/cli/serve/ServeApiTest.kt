@@ -133,7 +133,7 @@ class ServeApiTest {
         val base = serve()
         val page = get(base)
         assertEquals(200, page.statusCode())
-        Regex("""src="([^"]+)"""").findAll(page.body()).map { it.groupValues[1] }.toList().also { assertEquals(5, it.size) }
+        Regex("""src="([^"]+)"""").findAll(page.body()).map { it.groupValues[1] }.toList().also { assertEquals(4, it.size) }
             .forEach { script -> assertEquals(200, get(base + script).statusCode(), script) }
     }
 
