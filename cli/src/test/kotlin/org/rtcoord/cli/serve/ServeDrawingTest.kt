@@ -44,6 +44,18 @@ class ServeDrawingTest {
                                 "rtcoord.cy.edges('.data').filter(e => e.source().hasClass('out') && e.target().hasClass('in')).length").jsonPrimitive.content,
                                 "data connectors, each from an out-port to an in-port")
 
+                            // Finding a component frames it and fades the rest; a port tells its data type.
+                            val found = browser.evaluate(
+                                "(() => { const find = document.getElementById('find'); find.value = 'laser_loc'; find.dispatchEvent(new Event('input')); " +
+                                    "const found = rtcoord.cy.nodes('.match').map(n => n.id()).join(' '); find.value = ''; find.dispatchEvent(new Event('input')); " +
+                                    "document.getElementById('zoom-fit').click(); return found; })()",
+                            ).jsonPrimitive.content
+                            assertEquals(localisation.path("laser_localise0.rtc"), found, "the components found")
+                            val laser = localisation.path("laser0.rtc")
+                            assertEquals("IDL:RTC/TimedDoubleSeq:1.0", browser.evaluate("rtcoord.cy.getElementById(${js("$laser#laser")}).data('dataType')").jsonPrimitive.content)
+
+                            // A paused timeline holds what comes meanwhile, and lists it on resuming.
+                            browser.evaluate("document.getElementById('pause').click()")
                             localisation.system.component("laser0").fail()
                             val odo = localisation.path("odo_localise0.rtc")
                             await("the coordinator's reaction: odo_localise0 ACTIVE in the tree") {
@@ -52,6 +64,11 @@ class ServeDrawingTest {
                             browser.await("odo_localise0 drawn ACTIVE with its connectors", expression =
                                 "rtcoord.cy.getElementById(${js(odo)}).data('state') === 'ACTIVE' && rtcoord.network.connections.some(c => c.target === ${js(odo)})")
                             assertDrawnTrue(browser, tree, "after the laser failed")
+                            val errorListed = "[...document.querySelectorAll('#timeline li')].some(li => li.dataset.source === ${js(laser)} && li.textContent.includes('-> ERROR'))"
+                            assertEquals("false 1", browser.evaluate("String($errorListed) + ' ' + Math.sign(rtcoord.held.length)").jsonPrimitive.content,
+                                "laser0's ERROR listed while paused, events held")
+                            browser.evaluate("document.getElementById('pause').click()")
+                            browser.await("laser0's ERROR listed on resuming", expression = errorListed)
                             browser.screenshot(Paths.get(System.getProperty("rtcoord.root", ".."), "docs", "serve.png"))
                         }
                     }
