@@ -83,6 +83,7 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "print" to { PrintCommand() },
     "graph" to { GraphCommand() },
     "serve" to { ServeCommand() },
+    "record" to { RecordCommand() },
     "help" to { HelpCommand() },
     "completion" to { CompletionCommand() },
 )

@@ -115,6 +115,16 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
         return tree.node(path)
     }
 
+    /**
+     * Where a command that follows a whole system (serve, record) starts: the node at [text], or for
+     * `/` the one name server given (the root when there are several); `/` with none is a usage error.
+     */
+    protected suspend fun systemTop(text: String): Node {
+        if (!pathOf(text).isRoot) return node(text)
+        if (session.nameServers.isEmpty()) usage("no name server: give PATH (/HOST:PORT) or -n HOST")
+        return tree.nameServers.singleOrNull() ?: tree.root
+    }
+
     /** The component at [text]; a port path is refused rather than read as its component. */
     protected suspend fun component(text: String): ComponentNode = tree.component(objectPath(text, "component").toString())
 

@@ -40,6 +40,8 @@ internal class CoordinatorView(private val coordinator: Coordinator) {
             mapOf(
                 "name" to machine.name,
                 "mode" to machine.mode.value,
+                // Every mode, nested by path, so that the page draws the machine and marks the active path in it.
+                "modes" to machine.model.modes.map { mode -> mapOf("path" to mode.path, "name" to mode.name, "parent" to mode.parent?.path) },
                 "unconsumed" to machine.unconsumed,
                 "history" to machine.history.value.takeLast(HISTORY_SHOWN).map { move ->
                     mapOf("from" to move.from, "to" to move.to, "trigger" to move.trigger, "at" to move.at.toString())

@@ -19,6 +19,7 @@ import io.ktor.server.routing.post
 import io.ktor.server.routing.routing
 import io.ktor.server.sse.SSE
 import io.ktor.server.sse.sse
+import kotlinx.coroutines.awaitCancellation
 import kotlinx.coroutines.flow.onSubscription
 import org.rtcoord.ComponentNode
 import org.rtcoord.RtcException
@@ -31,12 +32,12 @@ import java.security.MessageDigest
  * The HTTP server of the live view: the page and its scripts from the jar, and the API it uses:
  * `GET /api/snapshot` (JSON), `GET /api/events` (server-sent events: a `snapshot`, then [LiveView]'s
  * updates), `GET /api/component?path=` (a component's details, read now) and, when [LiveView.operable],
- * `POST /api/operate?path=&action=`. With a [token], every API request must carry it (`?token=` or
- * `Authorization: Bearer`). [log] receives one line per operation.
+ * `POST /api/operate?path=&action=` with the parameters the [PageOperation] needs. With a [token], every API request must carry it (`?token=` or
+ * `Authorization: Bearer`). [log] receives one line per operation. A [Served.Replayed] recording is
+ * sent whole as one `replay` event; its page cannot operate anything.
  */
 internal class LiveServer(
-    private val tree: RtcTree,
-    private val view: LiveView,
+    private val served: Served,
     private val token: String?,
     private val log: (String) -> Unit,
 ) : AutoCloseable {
@@ -54,17 +55,31 @@ internal class LiveServer(
                 staticResources("/", "org/rtcoord/cli/serve", index = "index.html")
                 staticResources("/lib", "META-INF/resources/webjars")
                 get("/api/snapshot") {
-                    call.respondText(toJson(view.snapshot(), pretty = false), ContentType.Application.Json)
+                    val snapshot = when (served) {
+                        is Served.Live -> toJson(served.view.snapshot(), pretty = false)
+                        is Served.Replayed -> served.recording.snapshot()
+                    }
+                    call.respondText(snapshot, ContentType.Application.Json)
                 }
                 sse("/api/events") {
                     // A page that loses the server (restarted, say) tries again after this long.
                     send(data = "{}", event = "hello", retry = RETRY_MILLIS)
-                    view.updates.onSubscription { send(data = toJson(view.snapshot(), pretty = false), event = "snapshot") }
-                        .collect { send(data = it.json, event = it.kind) }
+                    when (served) {
+                        is Served.Live -> served.view.updates.onSubscription { send(data = toJson(served.view.snapshot(), pretty = false), event = "snapshot") }
+                            .collect { send(data = it.json, event = it.kind) }
+                        // Held open, so that the page does not ask again; it has everything.
+                        is Served.Replayed -> {
+                            send(data = served.recording.toJson(), event = "replay")
+                            awaitCancellation()
+                        }
+                    }
                 }
                 get("/api/component") {
                     val path = call.request.queryParameters["path"]
-                    val component = path?.let { component(it) }
+                    val live = served as? Served.Live
+                        ?: return@get call.respondText("a replay has the recorded states only, not the components", status = HttpStatusCode.NotFound)
+                    val tree = live.tree
+                    val component = path?.let { component(tree, it) }
                     if (component == null) {
                         call.respondText("no component at ${path ?: "(no path given)"}", status = HttpStatusCode.NotFound)
                     } else {
@@ -90,28 +105,39 @@ internal class LiveServer(
         val path = call.request.queryParameters["path"]
         val operation = PageOperation.named(call.request.queryParameters["action"])
         val who = call.request.origin.remoteAddress
-        if (!view.operable) {
+        val live = served as? Served.Live
+        if (live == null || !live.view.operable) {
             log("refused: $who asked to ${operation?.word ?: "operate"} $path, but the page is read-only (start with --operate)")
             return call.respondText("read-only: start the server with --operate", status = HttpStatusCode.Forbidden)
         }
-        val component = path?.let { component(it) }
+        val view = live.view
+        val component = path?.let { component(live.tree, it) }
         if (operation == null || component == null) {
-            return call.respondText("action must be activate, deactivate or reset, and path a component", status = HttpStatusCode.BadRequest)
+            return call.respondText("action must be one of ${PageOperation.words}, and path a component", status = HttpStatusCode.BadRequest)
         }
-        val line = "${operation.word} $path (from $who)"
-        try {
-            operation.perform(component)
-            log("$line: done")
-            view.log("page", "$line: done")
-            call.respondText("done")
+        val given = operation.parameters.associateWith { call.request.queryParameters[it] }
+        val missing = given.filterValues { it == null }.keys
+        if (missing.isNotEmpty()) {
+            return call.respondText("${operation.word} needs ${missing.joinToString(" and ")}", status = HttpStatusCode.BadRequest)
+        }
+        val details = given.entries.joinToString("") { (name, value) -> " $name=$value" }
+        val line = "${operation.word} $path$details (from $who)"
+        val failure = try {
+            operation.perform(live.tree, component, given.mapValues { it.value!! })
+            null
         } catch (e: RtcException) {
-            log("$line: failed: ${e.message ?: e.reason}")
-            view.log("page", "$line: failed: ${e.message ?: e.reason}")
-            call.respondText(e.message ?: e.reason, status = HttpStatusCode.Conflict)
+            HttpStatusCode.Conflict to (e.message ?: e.reason)
+        } catch (e: IllegalArgumentException) {
+            // A port path that does not parse, say.
+            HttpStatusCode.BadRequest to (e.message ?: e.toString())
         }
+        val outcome = failure?.let { "failed: ${it.second}" } ?: "done"
+        log("$line: $outcome")
+        view.log("page", "$line: $outcome")
+        if (failure == null) call.respondText("done") else call.respondText(failure.second, status = failure.first)
     }
 
-    private suspend fun component(path: String): ComponentNode? = try {
+    private suspend fun component(tree: RtcTree, path: String): ComponentNode? = try {
         tree.node(path) as? ComponentNode
     } catch (e: RtcException) {
         null

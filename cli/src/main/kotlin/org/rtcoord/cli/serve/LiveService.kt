@@ -6,17 +6,26 @@ import org.rtcoord.RtcTree
 import org.rtcoord.dsl.Coordinator
 
 /**
- * A [LiveView] of [Node]s below a top node served by a [LiveServer], as `serve` and `run --serve` start
- * it; [url] is where the page is.
+ * A page served by a [LiveServer], as `serve` and `run --serve` start it: of a [LiveView] of [Node]s
+ * below a top node (recorded too, when the settings say so), or of a [Recording] replayed; [url] is
+ * where the page is.
  */
-internal class LiveService private constructor(private val view: LiveView, private val server: LiveServer, val url: String) : AutoCloseable {
+internal class LiveService private constructor(
+    private val view: LiveView?,
+    private val recorder: LiveRecorder?,
+    private val server: LiveServer,
+    val url: String,
+) : AutoCloseable {
     /** Adds a line of [source] (the coordinator, say) to the page's timeline. */
-    fun log(source: String, line: String) = view.log(source, line)
+    fun log(source: String, line: String) {
+        view?.log(source, line)
+    }
 
-    /** Stops serving and following the system. */
+    /** Stops serving, recording and following the system. */
     override fun close() {
         server.close()
-        view.close()
+        recorder?.close()
+        view?.close()
     }
 
     companion object {
@@ -34,16 +43,33 @@ internal class LiveService private constructor(private val view: LiveView, priva
         ): LiveService {
             val view = LiveView(tree, top, coordinator, events, options.operate)
             view.start()
-            val server = LiveServer(tree, view, options.token, log)
+            var recorder: LiveRecorder? = null
+            try {
+                recorder = options.record?.let { LiveRecorder.start(view, it) }
+                val server = LiveServer(Served.Live(tree, view), options.token, log)
+                return LiveService(view, recorder, server, listen(server, options))
+            } catch (e: Exception) {
+                recorder?.close()
+                view.close()
+                throw e
+            }
+        }
+
+        /** Serves [recording] to be replayed in the page, as [options] say. */
+        suspend fun replay(recording: Recording, options: ServeSettings): LiveService {
+            val server = LiveServer(Served.Replayed(recording), options.token) {}
+            return LiveService(null, null, server, listen(server, options))
+        }
+
+        /** Starts [server] where [options] say; returns the page's address. */
+        private suspend fun listen(server: LiveServer, options: ServeSettings): String {
             val port = try {
                 server.start(options.address, options.port)
             } catch (e: Exception) {
-                view.close()
                 throw IllegalArgumentException("cannot serve on ${options.address}:${options.port}: ${e.message ?: e}", e)
             }
             val host = if (':' in options.address) "[${options.address}]" else options.address
-            val url = "http://$host:$port/" + (options.token?.let { "?token=$it" } ?: "")
-            return LiveService(view, server, url)
+            return "http://$host:$port/" + (options.token?.let { "?token=$it" } ?: "")
         }
     }
 }

@@ -4,6 +4,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
+import org.rtcoord.PortKind
 import org.rtcoord.SystemSnapshot
 import org.rtcoord.ZombieNode
 import org.rtcoord.cli.ComponentNetwork
@@ -13,7 +14,8 @@ import org.rtcoord.cli.toJson
  * The system below [top] as the page draws it, from what the tree holds: naming contexts and name
  * servers as boxes around what they bind, components with their states, data and service connections
  * (from [ComponentNetwork]), managers with the components they host, zombies, and directories that
- * could not be listed. Every id is a whole path. States are [model]'s, the tree's events up to its sequence.
+ * could not be listed. Each component carries its ports (in, out, service) and each connection names
+ * the ports it joins, as RTSystemEditor draws them. Every id is a whole path. States are [model]'s, the tree's events up to its sequence.
  */
 internal class NetworkView(private val top: Node, private val model: SystemSnapshot) {
     /** Components below [top] the tree has not read yet: the view leaves them out until they are. */
@@ -38,6 +40,14 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
                 "state" to (entry?.overallState ?: snapshot.overallState).name,
                 "hostedBy" to managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
                 "fsm" to entry?.fsm?.toJson(),
+                "ports" to snapshot.ports.map { port ->
+                    mapOf(
+                        "name" to port.name,
+                        "kind" to side(port.kind),
+                        "dataType" to port.dataType,
+                        "interfaces" to port.interfaces.map { "${it.polarity.name.lowercase()} ${it.instanceName}: ${it.typeName}" },
+                    )
+                },
             )
         }
         val known = components.map { it["id"] }.toSet()
@@ -78,6 +88,13 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
                 )
             }.filter { it["source"] in known || it["target"] in known },
         )
+    }
+
+    /** Where the page draws a port of [kind]: in-ports on the left, out-ports on the right, the rest below. */
+    private fun side(kind: PortKind): String = when (kind) {
+        PortKind.DATA_IN -> "in"
+        PortKind.DATA_OUT -> "out"
+        PortKind.SERVICE, PortKind.OTHER -> "service"
     }
 
     /** A vertex id of [ComponentNetwork]: a path below [top], or already whole. */

@@ -6,8 +6,10 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
+import com.github.ajalt.clikt.parameters.types.path
 import com.github.ajalt.clikt.parameters.types.restrictTo
 import org.rtcoord.TreeConfig
+import java.nio.file.Path
 
 /**
  * How the live view is served: where it listens, the token its requests must carry and whether the
@@ -33,14 +35,22 @@ class ServeOptions(prefix: String = "") : OptionGroup("Live view") {
         help = "Require TOKEN in the page's requests: open http://HOST:PORT/?token=TOKEN.",
     ).convert { token -> token.takeIf { it.isNotBlank() && it.none(Char::isWhitespace) } ?: fail("a token is one word") }
 
-    /** Whether the page may activate, deactivate and reset components. */
+    /** Whether the page may operate components: lifecycle, connections, configuration. */
     val operate: Boolean by option(
         "--${prefix}operate",
-        help = "Let the page activate, deactivate and reset components; every action is logged.",
+        help = "Let the page activate, deactivate, reset and exit components, connect and disconnect ports, set configuration " +
+            "values and switch sets; every action is logged.",
     ).flag()
 
+    /** Where to record what the page shows, or null. */
+    val record: Path? by option(
+        "--${prefix}record",
+        metavar = "FILE",
+        help = "Write what the page shows to FILE as JSON lines, the snapshot first, then every event: replay it with serve --replay FILE.",
+    ).path(canBeDir = false)
+
     /** The settings chosen. */
-    internal fun settings(): ServeSettings = ServeSettings(address, port, token, operate)
+    internal fun settings(): ServeSettings = ServeSettings(address, port, token, operate, record)
 
     private companion object {
         const val DEFAULT_PORT = 8088

@@ -5,6 +5,12 @@
 const token = new URLSearchParams(location.search).get('token');
 const TIMELINE_KEPT = 1000;
 const STATES = ['CREATED', 'INACTIVE', 'ACTIVE', 'ERROR', 'UNKNOWN'];
+const PORT = 10;           // a port's size on screen
+const ROW = 14;            // a port's row on a component
+const TITLE = 20;          // a component's name above its ports
+const TRAFFIC_SHOWN = 600; // how long a connector stays lit after data moved
+const PORTS_FROM_ZOOM = 0.35; // below this zoom, ports are too small to see and are not drawn
+const PORTS_UP_TO = 400;      // components in a system drawn with their ports
 
 /** [path] with the token, when the page was opened with one. */
 function api(path) {
@@ -28,36 +34,48 @@ function time(iso) {
   return iso ? new Date(iso).toLocaleTimeString([], { hour12: false }) + '.' + String(new Date(iso).getMilliseconds()).padStart(3, '0') : '';
 }
 
-cytoscape.use(cytoscapeFcose);
-
 const cy = cytoscape({
   container: document.getElementById('graph'),
   wheelSensitivity: 0.3,
-  minZoom: 0.05,
+  minZoom: 0.02,
+  maxZoom: 4,
+  // Placed by rule (layout.js): dragging one node would pull it off its ports.
+  autoungrabify: true,
   // A thousand components: draw at one device pixel, and skip labels too small to read (min-zoomed-font-size).
   pixelRatio: 1,
   textureOnViewport: true,
   style: [
     { selector: 'node', style: { label: 'data(label)', 'font-size': 11, 'text-valign': 'center', 'text-halign': 'center', color: '#fff',
-      'min-zoomed-font-size': 7 } },
-    { selector: 'node.component', style: { shape: 'round-rectangle', width: 'label', height: 26, padding: 8, 'background-color': '#424242' } },
+      'min-zoomed-font-size': 6 } },
+    { selector: 'node.component', style: { shape: 'round-rectangle', width: 'data(width)', height: 'data(height)', 'text-valign': 'top',
+      'text-margin-y': 17, 'background-color': '#424242', 'border-width': 1, 'border-color': '#263238' } },
     { selector: 'node.component[state = "ACTIVE"]', style: { 'background-color': '#2e7d32' } },
     { selector: 'node.component[state = "INACTIVE"]', style: { 'background-color': '#1565c0' } },
     { selector: 'node.component[state = "ERROR"]', style: { 'background-color': '#c62828' } },
     { selector: 'node.component[state = "CREATED"]', style: { 'background-color': '#757575' } },
-    { selector: 'node.zombie', style: { 'background-color': '#000', 'border-width': 3, 'border-style': 'dashed', 'border-color': '#c62828' } },
+    { selector: 'node.zombie', style: { 'background-color': '#000', 'border-width': 3, 'border-style': 'dashed', 'border-color': '#c62828',
+      'text-valign': 'center', 'text-margin-y': 0 } },
+    { selector: 'node.port', style: { shape: 'rectangle', width: PORT, height: PORT, 'background-color': '#eceff1', 'border-width': 1,
+      'border-color': '#263238', label: 'data(label)', 'font-size': 8, color: '#fff', 'text-valign': 'center', 'text-margin-x': 'data(labelShift)',
+      'text-halign': 'data(labelSide)', 'min-zoomed-font-size': 8 } },
+    { selector: 'node.port.out', style: { shape: 'triangle', 'background-color': '#fff59d' } },
+    { selector: 'node.port.service', style: { shape: 'diamond', 'background-color': '#d7ccc8', label: '' } },
+    { selector: 'node.port.far', style: { visibility: 'hidden' } },
     { selector: 'node.context', style: { shape: 'round-rectangle', 'background-color': '#eceff1', 'border-color': '#90a4ae', 'border-width': 1,
-      color: '#455a64', 'text-valign': 'top', 'text-halign': 'center', 'font-size': 12 } },
+      color: '#455a64', 'text-valign': 'top', 'text-halign': 'center', 'font-size': 12, padding: LAYOUT.padding } },
     { selector: 'node.unreachable', style: { 'border-color': '#c62828', 'border-style': 'dashed', 'border-width': 3 } },
-    { selector: 'node.manager', style: { shape: 'hexagon', width: 'label', height: 24, padding: 8, 'background-color': '#6a1b9a' } },
-    { selector: 'node.external', style: { shape: 'round-rectangle', width: 'label', height: 22, padding: 6, 'background-opacity': 0,
+    { selector: 'node.manager', style: { shape: 'hexagon', width: 'data(width)', height: 'data(height)', 'background-color': '#6a1b9a' } },
+    { selector: 'node.external', style: { shape: 'round-rectangle', width: 'data(width)', height: 'data(height)', 'background-opacity': 0,
       'border-width': 1, 'border-style': 'dashed', color: '#455a64' } },
     { selector: 'node:selected', style: { 'border-width': 3, 'border-color': '#ffb300' } },
+    { selector: 'node.faded, edge.faded', style: { opacity: 0.2 } },
+    { selector: 'node.match', style: { 'border-width': 3, 'border-color': '#ff6f00' } },
     { selector: 'edge', style: { width: 2, 'curve-style': 'bezier', 'line-color': '#546e7a', 'font-size': 9, color: '#37474f',
       'text-background-color': '#fff', 'text-background-opacity': 0.8, 'min-zoomed-font-size': 7 } },
     { selector: 'edge.data', style: { 'target-arrow-shape': 'triangle', 'target-arrow-color': '#546e7a', label: 'data(label)' } },
-    { selector: 'edge.service', style: { 'line-color': '#8d6e63', 'line-style': 'dotted' } },
-    { selector: 'edge.hosts', style: { 'line-color': '#ce93d8', 'line-style': 'dashed', width: 1 } },
+    { selector: 'edge.service', style: { 'line-color': '#8d6e63', 'line-style': 'dashed' } },
+    { selector: 'edge.hosts', style: { 'line-color': '#ce93d8', 'line-style': 'dotted', width: 1, 'curve-style': 'straight' } },
+    { selector: 'edge.traffic', style: { 'line-color': '#ff8f00', 'target-arrow-color': '#ff8f00', width: 4 } },
   ],
 });
 
@@ -67,89 +85,219 @@ const view = {
   shown: {},                 // path -> { state, at (page clock), noticedAt (tree clock) }: when the page showed a state
   coordinatorShownAt: {},    // rule description -> { firings, at }: when the page showed a firing
   loadedAt: Date.now(),      // a reload would change it
-  renderedAt: null,
-  since: 0,                  // the tree's sequence the last snapshot held: state events up to it are already drawn          // performance.now() when the network was first drawn
+  renderedAt: null,          // performance.now() when the network was first drawn
+  since: 0,                  // the tree's sequence the last snapshot held: state events up to it are already drawn
   snapshots: 0,
+  layouts: 0,                // how often the structure changed and everything was placed again
   operable: false,
   coordinator: null,
   selected: null,
+  shape: null,               // what the layout was computed from: only a change to it moves anything
+  network: null,             // the network as last drawn
+  steered: false,            // whether the user zoomed or panned
+  aspect: null,              // the width over the height the layout aims at: the graph's, when first drawn
+  portsFar: null,            // whether the ports are left out, the view being zoomed out too far to see them
+  held: [],                  // timeline entries that came while the timeline was paused
+  replay: null,              // the recording replayed, and where in it the page is
 };
 window.rtcoord = view;
 
-/** The network as cytoscape elements. */
+/** The width [text] takes in the graph's font at [size] pixels. */
+const measure = (() => {
+  const context = document.createElement('canvas').getContext('2d');
+  const family = getComputedStyle(document.body).fontFamily;
+  return (text, size) => {
+    context.font = size + 'px ' + family;
+    return context.measureText(text).width;
+  };
+})();
+
+/** A port's node id: its component's path and its name. */
+function portId(component, port) {
+  return component + '#' + port;
+}
+
+/**
+ * A component's body and where its ports sit on it, as RTSystemEditor draws one: in-ports on the left
+ * edge, out-ports on the right, service ports along the bottom, the name on top. Sized from the names
+ * alone, so that a change of state or FSM state never moves anything.
+ */
+function componentShape(c) {
+  const ins = c.ports.filter(p => p.kind === 'in');
+  const outs = c.ports.filter(p => p.kind === 'out');
+  const services = c.ports.filter(p => p.kind === 'service');
+  const widest = ports => Math.max(0, ...ports.map(p => measure(p.name, 8)));
+  const width = Math.ceil(Math.max(measure(c.name, 11) + (c.fsm ? 70 : 0) + 16, widest(ins) + widest(outs) + 3 * PORT + 12,
+    services.length * (PORT + 8) + 16, 60));
+  const height = TITLE + Math.max(ins.length, outs.length, 1) * ROW + 4;
+  const offsets = new Map();
+  ins.forEach((p, i) => offsets.set(p.name, { x: -width / 2, y: -height / 2 + TITLE + i * ROW + ROW / 2, side: 'right' }));
+  outs.forEach((p, i) => offsets.set(p.name, { x: width / 2, y: -height / 2 + TITLE + i * ROW + ROW / 2, side: 'left' }));
+  services.forEach((p, i) => offsets.set(p.name, { x: -width / 2 + 12 + i * (PORT + 8), y: height / 2, side: 'center' }));
+  return { width, height, offsets };
+}
+
+/** The network as nodes to place (with their sizes) and edges, each node's parent a naming context. */
 function elementsOf(network) {
   const contexts = new Set(network.contexts.map(c => c.id));
   const parentOf = id => (id && contexts.has(id) ? id : undefined);
   const nodes = [];
+  const leaves = [];
+  const ports = [];
   network.contexts.forEach(c => nodes.push({ group: 'nodes', classes: 'context' + (c.reachable ? '' : ' unreachable'),
     data: { id: c.id, label: c.name + (c.reachable ? '' : ' (unreachable)'), parent: parentOf(c.parent) } }));
-  network.managers.forEach(m => nodes.push({ group: 'nodes', classes: 'manager', data: { id: m.id, label: m.name, parent: parentOf(m.parent) } }));
-  network.components.forEach(c => nodes.push({ group: 'nodes', classes: 'component',
-    data: { id: c.id, label: componentLabel(c.name, c.fsm), state: c.state, parent: parentOf(c.parent) } }));
-  network.zombies.forEach(z => nodes.push({ group: 'nodes', classes: 'component zombie',
-    data: { id: z.id, label: z.name + ' (zombie)', state: 'ZOMBIE', parent: parentOf(z.parent) } }));
-  network.external.forEach(x => nodes.push({ group: 'nodes', classes: 'external', data: { id: x.id, label: x.name } }));
+  const box = (id, label, size, height, parent, classes, extra) => {
+    const width = Math.ceil(measure(label, size) + 20);
+    nodes.push({ group: 'nodes', classes, data: { id, label, parent: parentOf(parent), width, height, ...extra } });
+    leaves.push({ id, parent: parentOf(parent), width, height });
+  };
+  network.managers.forEach(m => box(m.id, m.name, 11, 26, m.parent, 'manager'));
+  network.components.forEach(c => {
+    const shape = componentShape(c);
+    nodes.push({ group: 'nodes', classes: 'component', data: { id: c.id, label: componentLabel(c.name, c.fsm), state: c.state,
+      parent: parentOf(c.parent), width: shape.width, height: shape.height } });
+    // The ports stick out of the body by half their size: the layout leaves room for them.
+    leaves.push({ id: c.id, parent: parentOf(c.parent), width: shape.width + PORT, height: shape.height + PORT / 2 });
+    // Port nodes multiply what is drawn several times over: beyond a few hundred components, connectors join the components.
+    if (network.components.length > PORTS_UP_TO) return;
+    c.ports.forEach(p => {
+      const at = shape.offsets.get(p.name);
+      ports.push({ id: portId(c.id, p.name), component: c.id, dx: at.x, dy: at.y });
+      nodes.push({ group: 'nodes', classes: 'port ' + p.kind, data: { id: portId(c.id, p.name), component: c.id, parent: parentOf(c.parent),
+        label: p.kind === 'service' ? '' : p.name, name: p.name, kind: p.kind, dataType: p.dataType || '', interfaces: p.interfaces || [],
+        labelSide: at.side, labelShift: at.side === 'right' ? 2 : at.side === 'left' ? -2 : 0 } });
+    });
+  });
+  network.zombies.forEach(z => box(z.id, z.name + ' (zombie)', 11, 26, z.parent, 'component zombie', { state: 'ZOMBIE' }));
+  network.external.forEach(x => box(x.id, x.name, 11, 24, undefined, 'external'));
   const ids = new Set(nodes.map(n => n.data.id));
+  const end = (vertex, port) => (ids.has(portId(vertex, port)) ? portId(vertex, port) : vertex);
   const edges = [];
-  network.connections.filter(c => ids.has(c.source) && ids.has(c.target)).forEach(c => edges.push({ group: 'edges', classes: c.kind,
-    data: { id: c.kind + ':' + c.source + ':' + c.sourcePort + '->' + c.target + ':' + c.targetPort, source: c.source, target: c.target,
-      label: c.label || '' } }));
+  network.connections.filter(c => ids.has(c.source) && ids.has(c.target)).forEach(c => {
+    const source = end(c.source, c.sourcePort);
+    const target = end(c.target, c.targetPort);
+    edges.push({ group: 'edges', classes: c.kind, data: { id: c.kind + ':' + source + '->' + target, source, target, label: c.label || '',
+      connection: c.source + ':' + c.sourcePort + '->' + c.target + ':' + c.targetPort } });
+  });
   network.managers.forEach(m => m.hosts.filter(h => ids.has(h)).forEach(h => edges.push({ group: 'edges', classes: 'hosts',
     data: { id: 'hosts:' + m.id + '->' + h, source: m.id, target: h } })));
-  return nodes.concat(edges);
+  // Data flows left to right; a manager comes before what it hosts.
+  const ranks = flowRanks(leaves.map(l => l.id), network.connections.filter(c => c.kind === 'data').map(c => [c.source, c.target]));
+  const managers = new Set(network.managers.map(m => m.id));
+  leaves.forEach(l => { l.rank = managers.has(l.id) ? -1 : ranks.get(l.id); });
+  return { nodes, edges, leaves, ports };
 }
 
-/** Draws [network], moving nothing that stays: only a change of shape runs the layout again. */
+/** Where every node goes: the leaves as the layout places them, each port on its component's edge. */
+function positionsOf(elements, contexts) {
+  // Shaped like the window the first time; kept for good, so that the same system is placed the same way.
+  if (!view.aspect) view.aspect = Math.min(3, Math.max(0.5, cy.width() / Math.max(1, cy.height())));
+  const positions = layoutSystem(elements.leaves, contexts, view.aspect);
+  elements.ports.forEach(p => {
+    const at = positions.get(p.component);
+    positions.set(p.id, { x: at.x + p.dx, y: at.y + p.dy });
+  });
+  return positions;
+}
+
+/**
+ * Draws [network]. Positions are computed from its shape alone (what is there, inside what, with
+ * which ports and connections): a change of state moves nothing, a change of shape places everything
+ * again, the same way each time. Every node gets its position as it is added, so that each edge has
+ * its ends, and its box, from the first frame.
+ */
 function drawNetwork(network) {
   document.getElementById('top').textContent = network.top;
-  const wanted = elementsOf(network);
+  const elements = elementsOf(network);
+  const wanted = elements.nodes.concat(elements.edges);
+  const shape = JSON.stringify([elements.nodes.map(n => [n.data.id, n.data.parent, n.data.width, n.data.height]),
+    elements.edges.map(e => e.data.id)]);
+  const reshaped = shape !== view.shape;
+  const positions = reshaped ? positionsOf(elements, network.contexts) : null;
   const wantedIds = new Set(wanted.map(e => e.data.id));
-  let reshaped = false;
   cy.batch(() => {
-    cy.elements().filter(e => !wantedIds.has(e.id())).forEach(e => { cy.remove(e); reshaped = true; });
-    wanted.forEach(e => {
+    cy.elements().filter(e => !wantedIds.has(e.id())).remove();
+    elements.nodes.forEach(e => {
       const existing = cy.getElementById(e.data.id);
-      if (existing.nonempty() && (existing.data('parent') || undefined) !== e.data.parent && e.group === 'nodes') {
-        cy.remove(existing);
-      }
+      // A node's parent cannot change in place: it is added again.
+      if (existing.nonempty() && (existing.data('parent') || undefined) !== e.data.parent) existing.remove();
+    });
+    wanted.forEach(e => {
       const present = cy.getElementById(e.data.id);
       if (present.empty()) {
-        cy.add(e);
-        reshaped = true;
+        cy.add(e.group === 'nodes' && positions && positions.has(e.data.id) ? { ...e, position: positions.get(e.data.id) } : e);
       } else {
         present.data(e.data);
         present.classes(e.classes);
       }
     });
+    if (positions) cy.nodes().forEach(n => { if (positions.has(n.id())) n.position(positions.get(n.id())); });
   });
-  view.components = new Map(network.components.concat(network.zombies.map(z => ({ ...z, state: 'ZOMBIE' }))).map(c => [c.id, c]));
+  view.network = network;
+  // Copies: state events change them, and a replay draws the same network again from the start.
+  view.components = new Map(network.components.map(c => ({ ...c })).concat(network.zombies.map(z => ({ ...z, state: 'ZOMBIE', ports: [] })))
+    .map(c => [c.id, c]));
   network.components.forEach(c => noteShown(c.id, c.state));
   listComponents();
   document.getElementById('counts').textContent =
     network.components.length + ' components, ' + network.connections.length + ' connections' +
     (network.zombies.length ? ', ' + network.zombies.length + ' zombies' : '');
-  if (reshaped) layout();
+  if (reshaped) {
+    view.portsFar = null;
+    view.shape = shape;
+    view.layouts++;
+    if (!view.steered) fit();
+    find(document.getElementById('find').value);
+    portsAtZoom();
+  }
+  if (view.renderedAt === null) view.renderedAt = performance.now();
+  document.body.dataset.rendered = 'true';
 }
 
-function layout() {
-  const count = cy.nodes().length;
-  const running = cy.layout({
-    name: 'fcose',
-    quality: count > 300 ? 'draft' : 'default',
-    randomize: true,
-    animate: false,
-    nodeDimensionsIncludeLabels: true,
-    packComponents: true,
-    idealEdgeLength: 80,
-    nodeRepulsion: 6000,
-  });
-  running.one('layoutstop', () => {
-    cy.fit(undefined, 20);
-    if (view.renderedAt === null) view.renderedAt = performance.now();
-    document.body.dataset.rendered = 'true';
-  });
-  running.run();
+/**
+ * Ports are a few pixels when the view is zoomed out far: they are left out then (their connectors
+ * stay), which keeps a thousand components quick to draw.
+ */
+function portsAtZoom() {
+  const far = cy.zoom() < PORTS_FROM_ZOOM;
+  if (far === view.portsFar) return;
+  view.portsFar = far;
+  cy.batch(() => { if (far) cy.nodes('.port').addClass('far'); else cy.nodes('.port').removeClass('far'); });
 }
+cy.on('zoom', portsAtZoom);
+
+/** The whole system in the window, unless the user moved the view. */
+function fit() {
+  cy.fit(undefined, 20);
+}
+
+/** Highlights the components whose path or type holds [text], fades the rest and brings them into view. */
+function find(text) {
+  const wanted = text.trim().toLowerCase();
+  cy.batch(() => {
+    cy.elements().removeClass('faded match');
+    if (!wanted) return;
+    const matches = cy.nodes('.component').filter(n => n.id().toLowerCase().includes(wanted) ||
+      ((view.components.get(n.id()) || {}).type || '').toLowerCase().includes(wanted));
+    const ports = cy.nodes('.port').filter(p => matches.some(m => m.id() === p.data('component')));
+    matches.addClass('match');
+    cy.elements().not(matches).not(ports).not('.context').addClass('faded');
+    matches.connectedEdges().removeClass('faded');
+    ports.connectedEdges().removeClass('faded');
+  });
+  const matched = cy.nodes('.match');
+  if (matched.nonempty()) cy.fit(matched, 60);
+  document.getElementById('found').textContent = wanted ? matched.length + ' found' : '';
+}
+
+/** A connector's data moved: it lights up for a moment. */
+function showTraffic(path, port) {
+  const connectors = cy.getElementById(portId(path, port)).connectedEdges();
+  connectors.addClass('traffic');
+  clearTimeout(view.trafficTimers[portId(path, port)]);
+  view.trafficTimers[portId(path, port)] = setTimeout(() => connectors.removeClass('traffic'), TRAFFIC_SHOWN);
+}
+view.trafficTimers = {};
 
 function noteShown(path, state) {
   const previous = view.shown[path];
@@ -202,7 +350,17 @@ function timelineEntry(entry) {
   return li;
 }
 
+/**
+ * Adds [entries] to the timeline, newest on top, or puts them in its place when [replace]. While the
+ * timeline is paused, new entries wait in view.held and come in on resuming.
+ */
 function addToTimeline(entries, replace) {
+  if (replace) view.held = [];
+  if (!replace && document.getElementById('pause').checked) {
+    view.held.push(...entries);
+    document.getElementById('held').textContent = view.held.length + ' waiting';
+    return;
+  }
   const timeline = document.getElementById('timeline');
   const items = entries.map(timelineEntry).reverse();
   if (replace) timeline.replaceChildren(...items); else timeline.prepend(...items);
@@ -210,7 +368,7 @@ function addToTimeline(entries, replace) {
 }
 
 function visible(li) {
-  const kinds = [...document.querySelectorAll('#filters input[type=checkbox]:checked')].map(i => i.value);
+  const kinds = [...document.querySelectorAll('#filters input[type=checkbox][value]:checked')].map(i => i.value);
   const search = document.getElementById('search').value.toLowerCase();
   return kinds.includes(li.dataset.kind) && (!search || li.textContent.toLowerCase().includes(search));
 }
@@ -218,7 +376,14 @@ function visible(li) {
 function refilter() {
   document.querySelectorAll('#timeline li').forEach(li => { li.hidden = !visible(li); });
 }
-document.querySelectorAll('#filters input').forEach(input => input.addEventListener('input', refilter));
+document.querySelectorAll('#filters input[value], #search').forEach(input => input.addEventListener('input', refilter));
+document.getElementById('pause').addEventListener('change', event => {
+  if (event.target.checked) return;
+  const held = view.held;
+  view.held = [];
+  document.getElementById('held').textContent = '';
+  addToTimeline(held, false);
+});
 
 function showCoordinator(state) {
   view.coordinator = state;
@@ -237,6 +402,7 @@ function showCoordinator(state) {
   document.getElementById('machines').replaceChildren(...(state.machines.length ? [element('h2', {}, 'Mode machines')] : []),
     ...state.machines.map(machine => element('div', { class: 'machine', 'data-machine': machine.name, 'data-mode': machine.mode },
       element('div', {}, machine.name + ': ', element('span', { class: 'mode' }, machine.mode || '(not started)')),
+      modeTree(machine, null),
       element('ol', { class: 'muted' }, ...machine.history.slice(-8).reverse().map(move =>
         element('li', {}, time(move.at) + ' ' + (move.from || 'start') + ' → ' + move.to + ' on ' + move.trigger))),
       machine.unconsumed ? element('div', { class: 'muted' }, machine.unconsumed + ' events unconsumed') : '')));
@@ -247,6 +413,19 @@ function showCoordinator(state) {
       s.waitingUntil ? element('div', {}, 'back-off ' + s.backoffMillis + ' ms, until ' + time(s.waitingUntil)) : '',
       s.escalation ? element('div', { class: 'error' }, 'escalated: ' + s.escalation) : '')));
   if (state.failures) section.dataset.failures = state.failures;
+}
+
+/**
+ * The component panel: profile, ports with their connectors, configuration sets (the active one
+ * marked), execution contexts with rate and state; with --operate, a control for each operation.
+ */
+/** [machine]'s modes below [parent] as nested lists, the modes on the active path marked. */
+function modeTree(machine, parent) {
+  const modes = (machine.modes || []).filter(m => (m.parent || null) === parent);
+  if (!modes.length) return '';
+  const active = m => machine.mode === m.path || (machine.mode || '').startsWith(m.path + '/');
+  return element('ul', { class: 'modes' }, ...modes.map(m => element('li', { 'data-mode-path': m.path, class: active(m) ? 'active' : '' },
+    m.name, modeTree(machine, m.path))));
 }
 
 async function showDetails(path) {
@@ -261,39 +440,105 @@ async function showDetails(path) {
   }
   if (view.selected !== path) return;
   const rows = pairs => element('table', {}, ...pairs.map(([k, v]) => element('tr', {}, element('td', {}, k), element('td', {}, v))));
+  const button = (label, action, parameters) => {
+    const control = element('button', { 'data-action': action }, label);
+    control.addEventListener('click', () => operate(path, action, typeof parameters === 'function' ? parameters() : parameters));
+    return view.operable ? control : '';
+  };
   const parts = [element('h2', {}, 'Component'), element('div', { 'data-details': path }, element('strong', {}, path), ' ',
     report.state ? stateBadge(report.state) : '')];
   if (report.error) {
     parts.push(element('p', { class: 'error' }, report.error));
-  } else {
-    parts.push(rows([['type', report.typeName], ['version', report.version], ['vendor', report.vendor], ['category', report.category],
-      ['description', report.description]].concat(report.fsm ? [['FSM state', report.fsm.state || 'unknown (' + report.fsm.unknownBecause + ')']] : [])));
-    if (view.operable) {
-      parts.push(element('div', {}, ...['activate', 'deactivate', 'reset'].map(action => {
-        const button = element('button', { 'data-action': action }, action);
-        button.addEventListener('click', () => operate(path, action));
-        return button;
+    details.replaceChildren(...parts);
+    return;
+  }
+  parts.push(rows([['type', report.typeName], ['version', report.version], ['vendor', report.vendor], ['category', report.category],
+    ['description', report.description]].concat(report.fsm ? [['FSM state', report.fsm.state || 'unknown (' + report.fsm.unknownBecause + ')']] : [])));
+  if (view.operable) parts.push(element('div', {}, ...['activate', 'deactivate', 'reset', 'exit'].map(action => button(action, action, {}))));
+  parts.push(element('h2', {}, 'Ports'), element('table', { class: 'ports' }, ...report.ports.map(p => element('tr', { 'data-port': p.name },
+    element('td', {}, p.name + ' (' + p.kind + ')', element('div', { class: 'muted' }, p.dataType || p.interfaces.map(i => i.instanceName + ': ' + i.typeName).join(', '))),
+    element('td', {}, ...p.connections.map(c => element('div', { 'data-connector': c.id },
+      c.ports.map(e => e.path || e.name).join(' ↔ '), ' ',
+      element('span', { class: 'muted' }, Object.entries(c.properties).filter(([k]) => /interface_type|dataflow_type|subscription_type/.test(k))
+        .map(([k, v]) => k.replace('dataport.', '') + '=' + v).join(' ')),
+      button('disconnect', 'disconnect', { port: p.name, connector: c.id }))))))));
+  if (view.operable) parts.push(element('p', { class: 'hint' }, 'Drag from a port to another to connect them.'));
+  parts.push(element('h2', {}, 'Execution contexts'), rows(report.contexts.map(c => ['#' + c.handle + ' ' + c.kind,
+    c.rate + ' Hz, ' + (c.running ? 'running' : 'stopped') + ', ' + c.state + (c.owned ? ', owned' : ', participating')])));
+  if (report.configuration) {
+    const active = report.configuration.active;
+    parts.push(element('h2', {}, 'Configuration'));
+    Object.entries(report.configuration.sets).forEach(([set, values]) => {
+      parts.push(element('div', { class: 'set', 'data-set': set, 'data-active': String(set === active) },
+        element('strong', {}, set), set === active ? ' (active)' : ' ', set === active ? '' : button('activate', 'activate-set', { set })));
+      parts.push(rows(Object.entries(values).map(([name, value]) => {
+        if (!view.operable) return [name, value];
+        const input = element('input', { value, 'data-parameter': set + '.' + name, 'aria-label': set + '.' + name });
+        return [name, element('span', {}, input, button('set', 'set', () => ({ set, name, value: input.value })))];
       })));
-    }
-    parts.push(element('h2', {}, 'Ports'), rows(report.ports.map(p => [p.name + ' (' + p.kind + ')',
-      (p.dataType || '') + (p.connections.length ? ' → ' + p.connections.map(c => c.ports.map(e => e.name).join(' ↔ ')).join('; ') : '')])));
-    parts.push(element('h2', {}, 'Execution contexts'), rows(report.contexts.map(c => ['#' + c.handle + ' ' + c.kind,
-      c.rate + ' Hz, ' + (c.running ? 'running' : 'stopped') + ', ' + c.state + (c.owned ? ', owned' : ', participating')])));
-    if (report.configuration) {
-      parts.push(element('h2', {}, 'Configuration (active: ' + report.configuration.active + ')'),
-        rows(Object.entries(report.configuration.sets).flatMap(([set, values]) =>
-          Object.entries(values).map(([name, value]) => [set + '.' + name, value]))));
-    }
+    });
   }
   details.replaceChildren(...parts);
 }
 
-async function operate(path, action) {
-  const response = await fetch(api('/api/operate?path=' + encodeURIComponent(path) + '&action=' + action), { method: 'POST' });
-  if (!response.ok) alert(action + ' ' + path + ': ' + await response.text());
+/** Asks the server to do [action] on [path] with [parameters]; says why when it refuses or fails. */
+async function operate(path, action, parameters) {
+  const query = Object.entries(parameters || {}).map(([k, v]) => '&' + k + '=' + encodeURIComponent(v)).join('');
+  const response = await fetch(api('/api/operate?path=' + encodeURIComponent(path) + '&action=' + action + query), { method: 'POST' });
+  const text = await response.text();
+  view.lastOperation = { path, action, parameters, status: response.status, text };
+  const said = document.getElementById('operation');
+  said.textContent = action + ' ' + path + ': ' + text;
+  said.className = response.ok ? 'muted' : 'error';
+  if (response.ok && view.selected === path) showDetails(path);
+  return response.status;
 }
+view.operate = operate;
+
+// With --operate, a drag from one port to another connects them: the view does not pan meanwhile.
+cy.on('tapstart', 'node.port', event => {
+  if (!view.operable || view.replay) return;
+  view.dragFrom = event.target;
+  cy.userPanningEnabled(false);
+});
+cy.on('tapend', event => {
+  const from = view.dragFrom;
+  view.dragFrom = null;
+  cy.userPanningEnabled(true);
+  const to = event.target;
+  if (!from || to === cy || !to.hasClass('port') || to.id() === from.id()) return;
+  const [out, into] = from.hasClass('in') ? [to, from] : [from, to];
+  operate(out.data('component'), 'connect', { port: out.data('name'), to: into.data('component') + ':' + into.data('name') });
+});
 
 cy.on('tap', 'node.component', event => showDetails(event.target.id()));
+cy.on('tap', 'node.port', event => showDetails(event.target.data('component')));
+
+// A port tells its name, kind and data type (or its interfaces) under the pointer.
+const tip = document.getElementById('tip');
+cy.on('mouseover', 'node.port', event => {
+  const port = event.target.data();
+  tip.textContent = port.name + ' (' + port.kind + ')' + (port.dataType ? ': ' + port.dataType : '') +
+    (port.interfaces.length ? ': ' + port.interfaces.join(', ') : '');
+  const at = event.renderedPosition;
+  const graph = cy.container().getBoundingClientRect();
+  tip.style.left = (graph.left + at.x + 12) + 'px';
+  tip.style.top = (graph.top + at.y + 12) + 'px';
+  tip.hidden = false;
+});
+cy.on('mouseout', 'node.port', () => { tip.hidden = true; });
+
+// Once the user zooms or pans, a change of structure leaves the view where they put it.
+['wheel', 'mousedown', 'touchstart'].forEach(kind => cy.container().addEventListener(kind, () => { view.steered = true; }, { passive: true }));
+document.getElementById('zoom-in').addEventListener('click', () => zoomBy(1.25));
+document.getElementById('zoom-out').addEventListener('click', () => zoomBy(0.8));
+document.getElementById('zoom-fit').addEventListener('click', () => { view.steered = false; fit(); });
+document.getElementById('find').addEventListener('input', event => find(event.target.value));
+
+function zoomBy(factor) {
+  view.steered = true;
+  cy.zoom({ level: cy.zoom() * factor, renderedPosition: { x: cy.width() / 2, y: cy.height() / 2 } });
+}
 document.getElementById('components').addEventListener('click', event => {
   const item = event.target.closest('li[data-component]');
   if (!item) return;
@@ -308,34 +553,48 @@ function connected(yes, text) {
   status.textContent = text;
 }
 
-/** Listens to the server; when it goes away (restarted, say), tries again until it is back. */
+/** What the server sent, applied to the page: the same for a live stream, a snapshot alone and a replay. */
+function apply(kind, data) {
+  if (kind === 'snapshot') {
+    view.snapshots++;
+    view.operable = data.operable;
+    drawNetwork(data.network);
+    // The network holds the tree's events up to its sequence: older ones that reach the page after it are history.
+    view.since = data.network.sequence || 0;
+    showCoordinator(data.coordinator);
+    addToTimeline(data.events, true);
+  } else if (kind === 'network') {
+    drawNetwork(data);
+    view.since = Math.max(view.since, data.sequence || 0);
+  } else if (kind === 'coordinator') {
+    showCoordinator(data);
+  } else if (kind === 'event') {
+    const news = !data.sequence || data.sequence > view.since;
+    if (news && data.event === 'StateChanged' && STATES.includes(data.new)) applyState(data.source, data.new, data.noticedAt);
+    if (news && data.event === 'FsmStateChanged') applyFsmState(data.source, data.new);
+    if (data.event === 'PortTraffic' && !view.replay) showTraffic(data.source, data.port);
+    if (data.event === 'BecameZombie') cy.getElementById(data.source).addClass('zombie');
+    if (data.event === 'Recovered') cy.getElementById(data.source).removeClass('zombie');
+    addToTimeline([data], false);
+  }
+}
+
+/**
+ * Listens to the server; when it goes away (restarted, say), tries again until it is back. A server
+ * replaying a recording sends it whole instead, once.
+ */
 function connect() {
   const events = new EventSource(api('/api/events'));
   events.addEventListener('snapshot', message => {
     const snapshot = JSON.parse(message.data);
-    view.snapshots++;
-    view.operable = snapshot.operable;
     connected(true, 'live' + (snapshot.operable ? ', operable' : ', read-only'));
-    drawNetwork(snapshot.network);
-    // The network holds the tree's events up to its sequence: older ones that reach the page after it are history.
-    view.since = snapshot.network.sequence || 0;
-    showCoordinator(snapshot.coordinator);
-    addToTimeline(snapshot.events, true);
+    apply('snapshot', snapshot);
   });
-  events.addEventListener('network', message => {
-    const network = JSON.parse(message.data);
-    drawNetwork(network);
-    view.since = Math.max(view.since, network.sequence || 0);
-  });
-  events.addEventListener('coordinator', message => showCoordinator(JSON.parse(message.data)));
-  events.addEventListener('event', message => {
-    const entry = JSON.parse(message.data);
-    const news = !entry.sequence || entry.sequence > view.since;
-    if (news && entry.event === 'StateChanged' && STATES.includes(entry.new)) applyState(entry.source, entry.new, entry.noticedAt);
-    if (news && entry.event === 'FsmStateChanged') applyFsmState(entry.source, entry.new);
-    if (entry.event === 'BecameZombie') cy.getElementById(entry.source).addClass('zombie');
-    if (entry.event === 'Recovered') cy.getElementById(entry.source).removeClass('zombie');
-    addToTimeline([entry], false);
+  ['network', 'coordinator', 'event'].forEach(kind => events.addEventListener(kind, message => apply(kind, JSON.parse(message.data))));
+  events.addEventListener('replay', message => {
+    events.close();
+    connected(true, 'replay');
+    startReplay(JSON.parse(message.data));
   });
   events.onerror = () => {
     connected(false, 'reconnecting…');
@@ -343,4 +602,16 @@ function connect() {
     if (events.readyState === EventSource.CLOSED) setTimeout(connect, 1000);
   };
 }
-connect();
+
+/**
+ * The page as it stands, once: no event stream, so that a headless browser taking a picture with a
+ * virtual time budget is not held by a request that never ends (`?once`).
+ */
+async function showOnce() {
+  const response = await fetch(api('/api/snapshot'));
+  const snapshot = await response.json();
+  connected(true, 'as of ' + time(snapshot.serverTime));
+  apply('snapshot', snapshot);
+}
+
+if (new URLSearchParams(location.search).has('once')) showOnce(); else connect();

@@ -12,7 +12,6 @@ import kotlinx.serialization.json.put
 import org.junit.jupiter.api.Assertions.fail
 import org.junit.jupiter.api.Assumptions.assumeTrue
 import org.rtcoord.fixtures.awaitValue
-import java.io.File
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
@@ -30,7 +29,7 @@ import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * Debian's Chromium, headless, driven over the Chrome DevTools Protocol on one page: navigate,
+ * Chromium (found as [Chromium] finds it), headless, driven over the Chrome DevTools Protocol on one page: navigate,
  * evaluate JavaScript, take screenshots. Its DevTools port is chosen by Chromium and listens on
  * loopback. Missing Chromium skips the test outside CI and fails it in CI, as missing peers do.
  */
@@ -116,14 +115,13 @@ class HeadlessChromium private constructor(private val process: Process, private
     companion object {
         /** Starts Chromium with a [width]×[height] window and connects to its first page. */
         fun start(width: Int = 1400, height: Int = 900): HeadlessChromium {
-            val executable = listOf("chromium", "chromium-browser", "google-chrome").firstNotNullOfOrNull(::onPath)
-                ?: missing("chromium is not installed (apt-get install chromium; .ci/run does it)")
+            assumeInstalled()
+            val executable = Chromium.executable()!!
             val profile = Files.createTempDirectory("rtcoord-chromium")
             val process = ProcessBuilder(
-                executable.toString(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--no-first-run", "--no-default-browser-check", "--disable-extensions", "--hide-scrollbars",
-                "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0", "--user-data-dir=$profile",
-                "--window-size=$width,$height", "about:blank",
+                listOf(executable.toString()) + Chromium.headlessFlags(profile) + listOf(
+                    "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0", "--window-size=$width,$height", "about:blank",
+                ),
             ).redirectErrorStream(true).redirectOutput(profile.resolve("chromium.log").toFile()).start()
             try {
                 val active = profile.resolve("DevToolsActivePort")
@@ -149,12 +147,15 @@ class HeadlessChromium private constructor(private val process: Process, private
             }
         }
 
+        /** Skips the test when Chromium is not installed, outside CI; fails it in CI. */
+        fun assumeInstalled() {
+            if (Chromium.executable() == null) missing("chromium is not installed (apt-get install chromium; .ci/run does it)")
+        }
+
         private fun missing(why: String): Nothing {
             if (System.getenv("CI") != null) fail<Unit>(why) else assumeTrue(false, why)
             throw IllegalStateException(why)
         }
 
-        private fun onPath(name: String): Path? = System.getenv("PATH").orEmpty().split(File.pathSeparatorChar)
-            .filter { it.isNotEmpty() }.map { Path.of(it, name) }.firstOrNull { Files.isExecutable(it) }
     }
 }

@@ -117,6 +117,35 @@ class ServeApiTest {
     }
 
     @Test
+    fun `every operation is refused when read-only, and done with --operate`() {
+        val laser = localisation.path("laser0.rtc")
+        val readOnly = serve()
+        for (operation in PageOperation.entries) {
+            assertEquals(403, post("${readOnly}api/operate?path=${encoded(laser)}&action=${operation.word}").statusCode(), operation.word)
+        }
+        val operable = serve("--operate")
+        fun details() = json(get("${operable}api/component?path=${encoded(laser)}").body())
+        fun operate(query: String) = post("${operable}api/operate?path=${encoded(laser)}&$query")
+        assertEquals("connect needs port and to", operate("action=connect").body())
+
+        val sets = details()["configuration"]!!.jsonObject["sets"]!!.jsonObject
+        val (set, parameters) = sets.entries.first()
+        val parameter = parameters.jsonObject.keys.first()
+        assertEquals(200, operate("action=set&set=${encoded(set)}&name=${encoded(parameter)}&value=7").statusCode())
+        assertEquals("7", details()["configuration"]!!.jsonObject["sets"]!!.jsonObject[set]!!.jsonObject[parameter]!!.jsonPrimitive.content)
+        assertEquals(200, operate("action=activate-set&set=${encoded(set)}").statusCode())
+        assertEquals(set, details()["configuration"]!!.jsonObject["active"]!!.jsonPrimitive.content)
+
+        val connector = details()["ports"]!!.jsonArray.single().jsonObject["connections"]!!.jsonArray.single().jsonObject["id"]!!.jsonPrimitive.content
+        assertEquals(200, operate("action=disconnect&port=laser&connector=${encoded(connector)}").statusCode())
+        assertTrue(details()["ports"]!!.jsonArray.single().jsonObject["connections"]!!.jsonArray.isEmpty(), "laser0:laser disconnected")
+        assertEquals(200, operate("action=connect&port=laser&to=${encoded(localisation.path("laser_localise0.rtc:laser"))}").statusCode())
+        assertEquals(1, details()["ports"]!!.jsonArray.single().jsonObject["connections"]!!.jsonArray.size, "laser0:laser connected again")
+        val logged = json(get("${operable}api/snapshot").body())["events"]!!.jsonArray.map { it.jsonObject["text"]!!.jsonPrimitive.content }
+        assertTrue(logged.any { it.startsWith("disconnect $laser port=laser connector=$connector") && it.endsWith(": done") }, logged.joinToString("\n"))
+    }
+
+    @Test
     fun `with a token every API request must carry it`() {
         val base = serve("--token", "s3cret")
         assertEquals(401, get("${base}api/snapshot").statusCode())
@@ -133,7 +162,7 @@ class ServeApiTest {
         val base = serve()
         val page = get(base)
         assertEquals(200, page.statusCode())
-        Regex("""src="([^"]+)"""").findAll(page.body()).map { it.groupValues[1] }.toList().also { assertEquals(5, it.size) }
+        Regex("""src="([^"]+)"""").findAll(page.body()).map { it.groupValues[1] }.toList().also { assertEquals(4, it.size) }
             .forEach { script -> assertEquals(200, get(base + script).statusCode(), script) }
     }
 

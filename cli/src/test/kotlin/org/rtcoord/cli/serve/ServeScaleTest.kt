@@ -1,15 +1,10 @@
 package org.rtcoord.cli.serve
 
-import kotlinx.coroutines.runBlocking
 import kotlinx.serialization.json.double
 import kotlinx.serialization.json.jsonPrimitive
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.rtcoord.EventOptions
-import org.rtcoord.RtcTree
-import org.rtcoord.TreeConfig
 import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -18,37 +13,28 @@ import kotlin.time.TimeSource
 class ServeScaleTest {
     @Test
     fun `a thousand components render and the page stays responsive`() {
-        NamingService.start().use { naming ->
-            Scenarios.scale(naming.corbaloc, COUNT).use {
-                RtcTree.create(TreeConfig(listOf(naming.address), 10.seconds)).use { tree ->
-                    val service = runBlocking { LiveService.start(tree, tree.node("/${naming.address}"), null, EventOptions(), ServeSettings()) {} }
-                    service.use {
-                        HeadlessChromium.start().use { browser ->
-                            val opened = TimeSource.Monotonic.markNow()
-                            browser.navigate(service.url)
-                            browser.await("$COUNT components drawn", 5.minutes, "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === $COUNT")
-                            val firstRender = browser.evaluate("rtcoord.renderedAt").jsonPrimitive.double
-                            val seen = opened.elapsedNow()
-                            browser.screenshot(java.nio.file.Paths.get("target", "serve", "scale.png"))
+        servedScenario({ Scenarios.scale(it, COUNT) }) { _, service, browser ->
+            val opened = TimeSource.Monotonic.markNow()
+            browser.navigate(service.url)
+            browser.await("$COUNT components drawn", 5.minutes, "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === $COUNT")
+            val firstRender = browser.evaluate("rtcoord.renderedAt").jsonPrimitive.double
+            val seen = opened.elapsedNow()
+            browser.screenshot(java.nio.file.Paths.get("target", "serve", "scale.png"))
 
-                            // A click shows a component's details; zooming answers at once.
-                            val asked = TimeSource.Monotonic.markNow()
-                            browser.evaluate("document.querySelector('#components li[data-component\$=\"/relay1.rtc\"]').click()")
-                            browser.await("relay1's details", 60.seconds, "document.querySelector('[data-details\$=\"/relay1.rtc\"]') !== null")
-                            val details = asked.elapsedNow()
-                            val roundTrips = (1..10).map {
-                                val mark = TimeSource.Monotonic.markNow()
-                                browser.evaluate("rtcoord.cy.zoom(rtcoord.cy.zoom() * 1.1); rtcoord.cy.nodes().length")
-                                mark.elapsedNow().inWholeMilliseconds
-                            }
-                            println("serve: $COUNT components: first render ${firstRender.toLong()} ms after the page started loading " +
-                                "(${seen.inWholeMilliseconds} ms as the test saw it); details on click in ${details.inWholeMilliseconds} ms; " +
-                                "zoom round trips ${roundTrips.sorted()} ms")
-                            assertTrue(roundTrips.max() < 5_000, "the page took ${roundTrips.max()} ms to answer a zoom")
-                        }
-                    }
-                }
+            // A click shows a component's details; zooming answers at once.
+            val asked = TimeSource.Monotonic.markNow()
+            browser.evaluate("document.querySelector('#components li[data-component\$=\"/relay1.rtc\"]').click()")
+            browser.await("relay1's details", 60.seconds, "document.querySelector('[data-details\$=\"/relay1.rtc\"]') !== null")
+            val details = asked.elapsedNow()
+            val roundTrips = (1..10).map {
+                val mark = TimeSource.Monotonic.markNow()
+                browser.evaluate("rtcoord.cy.zoom(rtcoord.cy.zoom() * 1.1); rtcoord.cy.nodes().length")
+                mark.elapsedNow().inWholeMilliseconds
             }
+            println("serve: $COUNT components: first render ${firstRender.toLong()} ms after the page started loading " +
+                "(${seen.inWholeMilliseconds} ms as the test saw it); details on click in ${details.inWholeMilliseconds} ms; " +
+                "zoom round trips ${roundTrips.sorted()} ms")
+            assertTrue(roundTrips.max() < 5_000, "the page took ${roundTrips.max()} ms to answer a zoom")
         }
     }
 

@@ -1,0 +1,66 @@
+package org.rtcoord.cli.serve
+
+import kotlinx.coroutines.runBlocking
+import kotlinx.serialization.json.jsonPrimitive
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.EventOptions
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
+import org.rtcoord.cli.Localisation
+import org.rtcoord.fixtures.await
+import java.nio.file.Files
+import java.nio.file.Path
+import kotlin.time.Duration.Companion.seconds
+
+/**
+ * A run recorded with `serve --record` while the laser fails, then replayed in Chromium: the replayed
+ * page at the end of the recording draws the states the tree held when the recording ended, and at its
+ * start the states it began with.
+ */
+class ServeReplayTest {
+    @TempDir
+    lateinit var directory: Path
+
+    @Test
+    fun `a recorded run with a laser failure replays to the states the tree held`() {
+        val file = directory.resolve("run.jsonl")
+        val recorded: Map<String, String>
+        val started: Map<String, String>
+        Localisation().use { localisation ->
+            RtcTree.create(TreeConfig(listOf(localisation.naming.address), 3.seconds)).use { tree ->
+                val top = runBlocking { tree.node("/${localisation.naming.address}") }
+                runBlocking { LiveService.start(tree, top, null, EventOptions(), ServeSettings(record = file)) {} }.use {
+                    started = states(tree)
+                    localisation.system.component("laser0").fail()
+                    await("the tree to hold laser0 in ERROR") { states(tree)[localisation.path("laser0.rtc")] == "ERROR" }
+                    await("the recording to hold laser0's ERROR") { Files.readString(file).contains("\"new\":\"ERROR\"") }
+                    recorded = states(tree)
+                }
+            }
+        }
+        val lines = Files.readAllLines(file)
+        assertTrue(lines.first().startsWith("{\"kind\":\"snapshot\","), lines.first().take(80))
+        assertTrue(lines.drop(1).all { it.startsWith("{\"kind\":\"event\",") || it.startsWith("{\"kind\":\"network\",") }, "the lines after the snapshot")
+
+        runBlocking { LiveService.replay(Recording.read(file), ServeSettings()) }.use { service ->
+            HeadlessChromium.start().use { browser ->
+                browser.navigate(service.url)
+                browser.await("the replay loaded", expression = "rtcoord.replay !== null && document.body.dataset.rendered === 'true'")
+                assertEquals(started, DrawnSystem.of(browser).states, "the states drawn at the start of the replay")
+                browser.evaluate("seek(rtcoord.replay.end)")
+                val end = DrawnSystem.of(browser)
+                assertEquals(recorded, end.states, "the states drawn at the end of the replay")
+                assertEquals(emptyList<String>(), end.problems, "the replayed drawing")
+                browser.evaluate("seek(rtcoord.replay.start)")
+                assertEquals(started, DrawnSystem.of(browser).states, "the states drawn after going back to the start")
+                assertEquals("replay", browser.evaluate("document.getElementById('connection').textContent").jsonPrimitive.content)
+            }
+        }
+    }
+
+    /** Each component's state as the tree's model holds it, by its naming path. */
+    private fun states(tree: RtcTree): Map<String, String> = tree.snapshot().components.associate { it.path.toString() to it.overallState.name }
+}
