@@ -71,7 +71,9 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
                     "name" to manager.name,
                     // A slave is drawn in the naming context of its master.
                     "parent" to generateSequence(manager.path.parent) { it.parent }.firstOrNull { above -> directories.any { it.path == above } }?.toString(),
-                    "hosts" to components.filter { it["hostedBy"] == manager.path.toString() }.map { it["id"] },
+                    // What it hosts: its components, and the slaves a master lists.
+                    "hosts" to components.filter { it["hostedBy"] == manager.path.toString() }.map { it["id"] } +
+                        managers.filter { it.path.parent == manager.path }.map { it.path.toString() },
                 )
             },
             "zombies" to nodes.filterIsInstance<ZombieNode>().map { zombie ->

@@ -8,6 +8,9 @@ const LAYOUT = {
   padding: 14,    // inside a context's box
   title: 22,      // above a context's box, where its name is drawn
   empty: { width: 90, height: 24 },
+  // What splitting a column or wrapping a band costs, in pixels of the fit: after either, flows no
+  // longer read left to right, so a small system keeps its columns whole.
+  breakCost: 120,
 };
 
 /**
@@ -52,7 +55,7 @@ function candidates(most) {
 /**
  * [boxes] ({ width, height, rank, key, place }) packed into columns by rank, each column split when
  * too tall, the columns wrapped into bands when too wide: of all the splits and wraps tried, the one
- * that fits a window [aspect] times as wide as it is high best. Returns the pack's size and how to place it.
+ * that fits a window [aspect] times as wide as it is high best, each split or wrap counted against it. Returns the pack's size and how to place it.
  */
 function pack(boxes, aspect) {
   const ordered = boxes.slice().sort((a, b) => a.rank - b.rank || (a.key < b.key ? -1 : a.key > b.key ? 1 : 0));
@@ -82,7 +85,7 @@ function pack(boxes, aspect) {
       }
       const width = Math.max(...bands.map(b => b.width));
       const height = bands.reduce((s, b) => s + b.height, 0) + LAYOUT.gap * (bands.length - 1);
-      const score = Math.max(width / aspect, height);
+      const score = Math.max(width / aspect, height) + LAYOUT.breakCost * (chunks.length - columns.length + bands.length - 1);
       if (!best || score < best.score - 0.5 || (Math.abs(score - best.score) <= 0.5 && width * height < best.width * best.height)) {
         best = { score, width, height, bands };
       }

@@ -72,7 +72,7 @@ class ServeApiTest {
                 "${it["target"]!!.jsonPrimitive.content.substringAfterLast('/')}:${it["targetPort"]!!.jsonPrimitive.content} ${it["kind"]!!.jsonPrimitive.content}" }
         assertEquals(setOf("laser0.rtc:laser -> laser_localise0.rtc:laser data", "odometry0.rtc:odo -> laser_localise0.rtc:odo data"), connections.toSet())
         val hosted = network["managers"]!!.jsonArray.flatMap { manager -> manager.jsonObject["hosts"]!!.jsonArray.map { it.jsonPrimitive.content.substringAfterLast('/') } }
-        assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"), hosted.toSet())
+        assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc", "manager_slave"), hosted.toSet())
         assertTrue(network["contexts"]!!.jsonArray.any { it.jsonObject["id"]!!.jsonPrimitive.content == localisation.host })
     }
 
