@@ -45,9 +45,16 @@ public abstract class CoordinatorTest(
         steps += TestStep.Expect(line(), within, "the condition", condition)
     }
 
-    /** Expects the coordinator's mode machine [machine] to be in [mode] within [within]. */
+    /**
+     * Expects the coordinator's mode machine [machine] to be in [mode] within [within]: a path below the
+     * machine (`degraded/odometry`) or one mode's name (`odometry`); a machine in a nested mode is in
+     * each mode that contains it.
+     */
     public fun expectMode(machine: String, mode: String, within: Duration = DEFAULT_WITHIN) {
-        steps += TestStep.Expect(line(), within, "mode machine $machine in mode $mode") { modeOf(machine) == mode }
+        steps += TestStep.Expect(line(), within, "mode machine $machine in mode $mode") {
+            val active = modeOf(machine)?.removePrefix("$machine/")
+            active != null && (active == mode || active.startsWith("$mode/") || ('/' !in mode && mode in active.split('/')))
+        }
     }
 
     /** Expects the coordinator to log a line containing [text] within [within]. */
