@@ -67,6 +67,8 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "run" to { RunCommand() },
     "check" to { CheckCommand() },
     "profile" to { ProfileCommand() },
+    "sim" to { SimCommand() },
+    "test" to { TestCommand() },
     "ls" to { LsCommand() },
     "cat" to { CatCommand() },
     "find" to { FindCommand() },

@@ -3,6 +3,7 @@ package org.rtcoord.profile
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.ManagerNode
 import org.rtcoord.PortKind
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
@@ -55,7 +56,22 @@ internal class SystemCapture(private val tree: RtcTree) {
             }
         }
         val now = LocalDateTime.now().truncatedTo(ChronoUnit.SECONDS).format(DateTimeFormatter.ISO_LOCAL_DATE_TIME)
-        return RtsProfile(systemId, abstract = abstract, creationDate = now, updateDate = now, components = components, dataPortConnectors = data, servicePortConnectors = service)
+        return RtsProfile(
+            systemId, abstract = abstract, creationDate = now, updateDate = now, components = components, dataPortConnectors = data,
+            servicePortConnectors = service, ext = Extension(properties = manager(below)),
+        )
+    }
+
+    /**
+     * The first master manager bound below [below] and the types it can create, as properties of the
+     * system (`rtcoord.manager`, `rtcoord.manager.types`): the schema has no place for managers, and a
+     * simulator needs them. Composite types, which every manager has, are left out.
+     */
+    private suspend fun manager(below: RtcPath): Map<String, String> {
+        val manager = tree.find(below) { it is ManagerNode && it.path.names.lastOrNull()?.endsWith(".mgr") == true }.toList()
+            .firstOrNull() as ManagerNode? ?: return emptyMap()
+        val types = manager.factories().filterNot { it["category"].orEmpty().startsWith("composite.") }.mapNotNull { it["type_name"] }.distinct()
+        return mapOf("rtcoord.manager" to manager.path.toString().removePrefix("/"), "rtcoord.manager.types" to types.joinToString(","))
     }
 
     private suspend fun component(node: ComponentNode, s: ComponentSnapshot): ProfileComponent {
@@ -66,8 +82,12 @@ internal class SystemCapture(private val tree: RtcTree) {
             instanceName = s.instanceName,
             activeConfigurationSet = configuration.activeSet.orEmpty(),
             isRequired = true,
-            dataPorts = s.ports.filter { it.kind == PortKind.DATA_IN || it.kind == PortKind.DATA_OUT }.map { ProfilePort(it.name) },
-            servicePorts = s.ports.filter { it.kind == PortKind.SERVICE }.map { ProfilePort(it.name) },
+            // A port's kind and data type, as RTSystemEditor records them: what a simulator builds the port from.
+            dataPorts = s.ports.filter { it.kind == PortKind.DATA_IN || it.kind == PortKind.DATA_OUT }.map { port ->
+                val kind = if (port.kind == PortKind.DATA_IN) "DataInPort" else "DataOutPort"
+                ProfilePort(port.name, Extension(properties = listOfNotNull("port.port_type" to kind, port.dataType?.let { "dataport.data_type" to it }).toMap()))
+            },
+            servicePorts = s.ports.filter { it.kind == PortKind.SERVICE }.map { ProfilePort(it.name, Extension(properties = mapOf("port.port_type" to "CorbaPort"))) },
             configurationSets = configuration.sets.filterKeys { !isHidden(it) }.toSortedMap().map { (id, values) -> ConfigurationSet(id, values) },
             executionContexts = s.contexts.filter { it.owned }.map { ExecutionContext(it.handle.toString(), it.kind.uppercase(), it.rate) },
             ext = Extension(properties = mapOf("COMPONENT_PATH_ID" to node.path.toString().removePrefix("/"))),

@@ -1,0 +1,125 @@
+package org.rtcoord.sim
+
+import org.rtcoord.fixtures.ComponentType
+import org.rtcoord.fixtures.DataType
+import org.rtcoord.fixtures.ParameterSpec
+import org.rtcoord.fixtures.PortSpec
+import org.rtcoord.profile.ProfileComponent
+import org.rtcoord.profile.ProfilePort
+import org.rtcoord.profile.RtsProfile
+
+/**
+ * The component types a profile describes: one per component in it (its ports, configuration sets and
+ * execution context rate) and one per type its manager can create ([ProfileKeys.MANAGER_TYPES]), whose ports
+ * come from [ProfileKeys.typePort] properties or else from an instance of the type in the profile.
+ */
+internal class SimulatedTypes(private val profile: RtsProfile) {
+    /** What could not be simulated as the profile says, one line each. */
+    val warnings = mutableListOf<String>()
+
+    /** The type of each component, by instance name. */
+    val byInstance: Map<String, ComponentType> = profile.components.associate { it.instanceName to componentType(it) }
+
+    /** The types the manager can create, by type name: those listed, and those of the profile's components. */
+    val creatable: Map<String, ComponentType> = buildMap {
+        byInstance.values.forEach { put(it.typeName, it) }
+        for (typeName in managerTypes()) {
+            if (typeName !in this || declaredPorts(typeName).isNotEmpty()) put(typeName, declaredType(typeName))
+        }
+    }
+
+    private fun managerTypes(): List<String> =
+        profile.ext.properties[ProfileKeys.MANAGER_TYPES].orEmpty().split(',').map { it.trim() }.filter { it.isNotEmpty() }
+
+    private fun componentType(component: ProfileComponent): ComponentType {
+        val id = component.id.split(':')
+        val typeName = id.getOrNull(3)?.takeIf { it.isNotBlank() } ?: component.instanceName
+        val declared = declaredPorts(typeName)
+        val ports = declared.ifEmpty {
+            component.dataPorts.mapNotNull { dataPort(component, it) } + component.servicePorts.map { PortSpec.Service(it.name) }
+        }
+        val rate = component.executionContexts.firstOrNull()?.rate?.takeIf { it > 0 } ?: DEFAULT_RATE
+        val sets = component.configurationSets.associate { it.id to it.data }
+        val defaults = sets["default"] ?: sets.values.firstOrNull().orEmpty()
+        val names = (defaults.keys + sets.values.flatMap { it.keys }).distinct()
+        return ComponentType(
+            typeName,
+            ports = ports,
+            parameters = names.map { name -> ParameterSpec(name, defaults[name] ?: sets.values.firstNotNullOf { it[name] }) },
+            configurationSets = sets.filterKeys { it != "default" },
+            behaviour = { SimulatedBehaviour(ports) },
+            rate = rate,
+            vendor = id.getOrNull(1).orEmpty(),
+            category = id.getOrNull(2).orEmpty(),
+            version = id.getOrNull(4).orEmpty(),
+            description = "simulated from ${component.instanceName} in ${profile.id}",
+        )
+    }
+
+    /** A type known only by name: its ports from the profile's properties, or an instance of it elsewhere. */
+    private fun declaredType(typeName: String): ComponentType {
+        val ports = declaredPorts(typeName)
+        if (ports.isEmpty()) {
+            warnings += "type $typeName, which the manager can create, has no instance and no ${ProfileKeys.typePort(typeName, "PORT")} " +
+                "properties in the profile: its instances have no ports"
+        }
+        return ComponentType(typeName, ports = ports, behaviour = { SimulatedBehaviour(ports) }, description = "simulated $typeName")
+    }
+
+    private fun declaredPorts(typeName: String): List<PortSpec> {
+        val prefix = ProfileKeys.typePort(typeName, "")
+        return profile.ext.properties.filterKeys { it.startsWith(prefix) }.map { (key, value) ->
+            val name = key.removePrefix(prefix)
+            val words = value.trim().split(Regex("\\s+"))
+            portSpec(name, words[0], words.getOrNull(1)) { "$key: $it" }
+                ?: throw IllegalArgumentException("$key: '$value' is not 'DataInPort TYPE', 'DataOutPort TYPE' or 'CorbaPort'")
+        }
+    }
+
+    /**
+     * A data port as its properties say (`port.port_type`, `dataport.data_type`, as RTSystemEditor and
+     * `rtcoord profile save` write them), else as the profile's connectors use it: the source of a data
+     * connector is an out-port, its target an in-port.
+     */
+    private fun dataPort(component: ProfileComponent, port: ProfilePort): PortSpec? {
+        val fullName = "${component.instanceName}.${port.name}"
+        val connectors = profile.dataPortConnectors
+        val asSource = connectors.firstOrNull { it.source.instanceName == component.instanceName && it.source.portName == fullName }
+        val asTarget = connectors.firstOrNull { it.target.instanceName == component.instanceName && it.target.portName == fullName }
+        val kind = port.ext.properties["port.port_type"] ?: when {
+            asSource != null -> "DataOutPort"
+            asTarget != null -> "DataInPort"
+            else -> null
+        }
+        val dataType = port.ext.properties["dataport.data_type"] ?: (asSource ?: asTarget)?.dataType
+        if (kind == null) {
+            warnings += "$fullName: left out: the profile says neither its kind (port.port_type) nor a connection of it"
+            return null
+        }
+        return portSpec(port.name, kind, dataType) { "$fullName: $it" }
+    }
+
+    private fun portSpec(name: String, kind: String, dataType: String?, where: (String) -> String): PortSpec? = when (kind) {
+        "CorbaPort" -> PortSpec.Service(name)
+        "DataInPort", "DataOutPort" -> {
+            val type = dataType(dataType) ?: throw IllegalArgumentException(
+                where("data type ${dataType ?: "(none)"} is not simulated (${DataType.values().joinToString { simpleName(it.repositoryId) }} are)"),
+            )
+            if (kind == "DataInPort") PortSpec.DataIn(name, type) else PortSpec.DataOut(name, type)
+        }
+        else -> null
+    }
+
+    private companion object {
+        /** OpenRTM-aist's default execution context rate (`exec_cxt.periodic.rate`), in Hz. */
+        const val DEFAULT_RATE = 1000.0
+
+        /** `IDL:RTC/TimedDouble:1.0`, `RTC::TimedDouble` and `TimedDouble` all name one type. */
+        fun dataType(name: String?): DataType? {
+            val simple = name?.let(::simpleName) ?: return null
+            return DataType.values().firstOrNull { simpleName(it.repositoryId) == simple }
+        }
+
+        fun simpleName(name: String): String = name.removePrefix("IDL:").substringBeforeLast(":1.0").substringAfterLast('/').substringAfterLast("::")
+    }
+}

@@ -1,0 +1,52 @@
+package org.rtcoord.sim.test
+
+import org.rtcoord.dsl.script.ScriptFailure
+import java.nio.file.Files
+import java.nio.file.Path
+import kotlin.script.experimental.api.ResultValue
+import kotlin.script.experimental.api.ResultWithDiagnostics
+import kotlin.script.experimental.api.ScriptDiagnostic
+import kotlin.script.experimental.api.ScriptEvaluationConfiguration
+import kotlin.script.experimental.api.constructorArgs
+import kotlin.script.experimental.host.toScriptSource
+import kotlin.script.experimental.jvm.BasicJvmScriptEvaluator
+import kotlin.script.experimental.jvm.baseClassLoader
+import kotlin.script.experimental.jvm.jvm
+import kotlin.script.experimental.jvmhost.JvmScriptCompiler
+import kotlin.script.experimental.jvmhost.createJvmCompilationConfigurationFromTemplate
+
+/** Compiles and evaluates `*.test.kts` files into the [CoordinatorTest] they declare. */
+internal class TestScriptHost {
+    private val compilation = createJvmCompilationConfigurationFromTemplate<TestScript>()
+    private val compiler = JvmScriptCompiler()
+    private val evaluator = BasicJvmScriptEvaluator()
+
+    /** The test [file] declares; throws [ScriptFailure] with `file:line:col: message` lines when it does not compile or run. */
+    suspend fun load(file: Path): CoordinatorTest {
+        if (!Files.isRegularFile(file)) throw ScriptFailure(listOf("$file:1:1: no such file"))
+        val compiled = when (val result = compiler(file.toFile().toScriptSource(), compilation)) {
+            is ResultWithDiagnostics.Success -> result.value
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(file, result.reports))
+        }
+        val evaluation = ScriptEvaluationConfiguration {
+            constructorArgs(file.toAbsolutePath().parent, file.fileName.toString())
+            jvm { baseClassLoader(TestScriptHost::class.java.classLoader) }
+        }
+        return when (val result = evaluator(compiled, evaluation)) {
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(file, result.reports))
+            is ResultWithDiagnostics.Success -> when (val value = result.value.returnValue) {
+                is ResultValue.Error -> throw ScriptFailure(listOf("$file:${lineIn(file, value.error)}:1: ${value.error.message ?: value.error.javaClass.simpleName}"))
+                else -> value.scriptInstance as? CoordinatorTest ?: throw ScriptFailure(listOf("$file:1:1: the script did not produce a test"))
+            }
+        }
+    }
+
+    private fun errors(file: Path, reports: List<ScriptDiagnostic>): List<String> =
+        reports.filter { it.severity >= ScriptDiagnostic.Severity.ERROR }.map { report ->
+            val start = report.location?.start
+            "$file:${start?.line ?: 1}:${start?.col ?: 1}: ${report.message}"
+        }.ifEmpty { listOf("$file:1:1: compilation failed") }
+
+    private fun lineIn(file: Path, error: Throwable): Int =
+        error.stackTrace.firstOrNull { it.fileName == file.fileName.toString() }?.lineNumber ?: 1
+}
