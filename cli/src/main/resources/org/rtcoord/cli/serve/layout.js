@@ -55,7 +55,8 @@ function candidates(most) {
 /**
  * [boxes] ({ width, height, rank, key, place }) packed into columns by rank, each column split when
  * too tall, the columns wrapped into bands when too wide: of all the splits and wraps tried, the one
- * that fits a window [aspect] times as wide as it is high best, each split or wrap counted against it. Returns the pack's size and how to place it.
+ * that fits a window [aspect] times as wide as it is high best, each split or wrap counted against it.
+ * Returns the pack's size and how to place it.
  */
 function pack(boxes, aspect) {
   const ordered = boxes.slice().sort((a, b) => a.rank - b.rank || (a.key < b.key ? -1 : a.key > b.key ? 1 : 0));
