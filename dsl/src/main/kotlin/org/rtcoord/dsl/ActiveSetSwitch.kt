@@ -17,13 +17,14 @@ internal class ActiveSetSwitch : EventReading<ConfigurationSetActivated> {
     /** The set last seen active, by component path. */
     private val seen = ConcurrentHashMap<String, String>()
 
-    override suspend fun prepare(node: Node) {
-        if (node !is ComponentNode) return
+    override suspend fun prepare(node: Node): ConfigurationSetActivated? {
+        if (node !is ComponentNode) return null
         try {
             node.configuration().activeSet?.let { seen[node.path.toString()] = it }
         } catch (e: RtcException) {
             // Measured from the first event instead.
         }
+        return null
     }
 
     /** [event] as a switch from the set last active; null when no set became active or the same one did again. */

@@ -184,8 +184,7 @@ public class Coordinator(
             val handler = HandlerQueue(scope, watching.overlap) { event: E -> fire(rule, event) }
             object : NodeListener {
                 override suspend fun prepare(node: Node) {
-                    matcher.prepare(node)
-                    rule.pattern.current?.invoke(node)?.let(handler::offer)
+                    matcher.prepare(node)?.let(handler::offer)
                 }
 
                 override suspend fun deliver(event: RtcEvent) {

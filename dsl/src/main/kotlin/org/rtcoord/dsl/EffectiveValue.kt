@@ -20,14 +20,15 @@ internal class EffectiveValue(private val parameter: String) : EventReading<Para
 
     private val seen = ConcurrentHashMap<String, Seen>()
 
-    override suspend fun prepare(node: Node) {
-        if (node !is ComponentNode) return
+    override suspend fun prepare(node: Node): ParameterChanged? {
+        if (node !is ComponentNode) return null
         try {
             val configuration = node.configuration()
             seen[node.path.toString()] = Seen(configuration.sets[configuration.activeSet]?.get(parameter))
         } catch (e: RtcException) {
             // Measured from the first event instead.
         }
+        return null
     }
 
     /** [event] as a change of the effective value, named after the set now active; null when the value did not change. */

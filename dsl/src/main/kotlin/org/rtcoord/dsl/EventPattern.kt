@@ -1,7 +1,6 @@
 package org.rtcoord.dsl
 
 import org.rtcoord.BecameZombie
-import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.ContextRateChanged
@@ -27,8 +26,9 @@ import org.rtcoord.StateChanged
 /**
  * One kind of event of one target (a component entering ERROR, a port losing a connection): what rules
  * and mode transitions are triggered by. [description] is how scripts, logs and `check` name it.
- * Most patterns take the events of their [type] as they come; one that follows a value reads events of
- * a wider [watched] type through a [reading] of its own, which each run of a plan makes afresh.
+ * Most patterns take the events of their [type] as they come; one that follows a value, or a condition
+ * it also fires on when first seen, reads events of a wider [watched] type through a [reading] of its
+ * own, which each run of a plan makes afresh.
  */
 internal class EventPattern<E : RtcEvent>(
     val description: String,
@@ -36,8 +36,6 @@ internal class EventPattern<E : RtcEvent>(
     val type: Class<E>,
     val watched: Class<out RtcEvent> = type,
     private val reading: (() -> EventReading<E>)? = null,
-    /** For a level-triggered pattern, the event a node's present condition amounts to (null: none); null for edge-triggered ones. */
-    val current: (suspend (Node) -> E?)? = null,
     /** The configuration parameter the pattern is about, if any: what `check` looks for on the live component. */
     val parameter: String? = null,
     val matches: (E) -> Boolean,
@@ -52,12 +50,16 @@ internal class EventPattern<E : RtcEvent>(
 }
 
 /**
- * How a pattern that follows a value (a parameter's effective value, the active set) reads events: it
- * reads a component's value before the first event, and turns each event into one of its kind, or drops it.
+ * How a pattern that follows a value (a parameter's effective value, the active set, being in a state)
+ * reads events: it reads a component's value before the first event, and turns each event into one of
+ * its kind, or drops it.
  */
 internal interface EventReading<E : RtcEvent> {
-    /** Reads [node]'s value now, so that its first change is measured from it. */
-    suspend fun prepare(node: Node)
+    /**
+     * Reads [node]'s value now, so that its first change is measured from it; returns the event its
+     * present condition amounts to for a level-triggered reading, null otherwise.
+     */
+    suspend fun prepare(node: Node): E?
 
     /** [event] as a change of the value followed; null when it changes nothing. */
     fun translate(event: RtcEvent): E?
@@ -65,10 +67,8 @@ internal interface EventReading<E : RtcEvent> {
 
 /** One subscriber's view of a [pattern]: each event must be matched once, in order, as a [reading] follows a value. */
 internal class EventMatcher<E : RtcEvent>(val pattern: EventPattern<E>, private val reading: EventReading<E>?) {
-    /** Reads what the pattern follows of [node], before [node]'s first event reaches [match]. */
-    suspend fun prepare(node: Node) {
-        reading?.prepare(node)
-    }
+    /** Reads what the pattern follows of [node], before [node]'s first event reaches [match]; returns the event its present condition amounts to, if any. */
+    suspend fun prepare(node: Node): E? = reading?.prepare(node)?.takeIf(pattern.matches)
 
     /** [event] as one of the pattern's, or null when it is not one. */
     fun match(event: RtcEvent): E? {
@@ -84,8 +84,7 @@ internal object EventPatterns {
 
     /** [state], and a component already in [state] when watched: a [StateChanged] from [state] to itself in its default context. */
     fun inState(target: ComponentRef, state: LifeCycle) = EventPattern(
-        "$target is in or enters $state", Target.Component(target), StateChanged::class.java,
-        current = { node -> (node as? ComponentNode)?.state()?.takeIf { it == state }?.let { StateChanged(node, 0, it, it) } },
+        "$target is in or enters $state", Target.Component(target), StateChanged::class.java, reading = { InState(state) },
     ) { it.new == state }
 
     fun fsmState(target: ComponentRef, state: String) =
