@@ -33,6 +33,8 @@ public class SupervisorActivity internal constructor(
         public val lastRestart: Instant? = null,
         /** The child it last restarted. */
         public val lastRestarted: String? = null,
+        /** How many times it started each child again, as the failed one or with it, by the child's path then. */
+        public val restartsByChild: Map<String, Int> = emptyMap(),
         /** The back-off it is waiting out before the next restart; null when not waiting. */
         @get:JvmSynthetic
         public val backoff: Duration? = null,
@@ -50,14 +52,15 @@ public class SupervisorActivity internal constructor(
             restarts: Int = this.restarts,
             lastRestart: Instant? = this.lastRestart,
             lastRestarted: String? = this.lastRestarted,
+            restartsByChild: Map<String, Int> = this.restartsByChild,
             backoff: Duration? = this.backoff,
             waitingUntil: Instant? = this.waitingUntil,
             escalation: String? = this.escalation,
-        ): Status = Status(children, restarts, lastRestart, lastRestarted, backoff, waitingUntil, escalation)
+        ): Status = Status(children, restarts, lastRestart, lastRestarted, restartsByChild, backoff, waitingUntil, escalation)
 
         override fun fields(): ValueFields = ValueFields(
             "children" to children, "restarts" to restarts, "lastRestart" to lastRestart, "lastRestarted" to lastRestarted,
-            "backoff" to backoff, "waitingUntil" to waitingUntil, "escalation" to escalation,
+            "restartsByChild" to restartsByChild, "backoff" to backoff, "waitingUntil" to waitingUntil, "escalation" to escalation,
         )
     }
 
@@ -74,8 +77,15 @@ public class SupervisorActivity internal constructor(
         current.update { it.copy(backoff = backoff, waitingUntil = Instant.now().plusMillis(backoff.inWholeMilliseconds)) }
     }
 
-    internal fun restarted(child: String, children: List<String>) {
-        current.update { it.copy(children = children, restarts = it.restarts + 1, lastRestart = Instant.now(), lastRestarted = child, backoff = null, waitingUntil = null) }
+    /** It restarted [child] (the failed ones, named together), which took starting [started] again. */
+    internal fun restarted(child: String, started: List<String>, children: List<String>) {
+        current.update { status ->
+            val counts = status.restartsByChild.toMutableMap().apply { started.forEach { merge(it, 1, Int::plus) } }
+            status.copy(
+                children = children, restarts = status.restarts + 1, lastRestart = Instant.now(), lastRestarted = child,
+                restartsByChild = counts, backoff = null, waitingUntil = null,
+            )
+        }
     }
 
     internal fun escalated(reason: String) {

@@ -5,7 +5,6 @@ import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Semaphore
 import kotlinx.coroutines.sync.withPermit
 import kotlinx.coroutines.withContext
@@ -86,12 +85,8 @@ public class CoordinatorTestRunner @JvmOverloads constructor(
         tree: RtcTree,
         coordinator: Coordinator,
         log: List<String>,
-    ): List<String> = coroutineScope {
+    ): List<String> {
         val failures = mutableListOf<String>()
-        val restarted = CopyOnWriteArrayList<String>()
-        val watchers = coordinator.supervision.map { supervisor ->
-            launch { supervisor.status.collect { status -> status.lastRestarted?.let { restarted += it } } }
-        }
         val start = TimeSource.Monotonic.markNow()
         val expectation = object : Expectation {
             override suspend fun component(name: String): ComponentNode {
@@ -117,12 +112,13 @@ public class CoordinatorTestRunner @JvmOverloads constructor(
                 is TestStep.Expect -> expect(step, expectation)?.let { failures += "$file:${step.line}: $it" }
             }
         }
-        watchers.forEach { it.cancel() }
+        // Counted by the supervisors themselves: every restart, however close together.
+        val restarts = coordinator.supervision.flatMap { it.status.value.restartsByChild.entries }
         for ((component, line) in test.noRestarts) {
-            val times = restarted.count { it.substringAfterLast('/').removeSuffix(".rtc") == component }
+            val times = restarts.filter { it.key.substringAfterLast('/').removeSuffix(".rtc") == component }.sumOf { it.value }
             if (times > 0) failures += "$file:$line: expected no restarts of $component, but a supervisor restarted it $times time(s)"
         }
-        failures
+        return failures
     }
 
     /** Null when [step]'s condition holds within its deadline, else what was expected and what was seen last. */

@@ -34,4 +34,30 @@ class CoordinatorTestRunnerTest {
         assertTrue(Files.readString(written[0]).contains("failures=\"0\""))
         assertTrue(Files.readString(written[1]).contains("failures=\"1\""))
     }
+
+    @Test
+    fun `expectNoRestartsOf fails for each component a supervisor started again, the failed one and those restarted with it`(@TempDir directory: Path) {
+        val test = directory.resolve("restarts.test.kts")
+        Files.writeString(
+            test,
+            """
+            system("${examples.resolve("localisation.xml")}")
+            coordinator("${examples.resolve("supervision.coord.kts")}")
+            at(1.seconds) { fail("laser0") }
+            expectLog("restForOne: restarting", within = 5.seconds)
+            expect(within = 5.seconds) { component("laser0").state() == ACTIVE && component("laser_localise0").state() == ACTIVE }
+            expectNoRestartsOf("laser0")
+            expectNoRestartsOf("laser_localise0.rtc")
+            expectNoRestartsOf("odometry0")
+            """.trimIndent(),
+        )
+        val result = runBlocking { CoordinatorTestRunner().runAll(listOf(test)) }.single()
+        assertEquals(
+            listOf(
+                "$test:6: expected no restarts of laser0, but a supervisor restarted it 1 time(s)",
+                "$test:7: expected no restarts of laser_localise0, but a supervisor restarted it 1 time(s)",
+            ),
+            result.failures,
+        )
+    }
 }
