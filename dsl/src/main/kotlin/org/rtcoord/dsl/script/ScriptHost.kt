@@ -1,29 +1,25 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl.script
 
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.RtcException
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
 import org.rtcoord.dsl.InvalidMachineException
-import java.io.File
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
-import java.security.MessageDigest
 import kotlin.script.experimental.api.CompiledScript
 import kotlin.script.experimental.api.ResultValue
 import kotlin.script.experimental.api.ResultWithDiagnostics
 import kotlin.script.experimental.api.ScriptDiagnostic
 import kotlin.script.experimental.api.ScriptEvaluationConfiguration
-import kotlin.script.experimental.api.SourceCode
 import kotlin.script.experimental.api.constructorArgs
 import kotlin.script.experimental.host.toScriptSource
-import kotlin.script.experimental.host.ScriptingHostConfiguration
 import kotlin.script.experimental.jvm.BasicJvmScriptEvaluator
-import kotlin.script.experimental.jvm.compilationCache
 import kotlin.script.experimental.jvm.baseClassLoader
-import kotlin.script.experimental.jvm.defaultJvmScriptingHostConfiguration
 import kotlin.script.experimental.jvm.jvm
-import kotlin.script.experimental.jvmhost.CompiledScriptJarsCache
 import kotlin.script.experimental.jvmhost.JvmScriptCompiler
 import kotlin.script.experimental.jvmhost.createJvmCompilationConfigurationFromTemplate
 
@@ -34,13 +30,7 @@ import kotlin.script.experimental.jvmhost.createJvmCompilationConfigurationFromT
  */
 public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirectory()) {
     private val compilation = createJvmCompilationConfigurationFromTemplate<CoordinatorScript>()
-    private val compiler = JvmScriptCompiler(
-        ScriptingHostConfiguration(defaultJvmScriptingHostConfiguration) {
-            cacheDirectory?.let { directory ->
-                jvm { compilationCache(CompiledScriptJarsCache { source, _ -> cacheFile(directory, source) }) }
-            }
-        },
-    )
+    private val compiler = JvmScriptCompiler(CompiledScripts.host(cacheDirectory, CoordinatorScript::class.java))
     private val evaluator = BasicJvmScriptEvaluator()
 
     /** Compiles [script]; returns its errors (none when it compiles). */
@@ -106,17 +96,6 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
             val cache = System.getenv("RTCOORD_CACHE")?.takeIf { it.isNotEmpty() }?.let { Paths.get(it) }
                 ?: Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord")
             return cache.resolve("scripts")
-        }
-
-        private fun cacheFile(directory: Path, source: SourceCode): File {
-            val digest = MessageDigest.getInstance("SHA-256")
-            digest.update(source.text.toByteArray())
-            digest.update(KotlinVersion.CURRENT.toString().toByteArray())
-            // The DSL's own build: a rebuilt DSL invalidates scripts compiled against the old one.
-            val dsl = File(CoordinatorScript::class.java.protectionDomain.codeSource.location.toURI())
-            digest.update("${dsl.lastModified()}:${dsl.length()}".toByteArray())
-            Files.createDirectories(directory)
-            return directory.resolve(digest.digest().joinToString("") { "%02x".format(it) } + ".jar").toFile()
         }
     }
 }

@@ -26,7 +26,8 @@ import kotlin.time.TimeSource
 
 /**
  * Runs `*.test.kts` files, each against a fresh [SimulatedSystem] built from the profile it names, with
- * its coordinator compiled by the dsl's [ScriptHost], [parallelism] at a time.
+ * its coordinator compiled by the dsl's [ScriptHost], [parallelism] at a time. Test scripts are kept
+ * compiled in [ScriptHost.defaultCacheDirectory], as coordinators are: an unchanged one starts at once.
  */
 public class CoordinatorTestRunner @JvmOverloads constructor(
     private val parallelism: Int = Runtime.getRuntime().availableProcessors(),

@@ -1,6 +1,12 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.sim.test
 
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.dsl.script.CompiledScripts
+import org.rtcoord.dsl.script.CoordinatorScript
 import org.rtcoord.dsl.script.ScriptFailure
+import org.rtcoord.dsl.script.ScriptHost
 import java.nio.file.Files
 import java.nio.file.Path
 import kotlin.script.experimental.api.ResultValue
@@ -15,10 +21,13 @@ import kotlin.script.experimental.jvm.jvm
 import kotlin.script.experimental.jvmhost.JvmScriptCompiler
 import kotlin.script.experimental.jvmhost.createJvmCompilationConfigurationFromTemplate
 
-/** Compiles and evaluates `*.test.kts` files into the [CoordinatorTest] they declare. */
-internal class TestScriptHost {
+/**
+ * Compiles (or takes from [cacheDirectory], as coordinators are) and evaluates `*.test.kts` files into the
+ * [CoordinatorTest] they declare.
+ */
+internal class TestScriptHost(cacheDirectory: Path? = ScriptHost.defaultCacheDirectory()) {
     private val compilation = createJvmCompilationConfigurationFromTemplate<TestScript>()
-    private val compiler = JvmScriptCompiler()
+    private val compiler = JvmScriptCompiler(CompiledScripts.host(cacheDirectory, TestScript::class.java, CoordinatorScript::class.java))
     private val evaluator = BasicJvmScriptEvaluator()
 
     /** The test [file] declares; throws [ScriptFailure] with `file:line:col: message` lines when it does not compile or run. */
