@@ -45,7 +45,8 @@ public class ManagerNode internal constructor(
                 val name = slaveName.await() ?: return@async null
                 val node = previous.filterIsInstance<ManagerNode>().firstOrNull { it.name == name && it.ref._is_equivalent(slave) }
                     ?: ManagerNode(path.child(name), core, slave, null, this@ManagerNode)
-                node to components.await().orEmpty().map { core.components.objectFor(it) }
+                // The master's listing says where they run: known before the slave's own listing is read.
+                node to components.await().orEmpty().map { core.components.objectFor(it).apply { hostedBy(node) } }
             }
         }.awaitAll().filterNotNull()
         val ofSlaves = slaveListings.flatMap { it.second }.toSet()

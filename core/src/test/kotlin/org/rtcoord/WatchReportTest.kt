@@ -100,6 +100,23 @@ class WatchReportTest {
     }
 
     @Test
+    fun `a slave killed before its own listing was read is still one death naming what its master placed in it`(): Unit = runBlocking {
+        val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
+        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--master", master).use { process ->
+            // The master's listing alone: it names the slave and what the slave runs; the slave is never listed.
+            tree.manager("${localisation.host}/manager.mgr").children()
+            val events = EventRecorder()
+            tree.on("${localisation.host}/hosted0.rtc", RtcEvent::class.java, EventOptions(heartbeat = 200.milliseconds), events.handler)
+            events.next<WatchMethodChanged>()
+
+            process.kill()
+            val died = events.next<ManagerDied>(10.seconds)
+            assertEquals("manager_${process.pid}", died.source.name)
+            assertEquals(listOf("hosted0.rtc"), died.components.map { it.name })
+        }
+    }
+
+    @Test
     fun `a manager that stops answering and answers again is one death and one return`(): Unit = runBlocking {
         val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
         RtcTree.create(TreeConfig(listOf(localisation.naming.address), callTimeout = 1.seconds)).use { tree ->

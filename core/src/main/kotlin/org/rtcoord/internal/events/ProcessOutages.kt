@@ -37,7 +37,7 @@ internal class ProcessOutages(
 ) {
     private val managers = Outages<ManagerNode>(
         core, { manager -> sinksOf(manager) + reports.all }, probe = { it.profile() },
-        lost = { manager, cause -> ManagerDied(manager, manager.listed.value.orEmpty().filterIsInstance<ComponentNode>(), cause) },
+        lost = { manager, cause -> ManagerDied(manager, hostedNodes(manager), cause) },
         back = { manager, _ -> ManagerReturned(manager) },
         whenLost = ::managerLost,
     )
@@ -108,8 +108,19 @@ internal class ProcessOutages(
         return (componentSinks + listingSinks).toSet()
     }
 
-    private fun hostedBy(manager: ManagerNode): Set<ComponentObject> =
-        manager.listed.value.orEmpty().filterIsInstance<ComponentNode>().map { it.component }.toSet()
+    private fun hostedBy(manager: ManagerNode): Set<ComponentObject> = hostedNodes(manager).map { it.component }.toSet()
+
+    /**
+     * The components [manager] hosts: those its last listing showed, and the watched ones a master's
+     * listing placed in it (a slave may die before its own listing is read).
+     */
+    private fun hostedNodes(manager: ManagerNode): List<ComponentNode> {
+        val listed = manager.listed.value.orEmpty().filterIsInstance<ComponentNode>()
+        val placed = components().values.map { it.node }.filter { node ->
+            node.component.hostingManagers.any { it.path == manager.path } && listed.none { it.component === node.component }
+        }
+        return listed + placed
+    }
 
     private companion object {
         /** How often the name servers are listed for the reports: as often as a component is polled by default. */
