@@ -14,6 +14,7 @@ import org.rtcoord.internal.events.MillisClock
 import org.rtcoord.internal.events.Watcher
 import org.rtcoord.internal.model.SystemModel
 import org.slf4j.LoggerFactory
+import java.util.concurrent.Future
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicLong
 
@@ -37,6 +38,10 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     )
     /** The monotonic clock of every component monitor. */
     val clock = MillisClock()
+
+    /** Runs [task] on the tree's threads when [clock] reads [millis]; null once the tree is closed. */
+    fun at(millis: Long, task: Runnable): Future<*>? = threads.schedule(clock.nanosUntil(millis), task)
+
     val components = ComponentRegistry(this)
     val model = SystemModel(nameServers)
     val watcher = Watcher(this)

@@ -39,6 +39,16 @@ internal class TreeThreads(concurrency: Int) : AutoCloseable {
     /** The threads that block in remote calls, as many as needed: [Remote] limits how many run at once. */
     val calls: CoroutineDispatcher = callThreads.asCoroutineDispatcher()
 
+    /**
+     * Runs [task] on a thread of the tree once [delayNanos] have passed, to the nanosecond rather than
+     * the millisecond a coroutine's `delay` rounds up to; null once the tree is closed.
+     */
+    fun schedule(delayNanos: Long, task: Runnable): Future<*>? = try {
+        scheduled.schedule(task, delayNanos, TimeUnit.NANOSECONDS)
+    } catch (e: RejectedExecutionException) {
+        null
+    }
+
     /** Runs the blocking [call] on a thread of its own; fails with [ClosedException] once the tree is closed. */
     fun submit(call: Runnable): Future<*> = try {
         callThreads.submit(call)

@@ -1,12 +1,10 @@
 package org.rtcoord.internal.events
 
 import kotlinx.coroutines.CompletableDeferred
-import kotlinx.coroutines.Job
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.async
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentNode
@@ -19,6 +17,7 @@ import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
 import java.util.EnumMap
 import java.util.concurrent.CompletableFuture
+import java.util.concurrent.Future
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
@@ -51,7 +50,7 @@ internal class ComponentMonitor(
 
     // Owned by the worker coroutine.
     private val watch = ComponentWatch(node, now())
-    private val armed = EnumMap<ComponentWatch.Timer, Job>(ComponentWatch.Timer::class.java)
+    private val armed = EnumMap<ComponentWatch.Timer, Future<*>>(ComponentWatch.Timer::class.java)
     private val link = ObserverLink(core, host, subject, node.component)
     private var attachment: Attachment = Attachment.NotTried
     private val stopped = CompletableFuture<Unit>()
@@ -119,7 +118,7 @@ internal class ComponentMonitor(
             }
         } finally {
             withContext(NonCancellable) {
-                armed.values.forEach { it.cancel() }
+                armed.values.forEach { it.cancel(false) }
                 timers.stop()
                 probe?.close()
                 link.detach()
@@ -202,8 +201,9 @@ internal class ComponentMonitor(
         carried += outcome.untaken.map { Work(WatchInput.Hinted(it)) }
         if (outcome.readAgain) carried += Work(WatchInput.ReadWanted)
         outcome.marker?.let(link::sendMarker)
-        for ((timer, after) in outcome.timers) {
-            armed[timer] = core.scope.launch { delay(after); work.trySend(Work(WatchInput.Fired(timer))) }
+        // Each fires when the clock reads its time, not up to a millisecond later as a coroutine's delay would.
+        for ((timer, at) in outcome.timers) {
+            core.at(at) { work.trySend(Work(WatchInput.Fired(timer))) }?.let { armed[timer] = it }
         }
         when {
             outcome.finalized -> {

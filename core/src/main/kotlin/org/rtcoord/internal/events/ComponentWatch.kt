@@ -16,7 +16,8 @@ import org.rtcoord.UnreachableException
  * clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks, timers,
  * markers, watchdog checks; then [read], [statesRead] or [failed] with what the read it asked for found),
  * each with the time `now` in milliseconds of one monotonic clock, and carries out what it returns: the
- * read to make ([WatchStep]), the events to publish, the [Timer]s to arm, the marker to send ([WatchOutcome]).
+ * read to make ([WatchStep]), the events to publish, the [Timer]s to arm (each for the time it fires at, on
+ * the same clock), the marker to send ([WatchOutcome]).
  *
  * Its lifecycle states, per execution context, are reconciled by [ContextStates]; whether it answers by
  * [ComponentLiveness]. The phases of the reconciliation, each context's and so the component's:
@@ -233,7 +234,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = observed)
         val timers = ArrayList<Pair<Timer, Long>>()
         fun arm(timer: Timer, after: Long) {
-            if (pending.add(timer)) timers += timer to after.coerceAtLeast(0)
+            if (pending.add(timer)) timers += timer to now + after.coerceAtLeast(0)
         }
         // A late hint may lead past what the read found: read again now rather than after the grace period.
         val readAgain = taken && states.awaitingConfirmation

@@ -1,5 +1,6 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
 
 /**
@@ -11,4 +12,7 @@ internal class MillisClock(time: TimeSource = TimeSource.Monotonic) {
 
     /** Milliseconds since the clock was made. */
     fun now(): Long = origin.elapsedNow().inWholeMilliseconds
+
+    /** Nanoseconds until the clock reads [millis]: a timer armed for that long finds [now] at [millis] or past it. */
+    fun nanosUntil(millis: Long): Long = (millis.milliseconds - origin.elapsedNow()).inWholeNanoseconds.coerceAtLeast(0)
 }

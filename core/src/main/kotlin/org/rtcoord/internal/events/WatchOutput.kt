@@ -30,7 +30,7 @@ internal class WatchDecision(val step: WatchStep, val events: List<RtcEvent>)
 /** What a read (or its failure) leads to. */
 internal class WatchOutcome(
     val events: List<RtcEvent> = emptyList(),
-    /** Timers to arm, with their delays. */
+    /** Timers to arm, each with the time `now` it fires at. */
     val timers: List<Pair<ComponentWatch.Timer, Long>> = emptyList(),
     /** Hints the reconciliation did not take: the next batch's. */
     val untaken: List<Hint> = emptyList(),

@@ -69,15 +69,15 @@ class ComponentWatchTest {
         watch.decide(listOf(lifecycle("ACTIVE:0")), 0)
         val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertEquals(emptyList<RtcEvent>(), first.events)
-        assertEquals(listOf(Timer.RECHECK to 1L, Timer.GRACE to 500L).toSet(), first.timers.toSet())
+        assertEquals(listOf(Timer.RECHECK to 2L, Timer.GRACE to 501L).toSet(), first.timers.toSet())
         // A hint-driven read meanwhile arms no second recheck (4452470).
         watch.decide(listOf(WatchInput.Hinted(Hint(HintKind.CONFIGURATION, "UPDATE_CONFIGSET:default"))), 1)
         assertEquals(emptyList<Pair<Timer, Long>>(), watch.read(found(INACTIVE), 1, emptyList()).timers, "no second recheck, no second grace read")
 
         assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 2).step)
-        assertEquals(listOf(Timer.RECHECK to 2L), watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).timers)
+        assertEquals(listOf(Timer.RECHECK to 4L), watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).timers)
         watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 4)
-        assertEquals(listOf(Timer.RECHECK to 4L), watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList()).timers)
+        assertEquals(listOf(Timer.RECHECK to 8L), watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList()).timers)
         watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 8)
         assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 8, emptyList()).events))
     }
@@ -88,7 +88,7 @@ class ComponentWatchTest {
         val watch = watching(ACTIVE)
         val first = watch.read(found(INACTIVE), 100, emptyList())
         assertEquals(emptyList<RtcEvent>(), stateEvents(first.events))
-        assertEquals(listOf(Timer.GRACE to 500L), first.timers)
+        assertEquals(listOf(Timer.GRACE to 600L), first.timers)
         // Reads while they disagree do not pile up grace reads (3236033).
         assertEquals(emptyList<Pair<Timer, Long>>(), watch.read(found(INACTIVE), 300, emptyList()).timers)
         assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.GRACE)), 600).step)
@@ -120,7 +120,7 @@ class ComponentWatchTest {
         watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertEquals(emptyList<RtcEvent>(), held.events, "the read overtook the ERROR hint: held")
-        assertEquals(setOf(Timer.SETTLED to 1L, Timer.HOLD_LIMIT to 499L), held.timers.toSet())
+        assertEquals(setOf(Timer.SETTLED to 2L, Timer.HOLD_LIMIT to 500L), held.timers.toSet())
         val marker = held.marker
         assertNotNull(marker, "the read that holds sends a marker")
         val decision = watch.decide(listOf(lifecycle("ERROR:0"), lifecycle("INACTIVE:0"), WatchInput.MarkerBack(marker!!)), 2)
