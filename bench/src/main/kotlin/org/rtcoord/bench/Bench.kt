@@ -36,6 +36,8 @@ internal class Bench(private val options: BenchOptions, private val installation
                 "${figure(loadBefore)} before and ${figure(os.systemLoadAverage)} after; Java ${System.getProperty("java.version")}. " +
                 "A loaded machine makes every figure slower and noisier, rtcoord's and the peers' alike.",
         )
+        val jvmOptions = ManagementFactory.getRuntimeMXBean().inputArguments.filter { it.startsWith("-XX:") }
+        report.note(if (jvmOptions.isEmpty()) "JVM: the JDK's default options." else "JVM options: ${jvmOptions.joinToString(" ")}.")
         report.note("ratios compare medians measured in this run; nothing is asserted, nothing is stored.")
         return report
     }

@@ -60,13 +60,15 @@ internal data class BenchOptions(
     val silenceRepetitions: Int = 5,
 ) {
     companion object {
-        const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S]
+        const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S] [--launcher-jvm]
 
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
   --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data
-  --seconds S   the monitoring window (default 60, quick 10)"""
+  --seconds S   the monitoring window (default 60, quick 10)
+  --launcher-jvm  the benchmarks' JVM takes the options the rtcoord launcher gives its commands (C1 only),
+                not the JDK's defaults (C1 then C2, as a host application embedding the library runs)"""
 
         /** What issue 9 asks for: N up to 1000 (10,000 for memory), 60 s monitoring windows. */
         fun full(benchmarks: List<Benchmark>): BenchOptions = BenchOptions(
