@@ -77,13 +77,20 @@ public class SupervisorActivity internal constructor(
         current.update { it.copy(backoff = backoff, waitingUntil = Instant.now().plusMillis(backoff.inWholeMilliseconds)) }
     }
 
-    /** It restarted [child] (the failed ones, named together), which took starting [started] again. */
-    internal fun restarted(child: String, started: List<String>, children: List<String>) {
+    /**
+     * It is starting [child] again, failed or with one that failed: counted before the start, so whoever
+     * sees the child come back up finds it counted.
+     */
+    internal fun startingAgain(child: String) {
+        current.update { status -> status.copy(restartsByChild = status.restartsByChild + (child to (status.restartsByChild[child] ?: 0) + 1)) }
+    }
+
+    /** It restarted [child] (the failed ones, named together). */
+    internal fun restarted(child: String, children: List<String>) {
         current.update { status ->
-            val counts = status.restartsByChild.toMutableMap().apply { started.forEach { merge(it, 1, Int::plus) } }
             status.copy(
                 children = children, restarts = status.restarts + 1, lastRestart = Instant.now(), lastRestarted = child,
-                restartsByChild = counts, backoff = null, waitingUntil = null,
+                backoff = null, waitingUntil = null,
             )
         }
     }

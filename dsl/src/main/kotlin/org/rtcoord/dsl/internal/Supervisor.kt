@@ -180,8 +180,8 @@ internal class Supervisor(
                 // Whatever was reported of them meanwhile, this restart answers.
                 sequence.get().let { now -> failed.keys.forEach { covered[it] = now } }
                 if (failed.size > 1) say.line("$together failed together: one restart")
-                val restarted = lock.withLock { restart(failed.keys.toList()) }
-                activity.restarted(together, restarted.map { it.toString() }, children.map { it.toString() })
+                lock.withLock { restart(failed.keys.toList()) }
+                activity.restarted(together, children.map { it.toString() })
             }
         }
     }
@@ -202,10 +202,10 @@ internal class Supervisor(
      * Restarts [failed] and, as the strategy says, the others: those not failed are stopped in reverse
      * order, then all are started in declared order. Where the others depend on the earlier ones
      * (rest-for-one, one-for-all), starting stops at the first that does not come up: the later ones
-     * stay stopped until it does. One that did not come up is retried as a failure of its own. Returns
-     * those it tried to start again.
+     * stay stopped until it does. One that did not come up is retried as a failure of its own. Each it
+     * starts again is counted as it is ([SupervisorActivity.startingAgain]).
      */
-    private suspend fun restart(failed: List<SupervisedChild>): List<SupervisedChild> {
+    private suspend fun restart(failed: List<SupervisedChild>) {
         val group = when (supervision.strategy) {
             Strategy.ONE_FOR_ONE -> failed
             Strategy.ONE_FOR_ALL -> children
@@ -217,13 +217,12 @@ internal class Supervisor(
         }
         val inOrder = supervision.strategy != Strategy.ONE_FOR_ONE
         var notStarted: SupervisedChild? = null
-        val started = ArrayList<SupervisedChild>()
         for ((place, member) in group.withIndex()) {
             if (member !in failed && member.restart == RestartType.TEMPORARY) {
                 leave(member, "it is temporary: stopped, not started again")
                 continue
             }
-            started += member
+            activity.startingAgain(member.toString())
             if (start(member)) continue
             notStarted = notStarted ?: member
             if (inOrder) {
@@ -235,7 +234,6 @@ internal class Supervisor(
         }
         // The next try counts against the intensity like any restart.
         notStarted?.let { report(it, it.node, "could not be restarted", exited = false) }
-        return started
     }
 
     private suspend fun stop(member: SupervisedChild) {
