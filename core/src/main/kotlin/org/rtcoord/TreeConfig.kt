@@ -14,6 +14,8 @@ import kotlin.time.toKotlinDuration
  * @property orb an `org.omg.CORBA.ORB` owned by the host application; the tree then neither configures nor
  *   destroys it. By default the tree creates and owns a JacORB ORB. Typed `Any` so that the API names no
  *   CORBA type: in the OSGi bundle, CORBA's packages are private, and the host's own would not be the same.
+ *   On a host's ORB the tree cannot count what its sockets hold, so an abort whose component is reset at
+ *   once may, under load, be published as a deactivation (its ERROR hint read too late).
  * @property listenAddress the one address the tree's own ORB listens on for callbacks (observers), and the
  *   only one its object references carry. By default (null) the address this host uses to reach the first
  *   name server the tree has when it makes its first remote call: loopback for a name server on this

@@ -15,6 +15,11 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
     private val started = lazy { supplied ?: withJacorbLoader { ORB.init(emptyArray(), jacorbProperties(listenAddress(), callTimeout)) } }
     val orb: ORB by started
 
+    /** The connections peers opened to an owned ORB; null for a host's, whose sockets are its own. */
+    val inbound: InboundConnections? by lazy {
+        (orb as? org.jacorb.orb.ORB)?.transportManager?.socketFactoryManager?.serverSocketFactory as? InboundConnections
+    }
+
     override fun close() {
         if (!owned || !started.isInitialized()) return
         orb.shutdown(false)
@@ -38,8 +43,13 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
             }
         }
 
-        /** rtcoord's one ORB recipe ([OrbRecipe], shared with the fixtures) on [listenAddress], any port. */
+        /**
+         * rtcoord's one ORB recipe ([OrbRecipe], shared with the fixtures) on [listenAddress], any port,
+         * whose accepted connections are counted ([InboundConnections]).
+         */
         fun jacorbProperties(listenAddress: String, callTimeout: Duration) =
-            OrbRecipe.properties(listenAddress, 0, callTimeout.inWholeMilliseconds)
+            OrbRecipe.properties(listenAddress, 0, callTimeout.inWholeMilliseconds).apply {
+                setProperty("jacorb.net.server_socket_factory", InboundConnections::class.java.name)
+            }
     }
 }

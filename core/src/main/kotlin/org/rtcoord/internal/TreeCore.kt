@@ -42,6 +42,11 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     /** Runs [task] on the tree's threads when [clock] reads [millis]; null once the tree is closed. */
     fun at(millis: Long, task: Runnable): Future<*>? = threads.schedule(clock.nanosUntil(millis), task)
 
+    /** Runs [task] on the tree's threads as soon as one is free; not once the tree is closed. */
+    fun execute(task: Runnable) {
+        threads.schedule(0, task)
+    }
+
     val components = ComponentRegistry(this)
     val model = SystemModel(nameServers)
     val watcher = Watcher(this)

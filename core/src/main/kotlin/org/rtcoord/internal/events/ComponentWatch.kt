@@ -31,10 +31,11 @@ import org.rtcoord.UnreachableException
  *
  * An abort's ERROR hint leaves the component before the read that overtook it answered, on the connection
  * its INACTIVE hint came by: when the read is taken, it is already in this host's socket, waiting for the
- * ORB's thread that reads that connection. So the marker goes out after the read, through the ORB like a
- * hint, and comes back once the threads that take calls have taken what was waiting before it: under load
- * it waits as long as they are late, where a fixed time would not. A hold lasts at least [Timing.settleMillis]
- * from the INACTIVE hint besides.
+ * ORB's thread that reads that connection, which under load may not get a core for milliseconds. So the
+ * marker goes out after the read, once the ORB has handed on every message in its sockets, and through
+ * the ORB like a hint, so it comes back after them: it waits as long as the ORB's threads are late,
+ * where a fixed time would not. A hold lasts at least [Timing.settleMillis] from the INACTIVE hint besides,
+ * for a component on another host, whose two connections are two flows.
  *
  * One timer of each kind is pending at a time; a timer that fires is reported by [WatchInput.Fired].
  */

@@ -99,11 +99,7 @@ internal class ObserverLink(
      * cannot be sent never comes back, and what waits for it waits for its limit.
      */
     fun sendMarker(marker: String) {
-        try {
-            observer?.sendMarker(marker)
-        } catch (e: Exception) {
-            log.debug("{}: marker not sent: {}", subject, e.toString())
-        }
+        observer?.sendMarker(marker, subject)
     }
 
     /** Forgets the observer without asking the component: it is gone, and the observer with it. */

@@ -16,8 +16,8 @@ import org.rtcoord.LifeCycle
  * INACTIVE hint came and a marker sent after that read came back ([flushed]), or [holdLimitMillis] after
  * the hint at most: an abort hints INACTIVE then ERROR, and when a reset follows at once, a read that
  * overtook the ERROR hint finds INACTIVE too. The ERROR hint arriving meanwhile turns the pair into the
- * abort it was. The ERROR hint was sent before the read answered, so it waits in this host's socket when
- * the marker is sent; the marker comes back once the ORB took what waited before it.
+ * abort it was. The ERROR hint was sent before the read answered, so it is in this host's socket when
+ * the read's answer is; the marker is sent once the ORB has taken it, and comes back after it.
  */
 internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Long = 0, private val settleMillis: Long = 0) {
     /** The last published state. */

@@ -37,7 +37,7 @@ import kotlin.time.Duration.Companion.seconds
  * is its parts': the [polls], the [watchdogs], the [reports] and the [outages].
  */
 internal class Watcher(private val core: TreeCore) {
-    private val host by lazy { ObserverHost(core.orb.orb) }
+    private val host by lazy { ObserverHost(core.orb.orb, core.orb.inbound, core::execute) }
     private val components = HashMap<ComponentObject, ComponentMonitor>()
     private val live = java.util.concurrent.ConcurrentHashMap.newKeySet<ComponentMonitor>()
     /** By path: a directory listed anew (its name server restarted) is the same directory, listed once. */
