@@ -38,8 +38,10 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
             val waiting = try { input.available() } catch (e: IOException) { return null }
             if (consumed == before) return (before + waiting).takeIf { it > handled }
         }
-        // Read all along: waiting for a little more than was there ends with the next message it reads.
-        return (consumed + input.available()).takeIf { it > handled }
+        // Read all along. Counted the other way round, a read ending in between is counted twice rather
+        // than not at all: waiting for a little more than was there ends with the next message it reads.
+        val waiting = try { input.available() } catch (e: IOException) { return null }
+        return (consumed + waiting).takeIf { it > handled }
     }
 
     /** Has [barrier] wait until this connection has handled up to [target], or closed. */

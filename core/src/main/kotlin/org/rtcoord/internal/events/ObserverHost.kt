@@ -47,7 +47,8 @@ internal class ObserverHost(orb: ORB, private val inbound: InboundConnections?, 
                     log.debug("{}: marker not sent: {}", subject, e.toString())
                 }
             }
-            if (inbound?.allTaken { dispatch.execute(send) } != false) send.run()
+            val taken = inbound?.allTaken { dispatch.execute(send) } ?: true
+            if (taken) send.run()
         }
 
         fun close() = served.close()
