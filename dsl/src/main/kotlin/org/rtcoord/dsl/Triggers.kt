@@ -57,8 +57,9 @@ public class ComponentTriggers internal constructor(
     /**
      * When its FSM (an OpenRTM-aist 2.0 FSM component's, told by its FSM4RTC observer) enters [state]:
      * `on(component("Microwave0.rtc")).fsmState("Cooking") { ... }`. A transition enters each state on the
-     * way down to its target: from `Disabled`, `close` enters `Operational`, then `Idle` below it, and fires
-     * the rules of both, in that order.
+     * way down to its target: from `Disabled`, `close` enters `Operational`, then `Idle` below it: both are
+     * published, in that order, and fire the rules of both (each rule's handler in a coroutine of its own,
+     * so one rule's does not wait for another's).
      * A component whose observer cannot tell its FSM's state never fires it (see
      * [org.rtcoord.ComponentEntry.fsm] for why).
      */

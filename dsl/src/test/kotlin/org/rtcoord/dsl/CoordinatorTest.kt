@@ -77,16 +77,17 @@ class CoordinatorTest : CoordinatedSystem() {
     @Test
     fun `fsmState rules fire as the FSM enters each state, nested ones after the state holding them`(): Unit = runBlocking {
         val microwave = system.runtime.create(Scenarios.microwave, "Microwave0")
-        val fired = Collections.synchronizedList(mutableListOf<String>())
+        val fired = Collections.synchronizedList(mutableListOf<Pair<Long, String>>())
         coordinator {
-            on(component("Microwave0")).fsmState("Operational") { fired += "Operational after ${it.old}" }
-            on(component("Microwave0")).fsmState("Idle") { fired += "Idle after ${it.old}" }
+            on(component("Microwave0")).fsmState("Operational") { fired += it.sequence to "Operational after ${it.old}" }
+            on(component("Microwave0")).fsmState("Idle") { fired += it.sequence to "Idle after ${it.old}" }
         }.use { coordinator ->
             coordinator.start()
             microwave.fsmEvent("open")
             microwave.fsmEvent("close")
             await("both rules") { fired.size == 2 }
-            assertEquals(listOf("Operational after Disabled", "Idle after Operational"), fired)
+            // Published in that order; each rule's handler runs in a coroutine of its own, so they may start in either.
+            assertEquals(listOf("Operational after Disabled", "Idle after Operational"), fired.sortedBy { it.first }.map { it.second })
         }
     }
 
