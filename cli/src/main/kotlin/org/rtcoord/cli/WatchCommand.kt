@@ -84,11 +84,14 @@ class WatchCommand : TreeCommand("watch") {
             val read = entry.node.snapshots.value
             val what = if (!entry.alive) "unreachable" else read?.brief(entry.state) ?: entry.state.name
             val method = entry.watchMethod
+            // An FSM's state entered before every event was caught is told here, or it would be told nowhere.
+            val fsm = entry.fsm
             if (session.json) {
                 val state = read?.stateFields(entry.state) ?: mapOf("state" to entry.state.name)
-                toJson(presentJson(now, entry.path, "Present") + state + mapOf("alive" to entry.alive) + method?.fields().orEmpty(), pretty = false)
+                val machine = fsm?.let { mapOf("fsm" to it.toJson()) }.orEmpty()
+                toJson(presentJson(now, entry.path, "Present") + state + machine + mapOf("alive" to entry.alive) + method?.fields().orEmpty(), pretty = false)
             } else {
-                "${timestamp(now)} ${entry.path} $what" + (method?.let { "; watched: ${it.text()}" } ?: "")
+                "${timestamp(now)} ${entry.path} $what" + (fsm?.let { ", FSM state ${it.text()}" } ?: "") + (method?.let { "; watched: ${it.text()}" } ?: "")
             }
         }
         return servers + components
