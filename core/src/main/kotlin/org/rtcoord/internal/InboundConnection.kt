@@ -1,5 +1,6 @@
 package org.rtcoord.internal
 
+import org.jacorb.orb.giop.Messages
 import java.io.IOException
 import java.io.InputStream
 import java.util.concurrent.ConcurrentLinkedQueue
@@ -33,14 +34,15 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
      */
     fun target(): Long? {
         if (closed || unframed) return null
+        fun unread(): Int? = try { input.available() } catch (e: IOException) { null }
         repeat(SNAPSHOT_TRIES) {
             val before = consumed
-            val waiting = try { input.available() } catch (e: IOException) { return null }
+            val waiting = unread() ?: return null
             if (consumed == before) return (before + waiting).takeIf { it > handled }
         }
         // Read all along. Counted the other way round, a read ending in between is counted twice rather
         // than not at all: waiting for a little more than was there ends with the next message it reads.
-        val waiting = try { input.available() } catch (e: IOException) { return null }
+        val waiting = unread() ?: return null
         return (consumed + waiting).takeIf { it > handled }
     }
 
@@ -115,14 +117,8 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
         if (unframed) releaseWaits()
     }
 
-    /** The body size in the header just read; negative when it is not a GIOP header. */
-    private fun bodySize(): Long {
-        if (header[0] != 'G'.code.toByte() || header[1] != 'I'.code.toByte() || header[2] != 'O'.code.toByte() || header[3] != 'P'.code.toByte()) return -1
-        val little = header[6].toInt() and 1 == 1
-        var size = 0L
-        for (k in 0 until 4) size = size or ((header[8 + k].toLong() and 0xff) shl 8 * (if (little) k else 3 - k))
-        return size
-    }
+    /** The body size in the header just read, as JacORB reads it; negative when it is not a GIOP header. */
+    private fun bodySize(): Long = if (Messages.matchGIOPMagic(header)) Messages.getMsgSize(header).toLong() else -1
 
     /**
      * Counts down the connections still to be handled up to their targets, and the one who set it up:

@@ -17,7 +17,7 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
 
     /** The connections peers opened to an owned ORB; null for a host's, whose sockets are its own. */
     val inbound: InboundConnections? by lazy {
-        (orb as? org.jacorb.orb.ORB)?.transportManager?.socketFactoryManager?.serverSocketFactory as? InboundConnections
+        if (owned) (orb as org.jacorb.orb.ORB).transportManager.socketFactoryManager.serverSocketFactory as InboundConnections else null
     }
 
     override fun close() {
