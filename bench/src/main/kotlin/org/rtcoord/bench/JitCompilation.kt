@@ -12,4 +12,16 @@ internal object JitCompilation {
 
     /** Milliseconds compiled so far, or null when this JVM does not count them. */
     fun millis(): Long? = bean?.takeIf { it.isCompilationTimeMonitoringSupported }?.totalCompilationTime
+
+    /** Runs [block]; returns its value, how long it took and how long the JIT compiled meanwhile. */
+    inline fun <T> during(block: () -> T): Stretch<T> {
+        val compiledBefore = millis()
+        val started = System.nanoTime()
+        val value = block()
+        val elapsed = (System.nanoTime() - started) / 1_000_000
+        return Stretch(value, elapsed, compiledBefore?.let { before -> millis()?.minus(before) })
+    }
+
+    /** A stretch of work: its [value], its [millis], and the [compiledMillis] the JIT spent in it (null when not counted). */
+    class Stretch<T>(val value: T, val millis: Long, val compiledMillis: Long?)
 }

@@ -48,7 +48,7 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
                     )
                     // Warmed up first, as every timed quantity here, and until the JIT is quiet: C2 still compiles the
                     // path after thousands of changes, and a change timed while it does waits for a core.
-                    val warmUp = WarmUp(round = pushChanges / 8, limit = options.reactionWarmUpLimit)
+                    val warmUp = WarmUp(round = (pushChanges / 8).coerceAtLeast(1), limit = options.reactionWarmUpLimit)
                     val timed = changes(tree, "$context/push0.rtc", system.component("push0"), EventOptions(WatchMode.PUSH), pushChanges, 10.milliseconds, Random(options.seed), aborts = true, warmUp = warmUp)
                     val push = timed.reactions
                     val all = Samples.millis(push.map { it.nanos })
@@ -120,13 +120,9 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
         }
         try {
             val warmed = warmUp?.make { change() } ?: 0
-            val compiledBefore = JitCompilation.millis()
-            val started = System.nanoTime()
-            val reactions = List(count) { change() }
-            val timedMillis = (System.nanoTime() - started) / 1_000_000
-            val compiled = compiledBefore?.let { before -> JitCompilation.millis()?.minus(before) }
-            val jit = "warm-up $warmed changes; then the JIT compiled for ${compiled ?: "?"} ms of the ${figure(timedMillis / 1000.0)} s timed"
-            return Changes(reactions, jit)
+            val timed = JitCompilation.during { List(count) { change() } }
+            val jit = "warm-up $warmed changes; then the JIT compiled for ${timed.compiledMillis ?: "?"} ms of the ${figure(timed.millis / 1000.0)} s timed"
+            return Changes(timed.value, jit)
         } finally {
             subscription.cancel()
         }
@@ -142,13 +138,10 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
             var made = 0
             var quietRounds = 0
             while (made < limit && quietRounds < 2) {
-                val compiledBefore = JitCompilation.millis()
-                val started = System.nanoTime()
                 val changes = minOf(round, limit - made)
-                repeat(changes) { change() }
+                val stretch = JitCompilation.during { repeat(changes) { change() } }
                 made += changes
-                val compiled = compiledBefore?.let { before -> JitCompilation.millis()?.minus(before) }
-                val quiet = compiled != null && compiled * 100 < (System.nanoTime() - started) / 1_000_000
+                val quiet = stretch.compiledMillis?.let { it * 100 < stretch.millis } ?: false
                 quietRounds = if (quiet) quietRounds + 1 else 0
             }
             return made
