@@ -188,22 +188,22 @@ internal class ComponentMonitor(
      * The hints that arrived while the component was being read, for the machine to take before it
      * reconciles: they tell of changes made before it answered. Everything else waits for the next batch.
      */
-    private fun lateHints(): List<Hint> {
-        val hints = ArrayList<Hint>()
+    private fun lateHints(): List<WatchInput.Hinted> {
+        val hints = ArrayList<WatchInput.Hinted>()
         while (true) {
             val item = work.tryReceive().getOrNull() ?: return hints
-            val hint = (item.input as? WatchInput.Hinted)?.hint
-            if (hint != null && hint.kind == HintKind.RTC_STATUS) hints += hint else carried += item
+            val hinted = item.input as? WatchInput.Hinted
+            if (hinted != null && hinted.hint.kind == HintKind.RTC_STATUS) hints += hinted else carried += item
         }
     }
 
     private suspend fun carryOut(outcome: WatchOutcome) {
-        carried += outcome.untaken.map { Work(WatchInput.Hinted(it)) }
+        carried += outcome.untaken.map { Work(it) }
         if (outcome.readAgain) carried += Work(WatchInput.ReadWanted)
         outcome.marker?.let(link::sendMarker)
-        // Each fires when the clock reads its time, not up to a millisecond later as a coroutine's delay would.
+        // Each fires when the clock reads its time, not a millisecond later as a delay may; one armed anew replaces its kind's.
         for ((timer, at) in outcome.timers) {
-            core.at(at) { work.trySend(Work(WatchInput.Fired(timer))) }?.let { armed[timer] = it }
+            core.at(at) { work.trySend(Work(WatchInput.Fired(timer, at))) }?.let { armed.put(timer, it)?.cancel(false) }
         }
         when {
             outcome.finalized -> {
@@ -277,7 +277,7 @@ internal class ComponentMonitor(
             hint.isHeartbeat -> timers.heard()
             traffic != null -> timers.heard().also { core.model.publish(listOf(PortTraffic(node, traffic.first, traffic.second)), deliver = registrations::offerTraffic) }
             hint.kind == HintKind.FSM_STATUS -> timers.heard().also { fsm.changedBy(hint)?.let { core.model.publish(listOf(it), deliver = registrations::offer) } }
-            else -> work.trySend(Work(WatchInput.Hinted(hint)))
+            else -> work.trySend(Work(WatchInput.Hinted(hint, now())))
         }
     }
 

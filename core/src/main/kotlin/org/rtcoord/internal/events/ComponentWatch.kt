@@ -10,6 +10,7 @@ import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.UnreachableException
+import java.util.EnumMap
 
 /**
  * What the tree believes of one watched component and when it says so: a pure state machine with no
@@ -34,10 +35,12 @@ import org.rtcoord.UnreachableException
  * ORB's thread that reads that connection, which under load may not get a core for milliseconds. So the
  * marker goes out after the read, once the ORB has handed on every message in its sockets, and through
  * the ORB like a hint, so it comes back after them: it waits as long as the ORB's threads are late,
- * where a fixed time would not. A hold lasts at least [Timing.settleMillis] from the INACTIVE hint besides,
- * for a component on another host, whose two connections are two flows.
+ * where a fixed time would not. A hold lasts at least [Timing.settleMillis] from the INACTIVE hint's arrival
+ * besides, for a component on another host, whose two connections are two flows.
  *
- * One timer of each kind is pending at a time; a timer that fires is reported by [WatchInput.Fired].
+ * One timer of each kind is pending at a time; a timer that fires is reported by [WatchInput.Fired], with
+ * the time it was armed for. A hold's timers are forgotten when the hold ends: one of them firing later is
+ * ignored, and the next hold arms its own, so an earlier hold's limit never cuts a later hold short.
  */
 internal class ComponentWatch(private val node: ComponentNode, now: Long, private val timing: Timing = Timing()) {
     /** The machine's durations, in milliseconds. */
@@ -57,7 +60,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
     private val states = ContextStates(node, timing.holdLimitMillis, timing.settleMillis)
     private val liveness = ComponentLiveness(now)
-    private val pending = HashSet<Timer>()
+    /** The time each pending timer was armed for. */
+    private val deadlines = EnumMap<Timer, Long>(Timer::class.java)
     private var markers = 0L
     /** The wait of the latest [Timer.RECHECK] while hints lead the reads; 0 once they no longer do. */
     private var recheckDelay = 0L
@@ -104,12 +108,12 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         }
         for (input in inputs) {
             when (input) {
-                is WatchInput.Hinted -> readAll = take(input.hint, now, handles) || readAll
+                is WatchInput.Hinted -> readAll = take(input, now, handles) || readAll
                 WatchInput.ReadWanted -> readAll = true
                 WatchInput.Ticked, WatchInput.Unsettled -> tick()
                 is WatchInput.Probed -> if (input.epoch == epoch) probed = input else tick()
-                is WatchInput.Fired -> {
-                    pending -= input.timer
+                // A timer no longer waited for (an ended hold's) tells nothing.
+                is WatchInput.Fired -> if (deadlines.remove(input.timer, input.at)) {
                     when (input.timer) {
                         Timer.RECHECK -> handles += every
                         Timer.GRACE -> if (states.awaitingConfirmation) readAll = true
@@ -143,7 +147,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     }
 
     /** A whole read found [snapshot] at [now]; [late] are the hints that came meanwhile. */
-    fun read(snapshot: ComponentSnapshot, now: Long, late: List<Hint>): WatchOutcome {
+    fun read(snapshot: ComponentSnapshot, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val events = ArrayList<RtcEvent>()
         val recovered = liveness.answered(now).isNotEmpty()
         if (recovered) {
@@ -161,7 +165,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     }
 
     /** A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile. */
-    fun statesRead(found: Map<Int, LifeCycle>, now: Long, late: List<Hint>): WatchOutcome {
+    fun statesRead(found: Map<Int, LifeCycle>, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val previous = last ?: return WatchOutcome(untaken = late)
         liveness.answered(now)
         val snapshot = previous.copy(contexts = previous.contexts.map { context -> found[context.handle]?.let { context.copy(state = it) } ?: context })
@@ -175,7 +179,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
      * that has settled is published without reading again, as the hold waited for hints, not for the
      * component, and a hint come meanwhile (an abort's ERROR) is taken before.
      */
-    fun settle(now: Long, late: List<Hint>): WatchOutcome {
+    fun settle(now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val snapshot = last ?: return WatchOutcome(untaken = late)
         return reconcile(snapshot, snapshot, now, late)
     }
@@ -196,16 +200,17 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     }
 
     /**
-     * Takes a hint in. A lifecycle hint adds its context's handle to [handles] (reading that state is
-     * enough); returns whether anything else calls for reading the whole component.
+     * Takes a hint in at [now]. A lifecycle hint adds its context's handle to [handles] (reading that state
+     * is enough); returns whether anything else calls for reading the whole component.
      */
-    private fun take(hint: Hint, now: Long, handles: MutableSet<Int>): Boolean {
+    private fun take(hinted: WatchInput.Hinted, now: Long, handles: MutableSet<Int>): Boolean {
+        val hint = hinted.hint
         liveness.hinted(now, finalize = hint.isFinalize)
         return when {
             hint.isHeartbeat || hint.kind == HintKind.OTHER -> false
             // The read this asks for finds the component gone, and it is finalized.
             hint.isFinalize -> true
-            hint.kind == HintKind.RTC_STATUS -> states.hinted(hint, now)?.also { handles += it } == null
+            hint.kind == HintKind.RTC_STATUS -> states.hinted(hint, hinted.at)?.also { handles += it } == null
             else -> true
         }
     }
@@ -220,22 +225,26 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     }
 
     /** Reconciles each context's state in [snapshot] with the hints, [late] ones first; arms what the phases call for. */
-    private fun reconcile(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, late: List<Hint>): WatchOutcome {
-        val untaken = ArrayList<Hint>()
+    private fun reconcile(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
+        val untaken = ArrayList<WatchInput.Hinted>()
         var taken = false
-        for (hint in late) {
+        for (hinted in late) {
+            val hint = hinted.hint
             // Hints that came during the read tell of changes made before it answered: an abort's ERROR, say.
-            if (hint.kind == HintKind.RTC_STATUS && !hint.isFinalize && states.hinted(hint, now) != null) {
+            if (hint.kind == HintKind.RTC_STATUS && !hint.isFinalize && states.hinted(hint, hinted.at) != null) {
                 liveness.hinted(now)
                 taken = true
             } else {
-                untaken += hint
+                untaken += hinted
             }
         }
         val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = observed)
         val timers = ArrayList<Pair<Timer, Long>>()
         fun arm(timer: Timer, after: Long) {
-            if (pending.add(timer)) timers += timer to now + after.coerceAtLeast(0)
+            if (timer in deadlines) return
+            val at = now + after.coerceAtLeast(0)
+            deadlines[timer] = at
+            timers += timer to at
         }
         // A late hint may lead past what the read found: read again now rather than after the grace period.
         val readAgain = taken && states.awaitingConfirmation
@@ -247,6 +256,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         if (states.holding) {
             states.heldUntil()?.let { arm(Timer.HOLD_LIMIT, it - now) }
             states.settlesIn(now)?.let { arm(Timer.SETTLED, it) }
+        } else {
+            deadlines.keys -= HOLD_TIMERS
         }
         // Each read that leaves a hold waiting for its hints sends a marker of its own: an older one tells nothing of what came since.
         return WatchOutcome(events, timers, untaken, readAgain, marker = if (states.awaitingHints) newMarker() else null)
@@ -262,7 +273,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             recheckDelay = 0
             return
         }
-        if (Timer.RECHECK in pending) return
+        if (Timer.RECHECK in deadlines) return
         recheckDelay = if (recheckDelay == 0L) timing.firstRecheckMillis else minOf(recheckDelay * 2, timing.graceMillis)
         arm(Timer.RECHECK, recheckDelay)
     }
@@ -276,5 +287,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
         /** A beat is overdue a tenth of it late: heartbeats come on time to within a few milliseconds. */
         private const val OVERDUE_FRACTION = 10
+
+        /** The timers of a hold, which end with it. */
+        private val HOLD_TIMERS = setOf(Timer.SETTLED, Timer.HOLD_LIMIT)
     }
 }

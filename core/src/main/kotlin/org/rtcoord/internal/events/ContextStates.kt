@@ -45,14 +45,14 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     }
 
     /**
-     * Takes an RTC_STATUS [hint] that came at [now]; returns the handle of the context whose state is
+     * Takes an RTC_STATUS [hint] that came at [at]; returns the handle of the context whose state is
      * then worth reading, or null when the hint names no state or a context the component is not known to
      * be in: only reading the whole component tells what, if anything, happened.
      */
-    fun hinted(hint: Hint, now: Long): Int? {
+    fun hinted(hint: Hint, at: Long): Int? {
         val (state, handle) = hint.lifeCycle() ?: return null
         val tracker = trackers[handle] ?: return null
-        tracker.hint(state, now)
+        tracker.hint(state, at)
         return handle
     }
 

@@ -61,12 +61,12 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
     /** Whether a deactivation is held and not [flushed] yet. */
     val awaitingHints: Boolean get() = holding && !flushed
 
-    /** Takes a state hinted at [now]; duplicates and impossible transitions are ignored (the next read decides). */
-    fun hint(state: LifeCycle, now: Long) {
+    /** Takes a state hinted by a hint that came at [at]; duplicates and impossible transitions are ignored (the next read decides). */
+    fun hint(state: LifeCycle, at: Long) {
         val last = hinted.lastOrNull() ?: confirmed
         if (state == last || !possible(last, state)) return
         if (state == LifeCycle.INACTIVE && last == LifeCycle.ACTIVE) {
-            deactivationHintedAt = now
+            deactivationHintedAt = at
             flushed = false
         }
         hinted += state

@@ -4,8 +4,8 @@ import org.rtcoord.LifeCycle
 
 /** What happened to a watched component, as its [ComponentMonitor] tells its [ComponentWatch], in the order it took it. */
 internal sealed interface WatchInput {
-    /** A hint from the observer: a lifecycle hint, or one that something else changed. */
-    class Hinted(val hint: Hint) : WatchInput
+    /** A hint from the observer, received at [at]: a lifecycle hint, or one that something else changed. */
+    class Hinted(val hint: Hint, val at: Long) : WatchInput
 
     /** Anything asks for a whole read (an attachment, a registration). */
     object ReadWanted : WatchInput
@@ -19,8 +19,8 @@ internal sealed interface WatchInput {
     /** A poll probe that could not finish alone. */
     object Unsettled : WatchInput
 
-    /** [timer] fired. */
-    class Fired(val timer: ComponentWatch.Timer) : WatchInput
+    /** [timer], armed for [at], fired. */
+    class Fired(val timer: ComponentWatch.Timer, val at: Long) : WatchInput
 
     /** A marker came back through the observer. */
     class MarkerBack(val marker: String) : WatchInput

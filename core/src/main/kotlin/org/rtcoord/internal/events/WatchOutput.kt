@@ -33,7 +33,7 @@ internal class WatchOutcome(
     /** Timers to arm, each with the time `now` it fires at. */
     val timers: List<Pair<ComponentWatch.Timer, Long>> = emptyList(),
     /** Hints the reconciliation did not take: the next batch's. */
-    val untaken: List<Hint> = emptyList(),
+    val untaken: List<WatchInput.Hinted> = emptyList(),
     /** Read again at once: a hint that came during the read leads past what it found. */
     val readAgain: Boolean = false,
     /** It answers again after being lost: its observer is to be attached anew. */

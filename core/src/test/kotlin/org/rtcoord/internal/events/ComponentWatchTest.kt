@@ -41,7 +41,8 @@ class ComponentWatchTest {
 
     private fun found(state: LifeCycle) = base.copy(contexts = base.contexts.take(1).map { it.copy(handle = 0, state = state) })
 
-    private fun lifecycle(text: String) = WatchInput.Hinted(Hint(HintKind.RTC_STATUS, text))
+    /** A lifecycle hint that came at [at]. */
+    private fun lifecycle(text: String, at: Long) = WatchInput.Hinted(Hint(HintKind.RTC_STATUS, text), at)
 
     private fun changed(vararg pairs: Pair<LifeCycle, LifeCycle>): List<RtcEvent> = pairs.map { (from, to) -> StateChanged(node, 0, from, to) }
 
@@ -57,7 +58,7 @@ class ComponentWatchTest {
     @Test
     fun `an activation is published at the read its hint asks for`() {
         val watch = watching(INACTIVE)
-        val decision = watch.decide(listOf(lifecycle("ACTIVE:0")), 10)
+        val decision = watch.decide(listOf(lifecycle("ACTIVE:0", 10)), 10)
         assertEquals(setOf(0), (decision.step as WatchStep.ReadStates).handles)
         assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 11, emptyList()).events))
     }
@@ -66,20 +67,21 @@ class ComponentWatchTest {
     fun `while hints lead the reads, the state is read again after 1, 2, 4 ms, one recheck pending at a time`() {
         // OpenRTM-aist hints from the transition's actions, before its state machine shows the new state.
         val watch = watching(INACTIVE)
-        watch.decide(listOf(lifecycle("ACTIVE:0")), 0)
+        watch.decide(listOf(lifecycle("ACTIVE:0", 0)), 0)
         val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertEquals(emptyList<RtcEvent>(), first.events)
         assertEquals(listOf(Timer.RECHECK to 2L, Timer.GRACE to 501L).toSet(), first.timers.toSet())
         // A hint-driven read meanwhile arms no second recheck (4452470).
-        watch.decide(listOf(WatchInput.Hinted(Hint(HintKind.CONFIGURATION, "UPDATE_CONFIGSET:default"))), 1)
+        watch.decide(listOf(WatchInput.Hinted(Hint(HintKind.CONFIGURATION, "UPDATE_CONFIGSET:default"), 1)), 1)
         assertEquals(emptyList<Pair<Timer, Long>>(), watch.read(found(INACTIVE), 1, emptyList()).timers, "no second recheck, no second grace read")
 
-        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 2).step)
+        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 2)), 2).step)
         assertEquals(listOf(Timer.RECHECK to 4L), watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).timers)
-        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 4)
+        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 4)), 4)
         assertEquals(listOf(Timer.RECHECK to 8L), watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList()).timers)
-        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 8)
+        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 8)), 8)
         assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 8, emptyList()).events))
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.GRACE, 501)), 501).step, "a grace read when they agree reads nothing")
     }
 
     @Test
@@ -91,15 +93,14 @@ class ComponentWatchTest {
         assertEquals(listOf(Timer.GRACE to 600L), first.timers)
         // Reads while they disagree do not pile up grace reads (3236033).
         assertEquals(emptyList<Pair<Timer, Long>>(), watch.read(found(INACTIVE), 300, emptyList()).timers)
-        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.GRACE)), 600).step)
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.GRACE, 600)), 600).step)
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 600, emptyList()).events))
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.GRACE)), 1100).step, "a grace read when they agree reads nothing")
     }
 
     @Test
     fun `an abort, INACTIVE then ERROR hinted, is one transition and never held`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0"), lifecycle("ERROR:0")), 0)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0), lifecycle("ERROR:0", 0)), 0)
         val outcome = watch.statesRead(mapOf(0 to ERROR), 1, emptyList())
         assertEquals(changed(ACTIVE to ERROR), stateEvents(outcome.events))
         assertEquals(emptyList<Pair<Timer, Long>>(), outcome.timers)
@@ -109,33 +110,33 @@ class ComponentWatchTest {
     @Test
     fun `an abort reset at once, whose hints came during the read, is published as an abort (2ae9b13)`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
-        val late = listOf(Hint(HintKind.RTC_STATUS, "ERROR:0"), Hint(HintKind.RTC_STATUS, "INACTIVE:0"))
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
+        val late = listOf(lifecycle("ERROR:0", 1), lifecycle("INACTIVE:0", 1))
         assertEquals(changed(ACTIVE to ERROR, ERROR to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 1, late).events))
     }
 
     @Test
     fun `an abort reset at once, whose ERROR hint comes after the read, is held and then published as an abort`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertEquals(emptyList<RtcEvent>(), held.events, "the read overtook the ERROR hint: held")
         assertEquals(setOf(Timer.SETTLED to 2L, Timer.HOLD_LIMIT to 500L), held.timers.toSet())
         val marker = held.marker
         assertNotNull(marker, "the read that holds sends a marker")
-        val decision = watch.decide(listOf(lifecycle("ERROR:0"), lifecycle("INACTIVE:0"), WatchInput.MarkerBack(marker!!)), 2)
+        val decision = watch.decide(listOf(lifecycle("ERROR:0", 2), lifecycle("INACTIVE:0", 2), WatchInput.MarkerBack(marker!!)), 2)
         assertInstanceOf(WatchStep.ReadStates::class.java, decision.step)
         assertEquals(changed(ACTIVE to ERROR, ERROR to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).events))
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 3).step, "the hold's timer finds nothing held")
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 3).step, "the hold's timer ended with it")
     }
 
     @Test
     fun `a deactivation is held until it settled, counted from its hint, and the marker sent after its read is back`() {
         val watch = watching(ACTIVE)
-        assertEquals(setOf(0), (watch.decide(listOf(lifecycle("INACTIVE:0")), 0).step as WatchStep.ReadStates).handles)
+        assertEquals(setOf(0), (watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0).step as WatchStep.ReadStates).handles)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertTrue(held.events.none { it is StateChanged })
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 2).step, "settled, but its marker is not back")
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 2).step, "settled, but its marker is not back")
         assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 3).step, "settled and back: published without reading again")
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(3, emptyList()).events))
     }
@@ -143,20 +144,20 @@ class ComponentWatchTest {
     @Test
     fun `a marker back before the hold settled waits for the settling time`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 1).step, "back, but not settled yet")
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED)), 2).step)
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 2).step)
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(2, emptyList()).events))
     }
 
     @Test
     fun `an abort's ERROR hint that comes as the hold settles turns it into the abort, read again`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!), WatchInput.Fired(Timer.SETTLED)), 2).step)
-        val settling = watch.settle(2, listOf(Hint(HintKind.RTC_STATUS, "ERROR:0")))
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!), WatchInput.Fired(Timer.SETTLED, 2)), 2).step)
+        val settling = watch.settle(2, listOf(lifecycle("ERROR:0", 2)))
         assertEquals(emptyList<StateChanged>(), stateEvents(settling.events), "no deactivation once its ERROR hint is in")
         assertTrue(settling.readAgain, "the hints lead past the last read: read again now")
         assertEquals(changed(ACTIVE to ERROR), stateEvents(watch.statesRead(mapOf(0 to ERROR), 3, emptyList()).events))
@@ -165,10 +166,10 @@ class ComponentWatchTest {
     @Test
     fun `a deactivation whose first read found it ACTIVE still is held from the recheck that confirms it`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         // The first read found ACTIVE still (the hint came before the state showed): nothing held, no marker.
         assertNull(watch.statesRead(mapOf(0 to ACTIVE), 1, emptyList()).marker)
-        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK)), 4)
+        watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 2)), 4)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList())
         assertEquals(emptyList<StateChanged>(), stateEvents(held.events), "settled, but the hints before the read are not known to be in")
         assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 5).step)
@@ -178,31 +179,61 @@ class ComponentWatchTest {
     @Test
     fun `a marker coming back ends a hold that settled, even with an earlier hold's timer still pending (83b40df)`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList()).marker!!
         watch.decide(listOf(WatchInput.MarkerBack(first)), 1)
         // The first hold's SETTLED timer is still pending when it ends by the hold limit's read.
-        watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT)), 2)
-        watch.read(found(INACTIVE), 3, emptyList())
-        watch.decide(listOf(lifecycle("ACTIVE:0")), 10)
-        watch.statesRead(mapOf(0 to ACTIVE), 10, emptyList())
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 20)
-        val held = watch.statesRead(mapOf(0 to INACTIVE), 21, emptyList())
+        watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT, 500)), 500)
+        watch.read(found(INACTIVE), 501, emptyList())
+        watch.decide(listOf(lifecycle("ACTIVE:0", 510)), 510)
+        watch.statesRead(mapOf(0 to ACTIVE), 510, emptyList())
+        watch.decide(listOf(lifecycle("INACTIVE:0", 520)), 520)
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 521, emptyList())
         assertTrue(held.events.none { it is StateChanged })
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 30).step, "settled and back: published at once")
-        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(30, emptyList()).events))
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 530).step, "settled and back: published at once")
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(530, emptyList()).events))
+    }
+
+    @Test
+    fun `an earlier hold's limit, firing during a later hold, neither reads nor cuts it short`() {
+        // Seen in the reaction benchmark: a deactivation 500 ms after another was held, the first hold's limit
+        // fired a millisecond into the second, and its whole read put off the second's publication by 2 to 10 ms.
+        val watch = watching(ACTIVE)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
+        val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(first.marker!!), WatchInput.Fired(Timer.SETTLED, 2)), 2).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(2, emptyList()).events))
+        watch.decide(listOf(lifecycle("ACTIVE:0", 300)), 300)
+        watch.statesRead(mapOf(0 to ACTIVE), 301, emptyList())
+        watch.decide(listOf(lifecycle("INACTIVE:0", 499)), 499)
+        val second = watch.statesRead(mapOf(0 to INACTIVE), 500, emptyList())
+        assertEquals(setOf(Timer.SETTLED to 501L, Timer.HOLD_LIMIT to 999L), second.timers.toSet(), "the second hold's own timers")
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT, 500)), 500).step, "the first hold's limit tells nothing")
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(second.marker!!), WatchInput.Fired(Timer.SETTLED, 501)), 501).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(501, emptyList()).events))
+    }
+
+    @Test
+    fun `a deactivation settles counted from its hint's arrival, however late the monitor took the hint`() {
+        val watch = watching(ACTIVE)
+        // The monitor's thread got a core 3 ms after the hint came.
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 3)
+        val held = watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList())
+        assertTrue(held.events.none { it is StateChanged }, "held for its marker")
+        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 4).step, "settled 2 ms after the hint came: published once back")
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(4, emptyList()).events))
     }
 
     @Test
     fun `an older marker does not end a later hold, and a lost marker holds until the limit`() {
         val watch = watching(ACTIVE)
-        watch.decide(listOf(lifecycle("INACTIVE:0")), 0)
+        watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList()).marker!!
         // Read again while held (a grace read, say): the hints before this read are what the hold waits for now.
         val second = watch.statesRead(mapOf(0 to INACTIVE), 3, emptyList()).marker!!
         assertTrue(first != second)
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(first), WatchInput.Fired(Timer.SETTLED)), 10).step, "the first marker tells nothing of what came before the second read")
-        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT)), 500).step)
+        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(first), WatchInput.Fired(Timer.SETTLED, 2)), 10).step, "the first marker tells nothing of what came before the second read")
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT, 500)), 500).step)
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 500, emptyList()).events))
     }
 
@@ -215,7 +246,7 @@ class ComponentWatchTest {
     @Test
     fun `a failing on_activated is announced as ERROR alone, from INACTIVE`() {
         val watch = watching(INACTIVE)
-        watch.decide(listOf(lifecycle("ERROR:0")), 0)
+        watch.decide(listOf(lifecycle("ERROR:0", 0)), 0)
         assertEquals(changed(INACTIVE to ERROR), stateEvents(watch.statesRead(mapOf(0 to ERROR), 1, emptyList()).events))
     }
 
@@ -256,10 +287,10 @@ class ComponentWatchTest {
         assertTrue(outcome.unreachable)
 
         val suspected = watching(ACTIVE)
-        suspected.decide(listOf(lifecycle("ACTIVE:0")), 500)
+        suspected.decide(listOf(lifecycle("ACTIVE:0", 500)), 500)
         assertEquals(listOf(BecameZombie(node, refused)), suspected.failed(refused, 501, beatMillis = 1000).events)
         assertEquals(emptyList<RtcEvent>(), suspected.failed(refused, 700, beatMillis = 1000).events, "probes that fail are no news")
-        assertEquals(WatchStep.ReadAll, suspected.decide(listOf(lifecycle("ACTIVE:0")), 800).step, "a hint does not bring it back: a whole read does")
+        assertEquals(WatchStep.ReadAll, suspected.decide(listOf(lifecycle("ACTIVE:0", 800)), 800).step, "a hint does not bring it back: a whole read does")
     }
 
     @Test
@@ -274,7 +305,7 @@ class ComponentWatchTest {
     @Test
     fun `a component that announced FINALIZE and then cannot be reached is finalized`() {
         val watch = watching(INACTIVE)
-        assertEquals(WatchStep.ReadAll, watch.decide(listOf(lifecycle("FINALIZE:0")), 10).step)
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(lifecycle("FINALIZE:0", 10)), 10).step)
         val outcome = watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.COMM_FAILURE()), 11, beatMillis = 1000)
         assertEquals(listOf(ComponentFinalized(node)), outcome.events)
         assertTrue(outcome.finalized)
