@@ -18,9 +18,12 @@ public class SystemSnapshot internal constructor(
     public val components: List<ComponentEntry>,
     /** The tree's name servers, each with whether it answers. */
     public val nameServers: List<NameServerEntry>,
-    /** The managers found dead and not answering again since. */
-    public val deadManagers: List<ManagerNode>,
+    /** The managers found dead and not answering again since, each as the event that said so. */
+    public val managerOutages: List<ManagerDied>,
 ) {
+    /** The managers found dead and not answering again since. */
+    public val deadManagers: List<ManagerNode> get() = managerOutages.map { it.source }
+
     /** The entry of [node]'s component, wherever it was found; null if the tree has not found it. */
     public fun component(node: ComponentNode): ComponentEntry? = components.firstOrNull { it.node.isSameComponent(node) }
 

@@ -92,6 +92,7 @@ class WatchReportTest {
             assertEquals("manager_${process.pid}", died.source.name)
             assertEquals(relays, died.components.map { it.name }.toSet())
             assertTrue(died.cause is UnreachableException, "${died.cause}")
+            assertTrue(died in tree.snapshot().managerOutages, "the model holds the death for views that start later")
 
             delay(2.seconds) // several probes of the dead manager and its components
             assertEquals(emptyList<ManagerDied>(), events.drained<ManagerDied>(), "one death only")
@@ -137,6 +138,7 @@ class WatchReportTest {
                 val seen = events.until { seen -> seen.any { it is ManagerReturned } && seen.any { it is Recovered && it.source.name == "hung0.rtc" } }
                 assertEquals(listOf("manager_${process.pid}"), seen.filterIsInstance<ManagerReturned>().map { it.source.name })
                 assertEquals(emptyList<ManagerDied>(), seen.filterIsInstance<ManagerDied>() + events.drained<ManagerDied>())
+                assertTrue(tree.snapshot().managerOutages.none { it.source.name == "manager_${process.pid}" }, "returned: no longer dead in the model")
             }
         }
     }

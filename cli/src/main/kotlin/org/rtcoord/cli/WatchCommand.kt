@@ -70,7 +70,10 @@ class WatchCommand : TreeCommand("watch") {
         }
     }
 
-    /** A line per component below [nodes] with its state, and per name server of theirs that does not answer, as [snapshot] has them. */
+    /**
+     * A line per component below [nodes] with its state, per name server of theirs that does not answer,
+     * and per manager found dead that is, or hosted a component that is, below them, as [snapshot] has them.
+     */
     private fun presentLines(snapshot: SystemSnapshot, nodes: List<Node>): List<String> {
         val now = System.currentTimeMillis()
         val servers = snapshot.nameServers.filter { entry -> !entry.reachable && nodes.any { it.path.nameServer == entry.node.address } }.map { entry ->
@@ -94,6 +97,13 @@ class WatchCommand : TreeCommand("watch") {
                 "${timestamp(now)} ${entry.path} $what" + (fsm?.let { ", FSM state ${it.text()}" } ?: "") + (method?.let { "; watched: ${it.text()}" } ?: "")
             }
         }
-        return servers + components
+        // A manager that died while the watch started is in the snapshot, not among the events after it.
+        val managers = snapshot.managerOutages.filter { died ->
+            nodes.any { node ->
+                died.source.path.startsWith(node.path) ||
+                    died.components.any { hosted -> snapshot.component(hosted)?.isAtOrBelow(node.path) == true }
+            }
+        }.map { died -> if (session.json) toJson(died.toJson(), pretty = false) else died.line() }
+        return servers + components + managers
     }
 }

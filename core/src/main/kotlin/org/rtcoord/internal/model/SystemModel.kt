@@ -9,7 +9,6 @@ import org.rtcoord.FsmStateChanged
 import org.rtcoord.FsmStatus
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerDied
-import org.rtcoord.ManagerNode
 import org.rtcoord.ManagerReturned
 import org.rtcoord.NameServerEntry
 import org.rtcoord.ObserverFlavour
@@ -48,7 +47,7 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
     /** Each watched FSM component's state as its last [FsmStateChanged] told it. */
     private val fsmStates = HashMap<ComponentObject, String>()
     private val outages = HashMap<RtcPath, Outage>()
-    private val deadManagers = LinkedHashMap<RtcPath, ManagerNode>()
+    private val managerOutages = LinkedHashMap<RtcPath, ManagerDied>()
 
     /**
      * Numbers [events], applies them and hands each to [deliver], in order; [deliver] must not wait. For a
@@ -96,7 +95,7 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
             ComponentEntry(node.canonical, told, alive = component !in dead, watchMethod = method, fsm = fsm)
         }
         val servers = nameServers().map { server -> outages[server.path].let { NameServerEntry(server, it?.since, it?.cause) } }
-        SystemSnapshot(sequence, components, servers, deadManagers.values.toList())
+        SystemSnapshot(sequence, components, servers, managerOutages.values.toList())
     }
 
     private fun apply(event: RtcEvent) {
@@ -111,8 +110,8 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
                 if ((event.new as? WatchMethod.Pushed)?.flavour != ObserverFlavour.OMG) fsmStates.remove(event.source.component)
             }
             is FsmStateChanged -> fsmStates[event.source.component] = event.new
-            is ManagerDied -> deadManagers[event.source.path] = event.source
-            is ManagerReturned -> deadManagers.remove(event.source.path)
+            is ManagerDied -> managerOutages[event.source.path] = event
+            is ManagerReturned -> managerOutages.remove(event.source.path)
             is NameServerLost -> outages[event.source.path] = Outage(event.noticedAt, event.cause)
             is NameServerReturned -> outages.remove(event.source.path)
             else -> Unit
