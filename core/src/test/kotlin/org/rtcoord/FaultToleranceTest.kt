@@ -6,6 +6,7 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
@@ -18,6 +19,9 @@ import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
 import org.rtcoord.fixtures.naming.NamingSnapshot
 import org.rtcoord.internal.events.ListingMonitor
+import java.util.concurrent.atomic.AtomicBoolean
+import java.util.concurrent.atomic.AtomicLong
+import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -154,12 +158,7 @@ class FaultToleranceTest {
     fun `malformed, duplicated, out-of-order and misaddressed notifications produce no event`(): Unit = runBlocking {
         LocalisationSystem().use { localisation ->
             ObserverClient().use { client ->
-                val fixture = localisation.system.runtime.create(Scenarios.relay, "subject0").also { it.activate() }
-                val node = localisation.tree.component(localisation.path("subject0.rtc"))
-                val recorder = EventRecorder()
-                localisation.tree.on(node, RtcEvent::class.java, push, recorder.handler)
-                assertTrue(recorder.next<WatchMethodChanged>().new is WatchMethod.Pushed, "pushed")
-                val observer = client.profile(fixture).service
+                val (node, recorder, _, observer) = observedRelay(localisation, client)
 
                 val notifications = listOf(
                     // malformed
@@ -189,12 +188,8 @@ class FaultToleranceTest {
     fun `a notification to an object id the tree did not register is rejected and produces no event`(): Unit = runBlocking {
         LocalisationSystem().use { localisation ->
             ObserverClient().use { client ->
-                val fixture = localisation.system.runtime.create(Scenarios.relay, "subject0").also { it.activate() }
-                val node = localisation.tree.component(localisation.path("subject0.rtc"))
-                val recorder = EventRecorder()
-                val subscription = localisation.tree.on(node, RtcEvent::class.java, push, recorder.handler)
-                assertTrue(recorder.next<WatchMethodChanged>().new is WatchMethod.Pushed, "pushed")
-                val genuine = client.profile(fixture).service
+                val (_, recorder, subscription, genuine) = observedRelay(localisation, client)
+                val fixture = localisation.system.component("subject0")
 
                 val forged = client.forged(genuine)
                 assertThrows(org.omg.CORBA.OBJECT_NOT_EXIST::class.java) { client.sendExpectingReply(forged, StatusKind.RTC_STATUS, "INACTIVE:0") }
@@ -253,6 +248,33 @@ class FaultToleranceTest {
     }
 
     @Test
+    fun `a tree closes promptly while a peer floods its observer with notifications`(): Unit = runBlocking {
+        LocalisationSystem().use { localisation ->
+            ObserverClient().use { client ->
+                val observer = observedRelay(localisation, client).observer
+
+                // Faster than the observer's one thread takes them, so its queue fills and the reader waits.
+                val sent = AtomicLong()
+                val flooding = AtomicBoolean(true)
+                val flooders = List(4) {
+                    thread(name = "flooder-$it", isDaemon = true) {
+                        while (flooding.get()) runCatching { client.send(observer, StatusKind.RTC_STATUS, "ACTIVE:0") }.onSuccess { sent.incrementAndGet() }
+                    }
+                }
+                try {
+                    await("the flood to outrun the observer") { sent.get() > FLOOD }
+                    val closing = thread(name = "closing") { localisation.tree.close() }
+                    closing.join(20.seconds.inWholeMilliseconds)
+                    assertFalse(closing.isAlive) { "the tree did not close within 20 s; JacORB's threads:\n" + jacorbThreads() }
+                } finally {
+                    flooding.set(false)
+                    flooders.forEach { it.join(5.seconds.inWholeMilliseconds) }
+                }
+            }
+        }
+    }
+
+    @Test
     fun `a coordinator restarted removes the observers its previous run left, and no other tree's`(): Unit = runBlocking {
         LocalisationSystem().use { localisation ->
             // Heartbeats far apart, so the component itself finds no observer dead while the test runs.
@@ -292,5 +314,26 @@ class FaultToleranceTest {
                 assertEquals(LifeCycle.INACTIVE, alive.next<StateChanged>().new, "the other tree still observes")
             }
         }
+    }
+
+    /** A relay the tree watches by push, what it records, and the observer [client] reaches it through. */
+    private data class ObservedRelay(val node: ComponentNode, val recorder: EventRecorder, val subscription: Subscription, val observer: org.omg.CORBA.Object)
+
+    private suspend fun observedRelay(localisation: LocalisationSystem, client: ObserverClient): ObservedRelay {
+        val fixture = localisation.system.runtime.create(Scenarios.relay, "subject0").also { it.activate() }
+        val node = localisation.tree.component(localisation.path("subject0.rtc"))
+        val recorder = EventRecorder()
+        val subscription = localisation.tree.on(node, RtcEvent::class.java, push, recorder.handler)
+        assertTrue(recorder.next<WatchMethodChanged>().new is WatchMethod.Pushed, "pushed")
+        return ObservedRelay(node, recorder, subscription, client.profile(fixture).service)
+    }
+
+    /** Where every thread in JacORB's code stands, to tell which waits for which. */
+    private fun jacorbThreads(): String = Thread.getAllStackTraces().filterValues { trace -> trace.any { it.className.startsWith("org.jacorb") } }
+        .entries.joinToString("\n\n") { (thread, trace) -> "${thread.name} (${thread.state})\n" + trace.take(16).joinToString("\n") { "  at $it" } }
+
+    private companion object {
+        /** Five times what the observer's POA queues before its reader waits (OrbRecipe's `queue_max`). */
+        const val FLOOD = 5_000L
     }
 }

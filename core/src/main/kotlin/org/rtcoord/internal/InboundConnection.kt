@@ -4,7 +4,10 @@ import org.jacorb.orb.giop.Messages
 import java.io.IOException
 import java.io.InputStream
 import java.util.concurrent.ConcurrentLinkedQueue
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration
 
 /**
  * What the ORB has read of one connection a peer opened to it, counted in the stream it reads from: how
@@ -26,6 +29,8 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
     /** Framing was lost (not GIOP): nothing can be told of this connection, and nobody waits for it. */
     @Volatile private var unframed = false
     private val waits = ConcurrentLinkedQueue<Wait>()
+    /** The reader found the connection closed: it will not read again, nor hand the POAs anything more. */
+    private val readerGone = CountDownLatch(1)
 
     /**
      * Where [handled] must come for every byte this connection holds now, read or not, to have been
@@ -54,6 +59,9 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
         if ((handled >= target || closed || unframed) && waits.remove(wait)) barrier.arrive()
     }
 
+    /** Waits up to [timeout] for the reader to find the connection closed; whether it has. */
+    fun awaitReaderGone(timeout: Duration): Boolean = readerGone.await(timeout.inWholeNanoseconds, TimeUnit.NANOSECONDS)
+
     /** The connection is closed: nothing more will be handled, and nobody waits for it. */
     fun release() {
         closed = true
@@ -70,10 +78,10 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
         val n = try {
             input.read(b, off, len)
         } catch (e: IOException) {
-            release()
+            ended()
             throw e
         }
-        if (n < 0) release() else take(b, off, n)
+        if (n < 0) ended() else take(b, off, n)
         return n
     }
 
@@ -82,6 +90,11 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
     override fun close() {
         release()
         input.close()
+    }
+
+    private fun ended() {
+        release()
+        readerGone.countDown()
     }
 
     private fun releaseWaits() {

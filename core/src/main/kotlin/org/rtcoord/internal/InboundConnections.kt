@@ -6,6 +6,8 @@ import java.net.InetAddress
 import java.net.ServerSocket
 import java.net.Socket
 import java.util.concurrent.ConcurrentHashMap
+import kotlin.time.Duration
+import kotlin.time.TimeSource
 
 /**
  * Every connection peers opened to the tree's ORB, and how far its reader has got in each: the ORB's
@@ -19,6 +21,9 @@ import java.util.concurrent.ConcurrentHashMap
  */
 internal class InboundConnections : ServerSocketFactory {
     private val connections: MutableSet<InboundConnection> = ConcurrentHashMap.newKeySet()
+    private val accepted: MutableSet<Accepted> = ConcurrentHashMap.newKeySet()
+    /** [closeAll] was called: a peer connecting again is hung up on at once. */
+    @Volatile private var refusing = false
 
     override fun createServerSocket(port: Int): ServerSocket = Listening(port, 0, null)
 
@@ -39,14 +44,40 @@ internal class InboundConnections : ServerSocketFactory {
         return barrier.setUp()
     }
 
-    /** A listening socket whose every accepted connection is counted. */
+    /**
+     * Closes every connection peers opened, and any they open from now on, so that nothing more comes
+     * in; waits until each one's reader has found it closed, [timeout] at most for all of them.
+     */
+    fun closeAll(timeout: Duration) {
+        refusing = true
+        val closing = accepted.toList()
+        val readers = closing.mapNotNull { it.reader() }
+        closing.forEach { runCatching { it.close() } }
+        val deadline = TimeSource.Monotonic.markNow() + timeout
+        for (reader in readers) if (!reader.awaitReaderGone(-deadline.elapsedNow())) return
+    }
+
+    /** A listening socket whose every accepted connection is counted, until [closeAll] refuses them. */
     private inner class Listening(port: Int, backlog: Int, address: InetAddress?) : ServerSocket(port, backlog, address) {
-        override fun accept(): Socket = Accepted().also { implAccept(it) }
+        override fun accept(): Socket {
+            while (true) {
+                val socket = Accepted()
+                implAccept(socket)
+                // Added before the flag is read, as closeAll sets the flag before it lists: one of the two closes it.
+                accepted += socket
+                if (!refusing) return socket
+                socket.close()
+            }
+        }
     }
 
     /** One accepted connection, whose input the ORB reads through an [InboundConnection]. */
     private inner class Accepted : Socket() {
         private var counted: InboundConnection? = null
+
+        /** What the ORB reads this connection through, once it has started to. */
+        @Synchronized
+        fun reader(): InboundConnection? = counted
 
         @Synchronized
         override fun getInputStream(): InputStream = counted ?: InboundConnection(super.getInputStream()).also {
@@ -58,6 +89,7 @@ internal class InboundConnections : ServerSocketFactory {
             try {
                 super.close()
             } finally {
+                accepted -= this
                 synchronized(this) { counted }?.let {
                     it.release()
                     connections -= it

@@ -1,8 +1,10 @@
 package org.rtcoord.internal
 
 import org.omg.CORBA.ORB
+import org.omg.PortableServer.POAHelper
 import org.rtcoord.idl.OrbRecipe
 import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * The tree's ORB: a JacORB ORB it configures and owns, listening on [listenAddress] only, whose every
@@ -20,13 +22,25 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
         if (owned) (orb as org.jacorb.orb.ORB).transportManager.socketFactoryManager.serverSocketFactory as InboundConnections else null
     }
 
+    /**
+     * Shuts an owned ORB down, once nothing more can come in. JacORB's shutdown deadlocks with a reader
+     * waiting for room in a POA's full queue (`jacorb.poa.queue_wait`, which a peer flooding an observer
+     * with oneway calls brings about): the reader holds its connection and its POA, and a POA being
+     * destroyed stops emptying its queue. So the POAs first reject what they hold, and every connection
+     * peers opened is closed and its reader let go, before the ORB shuts down.
+     */
     override fun close() {
         if (!owned || !started.isInitialized()) return
+        runCatching { POAHelper.narrow(orb.resolve_initial_references("RootPOA")).the_POAManager().discard_requests(false) }
+        inbound?.closeAll(READERS_GONE)
         orb.shutdown(false)
         orb.destroy()
     }
 
     private companion object {
+        /** How long a closing ORB waits for its readers to let go; far longer than emptying a full queue takes. */
+        val READERS_GONE = 5.seconds
+
         /**
          * Runs [create] with the class loader that loaded this class as the thread's context loader: JacORB
          * loads its ORB class and plug-ins through the context loader, which in an OSGi framework (an
