@@ -1,6 +1,7 @@
 package org.rtcoord.internal
 
 import org.omg.CORBA.ORB
+import org.omg.PortableServer.CurrentHelper
 import org.omg.PortableServer.POAHelper
 import org.rtcoord.idl.OrbRecipe
 import kotlin.time.Duration
@@ -27,15 +28,21 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
      * waiting for room in a POA's full queue (`jacorb.poa.queue_wait`, which a peer flooding an observer
      * with oneway calls brings about): the reader holds its connection and its POA, and a POA being
      * destroyed stops emptying its queue. So the POAs first reject what they hold, and every connection
-     * peers opened is closed and its reader let go, before the ORB shuts down.
+     * peers opened is closed and its reader let go, before the ORB shuts down. The shutdown waits for
+     * its POAs to be destroyed, so that nothing of the ORB runs (or logs) once [close] returns; only a
+     * close from inside one of its own requests, where JacORB refuses to wait, leaves that behind.
      */
     override fun close() {
         if (!owned || !started.isInitialized()) return
         runCatching { POAHelper.narrow(orb.resolve_initial_references("RootPOA")).the_POAManager().discard_requests(false) }
         inbound?.closeAll(READERS_GONE)
-        orb.shutdown(false)
+        orb.shutdown(!inOwnRequest())
         orb.destroy()
     }
+
+    /** Whether this thread is serving one of the ORB's requests, where JacORB refuses to wait for its POAs. */
+    private fun inOwnRequest(): Boolean =
+        runCatching { CurrentHelper.narrow(orb.resolve_initial_references("POACurrent")).get_object_id() }.isSuccess
 
     private companion object {
         /** How long a closing ORB waits for its readers to let go; far longer than emptying a full queue takes. */
