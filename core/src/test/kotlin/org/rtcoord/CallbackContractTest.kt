@@ -7,8 +7,8 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.Scenarios
 import java.util.Collections
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds

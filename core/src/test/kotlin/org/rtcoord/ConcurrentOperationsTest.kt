@@ -8,8 +8,8 @@ import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import kotlin.time.Duration.Companion.seconds
 
 class ConcurrentOperationsTest {

@@ -8,11 +8,11 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.EnumSource
-import org.rtcoord.fixtures.Behaviour
-import org.rtcoord.fixtures.ComponentContext
-import org.rtcoord.fixtures.ComponentType
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.Behaviour
+import org.rtcoord.runtime.ComponentContext
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.Scenarios
 import java.util.concurrent.CountDownLatch
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit

@@ -12,13 +12,13 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.EnumSource
-import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.OmniNames
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
-import org.rtcoord.fixtures.naming.NamingSnapshot
 import org.rtcoord.internal.events.ListingMonitor
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
+import org.rtcoord.runtime.naming.NamingSnapshot
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicLong
 import kotlin.concurrent.thread
@@ -82,7 +82,7 @@ class FaultToleranceTest {
             restart.start().use { server ->
                 Scenarios.localisation(server.corbaloc).use { system ->
                     RtcTree.create(TreeConfig(listOf(server.address))).use { tree ->
-                        val host = "/${server.address}/${FixtureRuntime.hostContext}"
+                        val host = "/${server.address}/${RuntimeProcess.hostContext}"
                         val recorder = EventRecorder()
                         tree.on(host, RtcEvent::class.java, push, recorder.handler)
 

@@ -6,10 +6,10 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.FixtureComponent
-import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.runtime.ObserverFlavour as FixtureFlavour
+import org.rtcoord.runtime.RuntimeComponent
+import org.rtcoord.runtime.Scenarios
 import kotlin.time.Duration.Companion.milliseconds
-import org.rtcoord.fixtures.ObserverFlavour as FixtureFlavour
 
 /**
  * An FSM component (the fixtures' model of OpenRTM-aist's StaticFsm Microwave) watched over IIOP: its
@@ -23,7 +23,7 @@ class FsmWatchTest {
     @AfterEach
     fun stop() = localisation.close()
 
-    private suspend fun microwave(name: String, vararg flavours: FixtureFlavour): Pair<FixtureComponent, ComponentNode> {
+    private suspend fun microwave(name: String, vararg flavours: FixtureFlavour): Pair<RuntimeComponent, ComponentNode> {
         val type = if (flavours.isEmpty()) Scenarios.microwave else Scenarios.microwave.acceptingObservers(*flavours)
         val fixture = localisation.system.runtime.create(type, name)
         return fixture to tree.component(localisation.path("$name.rtc"))

@@ -4,9 +4,9 @@ import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertSame
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
 
@@ -17,7 +17,7 @@ class ListenerFailuresTest {
             Scenarios.localisation(naming.corbaloc).use {
                 val failures = LinkedBlockingQueue<ListenerFailure>()
                 RtcTree.create(TreeConfig(listOf(naming.address), listenerFailures = { failures += it })).use { tree ->
-                    val gyro = "/${naming.address}/${FixtureRuntime.hostContext}/gyro0.rtc"
+                    val gyro = "/${naming.address}/${RuntimeProcess.hostContext}/gyro0.rtc"
                     val handler: suspend (StateChanged) -> Unit = { event -> error("handler broke on ${event.new}") }
                     val subscription = tree.on(gyro, StateChanged::class.java, handler = handler)
                     try {

@@ -1,9 +1,9 @@
 package org.rtcoord
 
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.RtSystem
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RtSystem
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 
 /** The paper's localisation system on an in-process naming service, and a tree looking at it. */
 class LocalisationSystem : AutoCloseable {
@@ -12,7 +12,7 @@ class LocalisationSystem : AutoCloseable {
     val tree: RtcTree = RtcTree.create(TreeConfig(nameServers = listOf(naming.address)))
 
     /** `/127.0.0.1:port/<host>.host_cxt` */
-    val host: String = "/${naming.address}/${FixtureRuntime.hostContext}"
+    val host: String = "/${naming.address}/${RuntimeProcess.hostContext}"
 
     fun path(name: String): String = "$host/$name"
 

@@ -7,11 +7,11 @@ import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.assertThrows
-import org.rtcoord.fixtures.FixtureManager
-import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.OmniNames
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RuntimeManager
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.net.InetAddress
 import java.net.InetSocketAddress
 import java.net.Socket
@@ -90,8 +90,8 @@ class NameServersTest {
     @Test
     fun `an address where a manager answers is a node saying so, not an unreachable name server`(): Unit = runBlocking {
         NamingService.start().use { naming ->
-            FixtureRuntime.start(null).use { runtime ->
-                FixtureManager(runtime, isMaster = true)
+            RuntimeProcess.start(null).use { runtime ->
+                RuntimeManager(runtime, isMaster = true)
                 val managerPort = "${runtime.orb.host}:${runtime.orb.port}"
                 RtcTree.create(TreeConfig(listOf(managerPort, naming.address))).use { tree ->
                     tree.refresh()
@@ -108,8 +108,8 @@ class NameServersTest {
 
     @Test
     fun `a manager answering at the key NameService is a node saying so`(): Unit = runBlocking {
-        FixtureRuntime.start(null).use { runtime ->
-            val manager = FixtureManager(runtime, isMaster = true)
+        RuntimeProcess.start(null).use { runtime ->
+            val manager = RuntimeManager(runtime, isMaster = true)
             runtime.orb.bindKey("NameService", manager.ref)
             val address = "${runtime.orb.host}:${runtime.orb.port}"
             RtcTree.create(TreeConfig(listOf(address))).use { tree ->

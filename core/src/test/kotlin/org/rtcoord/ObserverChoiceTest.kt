@@ -4,9 +4,9 @@ import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.runtime.ObserverFlavour as FixtureFlavour
+import org.rtcoord.runtime.Scenarios
 import kotlin.time.Duration.Companion.milliseconds
-import org.rtcoord.fixtures.ObserverFlavour as FixtureFlavour
 
 /**
  * Which ComponentObserver the tree attaches when a component offers both: the legacy

@@ -2,8 +2,8 @@ package org.rtcoord
 
 import _SDOPackage.ServiceProfile
 import org.omg.CORBA.portable.ObjectImpl
-import org.rtcoord.fixtures.FixtureComponent
-import org.rtcoord.fixtures.FixtureOrb
+import org.rtcoord.runtime.RuntimeComponent
+import org.rtcoord.runtime.RuntimeOrb
 import kotlin.random.Random
 
 /**
@@ -12,17 +12,17 @@ import kotlin.random.Random
  * own, genuine or to a forged object id.
  */
 class ObserverClient : AutoCloseable {
-    private val client = FixtureOrb.start()
+    private val client = RuntimeOrb.start()
 
     /** The rtcoord observer attached to [component], as the component lists it. */
-    fun profile(component: FixtureComponent): ServiceProfile {
+    fun profile(component: RuntimeComponent): ServiceProfile {
         val profiles = rtObject(component).get_service_profiles().filter { it.id.startsWith("rtcoord-observer-") }
         check(profiles.size == 1) { "${component.instanceName} has ${profiles.size} rtcoord observers" }
         return profiles.single().also { check(it.interface_type == "IDL:OpenRTM/ComponentObserver:1.0") { "not the OpenRTM flavour: ${it.interface_type}" } }
     }
 
     /** Detaches observer [id] from [component] as any client may, so the component no longer tells it anything. */
-    fun detach(component: FixtureComponent, id: String) {
+    fun detach(component: RuntimeComponent, id: String) {
         check(rtObject(component).get_configuration().remove_service_profile(id)) { "could not detach $id" }
     }
 
@@ -65,7 +65,7 @@ class ObserverClient : AutoCloseable {
 
     override fun close() = client.close()
 
-    private fun rtObject(component: FixtureComponent): RTC.RTObject = RTC.RTObjectHelper.narrow(reachable(component.ref))
+    private fun rtObject(component: RuntimeComponent): RTC.RTObject = RTC.RTObjectHelper.narrow(reachable(component.ref))
 
     /** [target] as a reference of this client's ORB, whichever ORB handed it out. */
     private fun reachable(target: org.omg.CORBA.Object): org.omg.CORBA.Object =

@@ -16,9 +16,9 @@ import org.omg.CosNaming.NamingContextHelper
 import org.omg.PortableServer.DynamicImplementation
 import org.omg.PortableServer.POA
 import org.rtcoord.FaultToleranceTest.NameServerRestart
-import org.rtcoord.fixtures.FixtureOrb
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.awaitValue
+import org.rtcoord.runtime.RuntimeOrb
+import org.rtcoord.runtime.Scenarios
 import java.net.InetAddress
 import java.net.InetSocketAddress
 import java.net.Socket
@@ -105,7 +105,7 @@ class OneTruthTest {
     fun `a name server that answers wrongly and then not at all is reported lost once it stops answering`(): Unit = runBlocking {
         // As a name server being shut down does: its POA refuses the listing first, then its port is closed.
         val lists = AtomicInteger()
-        FixtureOrb.start().use { server ->
+        RuntimeOrb.start().use { server ->
             val refusing = object : DynamicImplementation() {
                 override fun invoke(request: ServerRequest) {
                     if (request.operation() == "list") lists.incrementAndGet()

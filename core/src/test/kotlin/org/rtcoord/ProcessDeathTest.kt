@@ -5,9 +5,9 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.naming.NamingService
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.ConcurrentLinkedQueue
 import java.util.concurrent.atomic.AtomicReference
@@ -27,7 +27,7 @@ class ProcessDeathTest {
         NamingService.start().use { naming ->
             FixtureProcess.start("--naming", naming.address, "--scenario", "localisation").use { process ->
                 RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
-                    val host = "/${naming.address}/${FixtureRuntime.hostContext}"
+                    val host = "/${naming.address}/${RuntimeProcess.hostContext}"
                     val names = listOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc")
                     val gone = ConcurrentHashMap<String, Long>()
                     val events = ConcurrentLinkedQueue<RtcEvent>()

@@ -6,13 +6,13 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.ComponentType
-import org.rtcoord.fixtures.FixtureComponent
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.StateTransition
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.RuntimeComponent
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.StateTransition
+import org.rtcoord.runtime.naming.NamingService
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.ConcurrentLinkedQueue
 import kotlin.random.Random
@@ -42,7 +42,7 @@ class SoakTest {
                     val seen = ConcurrentHashMap<String, ConcurrentLinkedQueue<Seen>>()
                     val alarms = ConcurrentLinkedQueue<RtcEvent>()
                     val attaching = TimeSource.Monotonic.markNow()
-                    tree.on("/${naming.address}/${FixtureRuntime.hostContext}", RtcEvent::class.java, EventOptions(WatchMode.PUSH)) { event ->
+                    tree.on("/${naming.address}/${RuntimeProcess.hostContext}", RtcEvent::class.java, EventOptions(WatchMode.PUSH)) { event ->
                         when (event) {
                             is StateChanged -> seen.getOrPut(event.source.name.removeSuffix(".rtc")) { ConcurrentLinkedQueue() } += Seen(event.old to event.new, System.nanoTime())
                             is HeartbeatLost, is BecameZombie, is Recovered, is ComponentFinalized -> alarms += event
@@ -96,16 +96,16 @@ class SoakTest {
 
     /** Drives the components: one random operation every few milliseconds, as a tool would, over CORBA. */
     private class Churn(
-        private val components: List<FixtureComponent>,
+        private val components: List<RuntimeComponent>,
         private val connect: (String, String) -> String,
         private val random: Random,
     ) {
         var operations = 0
         var connections = 0
         var disconnections = 0
-        private val contexts = HashMap<FixtureComponent, ExecutionContext>()
+        private val contexts = HashMap<RuntimeComponent, ExecutionContext>()
         /** Each connection made and not removed yet: its out-port's component, its id, its in-port's component. */
-        private val connected = ArrayList<Triple<FixtureComponent, String, FixtureComponent>>()
+        private val connected = ArrayList<Triple<RuntimeComponent, String, RuntimeComponent>>()
 
         suspend fun run(length: kotlin.time.Duration): Churn {
             val end = TimeSource.Monotonic.markNow() + length
@@ -117,7 +117,7 @@ class SoakTest {
             return this
         }
 
-        private fun changeState(component: FixtureComponent) {
+        private fun changeState(component: RuntimeComponent) {
             val context = contexts.getOrPut(component) { component.ref.get_owned_contexts()[0] }
             val code = when (component.state) {
                 RTC.LifeCycleState.INACTIVE_STATE -> context.activate_component(component.ref)

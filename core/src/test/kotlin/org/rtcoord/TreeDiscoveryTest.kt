@@ -6,10 +6,10 @@ import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.rtSystem
 import org.rtcoord.fixtures.runPeer
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.rtSystem
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.measureTime
 
@@ -190,7 +190,7 @@ class TreeDiscoveryTest {
     @Test
     fun `nested contexts are listed from their name server's root, each by its whole name`(): Unit = runBlocking {
         Scenarios.scale(localisation.naming.corbaloc, 3).use {
-            val sub = tree.node("/${localisation.naming.address}/${FixtureRuntime.hostContext}/group0.grp_cxt/sub0.sub_cxt") as ContextNode
+            val sub = tree.node("/${localisation.naming.address}/${RuntimeProcess.hostContext}/group0.grp_cxt/sub0.sub_cxt") as ContextNode
             assertEquals(listOf("relay0.rtc", "relay1.rtc", "relay2.rtc"), sub.children().map { it.name })
         }
     }

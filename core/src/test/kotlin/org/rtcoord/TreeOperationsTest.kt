@@ -300,7 +300,7 @@ class TreeOperationsTest {
         // No slave can create it now: the master starts one with its manager_cmd.
         localisation.system.slave!!.set_configuration("manager.modules.search_auto", "NO")
         assertThrows(OperationFailedException::class.java) { runBlocking { master.create("relay") } }
-        localisation.system.startSlavesOnDemand(listOf(org.rtcoord.fixtures.FixtureModule("relays.so", listOf(org.rtcoord.fixtures.Scenarios.relay))))
+        localisation.system.startSlavesOnDemand(listOf(org.rtcoord.runtime.RuntimeModule("relays.so", listOf(org.rtcoord.runtime.Scenarios.relay))))
         assertEquals(path("relay0.rtc"), master.create("relay").path.toString())
         assertEquals(listOf("relay0"), localisation.system.startedSlaves.single().runtime.components.map { it.instanceName })
     }

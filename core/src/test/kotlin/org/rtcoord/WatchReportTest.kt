@@ -7,10 +7,10 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.runtime.ObserverFlavour as FixtureFlavour
+import org.rtcoord.runtime.Scenarios
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
-import org.rtcoord.fixtures.ObserverFlavour as FixtureFlavour
 
 /**
  * What the tree says about its own watching, over IIOP: how each component is watched (which observer,

@@ -10,13 +10,13 @@ import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordination
 import org.rtcoord.dsl.Coordinator
-import org.rtcoord.fixtures.Behaviour
-import org.rtcoord.fixtures.ComponentType
-import org.rtcoord.fixtures.DataType
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.PortSpec
-import org.rtcoord.fixtures.naming.NamingService
-import org.rtcoord.fixtures.rtSystem
+import org.rtcoord.runtime.Behaviour
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.DataType
+import org.rtcoord.runtime.PortSpec
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.naming.NamingService
+import org.rtcoord.runtime.rtSystem
 import java.lang.management.ManagementFactory
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.ConcurrentLinkedQueue
@@ -62,7 +62,7 @@ internal class DataBench(private val options: BenchOptions, private val report: 
                 activate("scanner0")
             }.use {
                 RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
-                    val port = tree.port("/${naming.address}/${FixtureRuntime.hostContext}/scanner0.rtc:scan")
+                    val port = tree.port("/${naming.address}/${RuntimeProcess.hostContext}/scanner0.rtc:scan")
                     delay(options.dataWindow / 2) // warm-up, untapped
                     val idleCpu = cpuPerSecond(options.dataWindow)
                     val latencies = ConcurrentLinkedQueue<Long>()

@@ -4,14 +4,14 @@ import RTC.RTObject
 import RTC.RTObjectHelper
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runInterruptible
-import kotlinx.coroutines.flow.toList
 import org.omg.CosNaming.NamingContextExtHelper
 import org.rtcoord.ComponentNode
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
-import org.rtcoord.fixtures.FixtureOrb
+import org.rtcoord.runtime.RuntimeOrb
 import java.util.concurrent.atomic.AtomicInteger
 
 /**
@@ -35,7 +35,7 @@ internal class DiscoveryFloor(val roundTrip: Samples, val threads: Int, val call
             val (sequential, parallel) = calls
             val components = componentNames(address)
             val threads = TreeConfig().concurrency
-            FixtureOrb.start().use { client ->
+            RuntimeOrb.start().use { client ->
                 val naming = NamingContextExtHelper.narrow(client.orb.string_to_object("corbaloc:iiop:$address/NameService"))
                 val refs = components.take(threads * 2).map { RTObjectHelper.narrow(naming.resolve_str(it)) }
                 repeat(sequential / 5) { refs[it % refs.size].get_component_profile() }

@@ -13,12 +13,12 @@ import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
-import org.rtcoord.fixtures.ComponentType
-import org.rtcoord.fixtures.FixtureComponent
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
-import org.rtcoord.fixtures.rtSystem
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.RuntimeComponent
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
+import org.rtcoord.runtime.rtSystem
 import kotlin.random.Random
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.microseconds
@@ -40,7 +40,7 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
                 repeat(POLLED) { component(Scenarios.relay, "poll$it") }
             }.use { system ->
                 RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
-                    val context = "/${naming.address}/${FixtureRuntime.hostContext}"
+                    val context = "/${naming.address}/${RuntimeProcess.hostContext}"
                     // As many changes of each kind as the poll makes in all: a kind's p99 is then not the second largest of 200.
                     val pushChanges = options.reactionChanges * Kind.values().size
                     report.section(
@@ -84,7 +84,7 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
     private suspend fun changes(
         tree: RtcTree,
         path: String,
-        fixture: FixtureComponent,
+        fixture: RuntimeComponent,
         watching: EventOptions,
         count: Int,
         maxPause: Duration,

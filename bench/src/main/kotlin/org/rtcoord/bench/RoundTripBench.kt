@@ -7,9 +7,9 @@ import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
-import org.rtcoord.fixtures.RtSystem
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RtSystem
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.nio.file.Path
 import java.util.concurrent.locks.LockSupport
 import kotlin.time.Duration.Companion.seconds

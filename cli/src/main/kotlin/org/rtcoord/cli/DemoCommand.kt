@@ -9,10 +9,10 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.RtcTree
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.RtSystem
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RtSystem
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.nio.file.Files
 import java.nio.file.Path
 import java.time.LocalTime
@@ -47,7 +47,7 @@ class DemoCommand : TreeCommand("demo") {
     }
 
     private suspend fun demonstrate(naming: NamingService, system: RtSystem, tree: RtcTree) {
-        val host = "/${naming.address}/${FixtureRuntime.hostContext}"
+        val host = "/${naming.address}/${RuntimeProcess.hostContext}"
         echo("The system, at $host:")
         showNetwork(tree, host)
 

@@ -7,8 +7,8 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.path
-import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.profile.ProfileFormatException
+import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.sim.SimConsole
 import org.rtcoord.sim.SimulatedSystem
 
@@ -48,7 +48,7 @@ class SimCommand : CliktCommand("sim") {
             system.warnings.forEach { echo("rtcoord sim: $profile: $it", err = true) }
             echo("naming ${system.address}")
             echo("try rtcoord -n ${system.address} ls -l -R")
-            echo("try rtls -l -R /${system.address}/${FixtureRuntime.hostContext}")
+            echo("try rtls -l -R /${system.address}/${RuntimeProcess.hostContext}")
             echo("ready ${system.components.size} components")
             val console = SimConsole(system, System.out, System.err)
             System.`in`.bufferedReader().forEachLine(console::execute)

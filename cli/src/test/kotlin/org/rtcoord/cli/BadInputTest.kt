@@ -7,11 +7,11 @@ import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
 import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.MethodSource
-import org.rtcoord.fixtures.Behaviour
-import org.rtcoord.fixtures.ComponentContext
-import org.rtcoord.fixtures.ComponentType
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
+import org.rtcoord.runtime.Behaviour
+import org.rtcoord.runtime.ComponentContext
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
 import java.nio.file.Files
 import java.nio.file.Path
 
@@ -32,7 +32,7 @@ class BadInputTest {
     private val scripts: Path = Files.createTempDirectory("bad-input")
 
     /** Two different components named twin0, in two contexts, for the ambiguous name. */
-    private val twins = FixtureRuntime.start(localisation.naming.corbaloc, listOf("right.host_cxt")).also {
+    private val twins = RuntimeProcess.start(localisation.naming.corbaloc, listOf("right.host_cxt")).also {
         it.create(Scenarios.relay, "twin0")
         localisation.system.runtime.create(Scenarios.relay, "twin0", contexts = listOf("left.host_cxt"))
     }
@@ -145,8 +145,8 @@ class BadInputTest {
             Row("a component without its kind", listOf("cat", localisation.path("gyro0")), "rtcoord: ${localisation.path("gyro0")}: not found; did you mean gyro0.rtc?"),
             Row("a mistyped port", listOf("con", localisation.path("laser0.rtc:lasr"), "$localiser:laser"),
                 "rtcoord: ${localisation.path("laser0.rtc:lasr")}: no such port (ports: laser); did you mean laser?"),
-            Row("a mistyped context", listOf("ls", "/$ns/${FixtureRuntime.hostContext.replace(".host_cxt", ".hst_cxt")}/"),
-                "rtcoord: /$ns/${FixtureRuntime.hostContext.replace(".host_cxt", ".hst_cxt")}: not found; did you mean ${FixtureRuntime.hostContext}?"),
+            Row("a mistyped context", listOf("ls", "/$ns/${RuntimeProcess.hostContext.replace(".host_cxt", ".hst_cxt")}/"),
+                "rtcoord: /$ns/${RuntimeProcess.hostContext.replace(".host_cxt", ".hst_cxt")}: not found; did you mean ${RuntimeProcess.hostContext}?"),
             Row("unknown connector", listOf("dis", laser, "--id", "nope"), "rtcoord: $laser: no connector 'nope' (connectors: $connector)"),
             Row("unknown parameter", listOf("conf", localiser, "set", "nope", "1"),
                 "rtcoord: $localiser: no parameter 'nope' in configuration set 'default' (parameters: fail, gain)"),

@@ -5,9 +5,9 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.rtSystem
 import org.rtcoord.fixtures.runPeer
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.rtSystem
 
 /** `cat` of components, ports and managers of the localisation system. */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)

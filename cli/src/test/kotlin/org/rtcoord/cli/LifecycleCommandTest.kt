@@ -5,11 +5,11 @@ import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.Behaviour
-import org.rtcoord.fixtures.ComponentContext
-import org.rtcoord.fixtures.ComponentType
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.rtSystem
+import org.rtcoord.runtime.Behaviour
+import org.rtcoord.runtime.ComponentContext
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.rtSystem
 import kotlin.time.Duration.Companion.milliseconds
 
 /** `act`, `deact` and `reset`: they wait for the state, check everything first and report return codes. */

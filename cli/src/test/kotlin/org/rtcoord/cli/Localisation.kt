@@ -4,10 +4,10 @@ import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import com.github.ajalt.clikt.testing.test
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.RtSystem
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RtSystem
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.net.ServerSocket
 
 /** The paper's localisation system on an in-process naming service, for `rtcoord` to look at. */
@@ -16,7 +16,7 @@ class Localisation : AutoCloseable {
     val system: RtSystem = Scenarios.localisation(naming.corbaloc)
 
     /** `/127.0.0.1:PORT/<host>.host_cxt` */
-    val host: String = "/${naming.address}/${FixtureRuntime.hostContext}"
+    val host: String = "/${naming.address}/${RuntimeProcess.hostContext}"
 
     /** [name] in the host context. */
     fun path(name: String): String = "$host/$name"

@@ -5,8 +5,8 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
-import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.runPeer
+import org.rtcoord.runtime.RuntimeProcess
 
 /** `ls` against the localisation system, checked against rtshell's rtls where both can list it. */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
@@ -44,7 +44,7 @@ class LsCommandTest {
     @Test
     fun `-l -R is rtls -l -R, headers and all`() {
         val ours = runRtcoord("ls", "-l", "-R", "/$address/").ok()
-        assertTrue(ours.startsWith(".:\n-  -  -  -  -  ${FixtureRuntime.hostContext}\n\n./${FixtureRuntime.hostContext}:\n"), ours)
+        assertTrue(ours.startsWith(".:\n-  -  -  -  -  ${RuntimeProcess.hostContext}\n\n./${RuntimeProcess.hostContext}:\n"), ours)
         assertEquals(withoutSlavesComponentsUnderMaster(runPeer("rtls", "-l", "-R", "/$address/").ok().output), ours)
     }
 
@@ -53,7 +53,7 @@ class LsCommandTest {
      * slaves' components, which rtls shows twice (below the master and below the slave), rtcoord once.
      */
     private fun withoutSlavesComponentsUnderMaster(listing: String): String {
-        val header = "./${FixtureRuntime.hostContext}/manager.mgr:\n"
+        val header = "./${RuntimeProcess.hostContext}/manager.mgr:\n"
         val start = listing.indexOf(header) + header.length
         val end = listing.indexOf("\n\n", start)
         // Without the components' wider columns, the managers' dashes take rtls's narrowest padding.
@@ -63,13 +63,13 @@ class LsCommandTest {
 
     @Test
     fun `a name server without a trailing slash is listed, where rtls reads a port`() {
-        assertEquals("${FixtureRuntime.hostContext}/\n", runRtcoord("ls", "/$address").ok())
+        assertEquals("${RuntimeProcess.hostContext}/\n", runRtcoord("ls", "/$address").ok())
         assertEquals(1, runPeer("rtls", "/$address").exitCode)
     }
 
     @Test
     fun `with no path the root context of the name server from -n or the environment is listed, as rtls lists it`() {
-        val root = "${FixtureRuntime.hostContext}/\n"
+        val root = "${RuntimeProcess.hostContext}/\n"
         assertEquals(root, runRtcoord("-n", address, "ls").ok())
         assertEquals(root, runRtcoord("ls", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok())
         assertEquals(root, runRtcoord("ls", environment = mapOf("RTCTREE_NAMESERVERS" to " $address ;")).ok())
@@ -80,7 +80,7 @@ class LsCommandTest {
     @Test
     fun `-n NS ls -l is rtls -l of the name server's root, and with -R everything it knows`() {
         val ours = runRtcoord("-n", address, "ls", "-l").ok()
-        assertEquals("-  -  -  -  -  ${FixtureRuntime.hostContext}\n", ours)
+        assertEquals("-  -  -  -  -  ${RuntimeProcess.hostContext}\n", ours)
         assertEquals(runPeer("rtls", "-l", "/$address/").ok().output, ours)
         assertEquals(runRtcoord("ls", "-l", "-R", "/$address/").ok(), runRtcoord("-n", address, "ls", "-l", "-R").ok())
     }
@@ -89,7 +89,7 @@ class LsCommandTest {
     fun `several name servers are listed each under its own header, an unreachable one an error line`() {
         val dead = deadNameServer()
         val listed = runRtcoord("-n", address, "-n", dead, "ls")
-        assertEquals("/$address/:\n${FixtureRuntime.hostContext}/\n", listed.stdout)
+        assertEquals("/$address/:\n${RuntimeProcess.hostContext}/\n", listed.stdout)
         assertTrue(listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
         assertEquals(1, listed.statusCode)
     }
@@ -194,14 +194,14 @@ class LsCommandTest {
     @Test
     fun `relative paths start from RTCOORD_CWD or rtshell's RTCSH_CWD`() {
         assertEquals("gyro0.rtc\n", runRtcoord("ls", "gyro0.rtc", environment = mapOf("RTCOORD_CWD" to host)).ok())
-        assertEquals("gyro0.rtc\n", runRtcoord("ls", "../${FixtureRuntime.hostContext}/gyro0.rtc", environment = mapOf("RTCSH_CWD" to "$host/")).ok())
+        assertEquals("gyro0.rtc\n", runRtcoord("ls", "../${RuntimeProcess.hostContext}/gyro0.rtc", environment = mapOf("RTCSH_CWD" to "$host/")).ok())
         // Without a path, the working directory is what ls lists, as rtls does.
         assertEquals(runRtcoord("ls", host).ok(), runRtcoord("-n", address, "ls", environment = mapOf("RTCOORD_CWD" to host)).ok())
     }
 
     @Test
     fun `relative paths start at the first name server given, else the error says how to give a start`() {
-        val hostContext = FixtureRuntime.hostContext
+        val hostContext = RuntimeProcess.hostContext
         assertEquals("gyro0.rtc\n", runRtcoord("-n", address, "ls", "$hostContext/gyro0.rtc").ok())
         assertEquals("gyro0.rtc\n", runRtcoord("-n", address, "-n", deadNameServer(), "ls", "$hostContext/gyro0.rtc").ok())
         assertEquals("gyro0.rtc\n", runRtcoord("ls", "$hostContext/gyro0.rtc", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok())

@@ -5,9 +5,9 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.nio.file.Files
 import java.nio.file.Path
 
@@ -52,7 +52,7 @@ class ProfileCommandTest {
         val naming = NamingService.start()
         Scenarios.configSample(naming.corbaloc).use {
             val file = dir.resolve("s.xml").toString()
-            val sample = "/${naming.address}/${FixtureRuntime.hostContext}/ConfigSample0.rtc"
+            val sample = "/${naming.address}/${RuntimeProcess.hostContext}/ConfigSample0.rtc"
             runRtcoord("-n", naming.address, "profile", "save", "-o", file).ok()
             assertEquals("nothing to change (0 connections already there)\n", runRtcoord("-n", naming.address, "profile", "restore", "--strict", file).ok())
 

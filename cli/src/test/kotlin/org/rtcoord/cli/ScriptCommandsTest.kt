@@ -1,17 +1,17 @@
 package org.rtcoord.cli
 
+import RTC.RTObjectHelper
+import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
-import RTC.RTObjectHelper
-import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import org.omg.CosNaming.NamingContextExtHelper
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.net.InetAddress
 import java.net.InetSocketAddress
 import java.net.Socket
@@ -256,7 +256,7 @@ class ScriptCommandsTest {
                 val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "15s", rule.toString()) }
                 val orb = localisation.system.runtime.orb.orb
                 val hosted = RTObjectHelper.narrow(
-                    NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc)).resolve_str("${FixtureRuntime.hostContext}/hosted0.rtc"),
+                    NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc)).resolve_str("${RuntimeProcess.hostContext}/hosted0.rtc"),
                 )
                 await("the coordinator to observe hosted0", timeout = kotlin.time.Duration.parse("60s")) {
                     hosted.get_service_profiles().any { it.id.startsWith("rtcoord-observer-") }

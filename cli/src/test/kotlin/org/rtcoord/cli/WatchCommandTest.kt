@@ -1,19 +1,19 @@
 package org.rtcoord.cli
 
-import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import RTC.RTObjectHelper
+import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.omg.CosNaming.NamingContextExtHelper
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import org.rtcoord.fixtures.iiopAddresses
 import org.rtcoord.fixtures.listeningSockets
-import org.omg.CosNaming.NamingContextExtHelper
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
 import java.net.InetAddress
 import java.net.InetSocketAddress
 import java.net.Socket
@@ -113,7 +113,7 @@ class WatchCommandTest {
     private fun remoteComponent(name: String): RTC.RTObject {
         val orb = localisation.system.runtime.orb.orb
         val naming = NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc))
-        return RTObjectHelper.narrow(naming.resolve_str("${FixtureRuntime.hostContext}/$name"))
+        return RTObjectHelper.narrow(naming.resolve_str("${RuntimeProcess.hostContext}/$name"))
     }
 
     @Test

@@ -8,8 +8,8 @@ import org.rtcoord.NotFoundException;
 import org.rtcoord.RtcException;
 import org.rtcoord.TimedOutException;
 import org.rtcoord.TreeConfig;
-import org.rtcoord.fixtures.FixtureRuntime;
-import org.rtcoord.fixtures.naming.NamingService;
+import org.rtcoord.runtime.RuntimeProcess;
+import org.rtcoord.runtime.naming.NamingService;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -130,7 +130,7 @@ class BlockingCallsTest {
     void aFailureShowsTheCallersFrames() throws Exception {
         NamingService naming = NamingService.Companion.start(0, null, "127.0.0.1");
         try {
-            String missing = "/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext() + "/nothing0.rtc";
+            String missing = "/" + naming.getAddress() + "/" + RuntimeProcess.Companion.getHostContext() + "/nothing0.rtc";
             NotFoundException notFound = assertThrows(NotFoundException.class, () -> tree.component(missing));
             assertTrue(Arrays.stream(notFound.getStackTrace()).anyMatch(frame -> frame.getMethodName().equals("aFailureShowsTheCallersFrames")),
                     "no caller frame in " + Arrays.toString(notFound.getStackTrace()));

@@ -19,10 +19,10 @@ import org.rtcoord.TimedDoubleSeq;
 import org.rtcoord.TransitionOutcome;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.WatchMode;
-import org.rtcoord.fixtures.FixtureRuntime;
-import org.rtcoord.fixtures.RtSystem;
-import org.rtcoord.fixtures.Scenarios;
-import org.rtcoord.fixtures.naming.NamingService;
+import org.rtcoord.runtime.RuntimeProcess;
+import org.rtcoord.runtime.RtSystem;
+import org.rtcoord.runtime.Scenarios;
+import org.rtcoord.runtime.naming.NamingService;
 import org.rtcoord.profile.ProfileFormatException;
 import org.rtcoord.profile.ProfileRefusedException;
 import org.rtcoord.profile.RtsProfile;
@@ -66,7 +66,7 @@ class JavaEmbeddingTest {
                 .callTimeout(Duration.ofSeconds(5))
                 .build();
         tree = new JavaTree(config);
-        host = "/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext();
+        host = "/" + naming.getAddress() + "/" + RuntimeProcess.Companion.getHostContext();
     }
 
     @AfterEach

@@ -7,10 +7,10 @@ import org.rtcoord.ListenerFailure;
 import org.rtcoord.StateChanged;
 import org.rtcoord.Subscription;
 import org.rtcoord.TreeConfig;
-import org.rtcoord.fixtures.FixtureRuntime;
-import org.rtcoord.fixtures.RtSystem;
-import org.rtcoord.fixtures.Scenarios;
-import org.rtcoord.fixtures.naming.NamingService;
+import org.rtcoord.runtime.RuntimeProcess;
+import org.rtcoord.runtime.RtSystem;
+import org.rtcoord.runtime.Scenarios;
+import org.rtcoord.runtime.naming.NamingService;
 
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ExecutorService;
@@ -41,7 +41,7 @@ class ListenerFailuresTest {
 
     @Test
     void aListenersExceptionOnItsOwnExecutorReachesTheHandlerWithTheListenerAndTheEvent() throws Exception {
-        String gyro = "/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext() + "/gyro0.rtc";
+        String gyro = "/" + naming.getAddress() + "/" + RuntimeProcess.Companion.getHostContext() + "/gyro0.rtc";
         EventListener<StateChanged> listener = event -> {
             throw new IllegalStateException("listener broke on " + event.getNew());
         };

@@ -5,7 +5,7 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.StateChanged
 import org.rtcoord.TreeConfig
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.FixtureRuntime
+import org.rtcoord.runtime.RuntimeProcess
 import java.util.concurrent.Executor
 
 /**
@@ -19,7 +19,7 @@ class JavaTreeThreadsTest {
             val before = Thread.getAllStackTraces().keys
             JavaTree(TreeConfig(listOf(system.address))).use { tree ->
                 tree.survey("/")
-                val gyro = "/${system.address}/${FixtureRuntime.hostContext}/gyro0.rtc"
+                val gyro = "/${system.address}/${RuntimeProcess.hostContext}/gyro0.rtc"
                 tree.subscribe(gyro, StateChanged::class.java, Executor(Runnable::run), { }).use {
                     tree.component(gyro).deactivate()
                 }

@@ -7,9 +7,9 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcEvent
 import org.rtcoord.TreeConfig
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.util.concurrent.Executor
 
 /**
@@ -21,7 +21,7 @@ class ReadAfterWriteTest {
     private val naming = NamingService.start()
     private val system = Scenarios.localisation(naming.corbaloc)
     private val tree = JavaTree(TreeConfig(listOf(naming.address)))
-    private val host = "/${naming.address}/${FixtureRuntime.hostContext}"
+    private val host = "/${naming.address}/${RuntimeProcess.hostContext}"
 
     @AfterEach
     fun stop() {

@@ -8,9 +8,9 @@ import org.junit.jupiter.api.assertThrows
 import org.rtcoord.BadParameterException
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 
 /**
  * OpenRTM-aist's ConfigSample holds values outside its own `__constraints__` (OpenRTM-aist never checks
@@ -22,7 +22,7 @@ class ConstraintRoundTripTest {
     private val system = Scenarios.configSample(naming.corbaloc)
     private val tree = RtcTree.create(TreeConfig(nameServers = listOf(naming.address)))
     private val profiles = SystemProfiles(tree)
-    private val path = "/${naming.address}/${FixtureRuntime.hostContext}/ConfigSample0.rtc"
+    private val path = "/${naming.address}/${RuntimeProcess.hostContext}/ConfigSample0.rtc"
     private val outside = "$path: configuration set 'mode0': int_param0: '12345' is outside 0<=x<=150"
 
     @AfterEach

@@ -7,8 +7,8 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import kotlin.time.measureTimedValue
 
 /** Save, restore, check and start on the 200-component pipeline (relays in nested naming contexts). */

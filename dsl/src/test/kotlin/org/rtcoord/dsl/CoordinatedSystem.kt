@@ -6,10 +6,10 @@ import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.RtSystem
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RtSystem
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.nio.file.Path
 import java.nio.file.Paths
 import java.util.concurrent.CopyOnWriteArrayList
@@ -39,7 +39,7 @@ abstract class CoordinatedSystem(
     protected val log: MutableList<String> = CopyOnWriteArrayList()
 
     /** The naming context the fixtures register their components in. */
-    protected val host: String get() = "/${naming.address}/${FixtureRuntime.hostContext}"
+    protected val host: String get() = "/${naming.address}/${RuntimeProcess.hostContext}"
 
     /** What a coordinator resolves the script's relative file names against. */
     protected open val scriptDirectory: Path get() = Paths.get("")

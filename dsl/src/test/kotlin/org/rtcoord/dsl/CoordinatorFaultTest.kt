@@ -14,13 +14,13 @@ import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
-import org.rtcoord.fixtures.FixtureModule
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
-import org.rtcoord.fixtures.naming.NamingService
-import org.rtcoord.fixtures.rtSystem
+import org.rtcoord.runtime.RuntimeModule
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
+import org.rtcoord.runtime.rtSystem
 import java.util.Collections
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
@@ -52,7 +52,7 @@ class CoordinatorFaultTest {
 
     @Test
     fun `a killed component is lost, a rule re-creates it through a manager, and the rules follow the new one`(): Unit = runBlocking {
-        val system = rtSystem(naming.corbaloc) { manager(FixtureModule("relays.so", listOf(Scenarios.relay))) }.closedAfter()
+        val system = rtSystem(naming.corbaloc) { manager(RuntimeModule("relays.so", listOf(Scenarios.relay))) }.closedAfter()
         val victim = FixtureProcess.start("--naming", naming.address, "--scenario", "component:victim0").closedAfter()
         val tree = RtcTree.create(TreeConfig(listOf(naming.address))).closedAfter()
         val errors = AtomicInteger()

@@ -12,8 +12,8 @@ import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcTree
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.Scenarios
 import java.util.Collections
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
@@ -105,7 +105,7 @@ class CoordinatorTest : CoordinatedSystem() {
             system.component("laser0").fail()
             // A guard reads the system when its rule's turn comes: wait for it before changing what it reads.
             await("the plain rule, and the guard to have read the first time") { "plain" in fired && guarded.get() == 1 }
-            tree.component("/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}/laser0.rtc").reset()
+            tree.component("/${naming.address}/${org.rtcoord.runtime.RuntimeProcess.hostContext}/laser0.rtc").reset()
             tree.componentNamed("laser_localise0").deactivate()
             tree.componentNamed("laser0").activate()
             system.component("laser0").fail()
@@ -173,7 +173,7 @@ class CoordinatorTest : CoordinatedSystem() {
     fun `a name found twice is an error listing both, and a pattern watches every match`(): Unit = runBlocking {
         system.runtime.create(Scenarios.relay, "twin0", contexts = listOf("left.host_cxt"))
         system.runtime.create(Scenarios.relay, "twin0x", contexts = listOf("right.host_cxt"))
-        org.rtcoord.fixtures.FixtureRuntime.start(naming.corbaloc, listOf("right.host_cxt")).use { other ->
+        org.rtcoord.runtime.RuntimeProcess.start(naming.corbaloc, listOf("right.host_cxt")).use { other ->
             other.create(Scenarios.relay, "twin0")
             val ambiguous = coordinator { on(component("twin0")).state(ERROR) {} }
             val failure = assertThrows(AmbiguousNameException::class.java) { runBlocking { ambiguous.start() } }
@@ -205,7 +205,7 @@ class CoordinatorTest : CoordinatedSystem() {
             await("both rules to fire for late0") { edge == listOf("late0.rtc") && level == listOf("late0.rtc ACTIVE->ERROR") }
 
             // Registered only once in ERROR, and by a runtime no manager lists: found in ERROR, whenever the tree looks.
-            org.rtcoord.fixtures.FixtureRuntime.start(naming.corbaloc).use { unmanaged ->
+            org.rtcoord.runtime.RuntimeProcess.start(naming.corbaloc).use { unmanaged ->
                 val broken = unmanaged.create(Scenarios.relay, "late1", bind = false)
                 broken.activate()
                 broken.fail()
@@ -233,7 +233,7 @@ class CoordinatorTest : CoordinatedSystem() {
             }
         }.use { coordinator ->
             coordinator.start()
-            val host = "/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}"
+            val host = "/${naming.address}/${org.rtcoord.runtime.RuntimeProcess.hostContext}"
             tree.component("$host/gyro0.rtc").exit()
             await("gyro0 to be gone") { system.runtime.components.none { it.instanceName == "gyro0" } }
             RtcTree.create(config).use { other -> other.manager("$host/manager.mgr").create("gyro", "gyro0") }

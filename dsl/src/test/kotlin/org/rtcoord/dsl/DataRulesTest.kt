@@ -13,9 +13,9 @@ import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.util.concurrent.ConcurrentLinkedQueue
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
@@ -41,7 +41,7 @@ class DataRulesTest {
         Coordinator(tree, Coordination(emptyList(), config).apply(declare), EventOptions(WatchMode.PUSH)) { log += it }
 
     private fun taps(port: String): Int = runBlocking {
-        witness.port("/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}/$port").connections().count { it.id.startsWith("rtcoord-tap-") }
+        witness.port("/${naming.address}/${org.rtcoord.runtime.RuntimeProcess.hostContext}/$port").connections().count { it.id.startsWith("rtcoord-tap-") }
     }
 
     @Test
@@ -105,7 +105,7 @@ class DataRulesTest {
         }.use { coordinator ->
             coordinator.start()
             await("samples from the first gyro0") { samples.get() > 0 }
-            val host = "/${naming.address}/${org.rtcoord.fixtures.FixtureRuntime.hostContext}"
+            val host = "/${naming.address}/${org.rtcoord.runtime.RuntimeProcess.hostContext}"
             witness.component("$host/gyro0.rtc").exit()
             await("gyro0 to be gone") { system.runtime.components.none { it.instanceName == "gyro0" } }
             witness.manager("$host/manager.mgr").create("gyro", "gyro0")

@@ -13,12 +13,12 @@ import org.rtcoord.StateChanged
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.RunningMachine
-import org.rtcoord.fixtures.Behaviour
-import org.rtcoord.fixtures.ComponentContext
-import org.rtcoord.fixtures.ComponentType
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.Behaviour
+import org.rtcoord.runtime.ComponentContext
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.Scenarios
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource

@@ -13,13 +13,13 @@ import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.RtcPath
 import org.rtcoord.WatchMode
-import org.rtcoord.fixtures.FixtureComponent
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
-import org.rtcoord.fixtures.rtSystem
+import org.rtcoord.runtime.RuntimeComponent
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.rtSystem
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
@@ -50,7 +50,7 @@ class SupervisionTest : CoordinatedSystem(
         println("coordinator: $line")
     }
 
-    private fun active(name: String): FixtureComponent? =
+    private fun active(name: String): RuntimeComponent? =
         system.runtime.components.firstOrNull { it.instanceName == name && !it.isExited && it.state == LifeCycleState.ACTIVE_STATE }
 
     /** The supervisor's `stop` and `start` steps, as `stop odometry0.rtc`. */
@@ -285,7 +285,7 @@ class SupervisionTest : CoordinatedSystem(
 
     @Test
     fun `a recovery step that fails is logged with its object and retried until the supervisor escalates, and the coordinator keeps running`(): Unit = runBlocking {
-        FixtureRuntime.start(naming.corbaloc).use { unmanaged ->
+        RuntimeProcess.start(naming.corbaloc).use { unmanaged ->
             unmanaged.create(Scenarios.relay, "orphan0").activate()
             val escalated = CopyOnWriteArrayList<String>()
             val reactions = AtomicInteger()

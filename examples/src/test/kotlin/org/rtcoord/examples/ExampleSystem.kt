@@ -7,10 +7,10 @@ import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
-import org.rtcoord.fixtures.rtSystem
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
+import org.rtcoord.runtime.rtSystem
 import java.nio.file.Paths
 import java.util.concurrent.CopyOnWriteArrayList
 
@@ -67,7 +67,7 @@ class ExampleSystem(script: String, options: EventOptions, args: List<String> = 
         return process
     }
 
-    fun path(name: String) = "/${naming.address}/${FixtureRuntime.hostContext}/$name"
+    fun path(name: String) = "/${naming.address}/${RuntimeProcess.hostContext}/$name"
 
     /** OpenRTM's names (`instance.port`) of the ports connected to [port] (`component.rtc:port`), read by the witness. */
     suspend fun peers(port: String): Set<String> {

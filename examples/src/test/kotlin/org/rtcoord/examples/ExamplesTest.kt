@@ -11,11 +11,11 @@ import org.rtcoord.EventOptions
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcPath
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.Mode
 import org.rtcoord.dsl.FailedAction
-import org.rtcoord.fixtures.FixtureComponent
+import org.rtcoord.dsl.Mode
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
+import org.rtcoord.runtime.RuntimeComponent
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -27,9 +27,9 @@ class ExamplesTest {
     }
 
     /** How the laser fails: once (a reset recovers it), or for good (its resets keep failing). */
-    enum class Fault(val laserAfter: LifeCycle, val inject: (FixtureComponent) -> Unit) {
-        TRANSIENT(LifeCycle.INACTIVE, FixtureComponent::fail),
-        PERSISTENT(LifeCycle.ERROR, FixtureComponent::breakDown),
+    enum class Fault(val laserAfter: LifeCycle, val inject: (RuntimeComponent) -> Unit) {
+        TRANSIENT(LifeCycle.INACTIVE, RuntimeComponent::fail),
+        PERSISTENT(LifeCycle.ERROR, RuntimeComponent::breakDown),
     }
 
     @ParameterizedTest

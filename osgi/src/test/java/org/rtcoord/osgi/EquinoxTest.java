@@ -8,10 +8,10 @@ import org.osgi.framework.Bundle;
 import org.osgi.framework.Constants;
 import org.osgi.framework.launch.Framework;
 import org.osgi.framework.wiring.BundleWiring;
-import org.rtcoord.fixtures.FixtureRuntime;
-import org.rtcoord.fixtures.RtSystem;
-import org.rtcoord.fixtures.Scenarios;
-import org.rtcoord.fixtures.naming.NamingService;
+import org.rtcoord.runtime.RuntimeProcess;
+import org.rtcoord.runtime.RtSystem;
+import org.rtcoord.runtime.Scenarios;
+import org.rtcoord.runtime.naming.NamingService;
 
 import ch.qos.logback.classic.Level;
 import ch.qos.logback.classic.Logger;
@@ -113,7 +113,7 @@ class EquinoxTest {
         assertFalse(javaTree.getClassLoader() == getClass().getClassLoader());
         ClassLoader loader = bundle.adapt(BundleWiring.class).getClassLoader();
         try (AutoCloseable tree = createTree(bundle)) {
-            String host = "/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext();
+            String host = "/" + naming.getAddress() + "/" + RuntimeProcess.Companion.getHostContext();
 
             List<?> children = (List<?>) javaTree.getMethod("children", String.class).invoke(tree, host);
             Set<Object> names = children.stream().map(node -> call(node, "getName")).collect(Collectors.toSet());

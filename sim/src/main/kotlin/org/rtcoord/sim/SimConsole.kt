@@ -1,6 +1,6 @@
 package org.rtcoord.sim
 
-import org.rtcoord.fixtures.FixtureConsole
+import org.rtcoord.runtime.FaultConsole
 import java.io.PrintStream
 
 /**
@@ -9,7 +9,7 @@ import java.io.PrintStream
  * answered with one line on [out], each mistake with one line on [err].
  */
 public class SimConsole(private val system: SimulatedSystem, private val out: PrintStream, private val err: PrintStream) {
-    private val components = FixtureConsole({ system.components }, out, err, tool = "rtcoord sim")
+    private val components = FaultConsole({ system.components }, out, err, tool = "rtcoord sim")
 
     /** Acts on one line of input. */
     public fun execute(line: String) {
@@ -42,7 +42,7 @@ public class SimConsole(private val system: SimulatedSystem, private val out: Pr
 
     public companion object {
         /** What `help` prints. */
-        public val HELP: String = FixtureConsole.HELP.substringBeforeLast("\n") + "\n" + """
+        public val HELP: String = FaultConsole.HELP.substringBeforeLast("\n") + "\n" + """
               kill-manager    the master manager's process dies (kill -9): its name stays bound, nothing can be created
               restart-naming  the naming service stops and starts again on its port, with its bindings
               help            this list

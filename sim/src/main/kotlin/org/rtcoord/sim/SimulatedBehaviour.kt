@@ -1,10 +1,10 @@
 package org.rtcoord.sim
 
-import org.rtcoord.fixtures.Behaviour
-import org.rtcoord.fixtures.ComponentContext
-import org.rtcoord.fixtures.DataType
-import org.rtcoord.fixtures.PortSpec
-import org.rtcoord.fixtures.Sample
+import org.rtcoord.runtime.Behaviour
+import org.rtcoord.runtime.ComponentContext
+import org.rtcoord.runtime.DataType
+import org.rtcoord.runtime.PortSpec
+import org.rtcoord.runtime.Sample
 
 /**
  * What a simulated component does: one without in-ports is a source, writing every out-port on every

@@ -4,20 +4,20 @@ import RTC.ConnectorProfile
 import RTC.ConnectorProfileHolder
 import RTC.ReturnCode_t
 import _SDOPackage.NameValue
-import org.rtcoord.fixtures.FixtureComponent
-import org.rtcoord.fixtures.FixtureManager
-import org.rtcoord.fixtures.FixtureModule
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.naming.NamingService
 import org.rtcoord.profile.PortConnector
 import org.rtcoord.profile.ProfileFormatException
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
+import org.rtcoord.runtime.RuntimeComponent
+import org.rtcoord.runtime.RuntimeManager
+import org.rtcoord.runtime.RuntimeModule
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.naming.NamingService
 import java.nio.file.Path
 
 /**
- * An RT system simulated from an RTSProfile by the fixtures (whose fidelity to OpenRTM-aist
- * `src-test-fixtures/README.md` records), on a naming service of its own: each component of the
+ * An RT system simulated from an RTSProfile on the runtime (whose fidelity to OpenRTM-aist
+ * `runtime/README.md` records), on a naming service of its own: each component of the
  * profile with its ports, configuration sets and execution context rate, bound where the profile
  * found it, connected as the profile says and activated, as `rtcoord profile restore` and rtshell's
  * `rtstart` leave a system; and the profile's manager ([ProfileKeys]), which can create the types it names.
@@ -28,10 +28,10 @@ import java.nio.file.Path
 public class SimulatedSystem private constructor(
     private val host: String,
     @Volatile private var naming: NamingService,
-    private val runtime: FixtureRuntime,
-    private val managerRuntime: FixtureRuntime?,
+    private val runtime: RuntimeProcess,
+    private val managerRuntime: RuntimeProcess?,
     /** The master manager, bound where the profile found it; null when the profile names none. */
-    public val manager: FixtureManager?,
+    public val manager: RuntimeManager?,
     /** What the profile says that could not be simulated, one line each. */
     public val warnings: List<String>,
 ) : AutoCloseable {
@@ -42,10 +42,10 @@ public class SimulatedSystem private constructor(
     public val corbaloc: String get() = naming.corbaloc
 
     /** The components alive now, the profile's and those the manager created since, in creation order. */
-    public val components: List<FixtureComponent> get() = runtime.components.filterNot { it.isExited }
+    public val components: List<RuntimeComponent> get() = runtime.components.filterNot { it.isExited }
 
     /** The live component named [instanceName]; throws [IllegalArgumentException] naming those there are. */
-    public fun component(instanceName: String): FixtureComponent = components.firstOrNull { it.instanceName == instanceName }
+    public fun component(instanceName: String): RuntimeComponent = components.firstOrNull { it.instanceName == instanceName }
         ?: throw IllegalArgumentException("no component $instanceName in the simulated system (components: ${components.joinToString { it.instanceName }.ifEmpty { "none" }})")
 
     /** Whether the system has a manager, and it was not killed. */
@@ -102,10 +102,10 @@ public class SimulatedSystem private constructor(
             val types = SimulatedTypes(profile)
             val naming = NamingService.start(port, host = host)
             val managerPath = profile.ext.properties[ProfileKeys.MANAGER]?.let(::namingPath)
-            val runtime = FixtureRuntime.start(naming.corbaloc, host = host)
-            val managerRuntime = managerPath?.let { FixtureRuntime.start(naming.corbaloc, contexts = it.dropLast(1), host = host) }
+            val runtime = RuntimeProcess.start(naming.corbaloc, host = host)
+            val managerRuntime = managerPath?.let { RuntimeProcess.start(naming.corbaloc, contexts = it.dropLast(1), host = host) }
             val master = try {
-                if (managerPath == null || managerRuntime == null) null else FixtureManager(managerRuntime, isMaster = true, name = managerPath.last().removeSuffix(".mgr"))
+                if (managerPath == null || managerRuntime == null) null else RuntimeManager(managerRuntime, isMaster = true, name = managerPath.last().removeSuffix(".mgr"))
             } catch (e: Exception) {
                 listOfNotNull(runtime, managerRuntime, naming).forEach(AutoCloseable::close)
                 throw e
@@ -113,8 +113,8 @@ public class SimulatedSystem private constructor(
             val system = SimulatedSystem(host, naming, runtime, managerRuntime, master, types.warnings)
             try {
                 if (master != null) {
-                    val modules = types.creatable.values.map { FixtureModule("${it.typeName}.so", listOf(it)) }
-                    master.adopt(FixtureManager(runtime, isMaster = false, name = "manager_slave", modules = modules))
+                    val modules = types.creatable.values.map { RuntimeModule("${it.typeName}.so", listOf(it)) }
+                    master.adopt(RuntimeManager(runtime, isMaster = false, name = "manager_slave", modules = modules))
                 }
                 for (component in profile.components) {
                     val created = runtime.create(types.byInstance.getValue(component.instanceName), component.instanceName, contexts = namingPath(component.pathUri).dropLast(1))

@@ -1,12 +1,12 @@
 package org.rtcoord.sim
 
-import org.rtcoord.fixtures.ComponentType
-import org.rtcoord.fixtures.DataType
-import org.rtcoord.fixtures.ParameterSpec
-import org.rtcoord.fixtures.PortSpec
 import org.rtcoord.profile.ProfileComponent
 import org.rtcoord.profile.ProfilePort
 import org.rtcoord.profile.RtsProfile
+import org.rtcoord.runtime.ComponentType
+import org.rtcoord.runtime.DataType
+import org.rtcoord.runtime.ParameterSpec
+import org.rtcoord.runtime.PortSpec
 
 /**
  * The component types a profile describes: one per component in it (its ports, configuration sets and

@@ -4,16 +4,16 @@ import RTC.LifeCycleState
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.FixtureRuntime
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.runPeer
+import org.rtcoord.runtime.RuntimeProcess
 
 /** rtshell drives a system simulated from a saved profile as it drives the fixtures: rtls, rtact, rtdeact, rtcon, rtdis. */
 class RtshellOnSimulationTest {
     @Test
     fun `rtls lists the simulated components, rtdeact and rtact change them, rtdis and rtcon connect them`() {
         SimulatedSystem.start(savedLocalisation()).use { sim ->
-            val host = "/${sim.address}/${FixtureRuntime.hostContext}"
+            val host = "/${sim.address}/${RuntimeProcess.hostContext}"
             val listing = runPeer("rtls", "-l", "$host/").ok().output
             for (name in listOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc", "manager.mgr")) {
                 assertTrue(listing.lines().any { it.contains(name) }, "rtls -l lists $name:\n$listing")

@@ -5,11 +5,11 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.assertThrows
-import org.rtcoord.fixtures.DataType
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.PortSpec
 import org.rtcoord.fixtures.await
 import org.rtcoord.profile.Extension
+import org.rtcoord.runtime.DataType
+import org.rtcoord.runtime.PortSpec
+import org.rtcoord.runtime.RuntimeProcess
 import java.io.ByteArrayOutputStream
 import java.io.PrintStream
 
@@ -28,7 +28,7 @@ class SimulatedSystemTest {
             assertEquals(DataType.TIMED_DOUBLE_SEQ, (ports.getValue("pose") as PortSpec.DataOut).dataType)
             assertEquals(100.0, localiser.type.rate)
             assertEquals("0.5", localiser.type.configurationSets.getValue("precise")["gain"])
-            assertEquals(listOf(FixtureRuntime.hostContext), localiser.contexts)
+            assertEquals(listOf(RuntimeProcess.hostContext), localiser.contexts)
             await("the laser's data at the localiser") { localiser.latest("laser") != null && localiser.latest("odo") != null }
             assertTrue(sim.warnings.isEmpty(), sim.warnings.toString())
         }

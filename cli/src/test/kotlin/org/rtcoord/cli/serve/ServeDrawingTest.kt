@@ -10,8 +10,8 @@ import org.rtcoord.TreeConfig
 import org.rtcoord.cli.Localisation
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
-import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.Scenarios
 import java.nio.file.Paths
 import kotlin.time.Duration.Companion.minutes
 import kotlin.time.Duration.Companion.seconds

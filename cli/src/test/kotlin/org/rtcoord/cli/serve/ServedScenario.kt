@@ -4,8 +4,8 @@ import kotlinx.coroutines.runBlocking
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
-import org.rtcoord.fixtures.RtSystem
-import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.runtime.RtSystem
+import org.rtcoord.runtime.naming.NamingService
 import kotlin.time.Duration.Companion.seconds
 
 /**

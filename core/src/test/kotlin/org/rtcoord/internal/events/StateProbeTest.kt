@@ -13,12 +13,12 @@ import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle
-import org.rtcoord.fixtures.FixtureComponent
-import org.rtcoord.fixtures.FixtureOrb
-import org.rtcoord.fixtures.FixtureRuntime
-import org.rtcoord.fixtures.Scenarios
-import org.rtcoord.fixtures.naming.NamingService
 import org.rtcoord.internal.AsyncRequests
+import org.rtcoord.runtime.RuntimeComponent
+import org.rtcoord.runtime.RuntimeOrb
+import org.rtcoord.runtime.RuntimeProcess
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
@@ -27,12 +27,12 @@ import java.util.concurrent.atomic.AtomicInteger
 /** The poll read that needs no thread and no monitor, over real IIOP to a fixture component. */
 class StateProbeTest {
     private val naming = NamingService.start()
-    private val runtime = FixtureRuntime.start(naming.corbaloc)
-    private val client = FixtureOrb.start()
+    private val runtime = RuntimeProcess.start(naming.corbaloc)
+    private val client = RuntimeOrb.start()
     private val scope = CoroutineScope(SupervisorJob())
     private val requests = AsyncRequests(client.orb, scope)
 
-    private val fixture: FixtureComponent = runtime.create(Scenarios.relay, "subject0").also { it.activate() }
+    private val fixture: RuntimeComponent = runtime.create(Scenarios.relay, "subject0").also { it.activate() }
     private val component: RTObject = RTObjectHelper.narrow(client.orb.string_to_object(client.orb.object_to_string(fixture.ref)))
     private val context = component.get_owned_contexts().single()
 

@@ -8,10 +8,10 @@ import org.rtcoord.LifeCycle;
 import org.rtcoord.Subscription;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.dsl.script.ScriptFailure;
-import org.rtcoord.fixtures.FixtureRuntime;
-import org.rtcoord.fixtures.RtSystem;
-import org.rtcoord.fixtures.Scenarios;
-import org.rtcoord.fixtures.naming.NamingService;
+import org.rtcoord.runtime.RuntimeProcess;
+import org.rtcoord.runtime.RtSystem;
+import org.rtcoord.runtime.Scenarios;
+import org.rtcoord.runtime.naming.NamingService;
 import org.rtcoord.java.JavaComponent;
 import org.rtcoord.java.JavaTree;
 
@@ -51,7 +51,7 @@ class JavaCoordinatorTest {
     void runsAScriptGivenAsTextAndStopsIt() throws Exception {
         BlockingQueue<String> log = new LinkedBlockingQueue<>();
         String script = "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n";
-        JavaComponent gyro = tree.component("/" + naming.getAddress() + "/" + FixtureRuntime.Companion.getHostContext() + "/gyro0.rtc");
+        JavaComponent gyro = tree.component("/" + naming.getAddress() + "/" + RuntimeProcess.Companion.getHostContext() + "/gyro0.rtc");
         try (JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "reset.coord.kts", script, List.of(), log::add)) {
             coordinator.start();
             system.component("gyro0").fail();

@@ -1,0 +1,72 @@
+package org.rtcoord.runtime
+
+/**
+ * What a factory creates: a component type with its ports, configuration parameters, behaviour and
+ * execution context. A manager creates instances of the types its loaded modules provide.
+ */
+public class ComponentType(
+    public val typeName: String,
+    public val ports: List<PortSpec> = emptyList(),
+    public val parameters: List<ParameterSpec> = emptyList(),
+    /** Extra configuration sets besides `default`, by id, each overriding some parameter values. */
+    public val configurationSets: Map<String, Map<String, String>> = emptyMap(),
+    public val behaviour: () -> Behaviour = { Behaviour.Idle },
+    /** The owned periodic execution context's rate in Hz. */
+    public val rate: Double = 100.0,
+    /** The observer flavours instances accept (both by default, like a component with fsm4rtc preloaded). */
+    public val observerFlavours: Set<ObserverFlavour> = ObserverFlavour.values().toSet(),
+    public val vendor: String = "rtcoord",
+    public val category: String = "fixture",
+    public val version: String = "1.0.0",
+    public val description: String = "rtcoord fixture component $typeName",
+    /** The state machine of an FSM component (OpenRTM-aist 2.0's StaticFSM), which then offers `ExtendedFsmService`; null for others. */
+    public val fsm: FsmSpec? = null,
+) {
+    init {
+        require(typeName.isNotBlank()) { "a component type needs a name" }
+        val duplicate = ports.groupBy { it.name }.filterValues { it.size > 1 }.keys
+        require(duplicate.isEmpty()) { "$typeName declares ports $duplicate twice" }
+    }
+
+    /** A copy of this type that accepts only the observer [flavours] (none: polling only). */
+    public fun acceptingObservers(vararg flavours: ObserverFlavour): ComponentType = ComponentType(
+        typeName, ports, parameters, configurationSets, behaviour, rate, flavours.toSet(), vendor, category, version, description, fsm,
+    )
+}
+
+/** A port of a component type. */
+public sealed class PortSpec(public val name: String) {
+    /** A data in-port receiving [dataType] over `corba_cdr` push connections. */
+    public class DataIn(name: String, public val dataType: DataType) : PortSpec(name)
+
+    /** A data out-port sending [dataType]. */
+    public class DataOut(name: String, public val dataType: DataType) : PortSpec(name)
+
+    /** A service port providing and requiring the named interfaces (`instance name` to `type`). */
+    public class Service(
+        name: String,
+        public val provided: Map<String, String> = emptyMap(),
+        public val required: Map<String, String> = emptyMap(),
+    ) : PortSpec(name)
+}
+
+/** A configuration parameter: its name, default value and the check a new value must pass. */
+public class ParameterSpec(
+    public val name: String,
+    public val default: String,
+    public val accepts: (String) -> Boolean = { true },
+) {
+    init {
+        require(accepts(default)) { "parameter $name rejects its own default '$default'" }
+    }
+
+    public companion object {
+        /** A parameter holding a decimal number. */
+        public fun decimal(name: String, default: Double): ParameterSpec =
+            ParameterSpec(name, default.toString()) { it.trim().toDoubleOrNull() != null }
+
+        /** A parameter holding a whole number. */
+        public fun integer(name: String, default: Int): ParameterSpec =
+            ParameterSpec(name, default.toString()) { it.trim().toIntOrNull() != null }
+    }
+}

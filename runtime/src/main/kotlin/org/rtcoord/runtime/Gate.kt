@@ -1,0 +1,24 @@
+package org.rtcoord.runtime
+
+import java.util.concurrent.CountDownLatch
+
+/** Holds incoming calls while closed: a servant that hangs, never replying until it is opened again. */
+internal class Gate {
+    @Volatile private var latch: CountDownLatch? = null
+
+    val isClosed: Boolean get() = latch != null
+
+    fun close() {
+        if (latch == null) latch = CountDownLatch(1)
+    }
+
+    fun open() {
+        latch?.countDown()
+        latch = null
+    }
+
+    /** Blocks the calling request thread while the gate is closed. */
+    fun pass() {
+        latch?.await()
+    }
+}

@@ -1,0 +1,160 @@
+package org.rtcoord.runtime
+
+import RTC.ExecutionContext
+import RTC.LightweightRTObject
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import org.omg.CosNaming.NamingContextExt
+import org.omg.CosNaming.NamingContextExtHelper
+import org.omg.CosNaming.NamingContextPackage.AlreadyBound
+import org.omg.CosNaming.NamingContextPackage.NotFound
+import org.slf4j.LoggerFactory
+import java.net.InetAddress
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.Executors
+import java.util.concurrent.ScheduledExecutorService
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+
+/**
+ * One "process", like an OpenRTM-aist executable: an ORB, the components it hosts, their
+ * execution contexts' scheduler, and their registration in a naming service under [contexts]
+ * (`<host>.host_cxt` by default).
+ */
+public class RuntimeProcess private constructor(
+    public val orb: RuntimeOrb,
+    namingAddress: String?,
+    public val contexts: List<String>,
+) : AutoCloseable {
+    private val log = LoggerFactory.getLogger(RuntimeProcess::class.java)
+    private val hosted = CopyOnWriteArrayList<RuntimeComponent>()
+    private val naming: NamingContextExt? = namingAddress?.let { NamingContextExtHelper.narrow(orb.orb.string_to_object(it)) }
+
+    internal val scheduler: ScheduledExecutorService = Executors.newScheduledThreadPool(2) { task ->
+        Thread(task, "runtime-ec-${threads.incrementAndGet()}").apply { isDaemon = true }
+    }
+    internal val scope = CoroutineScope(SupervisorJob() + Dispatchers.IO.limitedParallelism(16) + CoroutineName("runtime-process"))
+
+    /** The components this runtime hosts, in creation order. */
+    public val components: List<RuntimeComponent> get() = ArrayList(hosted)
+
+    /**
+     * Creates and starts an instance of [type] named [instanceName] (by default the type name plus the
+     * lowest free index, as OpenRTM names them), and binds it in the naming service when [bind] is set.
+     */
+    public fun create(
+        type: ComponentType,
+        instanceName: String = nextName(type.typeName),
+        bind: Boolean = true,
+        contexts: List<String> = this.contexts,
+    ): RuntimeComponent {
+        require(hosted.none { it.instanceName == instanceName }) { "a component named $instanceName exists" }
+        val component = RuntimeComponent(type, instanceName, this, contexts)
+        component.start()
+        hosted += component
+        if (bind) bind("$instanceName.rtc", component.ref, contexts)
+        return component
+    }
+
+    /** The hosted component named [instanceName]. */
+    public fun component(instanceName: String): RuntimeComponent =
+        hosted.firstOrNull { it.instanceName == instanceName } ?: throw IllegalArgumentException("no component $instanceName")
+
+    /** The name OpenRTM would give the next instance of [typeName]: `typeName` plus the lowest free index. */
+    public fun nextName(typeName: String): String =
+        generateSequence(0) { it + 1 }.map { "$typeName$it" }.first { name -> hosted.none { it.instanceName == name } }
+
+    /** Binds (or rebinds) [name] to [target] under this runtime's contexts, creating them as needed. */
+    public fun bind(name: String, target: org.omg.CORBA.Object, contexts: List<String> = this.contexts) {
+        val root = naming ?: return
+        var context: org.omg.CosNaming.NamingContext = root
+        for (segment in contexts) {
+            val path = root.to_name(segment)
+            context = try {
+                context.bind_new_context(path)
+            } catch (e: AlreadyBound) {
+                org.omg.CosNaming.NamingContextHelper.narrow(context.resolve(path))
+            }
+        }
+        context.rebind(root.to_name(name), target)
+    }
+
+    /** Binds every hosted component again, as OpenRTM's periodic naming update does after a name server restart. */
+    public fun rebindAll() {
+        hosted.forEach { bind("${it.instanceName}.rtc", it.ref, it.contexts) }
+    }
+
+    internal fun unbind(name: String, contexts: List<String>) {
+        val root = naming ?: return
+        try {
+            root.unbind(root.to_name((contexts + name).joinToString("/")))
+        } catch (e: NotFound) {
+            log.debug("{} was not bound", name)
+        } catch (e: org.omg.CORBA.SystemException) {
+            log.debug("could not unbind {}: {}", name, e.toString())
+        }
+    }
+
+    /**
+     * How long after a component exits its manager unregisters it and unbinds its name, as OpenRTM-aist's
+     * periodic `Manager.cleanupComponents` does (every second in OpenRTM-aist-Python; about 0.3 s was
+     * observed). Meanwhile its name resolves to a dead object and its manager still lists it.
+     */
+    @Volatile public var cleanupDelay: Duration = 300.milliseconds
+
+    /** An exiting component finalised: its objects go now, its registration at the next clean-up. */
+    internal fun finalized(component: RuntimeComponent) {
+        component.teardown()
+        scheduler.schedule({ cleanUp(component) }, cleanupDelay.inWholeMilliseconds, TimeUnit.MILLISECONDS)
+    }
+
+    /** Unregisters an exited component and unbinds its name. */
+    private fun cleanUp(component: RuntimeComponent) {
+        if (!hosted.remove(component)) return
+        unbind("${component.instanceName}.rtc", component.contexts)
+    }
+
+    /** Removes a component at once: unbinds it, stops its contexts and deactivates its objects. */
+    private fun dispose(component: RuntimeComponent) {
+        val exited = component.isExited
+        cleanUp(component)
+        if (!exited) component.teardown()
+    }
+
+    internal fun componentOf(ref: LightweightRTObject?): RuntimeComponent? =
+        ref?.identity()?.let { target -> everywhere().flatMap { it.hosted }.firstOrNull { it.identity == target } }
+
+    internal fun executionContextOf(ref: ExecutionContext?): RuntimeExecutionContext? =
+        ref?.let { target -> everywhere().flatMap { it.hosted }.firstNotNullOfOrNull { it.ownedContextIf(target) } }
+
+    /** Exits every component and stops the ORB. */
+    override fun close() {
+        if (!runtimes.remove(this)) return
+        ArrayList(hosted).forEach(::dispose)
+        scheduler.shutdownNow()
+        scope.cancel()
+        orb.close()
+    }
+
+    private fun everywhere(): List<RuntimeProcess> = listOf(this) + runtimes.filter { it !== this }
+
+    public companion object {
+        private val threads = AtomicInteger()
+        private val runtimes = CopyOnWriteArrayList<RuntimeProcess>()
+
+        /** The context OpenRTM binds components in by default: `<hostname>.host_cxt`. */
+        public val hostContext: String = "${runCatching { InetAddress.getLocalHost().hostName }.getOrDefault("localhost")}.host_cxt"
+
+        /**
+         * Starts a runtime whose ORB listens on [host]:[port] (0: any free port) and registers its
+         * components with the naming service at [naming] (a `corbaloc:` address; null: none).
+         */
+        public fun start(naming: String?, contexts: List<String> = listOf(hostContext), port: Int = 0, host: String = "127.0.0.1"): RuntimeProcess =
+            RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts).also { runtimes += it }
+    }
+}
