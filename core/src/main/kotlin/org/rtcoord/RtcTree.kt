@@ -10,6 +10,7 @@ import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.events.AfterSnapshot
 import java.util.concurrent.CopyOnWriteArrayList
 
 /**
@@ -246,7 +247,8 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         val subscriptions = mutableListOf<Subscription>()
         val all = Subscription { subscriptions.forEach(Subscription::cancel) }
         try {
-            nodes.forEach { node -> subscriptions += on(node, types, options) { event -> if (event.sequence > begun.await()) handler(event) } }
+            val after = AfterSnapshot(begun, handler)
+            nodes.forEach { node -> subscriptions += on(node, types, options, after) }
             val snapshot = snapshot()
             try {
                 start(snapshot)
