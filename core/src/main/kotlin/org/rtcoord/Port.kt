@@ -58,7 +58,7 @@ public class Port internal constructor(
      * The properties a connection of this port to [others] would get (OpenRTM's defaults overridden by
      * [properties]); fails as [connect] would if the ports or properties do not fit. Changes nothing.
      */
-    internal suspend fun connectable(others: List<Port>, properties: Map<String, String>): Map<String, String> {
+    @JvmSynthetic internal suspend fun connectable(others: List<Port>, properties: Map<String, String>): Map<String, String> {
         require(others.isNotEmpty()) { "connect needs at least one other port" }
         val ports = listOf(this) + others
         val snapshots = ports.map { it.snapshot() }
@@ -110,7 +110,7 @@ public class Port internal constructor(
     }.buffer(capacity, BufferOverflow.DROP_OLDEST)
 
     /** The port's object reference, as its component's last read found it. */
-    internal suspend fun reference(): PortService = calls.reference()
+    @JvmSynthetic internal suspend fun reference(): PortService = calls.reference()
 
     private fun defaults(first: PortSnapshot): Map<String, String> = buildMap {
         if (first.kind == PortKind.DATA_IN || first.kind == PortKind.DATA_OUT) {

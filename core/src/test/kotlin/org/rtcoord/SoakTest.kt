@@ -13,6 +13,7 @@ import org.rtcoord.fixtures.Scenarios
 import org.rtcoord.fixtures.StateTransition
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.naming.NamingService
+import org.rtcoord.internal.toLifeCycle
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.ConcurrentLinkedQueue
 import kotlin.random.Random
@@ -151,7 +152,7 @@ class SoakTest {
         val PAUSE = 10.milliseconds
         val SETTLING = 500.milliseconds
 
-        fun StateTransition.pair(): Pair<LifeCycle, LifeCycle> = LifeCycle.of(from) to LifeCycle.of(to)
+        fun StateTransition.pair(): Pair<LifeCycle, LifeCycle> = from.toLifeCycle() to to.toLifeCycle()
 
         /**
          * The longest common subsequence of [truth] and [events], as index pairs: what was seen of what

@@ -22,6 +22,7 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
+import org.rtcoord.internal.toLifeCycle
 
 /**
  * Watches one component for every registration interested in it: the shell around its [ComponentWatch],
@@ -153,7 +154,7 @@ internal class ComponentMonitor(
     private suspend fun readStates(handles: Set<Int>) {
         val contexts = node.component.contexts
         if (handles.any { it !in contexts }) return readAndPublish()
-        suspend fun state(handle: Int) = LifeCycle.of(core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) })
+        suspend fun state(handle: Int) = core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) }.toLifeCycle()
         val stamp = node.component.stamp()
         val states = try {
             // One context, the common case, is read without a coroutine per read.

@@ -10,6 +10,7 @@ import org.rtcoord.internal.AsyncRequests
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicInteger
 import java.util.concurrent.atomic.AtomicIntegerArray
+import org.rtcoord.internal.toLifeCycle
 
 /**
  * The poll read of a component whose registrations want its states alone, made without its monitor: a
@@ -126,7 +127,7 @@ internal class StateProbe(
         val round = round?.takeIf { channels.getOrNull(channel.index) === channel } ?: return
         // A reply to a request given up on: a later round's requests have other ids.
         if (round.ids[channel.index] != id) return
-        round.states[channel.index] = LifeCycle.of(LifeCycleStateHelper.read(result))
+        round.states[channel.index] = LifeCycleStateHelper.read(result).toLifeCycle()
         if (round.remaining.decrementAndGet() == 0) finish(round)
     }
 
