@@ -18,14 +18,14 @@ import kotlin.time.TimeSource
 public class ComponentNode internal constructor(
     path: RtcPath,
     core: TreeCore,
-    internal val component: ComponentObject,
+    @get:JvmSynthetic internal val component: ComponentObject,
     /** The naming context it is bound in at [path], if that is where the tree found it. */
     private val namingParent: NamingDirectory? = null,
 ) : Node(path, core) {
     private val subject: String get() = path.toString()
 
     /** Where its remote calls are made. */
-    internal val calls: ComponentCalls get() = ComponentCalls(core, subject, component)
+    @get:JvmSynthetic internal val calls: ComponentCalls get() = ComponentCalls(core, subject, component)
 
     init {
         component.knownAs(this)
@@ -123,7 +123,7 @@ public class ComponentNode internal constructor(
      * an exited component at its next clean-up), then lists the context again. A component the tree found
      * below a manager has no binding to wait for.
      */
-    internal suspend fun awaitUnbound(operation: String) {
+    @JvmSynthetic internal suspend fun awaitUnbound(operation: String) {
         val context = namingParent ?: return
         val limit = core.remote.defaultDeadline
         val deadline = TimeSource.Monotonic.markNow() + limit

@@ -1,5 +1,6 @@
 package org.rtcoord
 
+import org.rtcoord.internal.FSM_SERVICE_ID
 import org.rtcoord.internal.ValueFields
 
 /**
@@ -37,13 +38,13 @@ public class ComponentSnapshot(
      * [ComponentEntry.fsm] for its state.
      */
     public val offersFsmService: Boolean
-        get() = properties["sdo.service.provider.available_services"].orEmpty().split(',').any { it.trim() == FsmStatus.SERVICE_ID }
+        get() = properties["sdo.service.provider.available_services"].orEmpty().split(',').any { it.trim() == FSM_SERVICE_ID }
 
     /** The port named [name] (without the instance prefix), or null. */
     public fun port(name: String): PortSnapshot? = ports.firstOrNull { it.name == name }
 
     /** This snapshot with other [contexts] or [configuration], as the tree re-reads them. */
-    internal fun copy(contexts: List<ContextSnapshot> = this.contexts, configuration: ConfigurationSnapshot? = this.configuration): ComponentSnapshot =
+    @JvmSynthetic internal fun copy(contexts: List<ContextSnapshot> = this.contexts, configuration: ConfigurationSnapshot? = this.configuration): ComponentSnapshot =
         ComponentSnapshot(instanceName, typeName, description, version, vendor, category, parent, properties, ports, contexts, configuration)
 
     override fun fields(): ValueFields = ValueFields("instanceName" to instanceName, "typeName" to typeName, "description" to description, "version" to version, "vendor" to vendor, "category" to category, "parent" to parent, "properties" to properties, "ports" to ports, "contexts" to contexts, "configuration" to configuration)
@@ -106,7 +107,7 @@ public class ContextSnapshot(
     public val properties: Map<String, String>,
 ) : ValueObject() {
     /** This context as seen with another [state] (or [handle]). */
-    internal fun copy(handle: Int = this.handle, state: LifeCycle = this.state): ContextSnapshot =
+    @JvmSynthetic internal fun copy(handle: Int = this.handle, state: LifeCycle = this.state): ContextSnapshot =
         ContextSnapshot(handle, owned, kind, rate, running, state, participants, properties)
 
     override fun fields(): ValueFields = ValueFields("handle" to handle, "owned" to owned, "kind" to kind, "rate" to rate, "running" to running, "state" to state, "participants" to participants, "properties" to properties)
@@ -119,10 +120,6 @@ public class ContextSnapshot(
 public class ConfigurationSnapshot(public val sets: Map<String, Map<String, String>>, public val activeSet: String?) : ValueObject() {
     /** The value of [parameter] in the active set, or null (also when no set is active). */
     public fun value(parameter: String): String? = activeSet?.let { sets[it]?.get(parameter) }
-
-    internal companion object {
-        val NONE = ConfigurationSnapshot(emptyMap(), null)
-    }
 
     override fun fields(): ValueFields = ValueFields("sets" to sets, "activeSet" to activeSet)
 }

@@ -64,25 +64,25 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     }
 
     /** Lists the children from the live system, reusing [previous] nodes that still stand. */
-    internal abstract suspend fun readChildren(previous: List<Node>): List<Node>
+    @JvmSynthetic internal abstract suspend fun readChildren(previous: List<Node>): List<Node>
 
     /**
      * What to show of [listed], children just listed or shown as they are: the children themselves,
      * unless the directory's children also change without a listing (the root's name servers).
      */
-    internal open fun settled(listed: List<Node>): List<Node> = listed
+    @JvmSynthetic internal open fun settled(listed: List<Node>): List<Node> = listed
 
     /** Whether a child whose read failed with [failure] is shown as a [ZombieNode] instead of failing this directory's read. */
-    internal open fun buries(failure: RtcException): Boolean = failure.meansDead
+    @JvmSynthetic internal open fun buries(failure: RtcException): Boolean = failure.meansDead
 
     /** Shows the children as [settled] says they are now, without reading them. */
-    internal fun showSettled() {
+    @JvmSynthetic internal fun showSettled() {
         listing.update { settled(it.orEmpty()) }
     }
 
     // Every write of the listing is an update that starts again if another write came first, so that a
     // child shown meanwhile (a name server added during a refresh) is never written over.
-    internal suspend fun relist(): List<Node> = listingLock.withLock {
+    @JvmSynthetic internal suspend fun relist(): List<Node> = listingLock.withLock {
         val listed = withContext(core.remote.dispatcher) { readChildren(listing.value.orEmpty()) }
         listing.updateAndGet { settled(listed) }!!
     }

@@ -5,15 +5,5 @@ public enum class LifeCycle {
     CREATED, INACTIVE, ACTIVE, ERROR,
 
     /** The state could not be read. */
-    UNKNOWN;
-
-    internal companion object {
-        fun of(state: RTC.LifeCycleState): LifeCycle = when (state.value()) {
-            RTC.LifeCycleState._CREATED_STATE -> CREATED
-            RTC.LifeCycleState._INACTIVE_STATE -> INACTIVE
-            RTC.LifeCycleState._ACTIVE_STATE -> ACTIVE
-            RTC.LifeCycleState._ERROR_STATE -> ERROR
-            else -> UNKNOWN
-        }
-    }
+    UNKNOWN,
 }

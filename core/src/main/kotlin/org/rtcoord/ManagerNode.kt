@@ -21,7 +21,7 @@ import kotlin.time.TimeSource
 public class ManagerNode internal constructor(
     path: RtcPath,
     core: TreeCore,
-    internal val ref: Manager,
+    @get:JvmSynthetic internal val ref: Manager,
     private val namingParent: NamingDirectory?,
     /** The master this slave was listed under, if any. */
     private val master: ManagerNode? = null,
@@ -33,7 +33,7 @@ public class ManagerNode internal constructor(
 
     override val kind: NodeKind get() = NodeKind.MANAGER
 
-    override suspend fun readChildren(previous: List<Node>): List<Node> = coroutineScope {
+    @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> = coroutineScope {
         val calls = calls
         val slaves = async { calls.slaves() }
         val hosted = async { calls.components() }

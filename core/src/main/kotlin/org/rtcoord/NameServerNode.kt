@@ -18,14 +18,14 @@ public class NameServerNode internal constructor(path: RtcPath, core: TreeCore) 
 
     private val root: NamingContext by lazy { NamingContextHelper.unchecked_narrow(core.orb.orb.string_to_object(corbaloc)) }
 
-    override val fullName: Array<NameComponent> = emptyArray()
+    @get:JvmSynthetic override val fullName: Array<NameComponent> = emptyArray()
 
-    override fun root(): NamingContext = root
+    @JvmSynthetic override fun root(): NamingContext = root
 
-    override suspend fun context(): NamingContext = root
+    @JvmSynthetic override suspend fun context(): NamingContext = root
 
     /** A listing that fails because something other than a name server answers says what answers. */
-    override suspend fun readChildren(previous: List<Node>): List<Node> = try {
+    @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> = try {
         super.readChildren(previous)
     } catch (e: RtcException) {
         throw NameServerProbe(core, path, address).explain(e)

@@ -16,13 +16,13 @@ import org.rtcoord.internal.TreeCore
 /** A naming context in the tree: a name server's root context or a context below it. */
 public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNode(path, core) {
 
-    internal abstract suspend fun context(): NamingContext
+    @JvmSynthetic internal abstract suspend fun context(): NamingContext
 
     /** This context's name from its name server's root context. */
-    internal abstract val fullName: Array<NameComponent>
+    @get:JvmSynthetic internal abstract val fullName: Array<NameComponent>
 
     /** The root context of this context's name server. */
-    internal abstract fun root(): NamingContext
+    @JvmSynthetic internal abstract fun root(): NamingContext
 
     /** Where its remote calls are made, on the context as resolved now. */
     private suspend fun calls(): NamingCalls = NamingCalls(core, path, context())
@@ -35,10 +35,10 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
     }
 
     /** Whether [name] (`id.kind`) is bound in this context to [component], alive or not. */
-    internal suspend fun binds(name: String, component: ComponentObject): Boolean =
+    @JvmSynthetic internal suspend fun binds(name: String, component: ComponentObject): Boolean =
         calls().resolve(name)?._is_equivalent(component.ref) ?: false
 
-    override suspend fun readChildren(previous: List<Node>): List<Node> {
+    @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> {
         val calls = calls()
         val bindings = calls.bindings()
         return coroutineScope { bindings.map { binding -> async { childFor(calls, binding, previous) } }.awaitAll() }.filterNotNull()
@@ -73,15 +73,15 @@ public class ContextNode internal constructor(
 ) : NamingDirectory(path, core) {
     override val kind: NodeKind get() = NodeKind.CONTEXT
 
-    override val fullName: Array<NameComponent> = parent.fullName + binding
+    @get:JvmSynthetic override val fullName: Array<NameComponent> = parent.fullName + binding
 
-    override fun root(): NamingContext = parent.root()
+    @JvmSynthetic override fun root(): NamingContext = parent.root()
 
     /**
      * Resolved on every use: a restarted name server may serve the context under a new reference. One
      * call from the root with the whole name, not one per level.
      */
-    override suspend fun context(): NamingContext {
+    @JvmSynthetic override suspend fun context(): NamingContext {
         return NamingCalls.contextAt(core, path, parent.root(), fullName)
     }
 }

@@ -24,7 +24,7 @@ public enum class NodeKind {
 public sealed class Node(
     /** Where the node is: `/host:port/ctx/name.rtc`. */
     public val path: RtcPath,
-    internal val core: TreeCore,
+    @get:JvmSynthetic internal val core: TreeCore,
 ) {
     /** The last segment of [path]. */
     public val name: String get() = path.name

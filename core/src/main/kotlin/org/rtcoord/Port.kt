@@ -3,13 +3,13 @@ package org.rtcoord
 import RTC.PortService
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.launch
 import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.channels.awaitClose
+import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.Flow
 import kotlinx.coroutines.flow.buffer
 import kotlinx.coroutines.flow.callbackFlow
+import kotlinx.coroutines.launch
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.PortCalls
 import org.rtcoord.internal.ValueFields
@@ -58,7 +58,7 @@ public class Port internal constructor(
      * The properties a connection of this port to [others] would get (OpenRTM's defaults overridden by
      * [properties]); fails as [connect] would if the ports or properties do not fit. Changes nothing.
      */
-    internal suspend fun connectable(others: List<Port>, properties: Map<String, String>): Map<String, String> {
+    @JvmSynthetic internal suspend fun connectable(others: List<Port>, properties: Map<String, String>): Map<String, String> {
         require(others.isNotEmpty()) { "connect needs at least one other port" }
         val ports = listOf(this) + others
         val snapshots = ports.map { it.snapshot() }
@@ -110,7 +110,7 @@ public class Port internal constructor(
     }.buffer(capacity, BufferOverflow.DROP_OLDEST)
 
     /** The port's object reference, as its component's last read found it. */
-    internal suspend fun reference(): PortService = calls.reference()
+    @JvmSynthetic internal suspend fun reference(): PortService = calls.reference()
 
     private fun defaults(first: PortSnapshot): Map<String, String> = buildMap {
         if (first.kind == PortKind.DATA_IN || first.kind == PortKind.DATA_OUT) {

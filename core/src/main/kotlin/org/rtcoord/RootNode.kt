@@ -11,10 +11,10 @@ public class RootNode internal constructor(core: TreeCore, private val servers: 
     DirectoryNode(RtcPath.ROOT, core) {
     override val kind: NodeKind get() = NodeKind.ROOT
 
-    override suspend fun readChildren(previous: List<Node>): List<Node> = servers()
+    @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> = servers()
 
     /** The name servers as they are now, each as last shown (a server found dead stays a zombie until read again). */
-    override fun settled(listed: List<Node>): List<Node> = servers().map { server -> listed.firstOrNull { it.path == server.path } ?: server }
+    @JvmSynthetic override fun settled(listed: List<Node>): List<Node> = servers().map { server -> listed.firstOrNull { it.path == server.path } ?: server }
 
-    override fun buries(failure: RtcException): Boolean = true
+    @JvmSynthetic override fun buries(failure: RtcException): Boolean = true
 }

@@ -25,7 +25,7 @@ public sealed class RtcEvent : ValueObject() {
      * tree made but has not published.
      */
     public var sequence: Long = 0L
-        internal set
+        @JvmSynthetic internal set
 
     /** The source's path. */
     public val path: RtcPath get() = source.path

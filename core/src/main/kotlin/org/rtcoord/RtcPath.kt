@@ -22,7 +22,7 @@ package org.rtcoord
  * the name server address was written and [isDirectory] do not take part.
  */
 public class RtcPath internal constructor(
-    internal val address: NameServerAddress?,
+    @get:JvmSynthetic internal val address: NameServerAddress?,
     names: List<String>,
     port: String?,
     objectReference: String?,
@@ -47,7 +47,7 @@ public class RtcPath internal constructor(
     public val isRoot: Boolean get() = address == null && objectReference == null
 
     /** Whether the path reaches a component through a manager (`.mgr`) or an object reference: an alias, not where it is bound in naming. */
-    internal val isAlias: Boolean get() = objectReference != null || names.any { it.endsWith(".mgr") }
+    @get:JvmSynthetic internal val isAlias: Boolean get() = objectReference != null || names.any { it.endsWith(".mgr") }
 
     /**
      * The last name without its port; `/` for the root, the address as written for a name server

@@ -10,6 +10,7 @@ import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.events.AfterSnapshot
 import java.util.concurrent.CopyOnWriteArrayList
 
 /**
@@ -22,7 +23,7 @@ import java.util.concurrent.CopyOnWriteArrayList
  * [org.rtcoord.java.JavaTree].
  */
 public class RtcTree private constructor(public val config: TreeConfig) : AutoCloseable {
-    internal val core = TreeCore(config) { ArrayList(servers) }
+    @get:JvmSynthetic internal val core = TreeCore(config) { ArrayList(servers) }
     // Read through copies: toList() and firstOrNull() read the size, then the elements, and a name server
     // removed in between fails them.
     private val servers = CopyOnWriteArrayList<NameServerNode>()
@@ -68,9 +69,11 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * The node at [path] (absolute, or relative to [workingDirectory]). A name server named in an
      * absolute path is added if the tree does not have it yet. Reads only what the path needs.
      */
+    @JvmSynthetic
     public suspend fun node(path: String, workingDirectory: RtcPath? = null): Node = node(RtcPath.parse(path, workingDirectory))
 
     /** The node at [path]; a port suffix is ignored (see [port]). */
+    @JvmSynthetic
     public suspend fun node(path: RtcPath): Node {
         path.objectReference?.let { return objectNode(path, it) }
         if (path.isRoot) return root
@@ -83,6 +86,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     }
 
     /** The component at [path]; fails if something else (or a dead registration) is there. */
+    @JvmSynthetic
     public suspend fun component(path: String, workingDirectory: RtcPath? = null): ComponentNode =
         when (val node = node(path, workingDirectory)) {
             is ComponentNode -> node
@@ -95,6 +99,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * name servers. One component reachable by several paths (its naming context, below its manager) is
      * one component; several different ones are an [AmbiguousNameException] listing them.
      */
+    @JvmSynthetic
     public suspend fun componentNamed(name: String): ComponentNode {
         val wanted = if ('.' in name) name else "$name.rtc"
         suspend fun search() = find { it is ComponentNode && it.name == wanted }.toList().map { it as ComponentNode }
@@ -129,6 +134,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     }
 
     /** The manager at [path]. */
+    @JvmSynthetic
     public suspend fun manager(path: String, workingDirectory: RtcPath? = null): ManagerNode =
         when (val node = node(path, workingDirectory)) {
             is ManagerNode -> node
@@ -137,6 +143,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         }
 
     /** The port at `component.rtc:port`. */
+    @JvmSynthetic
     public suspend fun port(path: String, workingDirectory: RtcPath? = null): Port {
         val parsed = RtcPath.parse(path, workingDirectory)
         val port = parsed.port ?: throw BadPathException(path, parsed.names.size, "no port given (component.rtc:port)")
@@ -144,6 +151,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     }
 
     /** Connects the ports at [from] and [to] (see [Port.connect]). */
+    @JvmSynthetic
     public suspend fun connect(
         from: String,
         to: String,
@@ -153,6 +161,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     ): ConnectorSnapshot = port(from, workingDirectory).connect(listOf(port(to, workingDirectory)), properties, name)
 
     /** Reads the subtree at [path] again, [depth] levels deep (the whole of it by default), concurrently. */
+    @JvmSynthetic
     public suspend fun refresh(path: RtcPath = RtcPath.ROOT, depth: Int = Int.MAX_VALUE) {
         node(path).refresh(depth)
     }
@@ -162,9 +171,11 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * directories as the walk reaches them. Unreachable branches are skipped. A component is found once:
      * where it is bound in naming; below a manager (an alias) only when its naming path is not found.
      */
+    @JvmSynthetic
     public fun find(from: RtcPath = RtcPath.ROOT, predicate: suspend (Node) -> Boolean = { true }): Flow<Node> = find(from, Int.MAX_VALUE, predicate)
 
     /** As [find], going at most [maxDepth] levels below [from] ([from] is level 0), as rtfind's `-m`. */
+    @JvmSynthetic
     public fun find(from: RtcPath, maxDepth: Int, predicate: suspend (Node) -> Boolean): Flow<Node> = flow {
         val found = HashSet<ComponentObject>()
         // Aliases wait until the walk is over: the naming path of their component may come later.
@@ -193,10 +204,12 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * node's update path, so they may operate on the node that triggered them; what a handler throws goes
      * to [TreeConfig.listenerFailures], and it keeps receiving events. Cancel the returned [Subscription] to stop.
      */
+    @JvmSynthetic
     public suspend fun <E : RtcEvent> on(path: String, type: Class<E>, options: EventOptions = EventOptions(), handler: suspend (E) -> Unit): Subscription =
         on(node(path), type, options, handler)
 
     /** [on] for a node already at hand. */
+    @JvmSynthetic
     @Suppress("UNCHECKED_CAST")
     public suspend fun <E : RtcEvent> on(node: Node, type: Class<E>, options: EventOptions = EventOptions(), handler: suspend (E) -> Unit): Subscription =
         // Passed as it is, so that what it throws is reported as its own: the watcher delivers only events of [type].
@@ -206,10 +219,12 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * [on] for the events of any of [types] from [node]: one registration for what would take several,
      * which reads the node only for what [types] need.
      */
+    @JvmSynthetic
     public suspend fun on(node: Node, types: Set<Class<out RtcEvent>>, options: EventOptions = EventOptions(), handler: suspend (RtcEvent) -> Unit): Subscription =
         core.watcher.watch(node, types, options, handler)
 
     /** [on] with the event type as a type argument: `tree.on<StateChanged>(path) { ... }`. */
+    @JvmSynthetic
     public suspend inline fun <reified E : RtcEvent> on(path: String, options: EventOptions = EventOptions(), noinline handler: suspend (E) -> Unit): Subscription =
         on(path, E::class.java, options, handler)
 
@@ -220,6 +235,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * ([ManagerDied]) or answers again ([ManagerReturned]). A manager counts once the tree has listed it.
      * Cancel the returned [Subscription] to stop.
      */
+    @JvmSynthetic
     public fun onWatching(handler: suspend (RtcEvent) -> Unit): Subscription = core.watcher.report(handler)
 
     /**
@@ -235,6 +251,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * none twice: what a view needs to show the system and keep showing it true. [handler] is first called
      * once [start] has returned. Cancel the returned [Subscription] to stop.
      */
+    @JvmSynthetic
     public suspend fun follow(
         nodes: List<Node>,
         types: Set<Class<out RtcEvent>>,
@@ -246,7 +263,8 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         val subscriptions = mutableListOf<Subscription>()
         val all = Subscription { subscriptions.forEach(Subscription::cancel) }
         try {
-            nodes.forEach { node -> subscriptions += on(node, types, options) { event -> if (event.sequence > begun.await()) handler(event) } }
+            val after = AfterSnapshot(begun, handler)
+            nodes.forEach { node -> subscriptions += on(node, types, options, after) }
             val snapshot = snapshot()
             try {
                 start(snapshot)
@@ -261,6 +279,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     }
 
     /** Every event from the node at [path] (see [on]) while the flow is collected. */
+    @JvmSynthetic
     public fun events(path: String, options: EventOptions = EventOptions()): Flow<RtcEvent> = callbackFlow {
         val subscription = on(path, RtcEvent::class.java, options) { send(it) }
         awaitClose { subscription.cancel() }
@@ -294,4 +313,4 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     }
 }
 
-internal fun NodeKind.label(): String = name.lowercase().replace('_', ' ')
+@JvmSynthetic internal fun NodeKind.label(): String = name.lowercase().replace('_', ' ')

@@ -10,7 +10,11 @@ import org.rtcoord.internal.ValueFields
  * break them; these gain fields compatibly.
  */
 public abstract class ValueObject @InternalRtcoordApi protected constructor() {
-    /** The fields that make the value, by name, in declaration order. */
+    /**
+     * The fields that make the value, by name, in declaration order. Synthetic: Java sees neither this
+     * nor rtcoord's internal [ValueFields].
+     */
+    @JvmSynthetic
     protected abstract fun fields(): ValueFields
 
     final override fun equals(other: Any?): Boolean = other is ValueObject && other.javaClass == javaClass && fields() == other.fields()

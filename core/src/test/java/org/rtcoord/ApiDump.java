@@ -147,7 +147,7 @@ public final class ApiDump {
      * The JVM signatures (name and descriptor) of the members of [type] that Kotlin declares `internal` or
      * private: public in the bytecode, but not part of the API.
      */
-    private static Set<String> hiddenByKotlin(Class<?> type) {
+    static Set<String> hiddenByKotlin(Class<?> type) {
         Set<String> hidden = new HashSet<>();
         KotlinClassMetadata metadata = metadata(type);
         KmDeclarationContainer container = null;

@@ -7,6 +7,7 @@ import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.await
+import org.rtcoord.internal.toLifeCycle
 import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.RuntimeComponent
 import org.rtcoord.runtime.RuntimeProcess
@@ -151,7 +152,7 @@ class SoakTest {
         val PAUSE = 10.milliseconds
         val SETTLING = 500.milliseconds
 
-        fun StateTransition.pair(): Pair<LifeCycle, LifeCycle> = LifeCycle.of(from) to LifeCycle.of(to)
+        fun StateTransition.pair(): Pair<LifeCycle, LifeCycle> = from.toLifeCycle() to to.toLifeCycle()
 
         /**
          * The longest common subsequence of [truth] and [events], as index pairs: what was seen of what

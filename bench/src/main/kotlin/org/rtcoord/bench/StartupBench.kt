@@ -1,5 +1,11 @@
 package org.rtcoord.bench
 
+import kotlinx.coroutines.runBlocking
+import org.rtcoord.DirectoryNode
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.dsl.script.CompiledCoordinator
 import org.rtcoord.fixtures.FixtureProcess
 import java.nio.file.Files
 import java.nio.file.Path
@@ -10,8 +16,9 @@ import java.util.jar.JarOutputStream
 
 /**
  * Start-up of the command line as users run it (`./rtcoord`, whole processes, against the localisation
- * system in a fixture JVM): the bare JVM, `--version`, `--help`, a recursive listing, and a coordinator
- * started from a warm script cache. Then where a browsing command's time goes, from a probe run in a
+ * system in a fixture JVM): the bare JVM, `--version`, `--help`, a recursive listing, a coordinator
+ * started from a warm script cache, and one compiled ahead of time (as a process, and loaded and started
+ * in a warm JVM, as a plug-in does). Then where a browsing command's time goes, from a probe run in a
  * fresh JVM on the CLI's class path as the launcher runs one: the JVM's start, the command line, creating
  * the tree, the first call (the ORB starts there), the rest of the listing, closing and the JVM's exit.
  */
@@ -28,6 +35,7 @@ internal class StartupBench(private val options: BenchOptions, private val insta
         FixtureProcess.start().use { fixtures ->
             commands(fixtures.address)
             script(fixtures.address)
+            compiled(fixtures.address)
             report.section("start-up breakdown: a probe on the CLI's class path, in a fresh JVM with the launcher's flags and an archive of its own")
             breakdown(fixtures.address)
         }
@@ -75,6 +83,39 @@ internal class StartupBench(private val options: BenchOptions, private val insta
             report.row(RUN_CACHED, timeInterleaved(listOf(command), options.processWarmups, options.startupRepetitions).single(), "coordinator started and stopped")
         } finally {
             cache.toFile().deleteRecursively()
+        }
+    }
+
+    /**
+     * A coordinator compiled ahead of time (`rtcoord compile`): `rtcoord run NAME.jar` as a whole process,
+     * which compiles nothing and reads no script cache; then, in this JVM once warm, what a plug-in waits
+     * for: the jar loaded ([CompiledCoordinator.load], no compiler) and the coordinator started on a tree
+     * that has already listed the system (its rule subscribed, its component watched).
+     */
+    private fun compiled(address: String) {
+        if (!options.scripts) {
+            report.skipped(RUN_COMPILED, "coordinator scripts are not compiled in a ${options.profile} run")
+            return
+        }
+        val scratch = Files.createTempDirectory("bench-compiled")
+        try {
+            val jar = scratch.resolve("localisation.jar")
+            val script = installation.root.resolve("examples/localisation.coord.kts").toString()
+            TimedCommand("rtcoord compile", listOf(installation.launcher.toString(), "compile", script, "-o", jar.toString()), installation.root).run()
+            val command = TimedCommand(RUN_COMPILED, listOf(installation.launcher.toString(), "-n", address, "run", "--for", "1ms", jar.toString()), installation.root)
+            report.row(RUN_COMPILED, timeInterleaved(listOf(command), options.processWarmups, options.startupRepetitions).single(), "no compiler, no script cache")
+            val config = TreeConfig(listOf(address))
+            RtcTree.create(config).use { tree ->
+                runBlocking { (tree.node("/$address/") as DirectoryNode).survey() }
+                val times = (0 until WARM_LOADS + options.startupRepetitions).map {
+                    val start = System.nanoTime()
+                    Coordinator(tree, CompiledCoordinator.load(jar, emptyList(), config)).use { coordinator -> runBlocking { coordinator.start() } }
+                    (System.nanoTime() - start) / 1e6
+                }.drop(WARM_LOADS)
+                report.row("compiled coordinator: load and start, warm JVM", Samples(times, "ms"), "CompiledCoordinator.load + Coordinator.start, as JavaCoordinator.load then start(); target: under 300 ms")
+            }
+        } finally {
+            scratch.toFile().deleteRecursively()
         }
     }
 
@@ -143,6 +184,10 @@ internal class StartupBench(private val options: BenchOptions, private val insta
 
     private companion object {
         const val RUN_CACHED = "rtcoord run --for 1ms, cached script"
+        const val RUN_COMPILED = "rtcoord run --for 1ms, compiled coordinator (jar)"
+
+        /** Loads and starts before the timed ones: the JIT's first rounds are not what a warm plug-in sees. */
+        const val WARM_LOADS = 5
 
         /** The flags `./rtcoord` starts the JVM of a browsing command with (cli/src/dist/bin/rtcoord). */
         val JVM_FLAGS = listOf("-XX:TieredStopAtLevel=1", "-XX:+UseG1GC", "-Xshare:auto", "-XX:CICompilerCount=1", "-XX:-UsePerfData")

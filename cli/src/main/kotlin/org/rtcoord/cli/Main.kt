@@ -66,6 +66,7 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> = linkedMapOf(
     "demo" to { DemoCommand() },
     "run" to { RunCommand() },
     "check" to { CheckCommand() },
+    "compile" to { CompileCommand() },
     "profile" to { ProfileCommand() },
     "sim" to { SimCommand() },
     "test" to { TestCommand() },

@@ -21,7 +21,7 @@ abstract class ProfileFileCommand(name: String) : TreeCommand(name) {
     protected fun profile(): RtsProfile = try {
         if (file == "-") {
             val text = System.`in`.bufferedReader().readText()
-            RtsProfiles.parse(text, ProfileFormat.of("-", text), "-")
+            RtsProfiles.parse(text, RtsProfiles.formatOf("-", text), "-")
         } else {
             RtsProfiles.read(Paths.get(file))
         }

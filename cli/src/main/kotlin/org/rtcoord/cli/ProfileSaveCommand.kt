@@ -34,7 +34,7 @@ class ProfileSaveCommand : TreeCommand("save") {
     override suspend fun execute() {
         val below = path?.let { pathOf(it) } ?: session.nameServers.singleOrNull()?.let { RtcPath.nameServer(it) } ?: RtcPath.ROOT
         val profile = SystemProfiles(tree).save(below, connected, systemId, abstract)
-        val format = if (yaml || output?.let { ProfileFormat.of(it, "") } == ProfileFormat.YAML) ProfileFormat.YAML else ProfileFormat.XML
+        val format = if (yaml || output?.let { RtsProfiles.formatOf(it, "") } == ProfileFormat.YAML) ProfileFormat.YAML else ProfileFormat.XML
         val text = RtsProfiles.write(profile, format)
         val file = output
         if (file == null || file == "-") echo(text, trailingNewline = false) else Files.writeString(Paths.get(file), text)

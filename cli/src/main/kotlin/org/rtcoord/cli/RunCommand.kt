@@ -40,14 +40,16 @@ import kotlin.time.TimeSource
  * service manager restarts it.
  */
 class RunCommand : TreeCommand("run") {
-    override fun help(context: Context): String = "Run a coordinator (SCRIPT.coord.kts) until interrupted."
+    override fun help(context: Context): String =
+        "Run a coordinator (SCRIPT.coord.kts, or NAME.jar compiled by rtcoord compile, which starts without compiling) until interrupted."
 
     override fun helpEpilog(context: Context): String = examples(
         "rtcoord -n localhost run examples/localisation.coord.kts" to "the paper's coordinator, until Ctrl-C",
         "rtcoord run --for 5m --poll 100ms restart.coord.kts 3" to "for five minutes, polling, with argument 3",
+        "rtcoord -n localhost run localisation.jar" to "a coordinator compiled ahead of time (rtcoord compile)",
     )
 
-    private val script by argument("SCRIPT", help = "The coordinator script.").path()
+    private val script by argument("SCRIPT", help = "The coordinator script, or a jar of one compiled by rtcoord compile.").path()
     private val arguments by argument("ARGS", help = "Arguments the script reads as args.").multiple()
     private val duration by option("--for", metavar = "DURATION", help = "Stop after this long, e.g. 30s or 5m.").duration()
     private val poll by option("--poll", metavar = "PERIOD", help = "Poll components at this period instead of observing them.").duration()

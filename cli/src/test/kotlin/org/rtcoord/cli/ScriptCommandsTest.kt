@@ -134,6 +134,23 @@ class ScriptCommandsTest {
     }
 
     @Test
+    fun `compile makes a jar that run starts without the script, and run refuses a jar that is not a coordinator`() {
+        Localisation().use { localisation ->
+            val source = script("reset.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) { reset() }\n")
+            val jar = directory.resolve("reset.jar")
+            assertEquals("$source: compiled into $jar\n", runRtcoord("compile", source.toString(), "-o", jar.toString()).ok())
+            Files.delete(source)
+            val run = runRtcoord("-n", localisation.naming.address, "run", "--for", "1ms", jar.toString())
+            assertEquals(0, run.statusCode, run.output)
+            assertTrue("coordinating:\n  on laser0.rtc enters ERROR\n" in run.stdout, run.stdout)
+
+            val plain = Files.writeString(directory.resolve("plain.jar"), "not a jar\n")
+            val refused = runRtcoord("-n", localisation.naming.address, "run", "--for", "1ms", plain.toString()).failure()
+            assertTrue(refused.startsWith("rtcoord: $plain: not a compiled coordinator"), refused)
+        }
+    }
+
+    @Test
     fun `run says where a misspelt target is, warns of rules that can never fire, and refuses them with --strict`() {
         Localisation().use { localisation ->
             val misspelt = script("misspelt.coord.kts", "on(component(\"lazer0.rtc\")).state(ERROR) { reset() }\n")

@@ -50,7 +50,7 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
     suspend fun state(selector: ContextSelector): LifeCycle = state(context(selector).second)
 
     private suspend fun state(ec: ExecutionContext): LifeCycle =
-        LifeCycle.of(core.remote.call(subject, "get_component_state") { ec.get_component_state(component.ref) })
+        core.remote.call(subject, "get_component_state") { ec.get_component_state(component.ref) }.toLifeCycle()
 
     /** Whether the component is a composite and whether it is part of one, read now. */
     suspend fun composition(): Composition =

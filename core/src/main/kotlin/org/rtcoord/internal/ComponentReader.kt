@@ -64,7 +64,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     suspend fun readSummary(): SummaryReading = coroutineScope {
         val profile = async { readProfile() }
         val states = async {
-            readContexts().map { (context, _, handle) -> async { handle to LifeCycle.of(readState(context)) } }.awaitAll().toMap()
+            readContexts().map { (context, _, handle) -> async { handle to readState(context).toLifeCycle() } }.awaitAll().toMap()
         }
         val p = profile.await()
         SummaryReading(ComponentSummary(states.await(), portsOf(p)), p.instance_name)
@@ -120,7 +120,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
             }
         }
         val (kind, rate, participants, properties) = profile.await()
-        ContextSnapshot(handle, owned, kind, rate, running.await(), LifeCycle.of(state.await()), participants, properties) to context
+        ContextSnapshot(handle, owned, kind, rate, running.await(), state.await().toLifeCycle(), participants, properties) to context
     }
 
     /** What a context's profile says of it, or what a plain context answers in its place. */
@@ -138,7 +138,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
         val target = configuration ?: try {
             remote.call(subject, "get_configuration") { ref.get_configuration() }
         } catch (e: OperationUnsupportedException) {
-            return ConfigurationSnapshot.NONE to null
+            return ConfigurationSnapshot(emptyMap(), null) to null
         }
         return readSets(target) to target
     }

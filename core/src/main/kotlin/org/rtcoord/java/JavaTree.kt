@@ -1,8 +1,6 @@
 package org.rtcoord.java
 
-import kotlinx.coroutines.asCoroutineDispatcher
 import kotlinx.coroutines.flow.toList
-import kotlinx.coroutines.withContext
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventListener
@@ -20,6 +18,8 @@ import org.rtcoord.TreeConfig
 import org.rtcoord.WrongKindException
 import org.rtcoord.label
 import org.rtcoord.internal.JavaCalls
+import org.rtcoord.internal.JavaListenerCall
+import org.rtcoord.internal.runTask
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.Executor
 import java.util.function.Consumer
@@ -176,7 +176,7 @@ public class JavaTree internal constructor(
      * that die or return (see [RtcTree.onWatching]). Close the [Subscription] to stop.
      */
     public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription =
-        tree.onWatching(JavaListenerCall(listener, executor.asCoroutineDispatcher()))
+        tree.onWatching(JavaListenerCall(listener, executor, RtcEvent::class.java))
 
     /** The tree's model of the system now, read without a remote call (see [RtcTree.snapshot]). */
     public fun snapshot(): SystemSnapshot = tree.snapshot()
@@ -185,7 +185,12 @@ public class JavaTree internal constructor(
      * Subscribes to the events of [type] from the nodes at [paths], then calls [start] on [executor] with
      * the model as it is once they are watched, and [listener] with every later event, one at a time, none
      * missed and none twice (see [RtcTree.follow]): what a view needs to draw the system and keep it true.
-     * Returns once [start] was called; close the [Subscription] to stop.
+     * Returns once [start] was called; close the [Subscription] to stop. [follow] with a set of types
+     * follows several kinds of event from one snapshot.
+     *
+     * @throws RtcException when a path names nothing or cannot be watched; nothing is left subscribed.
+     * @throws java.util.concurrent.RejectedExecutionException when [executor] refuses [start]'s task.
+     * @throws InterruptedException when the calling thread is interrupted while it waits.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
@@ -194,9 +199,9 @@ public class JavaTree internal constructor(
         type: Class<E>,
         executor: Executor,
         start: Consumer<SystemSnapshot>,
-        listener: EventListener<E>,
+        listener: EventListener<in E>,
         options: EventOptions = EventOptions(),
-    ): Subscription = calls.await { followed(paths, type, executor, start, listener, options) }
+    ): Subscription = calls.await { followed(paths, setOf(type), type, executor, start, listener, options) }
 
     /** [follow], once [start] was called. */
     @JvmOverloads
@@ -205,9 +210,39 @@ public class JavaTree internal constructor(
         type: Class<E>,
         executor: Executor,
         start: Consumer<SystemSnapshot>,
-        listener: EventListener<E>,
+        listener: EventListener<in E>,
         options: EventOptions = EventOptions(),
-    ): CompletableFuture<Subscription> = calls.future { followed(paths, type, executor, start, listener, options) }
+    ): CompletableFuture<Subscription> = calls.future { followed(paths, setOf(type), type, executor, start, listener, options) }
+
+    /**
+     * [follow] for the events of every one of [types] (`Set.of(StateChanged.class, PortTraffic.class)`),
+     * from one snapshot: [listener] gets them in the order they happened, whatever their type.
+     *
+     * @throws RtcException when a path names nothing or cannot be watched; nothing is left subscribed.
+     * @throws java.util.concurrent.RejectedExecutionException when [executor] refuses [start]'s task.
+     * @throws InterruptedException when the calling thread is interrupted while it waits.
+     */
+    @JvmOverloads
+    @Throws(RtcException::class, InterruptedException::class)
+    public fun follow(
+        paths: List<String>,
+        types: Set<Class<out RtcEvent>>,
+        executor: Executor,
+        start: Consumer<SystemSnapshot>,
+        listener: EventListener<RtcEvent>,
+        options: EventOptions = EventOptions(),
+    ): Subscription = calls.await { followed(paths, types, RtcEvent::class.java, executor, start, listener, options) }
+
+    /** [follow] of several [types], once [start] was called. */
+    @JvmOverloads
+    public fun followAsync(
+        paths: List<String>,
+        types: Set<Class<out RtcEvent>>,
+        executor: Executor,
+        start: Consumer<SystemSnapshot>,
+        listener: EventListener<RtcEvent>,
+        options: EventOptions = EventOptions(),
+    ): CompletableFuture<Subscription> = calls.future { followed(paths, types, RtcEvent::class.java, executor, start, listener, options) }
 
     /** Closes the tree (see [RtcTree.close]). */
     override fun close() {
@@ -238,19 +273,17 @@ public class JavaTree internal constructor(
 
     private suspend fun <E : RtcEvent> followed(
         paths: List<String>,
+        types: Set<Class<out E>>,
         type: Class<E>,
         executor: Executor,
         start: Consumer<SystemSnapshot>,
-        listener: EventListener<E>,
+        listener: EventListener<in E>,
         options: EventOptions,
     ): Subscription {
-        val dispatcher = executor.asCoroutineDispatcher()
-        val call = JavaListenerCall(listener, dispatcher)
-        return tree.follow(paths.map { tree.node(it) }, setOf(type), options, { snapshot -> withContext(dispatcher) { start.accept(snapshot) } }) { event ->
-            call(type.cast(event))
-        }
+        require(types.isNotEmpty()) { "follow needs at least one event type" }
+        return tree.follow(paths.map { tree.node(it) }, types, options, { snapshot -> executor.runTask { start.accept(snapshot) } }, JavaListenerCall(listener, executor, type))
     }
 
     private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription =
-        tree.on(path, type, options, JavaListenerCall(listener, executor.asCoroutineDispatcher()))
+        tree.on(tree.node(path), setOf(type), options, JavaListenerCall(listener, executor, type))
 }

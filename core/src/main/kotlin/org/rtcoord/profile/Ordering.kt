@@ -4,7 +4,7 @@ import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 
 /** The ordering blocks of a profile, with their element names in XML and keys in YAML. */
-public enum class OrderingKind(internal val xmlName: String, internal val yamlKey: String) {
+public enum class OrderingKind(@get:JvmSynthetic internal val xmlName: String, @get:JvmSynthetic internal val yamlKey: String) {
     START_UP("StartUp", "startUp"),
     SHUT_DOWN("ShutDown", "shutDown"),
     ACTIVATION("Activation", "activation"),

@@ -3,6 +3,8 @@ package org.rtcoord.profile
 import org.jspecify.annotations.Nullable
 import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
+import org.rtcoord.profile.internal.COMPONENT_PATH_ID
+import org.rtcoord.profile.internal.STALE_REFERENCES
 
 /**
  * A connection between two ports. Data port connectors carry the data-flow fields; service port
@@ -61,13 +63,4 @@ public class PortConnector @JvmOverloads constructor(
         "interfaceType" to interfaceType, "dataflowType" to dataflowType, "subscriptionType" to subscriptionType,
         "pushInterval" to pushInterval, "transMethod" to transMethod, "ext" to ext,
     )
-
-    internal companion object {
-        /** The property rtshell stores the end's component path in. */
-        const val COMPONENT_PATH_ID = "COMPONENT_PATH_ID"
-        val STALE_REFERENCES = setOf(
-            "dataport.corba_cdr.inport_ior", "dataport.corba_cdr.inport_ref",
-            "dataport.corba_cdr.outport_ior", "dataport.corba_cdr.outport_ref",
-        )
-    }
 }

@@ -1,26 +1,13 @@
 package org.rtcoord.profile
 
-import org.rtcoord.profile.internal.XmlProfileReader
-import org.rtcoord.profile.internal.XmlProfileWriter
-import org.rtcoord.profile.internal.YamlProfileReader
-import org.rtcoord.profile.internal.YamlProfileWriter
+import org.rtcoord.profile.internal.readProfile
+import org.rtcoord.profile.internal.writeProfile
 import java.nio.file.Files
 import java.nio.file.Path
 
-/** The two forms of an RTSProfile file. */
+/** The two forms of an RTSProfile file; [RtsProfiles.formatOf] tells a file's. */
 public enum class ProfileFormat {
-    XML, YAML;
-
-    public companion object {
-        /** The form a file named [fileName] has by its extension (`.yaml`/`.yml`: YAML), else by its [text]. */
-        @JvmStatic
-        public fun of(fileName: String, text: String): ProfileFormat = when {
-            fileName.endsWith(".yaml", ignoreCase = true) || fileName.endsWith(".yml", ignoreCase = true) -> YAML
-            fileName.endsWith(".xml", ignoreCase = true) -> XML
-            text.trimStart().startsWith("<") -> XML
-            else -> YAML
-        }
-    }
+    XML, YAML,
 }
 
 /** A profile file that cannot be read: [message] names the file, the line and what is wrong. */
@@ -44,22 +31,25 @@ public object RtsProfiles {
         } catch (e: java.io.IOException) {
             throw ProfileFormatException(file.toString(), 0, "cannot read: ${e.message ?: e.javaClass.simpleName}")
         }
-        return parse(text, ProfileFormat.of(file.fileName.toString(), text), file.toString())
+        return parse(text, formatOf(file.fileName.toString(), text), file.toString())
+    }
+
+    /** The form a file named [fileName] has by its extension (`.yaml`/`.yml`: YAML), else by its [text]. */
+    @JvmStatic
+    public fun formatOf(fileName: String, text: String): ProfileFormat = when {
+        fileName.endsWith(".yaml", ignoreCase = true) || fileName.endsWith(".yml", ignoreCase = true) -> ProfileFormat.YAML
+        fileName.endsWith(".xml", ignoreCase = true) -> ProfileFormat.XML
+        text.trimStart().startsWith("<") -> ProfileFormat.XML
+        else -> ProfileFormat.YAML
     }
 
     /** Reads a profile from [text] in [format]; [source] names it in errors. */
     @JvmStatic
     @JvmOverloads
     @Throws(ProfileFormatException::class)
-    public fun parse(text: String, format: ProfileFormat, source: String = "-"): RtsProfile = when (format) {
-        ProfileFormat.XML -> XmlProfileReader(source).read(text)
-        ProfileFormat.YAML -> YamlProfileReader(source).read(text)
-    }
+    public fun parse(text: String, format: ProfileFormat, source: String = "-"): RtsProfile = readProfile(text, format, source)
 
     /** [profile] as text in [format]. */
     @JvmStatic
-    public fun write(profile: RtsProfile, format: ProfileFormat): String = when (format) {
-        ProfileFormat.XML -> XmlProfileWriter().write(profile)
-        ProfileFormat.YAML -> YamlProfileWriter().write(profile)
-    }
+    public fun write(profile: RtsProfile, format: ProfileFormat): String = writeProfile(profile, format)
 }

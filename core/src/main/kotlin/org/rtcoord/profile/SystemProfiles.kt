@@ -4,13 +4,19 @@ import org.jspecify.annotations.Nullable
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
+import org.rtcoord.profile.internal.SystemCapture
+import org.rtcoord.profile.internal.SystemCheck
+import org.rtcoord.profile.internal.SystemOrdering
+import org.rtcoord.profile.internal.SystemRestore
+import org.rtcoord.profile.internal.SystemTeardown
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
 /**
  * Whole-system operations on a live [tree] with RTSProfiles, as RTSystemEditor and rtshell's rtcryo,
  * rtresurrect, rtcheck, rtstart, rtstop and rtteardown do: each checks what it can before it changes
- * anything, and each remote call has the tree's deadline.
+ * anything, and each remote call has the tree's deadline. Kotlin's: its operations suspend, and Java
+ * calls them through [org.rtcoord.java.JavaSystemProfiles].
  */
 public class SystemProfiles(private val tree: RtcTree) {
     /**
@@ -18,6 +24,7 @@ public class SystemProfiles(private val tree: RtcTree) {
      * [onlyConnected], as rtcryo), their ports, configuration sets and active set, owned execution
      * contexts and rates, and the connections among them with their properties.
      */
+    @JvmSynthetic
     public suspend fun save(
         below: RtcPath = RtcPath.ROOT,
         onlyConnected: Boolean = false,
@@ -45,6 +52,7 @@ public class SystemProfiles(private val tree: RtcTree) {
      * instance name. No manager for one of them refuses the restore before anything is created; a
      * restore refused after creating deletes what it created.
      */
+    @JvmSynthetic
     public suspend fun restore(profile: RtsProfile, createMissing: Boolean = false, strict: Boolean = false): RestoreReport =
         SystemRestore(tree).restore(profile, createMissing, strict)
 
@@ -52,6 +60,7 @@ public class SystemProfiles(private val tree: RtcTree) {
      * How the live system differs from [profile]: missing components, states other than [state] (not
      * compared when null), missing or different connections, configuration and rates.
      */
+    @JvmSynthetic
     public suspend fun check(profile: RtsProfile, state: @Nullable LifeCycle? = LifeCycle.ACTIVE): List<ProfileDifference> =
         SystemCheck(tree).check(profile, state)
 
@@ -68,12 +77,6 @@ public class SystemProfiles(private val tree: RtcTree) {
         SystemOrdering(tree).run(profile, action, stepDeadline)
 
     /** Removes the connections [profile] names; returns what was removed. */
+    @JvmSynthetic
     public suspend fun teardown(profile: RtsProfile): List<String> = SystemTeardown(tree).teardown(profile)
-
-    /** What [run] brings components to. */
-    public companion object {
-        /** The state [action] brings components to. */
-        @JvmStatic
-        public fun stateAfter(action: OrderedAction): LifeCycle = action.reaches
-    }
 }

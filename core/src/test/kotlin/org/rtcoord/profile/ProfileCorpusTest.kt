@@ -15,7 +15,7 @@ class ProfileCorpusTest {
     @ValueSource(strings = ["full-system.xml", "beyond-rtsprofile.xml", "full-system-by-rtsprofile.yaml"])
     fun `a corpus profile survives a round trip in its own form and in the other`(name: String) {
         val read = RtsProfiles.read(corpus(name))
-        val own = ProfileFormat.of(name, "")
+        val own = RtsProfiles.formatOf(name, "")
         assertEquals(read, RtsProfiles.parse(RtsProfiles.write(read, own), own, "$name again"), "$name written as $own")
         // Content outside the schema is kept exactly within one form; across forms, what the schema names is.
         val other = ProfileFormat.entries.single { it != own }

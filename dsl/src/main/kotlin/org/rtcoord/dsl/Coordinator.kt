@@ -1,3 +1,5 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.CoroutineExceptionHandler
@@ -11,12 +13,14 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import kotlinx.coroutines.flow.update
 import kotlinx.coroutines.isActive
+import kotlinx.coroutines.job
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.ClosedException
 import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.Node
 import org.rtcoord.NotFoundException
 import org.rtcoord.RtcEvent
@@ -37,6 +41,7 @@ import org.rtcoord.dsl.internal.Supervisor
 import org.rtcoord.dsl.internal.catchFailure
 import org.rtcoord.dsl.internal.plan
 import org.rtcoord.dsl.internal.queued
+import org.rtcoord.internal.treeScope
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.seconds
 
@@ -66,11 +71,13 @@ public class Coordinator(
     /** How rules, transitions and supervisors watch: the host's choice, else the script's. */
     private val watching: EventOptions = options ?: plan.watching
 
-    private val job = SupervisorJob()
-    private val identities = Identities(tree, watching, CoroutineScope(job + CoroutineName("coordinator names")), log, watchedByName())
+    /** A child of the tree's: the coordinator runs on the tree's threads, which end only once it has. */
+    private val job = SupervisorJob(tree.treeScope().coroutineContext.job)
+    private val context = tree.treeScope().coroutineContext + job
+    private val identities = Identities(tree, watching, CoroutineScope(context + CoroutineName("coordinator names")), log, watchedByName())
     private val managers = ManagerWatch(tree, watching, log)
     private val engine = Engine(tree, identities, plan.directory, log, managers)
-    private val scope = CoroutineScope(job + CoroutineName("coordinator") + engine + CoroutineExceptionHandler { _, e -> failed("timer", e) })
+    private val scope = CoroutineScope(context + CoroutineName("coordinator") + engine + CoroutineExceptionHandler { _, e -> failed("timer", e) })
     private val interpreters = plan.machines.map { MachineInterpreter(it, scope, engine, Configurator(engine, scope), log, ::failed, ::watchNetwork) }
     /** The listeners of followed names, and the subscriptions to nodes that are not followed. */
     private val listeners = CopyOnWriteArrayList<Subscription>()
@@ -98,8 +105,11 @@ public class Coordinator(
     /** What each rule has done, in declaration order. */
     public val rules: List<RuleActivity> = ruleActivities.values.toList()
 
-    /** What each supervisor has done, in declaration order; empty until [start]. */
-    public val supervision: List<SupervisorActivity> get() = supervisors.map { it.activity }
+    /**
+     * What each supervisor has done, in declaration order: there from the coordinator's making, so that a
+     * view can follow it before [start]; a supervisor's [status][SupervisorActivity.status] changes once it runs.
+     */
+    public val supervision: List<SupervisorActivity> = plan.supervisions.map { SupervisorActivity(it.name, it.strategy.name) }
 
     /** The coordination's mode machines as they run, in declaration order. */
     public val machines: List<RunningMachine> = interpreters.map { it.running }
@@ -136,8 +146,8 @@ public class Coordinator(
                 watch(machine, machine.machine.eventPatterns)
                 watchNetwork(machine)
             }
-            plan.supervisions.forEach { supervision ->
-                supervisors += Supervisor(supervision, engine, scope, log) { escalated(supervision, it) }.also { it.start() }
+            plan.supervisions.zip(supervision).forEach { (supervision, activity) ->
+                supervisors += Supervisor(supervision, activity, engine, scope, log) { escalated(supervision, it) }.also { it.start() }
             }
             // Last: watching a manager watches the components below it, and the tree names each component by the path it
             // was first watched at; the rules' names (naming contexts) come first.

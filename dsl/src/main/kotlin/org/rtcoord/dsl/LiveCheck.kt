@@ -12,6 +12,7 @@ import org.rtcoord.dsl.internal.Engine
 import org.rtcoord.dsl.internal.Findings
 import org.rtcoord.dsl.internal.Identities
 import org.rtcoord.dsl.internal.plan
+import org.rtcoord.dsl.script.CompiledCoordinator
 import org.rtcoord.dsl.script.NameKind
 import org.rtcoord.dsl.script.WrittenName
 import org.rtcoord.dsl.script.WrittenNames
@@ -29,7 +30,7 @@ import java.nio.file.Path
 public class LiveCheck(private val tree: RtcTree) {
     /** Checks [coordination], evaluated from [script], whose text says where each name is written. */
     public suspend fun check(coordination: Coordination, script: Path): ScriptCheck = coroutineScope {
-        val text = Files.readString(script)
+        val text = if (CompiledCoordinator.isCompiled(script)) CompiledCoordinator.source(script) else Files.readString(script)
         val written = WrittenNames.read(text)
         val identities = Identities(tree, EventOptions(), this, {}, emptyMap())
         val probe = Probe(tree, identities, Engine(tree, identities, coordination.directory, {}))

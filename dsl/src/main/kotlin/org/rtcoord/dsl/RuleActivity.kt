@@ -32,7 +32,7 @@ public class RuleActivity internal constructor(
         /** The last failure's message. */
         public val lastFailure: String? = null,
     ) : ValueObject() {
-        internal fun copy(
+        @JvmSynthetic internal fun copy(
             firings: Int = this.firings,
             lastFired: Instant? = this.lastFired,
             lastEvent: String? = this.lastEvent,

@@ -47,7 +47,7 @@ public class SupervisorActivity internal constructor(
         @get:JvmName("getBackoff")
         public val backoffDuration: java.time.Duration? get() = backoff?.toJavaDuration()
 
-        internal fun copy(
+        @JvmSynthetic internal fun copy(
             children: List<String> = this.children,
             restarts: Int = this.restarts,
             lastRestart: Instant? = this.lastRestart,

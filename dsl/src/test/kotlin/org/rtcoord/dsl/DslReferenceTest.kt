@@ -5,6 +5,7 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.ApiDump
 import org.rtcoord.dsl.script.ScriptHost
 import java.nio.file.Files
 import java.nio.file.Path
@@ -44,5 +45,14 @@ class DslReferenceTest {
         assertTrue(names.size > 100, "found the declarations: ${names.size}")
         val missing = names.filterNot { Regex("""\b${Regex.escape(it)}\b""").containsMatchIn(text) }
         assertEquals(emptyList<String>(), missing, "public declarations that docs/dsl.md does not name")
+    }
+
+    /** What the reference says Java calls (`` `getBackoff()` from Java ``) is a method of the dsl's API; before, it named `backoffDuration`, which Java never sees. */
+    @Test
+    fun `every name the reference gives Java callers is a method Java can call`() {
+        val named = Regex("""`(\w+)(?:\(\))?` from Java""").findAll(text).map { it.groupValues[1] }.toList()
+        assertTrue(named.isNotEmpty(), "the reference names nothing for Java callers")
+        val methods = ApiDump.publicClasses(Coordinator::class.java).flatMap { ApiDump.visibleMethods(it) }.map { it.name }.toSet()
+        assertEquals(emptyList<String>(), named.filterNot { it in methods }, "names docs/dsl.md gives Java callers that no public method of the dsl has")
     }
 }

@@ -27,7 +27,7 @@ class ProfileDslTest : CoordinatedSystem() {
     /** The running system saved as [name] in the script's directory. */
     private suspend fun saved(name: String, change: (RtsProfile) -> RtsProfile = { it }): RtsProfile {
         val profile = change(SystemProfiles(witness).save())
-        Files.writeString(directory.resolve(name), RtsProfiles.write(profile, ProfileFormat.of(name, "")))
+        Files.writeString(directory.resolve(name), RtsProfiles.write(profile, RtsProfiles.formatOf(name, "")))
         return profile
     }
 

@@ -20,9 +20,14 @@ import ch.qos.logback.core.read.ListAppender;
 import org.junit.jupiter.api.io.TempDir;
 import org.slf4j.LoggerFactory;
 
+import org.rtcoord.dsl.java.JavaCoordinator;
+
+import java.io.ByteArrayOutputStream;
 import java.io.File;
+import java.io.PrintStream;
 import java.lang.reflect.Method;
 import java.lang.reflect.Proxy;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -35,20 +40,27 @@ import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.Executor;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import java.util.function.Predicate;
 import java.util.stream.Collectors;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
 
 /**
  * rtcoord's bundle in Equinox, RTSystemEditor's framework: it resolves with nothing but the framework
  * (the JRE's packages from the system bundle), starts, and drives a fixture system from inside: discovery,
- * an operation and an event, through the exported API only, loaded by the bundle's class loader. Once
+ * an operation and an event, through the exported API only, loaded by the bundle's class loader, printing
+ * nothing; it runs the paper's coordinator, compiled ahead of time, without a Kotlin compiler. Once
  * stopped and uninstalled, none of its threads is left; its logging goes to the framework's SLF4J when
  * there is one; and its API names no type a plug-in cannot see.
  */
 class EquinoxTest {
+    private static final Set<String> EXPORTED = Set.of("org.rtcoord", "org.rtcoord.java", "org.rtcoord.profile", "org.rtcoord.dsl", "org.rtcoord.dsl.java", "org.rtcoord.dsl.script");
+
     private NamingService naming;
     private RtSystem system;
     private Framework framework;
@@ -101,11 +113,24 @@ class EquinoxTest {
 
     @Test
     void theBundleResolvesStartsAndDrivesASystem() throws Exception {
+        PrintStream stderr = System.err;
+        ByteArrayOutputStream printed = new ByteArrayOutputStream();
+        System.setErr(new PrintStream(printed, true, StandardCharsets.UTF_8));
+        try {
+            drivesASystem();
+        } finally {
+            System.setErr(stderr);
+        }
+        // Before, SLF4J's API alone in the bundle warned that it had no provider: "SLF4J: No SLF4J providers were found."
+        assertEquals("", printed.toString(StandardCharsets.UTF_8), "the bundle printed on stderr");
+    }
+
+    private void drivesASystem() throws Exception {
         startFramework("");
         Bundle bundle = installBundle();
         Set<String> exported = bundle.adapt(BundleWiring.class).getCapabilities("osgi.wiring.package").stream()
                 .map(capability -> (String) capability.getAttributes().get("osgi.wiring.package")).collect(Collectors.toSet());
-        assertEquals(Set.of("org.rtcoord", "org.rtcoord.java", "org.rtcoord.profile"), exported);
+        assertEquals(EXPORTED, exported);
 
         // The test runs outside the framework: it reaches the API through the bundle's class loader, as a
         // plug-in importing org.rtcoord.java would.
@@ -140,6 +165,67 @@ class EquinoxTest {
         assertEquals(List.of(), threadsLeft(loader, Duration.ofSeconds(20)));
     }
 
+    /**
+     * The paper's coordinator, compiled ahead of time on this side (which has the Kotlin compiler), runs in
+     * the bundle (which has not): the laser breaks for good and odometry takes over. Stopped, the bundle
+     * leaves no thread behind.
+     */
+    @Test
+    void aCompiledCoordinatorRecoversTheLaserInsideTheBundle() throws Exception {
+        Path script = Path.of(System.getProperty("rtcoord.root", ".."), "examples", "localisation.coord.kts");
+        Path jar = storage.resolve("localisation.jar");
+        JavaCoordinator.compile(script, jar);
+
+        startFramework("");
+        Bundle bundle = installBundle();
+        ClassLoader loader = bundle.adapt(BundleWiring.class).getClassLoader();
+        for (String compiler : List.of("kotlin.script.experimental.jvmhost.JvmScriptCompiler", "org.jetbrains.kotlin.cli.common.CLICompiler",
+                "kotlin.script.experimental.api.ScriptCompilationConfiguration")) {
+            assertThrows(ClassNotFoundException.class, () -> bundle.loadClass(compiler), compiler + " is in the bundle");
+        }
+        Class<?> javaTree = bundle.loadClass("org.rtcoord.java.JavaTree");
+        Class<?> coordinatorClass = bundle.loadClass("org.rtcoord.dsl.java.JavaCoordinator");
+        assertFalse(coordinatorClass.getClassLoader() == JavaCoordinator.class.getClassLoader());
+        BlockingQueue<String> log = new LinkedBlockingQueue<>();
+        String host = "/" + naming.getAddress() + "/" + RuntimeProcess.Companion.getHostContext();
+        try (AutoCloseable tree = createTree(bundle);
+             AutoCloseable coordinator = (AutoCloseable) coordinatorClass.getMethod("load", javaTree, Path.class, List.class, Consumer.class)
+                     .invoke(null, tree, jar, List.of(), (Consumer<String>) log::add)) {
+            coordinatorClass.getMethod("start").invoke(coordinator);
+            system.component("laser0").breakDown();
+
+            String created = awaitLine(log, line -> line.startsWith("created ") && line.contains("odo_localise0"));
+            String localiser = created.substring("created ".length()).split(" ")[0];
+            BlockingQueue<String> states = new LinkedBlockingQueue<>();
+            Class<?> listener = bundle.loadClass("org.rtcoord.EventListener");
+            Object onEvent = Proxy.newProxyInstance(listener.getClassLoader(), new Class<?>[] {listener},
+                    (proxy, method, args) -> method.getName().equals("onEvent") ? states.add(String.valueOf(call(args[0], "getNew"))) : null);
+            Method subscribe = javaTree.getMethod("subscribe", String.class, Class.class, Executor.class, listener);
+            try (AutoCloseable ignored = (AutoCloseable) subscribe.invoke(tree, localiser, bundle.loadClass("org.rtcoord.StateChanged"), (Executor) Runnable::run, onEvent)) {
+                Object component = javaTree.getMethod("component", String.class).invoke(tree, localiser);
+                if (!"ACTIVE".equals(String.valueOf(component.getClass().getMethod("state").invoke(component)))) {
+                    assertEquals("ACTIVE", states.poll(20, TimeUnit.SECONDS), "odo_localise0 did not become ACTIVE; the coordinator said: " + log);
+                }
+            }
+            Object laserLocaliser = javaTree.getMethod("component", String.class).invoke(tree, host + "/laser_localise0.rtc");
+            assertEquals("INACTIVE", String.valueOf(laserLocaliser.getClass().getMethod("state").invoke(laserLocaliser)));
+        }
+        bundle.stop();
+        bundle.uninstall();
+        assertEquals(List.of(), threadsLeft(loader, Duration.ofSeconds(20)));
+    }
+
+    /** The first line of [log] that [wanted] accepts, within 30 s. */
+    private static String awaitLine(BlockingQueue<String> log, Predicate<String> wanted) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        List<String> seen = new ArrayList<>();
+        for (String line = log.poll(30, TimeUnit.SECONDS); line != null; line = log.poll(deadline - System.nanoTime(), TimeUnit.NANOSECONDS)) {
+            if (wanted.test(line)) return line;
+            seen.add(line);
+        }
+        return fail("no such line within 30 s; the coordinator said: " + seen);
+    }
+
     @Test
     void theBundleLogsThroughTheFrameworksSlf4j() throws Exception {
         ListAppender<ILoggingEvent> logged = new ListAppender<>();
@@ -168,7 +254,7 @@ class EquinoxTest {
     void theExportedApiNamesNoTypeTheBundleKeepsPrivate() throws Exception {
         startFramework("");
         Bundle bundle = installBundle();
-        Set<String> exported = Set.of("org.rtcoord", "org.rtcoord.java", "org.rtcoord.profile");
+        Set<String> exported = EXPORTED;
         List<String> privateTypes = new ArrayList<>();
         for (String name : List.of("org.rtcoord.TreeConfig", "org.rtcoord.TreeConfig$Builder")) {
             for (Method method : bundle.loadClass(name).getMethods()) {

@@ -14,6 +14,7 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.WatchMethod
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.toLifeCycle
 import org.slf4j.LoggerFactory
 import java.util.EnumMap
 import java.util.concurrent.CompletableFuture
@@ -153,7 +154,7 @@ internal class ComponentMonitor(
     private suspend fun readStates(handles: Set<Int>) {
         val contexts = node.component.contexts
         if (handles.any { it !in contexts }) return readAndPublish()
-        suspend fun state(handle: Int) = LifeCycle.of(core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) })
+        suspend fun state(handle: Int) = core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) }.toLifeCycle()
         val stamp = node.component.stamp()
         val states = try {
             // One context, the common case, is read without a coroutine per read.

@@ -7,6 +7,7 @@ import RTC.RTObject
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.LifeCycle
 import org.rtcoord.internal.AsyncRequests
+import org.rtcoord.internal.toLifeCycle
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicInteger
 import java.util.concurrent.atomic.AtomicIntegerArray
@@ -126,7 +127,7 @@ internal class StateProbe(
         val round = round?.takeIf { channels.getOrNull(channel.index) === channel } ?: return
         // A reply to a request given up on: a later round's requests have other ids.
         if (round.ids[channel.index] != id) return
-        round.states[channel.index] = LifeCycle.of(LifeCycleStateHelper.read(result))
+        round.states[channel.index] = LifeCycleStateHelper.read(result).toLifeCycle()
         if (round.remaining.decrementAndGet() == 0) finish(round)
     }
 

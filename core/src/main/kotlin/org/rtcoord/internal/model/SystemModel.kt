@@ -11,11 +11,11 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
 import org.rtcoord.NameServerEntry
-import org.rtcoord.ObserverFlavour
 import org.rtcoord.NameServerLost
 import org.rtcoord.NameServerNode
 import org.rtcoord.NameServerReturned
 import org.rtcoord.Node
+import org.rtcoord.ObserverFlavour
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
@@ -25,6 +25,7 @@ import org.rtcoord.SystemSnapshot
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMethodChanged
 import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.unknownFsmStatus
 
 /**
  * The tree's one truth about the live system: what its events have told, numbered. Every event the tree
@@ -91,7 +92,7 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
             val told = states[component] ?: node.snapshots.value?.contexts?.associate { it.handle to it.state }.orEmpty()
             val method = methods[component]
             val fsm = fsmStates[component]?.let { FsmStatus(it, null) }
-                ?: FsmStatus.unknown(method).takeIf { node.snapshots.value?.offersFsmService == true }
+                ?: unknownFsmStatus(method).takeIf { node.snapshots.value?.offersFsmService == true }
             ComponentEntry(node.canonical, told, alive = component !in dead, watchMethod = method, fsm = fsm)
         }
         val servers = nameServers().map { server -> outages[server.path].let { NameServerEntry(server, it?.since, it?.cause) } }

@@ -36,10 +36,13 @@ import kotlin.time.TimeSource
  * at a time, in the order they arrive, by one coroutine of [scope]; the record is kept under a lock the
  * recovery holds, so a recovery never sees it half updated.
  *
+ * @param activity what it has done, for those who show it: made with the coordinator, so that it can be
+ *   followed before the supervisor starts.
  * @param escalate runs the script's escalation handlers.
  */
 internal class Supervisor(
     private val supervision: Supervision,
+    val activity: SupervisorActivity,
     private val engine: Engine,
     private val scope: CoroutineScope,
     log: (String) -> Unit,
@@ -69,9 +72,6 @@ internal class Supervisor(
 
     /** Whether every failure reported so far is answered, or the supervisor has stopped: nothing it was told of is still to come. */
     internal val quiet: Boolean get() = handling?.isActive != true || unanswered.get() == 0
-
-    /** What it has done, for those who show it. */
-    val activity = SupervisorActivity(name, supervision.strategy.name)
 
     /** Resolves and watches the components, records what recovery needs, and starts handling failures. */
     suspend fun start() {

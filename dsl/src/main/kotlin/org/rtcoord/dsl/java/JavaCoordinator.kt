@@ -2,30 +2,18 @@
 
 package org.rtcoord.dsl.java
 
-import kotlinx.coroutines.CoroutineName
-import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.Dispatchers
-import kotlinx.coroutines.SupervisorJob
-import kotlinx.coroutines.asCoroutineDispatcher
-import kotlinx.coroutines.cancel
-import kotlinx.coroutines.flow.Flow
-import kotlinx.coroutines.flow.map
-import kotlinx.coroutines.flow.merge
-import kotlinx.coroutines.launch
-import kotlinx.coroutines.withContext
-import org.rtcoord.ClosedException
-import org.rtcoord.EventOptions
+import org.jspecify.annotations.Nullable
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.RtcException
 import org.rtcoord.Subscription
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.RuleActivity
 import org.rtcoord.dsl.SupervisorActivity
+import org.rtcoord.dsl.internal.JavaCoordinatorRun
+import org.rtcoord.dsl.internal.JavaCoordinatorLoading
+import org.rtcoord.dsl.script.CompiledCoordinator
 import org.rtcoord.dsl.script.ScriptFailure
-import org.rtcoord.dsl.script.ScriptHost
-import org.rtcoord.internal.JavaCalls
 import org.rtcoord.java.JavaTree
-import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.Executor
@@ -34,11 +22,13 @@ import java.util.function.Consumer
 import java.util.function.IntConsumer
 
 /**
- * A `.coord.kts` coordinator for Java callers: loaded from a file or from its text, started and stopped
- * without coroutines. Each operation is blocking, and a [CompletableFuture] (`...Async`) too.
+ * A coordinator for Java callers: a `.coord.kts` script, or one compiled ahead of time into a jar
+ * (`rtcoord compile SCRIPT.coord.kts -o NAME.jar`), which loads without the Kotlin compiler, as in an
+ * Eclipse plug-in. Started and stopped without coroutines; each operation is blocking, and a
+ * [CompletableFuture] (`...Async`) too. It runs on its tree's threads and ends with it.
  *
  * ```java
- * try (JavaCoordinator coordinator = JavaCoordinator.load(tree, Path.of("restart.coord.kts"))) {
+ * try (JavaCoordinator coordinator = JavaCoordinator.load(tree, Path.of("restart.jar"))) {
  *     coordinator.start();
  *     ...
  * }
@@ -47,103 +37,124 @@ import java.util.function.IntConsumer
 public class JavaCoordinator private constructor(
     /** The coordinator this facade drives, for Kotlin code: Java follows it through the `subscribe...` listeners. */
     @get:JvmSynthetic public val coordinator: Coordinator,
+    tree: JavaTree,
 ) : AutoCloseable {
-    private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator"))
-    private val calls = JavaCalls(scope, "coordinator ${coordinator.name}")
+    private val run = JavaCoordinatorRun(coordinator, tree.tree)
 
-    /** Subscribes the rules and starts timers, machines and supervisors (see [Coordinator.start]). */
+    /**
+     * Subscribes the rules and starts timers, machines and supervisors (see [Coordinator.start]).
+     *
+     * @throws RtcException when a rule's target does not exist or is ambiguous; nothing is left running.
+     * @throws org.rtcoord.ClosedException once the coordinator (or its tree) is closed.
+     * @throws InterruptedException when the calling thread is interrupted while it waits; the start is cancelled.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun start() {
-        calls.await { coordinator.start() }
+        run.calls.await { coordinator.start() }
     }
 
-    /** [start], when done. */
-    public fun startAsync(): CompletableFuture<Void?> = calls.done { coordinator.start() }
+    /** [start], when done; it fails as [start] throws. */
+    public fun startAsync(): CompletableFuture<Void?> = run.calls.done { coordinator.start() }
 
     /**
      * Calls [listener] on [executor] with each rule's description and status (see [RuleActivity]): the
      * current one of every rule at once, then each change, one at a time. Close the [Subscription] to stop;
-     * closing the coordinator stops it too.
+     * closing the coordinator stops it too. What the listener throws, and [executor]'s refusal of a
+     * task, are logged as warnings; the next change is delivered all the same.
      */
     public fun subscribeRules(executor: Executor, listener: BiConsumer<String, RuleActivity.Status>): Subscription =
-        follow(executor, coordinator.rules.map { rule -> rule.status.map { rule.description to it } }) { (description, status) -> listener.accept(description, status) }
+        run.follow(executor, listener, "rules", coordinator.rules.map { rule -> rule.description to rule.status }) { description, status -> listener.accept(description, status) }
 
     /**
      * Calls [listener] on [executor] with each mode machine's name and active mode (null before it has
-     * one): the current mode of every machine at once, then each change. Close the [Subscription] to stop.
+     * one): the current mode of every machine at once, then each change. Close the [Subscription] to
+     * stop. Failures are logged, as for [subscribeRules].
      */
-    public fun subscribeModes(executor: Executor, listener: BiConsumer<String, String?>): Subscription =
-        follow(executor, coordinator.machines.map { machine -> machine.mode.map { machine.name to it } }) { (name, mode) -> listener.accept(name, mode) }
+    public fun subscribeModes(executor: Executor, listener: BiConsumer<String, @Nullable String?>): Subscription =
+        run.follow(executor, listener, "modes", coordinator.machines.map { machine -> machine.name to machine.mode }) { name, mode -> listener.accept(name, mode) }
 
     /**
      * Calls [listener] on [executor] with each supervisor's name and status (see [SupervisorActivity]):
-     * children, restarts, the back-off it waits out, its escalation. Supervisors start with the
-     * coordinator: subscribe after [start]; before it there are none to follow. Close the [Subscription] to stop.
+     * children, restarts, the back-off it waits out, its escalation; the status of every supervisor at
+     * once, before [start] too (nothing done yet), then each change. Close the [Subscription] to stop.
+     * Failures are logged, as for [subscribeRules].
      */
     public fun subscribeSupervisors(executor: Executor, listener: BiConsumer<String, SupervisorActivity.Status>): Subscription =
-        follow(executor, coordinator.supervision.map { supervisor -> supervisor.status.map { supervisor.name to it } }) { (name, status) -> listener.accept(name, status) }
+        run.follow(executor, listener, "supervisors", coordinator.supervision.map { supervisor -> supervisor.name to supervisor.status }) { name, status -> listener.accept(name, status) }
 
-    /** Calls [listener] on [executor] with how many handler runs have failed: the count now, then each change. */
+    /** Calls [listener] on [executor] with how many handler runs have failed: the count now, then each change. Failures are logged, as for [subscribeRules]. */
     public fun subscribeFailures(executor: Executor, listener: IntConsumer): Subscription =
-        follow(executor, listOf(coordinator.failureCounts)) { listener.accept(it) }
+        run.follow(executor, listener, "failures", listOf("failures" to coordinator.failureCounts)) { _, count -> listener.accept(count) }
 
-    private fun <T> follow(executor: Executor, flows: List<Flow<T>>, deliver: (T) -> Unit): Subscription {
-        val dispatcher = executor.asCoroutineDispatcher()
-        val job = scope.launch { flows.merge().collect { withContext(dispatcher) { deliver(it) } } }
-        return Subscription { job.cancel() }
-    }
-
-    /** Stops the coordinator: cancels its handlers and detaches its observers. Idempotent. */
+    /** Stops the coordinator: cancels its handlers and its listeners' deliveries and detaches its observers. Idempotent. */
     override fun close() {
-        coordinator.close()
-        scope.cancel()
+        run.close()
     }
 
     /** How Java callers load a coordinator. */
-    public companion object {
-        private val host by lazy { ScriptHost() }
-        // A supervisor: a script that fails to load must not cancel the loads after it.
-        private val loading = JavaCalls(CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("java coordinator loading")), "coordinator loading")
-
+    private companion object {
         /**
-         * Compiles (or takes from the cache) and evaluates the script at [script] with [args], for [tree];
-         * [log] receives its log lines. Throws [ScriptFailure] naming each problem.
+         * Loads the coordinator at [script] with [args], for [tree]; [log] receives its log lines. A `.jar`
+         * is a coordinator compiled ahead of time ([CompiledCoordinator]): it needs no Kotlin compiler. A
+         * script is compiled (or taken from the cache) first, which needs the compiler, as the `rtcoord-dsl`
+         * artifact has it and the OSGi bundle has not. The load runs on a thread of its own, which ends with it.
+         *
+         * @throws ScriptFailure when the script does not compile or its body throws (each problem as
+         *   `file:line:col: message`), when the jar is not a compiled coordinator (naming its path) or was
+         *   compiled by another rtcoord version (naming both), or when a script needs the compiler and it is absent.
+         * @throws InterruptedException when the calling thread is interrupted while it waits; the load is cancelled.
          */
         @JvmStatic
         @JvmOverloads
         @Throws(ScriptFailure::class, InterruptedException::class)
         public fun load(tree: JavaTree, script: Path, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): JavaCoordinator =
-            loading.await(loadAsync(tree, script, args, log))
+            JavaCoordinatorLoading.await(loadAsync(tree, script, args, log))
 
-        /** [load], when done. */
+        /** [load], when done; it fails as [load] throws. */
         @JvmStatic
         @JvmOverloads
         public fun loadAsync(tree: JavaTree, script: Path, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): CompletableFuture<JavaCoordinator> =
-            loading.future {
-                val coordination = host.load(script, args, tree.tree.config)
-                JavaCoordinator(Coordinator(tree.tree, coordination, null as EventOptions?) { log.accept(it) })
+            JavaCoordinatorLoading.load(script, args, tree.tree.config).thenApply { coordination ->
+                JavaCoordinator(Coordinator(tree.tree, coordination, null) { log.accept(it) }, tree)
             }
+
+        /**
+         * Compiles the script at [script] into [jar]: a coordinator [load] runs without the Kotlin compiler,
+         * as `rtcoord compile` makes it. Compiling needs the compiler, which the `rtcoord-dsl` artifact has
+         * and the OSGi bundle has not.
+         *
+         * @throws ScriptFailure when the script does not compile (each problem as `file:line:col: message`),
+         *   when [jar] cannot be written, or when the compiler is absent.
+         * @throws InterruptedException when the calling thread is interrupted while it waits; the compilation is cancelled.
+         */
+        @JvmStatic
+        @Throws(ScriptFailure::class, InterruptedException::class)
+        public fun compile(script: Path, jar: Path) {
+            JavaCoordinatorLoading.await(JavaCoordinatorLoading.compile(script, jar))
+        }
 
         /**
          * [load] for a script given as its [text] under the file [name] (`restart.coord.kts`), which
          * problems are reported against. The text is compiled from a temporary directory, so file names in
-         * it must be absolute.
+         * it must be absolute. Needs the Kotlin compiler.
+         *
+         * @throws ScriptFailure as [load] does.
+         * @throws IllegalArgumentException when [name] does not end in `.coord.kts`.
+         * @throws java.io.IOException when the temporary file cannot be written.
+         * @throws InterruptedException when the calling thread is interrupted while it waits.
          */
         @JvmStatic
         @JvmOverloads
-        @Throws(ScriptFailure::class, InterruptedException::class)
+        @Throws(ScriptFailure::class, java.io.IOException::class, InterruptedException::class)
         public fun fromText(tree: JavaTree, name: String, text: String, args: List<String> = emptyList(), log: Consumer<String> = Consumer {}): JavaCoordinator {
-            require(name.endsWith(".coord.kts")) { "a coordinator script's name ends in .coord.kts, not '$name'" }
-            val directory = Files.createTempDirectory("rtcoord-script")
-            val script = Files.writeString(directory.resolve(name), text)
+            val script = JavaCoordinatorLoading.scriptFile(name, text)
             try {
                 return load(tree, script, args, log)
             } catch (e: ScriptFailure) {
                 // Problems name the script as the caller did, not the temporary file it was compiled from.
                 throw ScriptFailure(e.problems.map { it.replace(script.toString(), name) })
             } finally {
-                Files.delete(script)
-                Files.delete(directory)
+                JavaCoordinatorLoading.delete(script)
             }
         }
     }

@@ -3,10 +3,8 @@
 package org.rtcoord.dsl.script
 
 import org.rtcoord.InternalRtcoordApi
-import org.rtcoord.RtcException
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
-import org.rtcoord.dsl.InvalidMachineException
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
@@ -32,6 +30,8 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     private val compilation = createJvmCompilationConfigurationFromTemplate<CoordinatorScript>()
     private val compiler = JvmScriptCompiler(CompiledScripts.host(cacheDirectory, CoordinatorScript::class.java))
     private val evaluator = BasicJvmScriptEvaluator()
+    /** Without the cache: a script taken from it is only a jar of classes, without the compiler's output to write. */
+    private val fresh by lazy { JvmScriptCompiler(CompiledScripts.host(null, CoordinatorScript::class.java)) }
 
     /** Compiles [script]; returns its errors (none when it compiles). */
     public suspend fun check(script: Path): List<String> = when (val result = compile(script)) {
@@ -41,9 +41,12 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
 
     /**
      * Compiles (or takes from the cache) and evaluates [script] with [args], the host running it on
-     * [host]: returns what it declared. File names in the script are relative to the script's directory. Throws [ScriptFailure] when it does not compile or its body throws.
+     * [host]: returns what it declared. File names in the script are relative to the script's directory.
+     * A `.jar` is a coordinator compiled ahead of time, loaded without compiling ([CompiledCoordinator.load]).
+     * Throws [ScriptFailure] when it does not compile or its body throws.
      */
     public suspend fun load(script: Path, args: List<String> = emptyList(), host: TreeConfig = TreeConfig()): Coordination {
+        if (CompiledCoordinator.isCompiled(script)) return CompiledCoordinator.load(script, args, host)
         val compiled = when (val result = compile(script)) {
             is ResultWithDiagnostics.Success -> result.value
             is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
@@ -55,37 +58,35 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
         return when (val result = evaluator(compiled, evaluation)) {
             is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
             is ResultWithDiagnostics.Success -> when (val value = result.value.returnValue) {
-                is ResultValue.Error -> throw ScriptFailure(listOf(thrown(script, value.error)))
+                is ResultValue.Error -> throw ScriptFailure(listOf(ScriptErrors.thrown(script.toString(), value.error)))
                 else -> value.scriptInstance as? Coordination ?: throw ScriptFailure(listOf("${script.fileName}:1:1: the script did not produce a coordinator"))
             }
         }
     }
 
-    private suspend fun compile(script: Path): ResultWithDiagnostics<CompiledScript> {
+    /**
+     * Compiles [script] into [jar], a coordinator that runs without the Kotlin compiler ([CompiledCoordinator]):
+     * in an Eclipse plug-in through rtcoord's OSGi bundle, or with `rtcoord run NAME.jar`. Compiles afresh,
+     * whatever the cache holds. Throws [ScriptFailure] when it does not compile or [jar] cannot be written.
+     */
+    public suspend fun compile(script: Path, jar: Path) {
+        val compiled = when (val result = compile(script, by = fresh)) {
+            is ResultWithDiagnostics.Success -> result.value
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+        }
+        CompiledCoordinatorJar.write(compiled, Files.readString(script), script.fileName.toString(), jar)
+    }
+
+    private suspend fun compile(script: Path, by: JvmScriptCompiler = compiler): ResultWithDiagnostics<CompiledScript> {
         if (!Files.isRegularFile(script)) return ResultWithDiagnostics.Failure(ScriptDiagnostic(ScriptDiagnostic.unspecifiedError, "no such file", sourcePath = script.toString()))
-        return compiler(script.toFile().toScriptSource(), compilation)
+        return by(script.toFile().toScriptSource(), compilation)
     }
 
     private fun errors(script: Path, reports: List<ScriptDiagnostic>): List<String> =
         reports.filter { it.severity >= ScriptDiagnostic.Severity.ERROR }.map { report ->
             val start = report.location?.start
-            "${report.sourcePath ?: script}:${start?.line ?: 1}:${start?.col ?: 1}: ${report.exception?.let { thrownMessage(it) } ?: CompileHints.withHint(report.message)}"
+            "${report.sourcePath ?: script}:${start?.line ?: 1}:${start?.col ?: 1}: ${report.exception?.let { ScriptErrors.message(it) } ?: CompileHints.withHint(report.message)}"
         }.ifEmpty { listOf("$script:1:1: compilation failed") }
-
-    private fun thrown(script: Path, error: Throwable): String {
-        val frame = generateSequence(error) { it.cause }.flatMap { it.stackTrace.asSequence() }.firstOrNull { it.fileName == script.fileName.toString() }
-        return "$script:${frame?.lineNumber ?: 1}:1: ${thrownMessage(error)}"
-    }
-
-    /**
-     * What [error] says to a script's author: the message alone when the DSL or core threw it on purpose
-     * (a bad name, an invalid machine: `require` and `check` included); a programming error's class too.
-     */
-    private fun thrownMessage(error: Throwable): String {
-        val message = error.message
-        val meant = error is IllegalArgumentException || error is IllegalStateException || error is RtcException || error is InvalidMachineException
-        return if (meant && message != null) message else "${error.javaClass.simpleName}: ${message ?: "(no message)"}"
-    }
 
     public companion object {
         /**

@@ -3,6 +3,7 @@ package org.rtcoord.dsl.java;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.rtcoord.ClosedException;
 import org.rtcoord.LifeCycle;
 import org.rtcoord.Subscription;
@@ -15,6 +16,8 @@ import org.rtcoord.runtime.naming.NamingService;
 import org.rtcoord.java.JavaComponent;
 import org.rtcoord.java.JavaTree;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
@@ -114,6 +117,49 @@ class JavaCoordinatorTest {
                 statuses.add(status.getChildren().size() + " child, backoff " + backoff);
             });
             assertEquals("1 child, backoff null", statuses.poll(10, TimeUnit.SECONDS));
+        }
+    }
+
+    @Test
+    void aCoordinatorCompiledAheadOfTimeRunsFromItsJar(@TempDir Path directory) throws Exception {
+        Path script = Files.writeString(directory.resolve("reset.coord.kts"), "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n");
+        Path jar = directory.resolve("reset.jar");
+        JavaCoordinator.compile(script, jar);
+        Files.delete(script);
+        BlockingQueue<String> log = new LinkedBlockingQueue<>();
+        try (JavaCoordinator coordinator = JavaCoordinator.load(tree, jar, List.of(), log::add)) {
+            coordinator.start();
+            system.component("gyro0").fail();
+            String fired = log.poll(20, TimeUnit.SECONDS);
+            assertTrue(fired != null && fired.startsWith("rule 'gyro0.rtc enters ERROR' fired"), String.valueOf(fired));
+        }
+    }
+
+    @Test
+    void aSupervisorIsFollowedFromBeforeTheStart() throws Exception {
+        BlockingQueue<String> statuses = new LinkedBlockingQueue<>();
+        try (JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "supervise.coord.kts", "supervise(component(\"gyro0.rtc\"))\n")) {
+            // Before, a listener subscribed before start() was never called: there were no supervisors yet.
+            coordinator.subscribeSupervisors(Runnable::run, (name, status) -> statuses.add(status.getChildren().size() + " child"));
+            assertEquals("0 child", statuses.poll(10, TimeUnit.SECONDS));
+            coordinator.start();
+            assertEquals("1 child", statuses.poll(10, TimeUnit.SECONDS));
+        }
+    }
+
+    @Test
+    void theCoordinatorRunsOnItsTreesThreadsNotKotlinxSharedOnes() throws Exception {
+        BlockingQueue<String> threads = new LinkedBlockingQueue<>();
+        String script = "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n";
+        try (JavaCoordinator coordinator = JavaCoordinator.fromText(tree, "reset.coord.kts", script, List.of(), line -> threads.add("log: " + Thread.currentThread().getName()))) {
+            coordinator.subscribeRules(Runnable::run, (rule, status) -> threads.add("rules: " + Thread.currentThread().getName()));
+            coordinator.start();
+            system.component("gyro0").fail();
+            // Before, both ran on kotlinx's DefaultDispatcher workers, which outlive the coordinator (and an OSGi bundle).
+            for (String seen = threads.poll(20, TimeUnit.SECONDS); ; seen = threads.poll(20, TimeUnit.SECONDS)) {
+                assertTrue(seen != null && seen.matches("(log|rules): rtcoord-(tree|call)-\\d+( @.*)?"), String.valueOf(seen));
+                if (seen.startsWith("log: ")) break;
+            }
         }
     }
 

@@ -1,4 +1,4 @@
-package org.rtcoord.profile
+package org.rtcoord.profile.internal
 
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.ComponentNode
@@ -7,6 +7,14 @@ import org.rtcoord.ManagerNode
 import org.rtcoord.PortKind
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
+import org.rtcoord.profile.ConfigurationSet
+import org.rtcoord.profile.ExecutionContext
+import org.rtcoord.profile.Extension
+import org.rtcoord.profile.PortConnector
+import org.rtcoord.profile.ProfileComponent
+import org.rtcoord.profile.ProfilePort
+import org.rtcoord.profile.RtsProfile
+import org.rtcoord.profile.TargetComponent
 import java.time.LocalDateTime
 import java.time.format.DateTimeFormatter
 import java.time.temporal.ChronoUnit
@@ -39,7 +47,7 @@ internal class SystemCapture(private val tree: RtcTree) {
                     val peerComponent = byInstance[peerInstance] ?: continue
                     val source = end(byInstance.getValue(snapshot.instanceName), port.fullName)
                     val target = end(peerComponent, peer.fullName)
-                    val properties = connection.properties.filterKeys { it !in PortConnector.STALE_REFERENCES }
+                    val properties = connection.properties.filterKeys { it !in STALE_REFERENCES }
                     if (port.kind == PortKind.DATA_OUT) {
                         data += PortConnector(
                             connection.id, connection.name, source, target,
@@ -96,7 +104,7 @@ internal class SystemCapture(private val tree: RtcTree) {
 
     private fun end(component: ProfileComponent, fullName: String) = TargetComponent(
         component.id, component.instanceName, fullName,
-        ext = Extension(properties = mapOf(PortConnector.COMPONENT_PATH_ID to component.pathUri)),
+        ext = Extension(properties = mapOf(COMPONENT_PATH_ID to component.pathUri)),
     )
 
     internal companion object {

@@ -1,4 +1,4 @@
-package org.rtcoord.profile
+package org.rtcoord.profile.internal
 
 import org.rtcoord.DirectoryNode
 import org.rtcoord.ManagerNode
@@ -6,6 +6,8 @@ import org.rtcoord.Node
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
+import org.rtcoord.profile.ProfileComponent
+import org.rtcoord.profile.ProfileRefusedException
 
 /**
  * Creates a profile's missing components through managers, as RTSystemEditor's "restore with creation"

@@ -1,8 +1,10 @@
-package org.rtcoord.profile
+package org.rtcoord.profile.internal
 
 import org.rtcoord.ComponentNode
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.internal.ParameterConstraint
+import org.rtcoord.profile.ConfigurationSet
+import org.rtcoord.profile.ProfileComponent
 
 /**
  * Every configuration call a restore makes, in one place. Values are written set by set and the

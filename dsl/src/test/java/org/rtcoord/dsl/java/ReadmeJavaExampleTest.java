@@ -1,4 +1,4 @@
-package org.rtcoord.java;
+package org.rtcoord.dsl.java;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -14,6 +14,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -22,30 +23,41 @@ import java.util.stream.Collectors;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * javac compiles the Java example of the README's Embedding section against core as it is: the example
- * a tool author copies cannot drift from the API. It stands in a method whose parameters are the SWT
- * objects it names ({@code display}, {@code label}).
+ * javac compiles every Java block of the README's Embedding section against core and the dsl as they
+ * are: the examples a tool author copies cannot drift from the API. Each stands in a method of its own
+ * whose parameters are the SWT objects it names ({@code display}, {@code label}) and, unless the block
+ * makes its own, a {@code tree} and the {@code host} naming context.
  */
 class ReadmeJavaExampleTest {
-    private static final Pattern JAVA_BLOCK = Pattern.compile("## Embedding.*?```java\\n(.*?)```", Pattern.DOTALL);
+    private static final Pattern SECTION = Pattern.compile("## Embedding in Java tools(.*?)\\n## ", Pattern.DOTALL);
+    private static final Pattern JAVA_BLOCK = Pattern.compile("```java\\n(.*?)```", Pattern.DOTALL);
 
     @Test
-    void theReadmeJavaExampleCompiles(@TempDir Path directory) throws IOException {
+    void theReadmesJavaExamplesCompile(@TempDir Path directory) throws IOException {
         Path readme = Paths.get(System.getProperty("rtcoord.root", ".."), "README.md");
-        Matcher block = JAVA_BLOCK.matcher(Files.readString(readme, StandardCharsets.UTF_8));
-        assertTrue(block.find(), "no ```java block in the Embedding section of " + readme);
+        Matcher section = SECTION.matcher(Files.readString(readme, StandardCharsets.UTF_8));
+        assertTrue(section.find(), "no Embedding section in " + readme);
+        List<String> methods = new ArrayList<>();
+        Matcher block = JAVA_BLOCK.matcher(section.group(1));
+        while (block.find()) {
+            String code = block.group(1);
+            String given = code.contains("JavaTree tree =") ? "" : ", JavaTree tree, String host";
+            methods.add("    void example" + methods.size() + "(Display display, Label label" + given + ") throws Exception {\n" + code + "    }\n");
+        }
+        assertTrue(methods.size() >= 3, "the Embedding section has " + methods.size() + " Java blocks: listing, following and a coordinator at least");
         Path source = Files.writeString(directory.resolve("ReadmeExample.java"), String.join("\n",
                 "import org.rtcoord.*;",
                 "import org.rtcoord.java.*;",
+                "import org.rtcoord.dsl.java.*;",
+                "import java.nio.file.Path;",
                 "import java.time.Duration;",
                 "import java.util.List;",
+                "import java.util.Set;",
                 "import java.util.concurrent.TimeUnit;",
                 "class ReadmeExample {",
                 "    interface Display { void asyncExec(Runnable task); }",
                 "    interface Label { void setText(String text); }",
-                "    void run(Display display, Label label) throws Exception {",
-                block.group(1),
-                "    }",
+                String.join("\n", methods),
                 "}"));
 
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
@@ -57,7 +69,7 @@ class ReadmeJavaExampleTest {
                     .filter(d -> d.getKind() == Diagnostic.Kind.ERROR)
                     .map(d -> "line " + d.getLineNumber() + ": " + d.getMessage(null))
                     .collect(Collectors.joining("\n"));
-            assertTrue(compiled, "the README's Java example does not compile:\n" + errors);
+            assertTrue(compiled, "the README's Java examples do not compile:\n" + errors + "\n" + Files.readString(source));
         }
     }
 }

@@ -1,6 +1,7 @@
-package org.rtcoord.profile
+package org.rtcoord.profile.internal
 
 import org.rtcoord.RtcTree
+import org.rtcoord.profile.RtsProfile
 
 /** Removes a profile's connections, as rtteardown does, whatever their connector ids now are. */
 internal class SystemTeardown(private val tree: RtcTree) {

@@ -1,0 +1,71 @@
+@file:OptIn(InternalRtcoordApi::class)
+
+package org.rtcoord.dsl.internal
+
+import kotlinx.coroutines.CancellationException
+import kotlinx.coroutines.CoroutineName
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.cancel
+import kotlinx.coroutines.flow.StateFlow
+import kotlinx.coroutines.flow.map
+import kotlinx.coroutines.flow.merge
+import kotlinx.coroutines.job
+import kotlinx.coroutines.launch
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.RtcTree
+import org.rtcoord.Subscription
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.internal.JavaCalls
+import org.rtcoord.internal.runTask
+import org.rtcoord.internal.treeScope
+import org.slf4j.LoggerFactory
+import java.util.concurrent.Executor
+import java.util.concurrent.RejectedExecutionException
+import java.util.concurrent.atomic.AtomicBoolean
+
+/**
+ * What the dsl's Java facade runs for one [coordinator]: its blocking and future calls, and the deliveries
+ * of its `subscribe...` listeners, in one scope, a child of [tree]'s on the tree's threads: closing the
+ * coordinator ends them, and nothing runs on kotlinx's shared threads.
+ */
+internal class JavaCoordinatorRun(private val coordinator: Coordinator, tree: RtcTree) : AutoCloseable {
+    private val scope = CoroutineScope(
+        tree.treeScope().coroutineContext + SupervisorJob(tree.treeScope().coroutineContext.job) + CoroutineName("java coordinator ${coordinator.name}"),
+    )
+
+    /** The facade's blocking and future calls. */
+    val calls = JavaCalls(scope, "coordinator ${coordinator.name}")
+
+    /**
+     * Delivers the values of [sources] (each with its key) to [deliver] on [executor], one at a time: the
+     * current one of each, then each change. What [listener] throws, or [executor]'s refusal, is logged and
+     * the next value delivered; a refusal is logged once, as every later task will likely be refused too.
+     */
+    fun <T> follow(executor: Executor, listener: Any, what: String, sources: List<Pair<String, StateFlow<T>>>, deliver: (String, T) -> Unit): Subscription {
+        val refusalLogged = AtomicBoolean()
+        val job = scope.launch(CoroutineName("java coordinator ${coordinator.name}: $what")) {
+            sources.map { (key, flow) -> flow.map { key to it } }.merge().collect { (key, value) ->
+                try {
+                    executor.runTask { deliver(key, value) }
+                } catch (e: CancellationException) {
+                    throw e
+                } catch (e: RejectedExecutionException) {
+                    if (refusalLogged.compareAndSet(false, true)) log.warn("coordinator {}: listener {} of its {} gets no more changes: {}", coordinator.name, listener, what, e.message)
+                } catch (e: Throwable) {
+                    log.warn("coordinator {}: listener {} of its {} failed on {}={}: {}", coordinator.name, listener, what, key, value, e.toString(), e)
+                }
+            }
+        }
+        return Subscription { job.cancel() }
+    }
+
+    override fun close() {
+        coordinator.close()
+        scope.cancel()
+    }
+
+    private companion object {
+        val log = LoggerFactory.getLogger(JavaCoordinatorRun::class.java)
+    }
+}
