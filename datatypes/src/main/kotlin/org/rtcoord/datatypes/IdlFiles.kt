@@ -20,30 +20,55 @@ import java.util.logging.Logger
  */
 public object IdlFiles {
     /**
-     * The types the `.idl` files of [directory] declare (its subdirectories left out), each file parsed
-     * with [directory] on the include path. Throws [IdlException] naming the file, the line and the
-     * reason when one does not parse.
+     * The types the `.idl` files of [directories] declare (subdirectories left out), every directory on
+     * the include path. A directory that is missing or holds no IDL, and a file that does not parse, are
+     * [IdlDefinitions.errors]; the other files' types are read all the same.
      */
     @JvmStatic
-    public fun readDirectory(directory: Path): IdlDefinitions {
-        if (!Files.isDirectory(directory)) throw IdlException("$directory: not a directory")
-        val files = Files.list(directory).use { paths -> paths.filter { it.toString().endsWith(".idl") }.sorted().toList() }
-        if (files.isEmpty()) throw IdlException("$directory: no .idl file in it")
-        return read(files, listOf(directory))
+    public fun readDirectories(directories: List<Path>): IdlDefinitions {
+        val errors = mutableListOf<String>()
+        val files = directories.flatMap { directory ->
+            val found = if (Files.isDirectory(directory)) {
+                Files.list(directory).use { paths -> paths.filter { it.toString().endsWith(".idl") }.sorted().toList() }
+            } else {
+                errors += "$directory: not a directory"
+                emptyList()
+            }
+            if (found.isEmpty() && Files.isDirectory(directory)) errors += "$directory: no .idl file in it"
+            found
+        }
+        val read = read(files, directories)
+        return IdlDefinitions(read.types, errors + read.errors)
     }
 
-    /** The types [files] declare, parsed with [includeDirectories] (then the standard types' IDL) on the include path. */
+    /** [readDirectories] of one directory. */
+    @JvmStatic
+    public fun readDirectory(directory: Path): IdlDefinitions = readDirectories(listOf(directory))
+
+    /**
+     * The types [files] declare, parsed with [includeDirectories] (then the standard types' IDL) on the
+     * include path; a file that does not parse is one of the [IdlDefinitions.errors], the others are read.
+     */
     @JvmStatic
     public fun read(files: List<Path>, includeDirectories: List<Path> = emptyList()): IdlDefinitions {
-        val reader = IdlTypeReader()
-        for (file in files) parse(file, includeDirectories) { spec ->
+        val types = LinkedHashMap<String, IdlType.Declared>()
+        val errors = mutableListOf<String>()
+        for (file in files) {
+            val reader = IdlTypeReader()
             try {
-                reader.definitions(spec.definitions.elements())
-            } catch (e: IllegalArgumentException) {
-                throw IdlException("$file: ${e.message}")
+                parse(file, includeDirectories) { spec ->
+                    try {
+                        reader.definitions(spec.definitions.elements())
+                    } catch (e: IllegalArgumentException) {
+                        throw IdlException("$file: ${e.message}")
+                    }
+                }
+                reader.declared.forEach { (id, type) -> types.putIfAbsent(id, type) }
+            } catch (e: IdlException) {
+                errors += e.message.orEmpty()
             }
         }
-        return IdlDefinitions(reader.declared)
+        return IdlDefinitions(types, errors)
     }
 
     private val standardIncludes: Path by lazy {
@@ -63,7 +88,7 @@ public object IdlFiles {
     /** Parses [file] and hands its resolved syntax tree to [read], on the parser's lock. */
     private fun parse(file: Path, includeDirectories: List<Path>, read: (Spec) -> Unit) {
         if (!Files.isRegularFile(file)) throw IdlException("$file: no such file")
-        val errors = ErrorCollector()
+        val errors = ErrorCollector(file)
         synchronized(parser::class.java) {
             val logger = Logger.getAnonymousLogger().apply {
                 useParentHandlers = false
@@ -90,8 +115,8 @@ public object IdlFiles {
         }
     }
 
-    /** The parser's first error, as `file:line: reason` on one line. */
-    private class ErrorCollector : Handler() {
+    /** The parser's first error, as `file:line: reason` on one line, the [parsed] file named by the path it was given as. */
+    private class ErrorCollector(private val parsed: Path) : Handler() {
         private val messages = mutableListOf<String>()
 
         override fun publish(record: LogRecord) {
@@ -109,7 +134,8 @@ public object IdlFiles {
             val first = message.lineSequence().first().removeSuffix(" Can't recover from previous error(s), giving up.")
             val located = LOCATION.find(first) ?: return first
             val (file, line, reason) = located.destructured
-            return "$file:$line: ${reason.trim()}"
+            val named = if (file == parsed.fileName.toString()) parsed.toString() else file
+            return "$named:$line: ${reason.trim()}"
         }
     }
 
@@ -144,14 +170,17 @@ public object IdlFiles {
     }
 }
 
-/** What a set of IDL files declares: its data types, by repository ID. */
-public class IdlDefinitions(types: Map<String, IdlType.Declared>) {
+/** What a set of IDL files declares: its data types, by repository ID, and what could not be read. */
+public class IdlDefinitions(types: Map<String, IdlType.Declared>, errors: List<String> = emptyList()) {
     /** Every struct, union, enum and typedef, by repository ID, in declaration order. */
     public val types: Map<String, IdlType.Declared> = types.toMap()
+
+    /** One line for each file or directory that could not be read: `file:line: reason`. */
+    public val errors: List<String> = errors.toList()
 
     /** The type [name] (a repository ID, `Module::Type`, or a name in module RTC) means, or null. */
     public fun named(name: String): IdlType? = types[DataTypeName.repositoryId(name)]
 }
 
 /** IDL that cannot be read: the message names the file, the line where known, and the reason, on one line. */
-public class IdlException(message: String) : Exception(message)
+internal class IdlException(message: String) : Exception(message)

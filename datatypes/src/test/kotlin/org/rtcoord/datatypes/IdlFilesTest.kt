@@ -4,7 +4,6 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.junit.jupiter.api.assertThrows
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
@@ -50,9 +49,10 @@ class IdlFilesTest {
     }
 
     @Test
-    fun `malformed IDL is one line naming the file, the line and the reason`() {
-        val failure = assertThrows<IdlException> { IdlFiles.readDirectory(idl.resolve("broken")) }
-        val message = failure.message.orEmpty()
+    fun `malformed IDL is one line naming the file, the line and the reason, and the other files are read`() {
+        val read = IdlFiles.readDirectories(listOf(idl.resolve("broken"), idl.resolve("acme")))
+        assertTrue(read.named("Acme::Sensing::Status") is IdlType.Struct)
+        val message = read.errors.single()
         assertFalse(message.contains('\n'), message)
         assertTrue(message.contains("Broken.idl:4:"), message)
         assertTrue(message.contains("doubel"), message)
@@ -61,14 +61,15 @@ class IdlFilesTest {
     @Test
     fun `a missing include is named`(@org.junit.jupiter.api.io.TempDir directory: Path) {
         Files.writeString(directory.resolve("Lonely.idl"), "#include \"Nowhere.idl\"\nmodule Lonely { struct S { long x; }; };\n")
-        val message = assertThrows<IdlException> { IdlFiles.readDirectory(directory) }.message.orEmpty()
+        val message = IdlFiles.readDirectory(directory).errors.single()
         assertTrue(message.contains("Nowhere.idl"), message)
         assertFalse(message.contains('\n'), message)
     }
 
     @Test
-    fun `a directory without IDL is refused`(@org.junit.jupiter.api.io.TempDir directory: Path) {
-        assertEquals("$directory: no .idl file in it", assertThrows<IdlException> { IdlFiles.readDirectory(directory) }.message)
+    fun `a directory without IDL, or none at all, is named`(@org.junit.jupiter.api.io.TempDir directory: Path) {
+        assertEquals(listOf("$directory: no .idl file in it"), IdlFiles.readDirectory(directory).errors)
+        assertEquals(listOf("${directory.resolve("nowhere")}: not a directory"), IdlFiles.readDirectory(directory.resolve("nowhere")).errors)
     }
 
     private fun flatten(value: Any?): Any? = when (value) {
