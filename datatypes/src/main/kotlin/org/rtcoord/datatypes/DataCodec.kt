@@ -13,10 +13,14 @@ import java.nio.ByteOrder
 public class DataCodec(public val type: IdlType) {
     /** [value] as CDR in little-endian or big-endian order; throws [IllegalArgumentException] naming the member that does not fit. */
     public fun encode(value: Any?, littleEndian: Boolean): ByteArray {
-        val out = CdrOutput(order(littleEndian))
+        val out = CdrOutput(order(littleEndian), capacity = lastSize)
         write(out, type, value, type.name)
-        return out.bytes()
+        return out.bytes().also { lastSize = maxOf(it.size, MINIMUM_CAPACITY) }
     }
+
+    /** The last sample's size: a port's samples are alike, so the next one's buffer is allocated once. */
+    @Volatile
+    private var lastSize = MINIMUM_CAPACITY
 
     /**
      * The value [data] holds; throws [IllegalArgumentException] when it does not decode as this type,
@@ -139,6 +143,7 @@ public class DataCodec(public val type: IdlType) {
     }
 
     private companion object {
+        const val MINIMUM_CAPACITY = 64
         val TWO_TO_64: BigInteger = BigInteger.ONE.shiftLeft(64)
 
         /** The fewest bytes one element can take, for checking a sequence's length before reading it. */
