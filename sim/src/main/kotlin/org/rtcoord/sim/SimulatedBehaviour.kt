@@ -16,7 +16,7 @@ import org.rtcoord.runtime.Sample
 internal class SimulatedBehaviour(ports: List<PortSpec>) : Behaviour {
     private val inputs = ports.filterIsInstance<PortSpec.DataIn>().map { it.name }
     private val outputs = ports.filterIsInstance<PortSpec.DataOut>().filter { it.dataType.isEncodable }
-    private var values: List<MadeUpValues> = emptyList()
+    private var values: List<MadeUpValues>? = null
     private var lastUsed = emptyList<Sample?>()
 
     override fun onExecute(rtc: ComponentContext): Boolean {
@@ -25,9 +25,9 @@ internal class SimulatedBehaviour(ports: List<PortSpec>) : Behaviour {
             if (latest == lastUsed || latest.all { it == null }) return true
             lastUsed = latest
         }
-        if (values.isEmpty()) values = outputs.map { MadeUpValues(it.dataType.idl!!, seed = "${rtc.instanceName}.${it.name}".hashCode()) }
+        val made = values ?: outputs.map { MadeUpValues(it.dataType.idl!!, seed = "${rtc.instanceName}.${it.name}".hashCode()) }.also { values = it }
         val now = System.currentTimeMillis() * 1_000_000
-        outputs.forEachIndexed { index, port -> rtc.write(port.name, values[index].at(now)!!) }
+        outputs.forEachIndexed { index, port -> rtc.write(port.name, made[index].at(now)!!) }
         return true
     }
 }

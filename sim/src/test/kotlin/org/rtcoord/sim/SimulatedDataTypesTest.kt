@@ -8,9 +8,21 @@ import _SDOPackage.NameValue
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withTimeout
+import org.rtcoord.EventOptions
+import org.rtcoord.RtcTree
+import org.rtcoord.StructuredData
+import org.rtcoord.TimedPose2D
+import org.rtcoord.TreeConfig
+import org.rtcoord.WatchMode
+import org.rtcoord.dsl.Coordination
+import org.rtcoord.dsl.Coordinator
 import org.rtcoord.fixtures.await
 import org.rtcoord.runtime.RuntimeComponent
 import org.rtcoord.runtime.Sample
+import kotlin.time.Duration.Companion.seconds
 
 /** Ports of OpenRTM-aist's device types and of a user's own IDL, simulated, connected and sending. */
 class SimulatedDataTypesTest {
@@ -82,6 +94,36 @@ class SimulatedDataTypesTest {
             val sample = awaitSample(viewer, "pose", after = before)
             val now = System.currentTimeMillis() * 1_000_000
             assertTrue(sample.timeNanos in now - 10_000_000_000..now, "a time stamp read in the right order: ${sample.timeNanos}")
+        }
+    }
+
+    @Test
+    fun `a coordinator's data rules see the device types decoded, and every sample differs`(): Unit = runBlocking {
+        SimulatedSystem.start(TypedSystem.profile(), idlDirectories = listOf(TypedSystem.acmeIdl)).use { sim ->
+            val config = TreeConfig(listOf(sim.address))
+            RtcTree.create(config).use { tree ->
+                val scans = Channel<StructuredData>(Channel.UNLIMITED)
+                val poses = Channel<TimedPose2D>(Channel.UNLIMITED)
+                val coordination = Coordination(emptyList(), config).apply {
+                    on(port("ranger0.rtc:range")).data<StructuredData> { scans.trySend(it) }
+                    on(port("odometry0.rtc:odo")).data<TimedPose2D> { poses.trySend(it) }
+                }
+                Coordinator(tree, coordination, EventOptions(WatchMode.PUSH)).use { coordinator ->
+                    coordinator.start()
+                    withTimeout(20.seconds) {
+                        val first = scans.receive()
+                        val second = scans.receive()
+                        assertEquals("IDL:RTC/RangeData:1.0", first.typeName)
+                        val ranges = first.member("ranges") as List<*>
+                        assertEquals(1081, ranges.size)
+                        assertTrue(ranges.all { it as Double in 0.02..30.0 }, "within the ranger's limits")
+                        assertTrue(first.member("ranges") != second.member("ranges"), "each scan differs")
+                        assertTrue(second.time!! > first.time!!)
+                        val pose = poses.receive()
+                        assertTrue(pose.heading.isFinite() && pose.x.isFinite())
+                    }
+                }
+            }
         }
     }
 
