@@ -11,7 +11,7 @@ public object DataTypeName {
     public fun repositoryId(name: String): String {
         val trimmed = name.trim()
         if (trimmed.startsWith("IDL:")) return trimmed
-        val scoped = trimmed.removePrefix("::").split("::", "/").filter { it.isNotEmpty() }
+        val scoped = trimmed.replace("::", "/").split('/').filter { it.isNotEmpty() }
         val path = if (scoped.size == 1) listOf("RTC") + scoped else scoped
         return "IDL:${path.joinToString("/")}:1.0"
     }
