@@ -10,17 +10,21 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import org.rtcoord.PortData
+import org.rtcoord.StructuredData
 import org.rtcoord.TimedDouble
 import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TimedFloatSeq
 import org.rtcoord.TimedLongSeq
 import org.rtcoord.UnknownData
+import org.rtcoord.datatypes.DataTypeName
 
 /** `rtcoord print`: rtprint, working: the tree taps the out-port and prints each sample on a line. */
 class PrintCommand : TreeCommand("print") {
     override fun help(context: Context): String =
-        "Print the data an out-port sends, one line per sample: its time stamp, its type and its value (an unknown " +
-            "type as its name and the raw bytes in hex). The tree taps the port as a connected in-port would; the tap's " +
+        "Print the data an out-port sends, one line per sample: its time stamp, its type and its value: every " +
+            "type of OpenRTM-aist's BasicDataType, ExtendedDataTypes and InterfaceDataTypes member by member (a long " +
+            "sequence by its first values and its length; --json gives it whole), an unknown type as its name and the " +
+            "raw bytes in hex. The tree taps the port as a connected in-port would; the tap's " +
             "connector (id rtcoord-tap-...) goes when the command ends. Runs until Ctrl-C, SIGTERM, --count samples or " +
             "--for has passed, then exits 0."
 
@@ -65,13 +69,20 @@ class PrintCommand : TreeCommand("print") {
 }
 
 /** A sample as one line: time stamp, type, value. */
-internal fun PortData.line(): String {
-    val type = if (this is UnknownData) typeName else javaClass.simpleName
-    return "${time ?: "-"}  $type  ${valueText()}"
+internal fun PortData.line(): String = "${time ?: "-"}  ${typeLabel()}  ${valueText()}"
+
+private fun PortData.typeLabel(): String = when (this) {
+    is UnknownData -> typeName
+    is StructuredData -> DataTypeName.simpleName(typeName)
+    else -> javaClass.simpleName
 }
+
+/** A structured sample's members but its time stamp, which the line and the JSON give apart. */
+private val StructuredData.value: Map<String, Any?> get() = if (time != null) members - "tm" else members
 
 private fun PortData.valueText(): String = when (this) {
     is UnknownData -> bytes.joinToString("") { "%02x".format(it) }
+    is StructuredData -> MemberText.of(value)
     is TimedDoubleSeq -> data.joinToString(" ", "[", "]")
     is TimedFloatSeq -> data.joinToString(" ", "[", "]")
     is TimedLongSeq -> data.joinToString(" ", "[", "]")
@@ -82,9 +93,10 @@ private fun PortData.valueText(): String = when (this) {
 /** A sample as JSON: time stamp, type and value. */
 internal fun PortData.toJson(): Map<String, Any?> = linkedMapOf(
     "time" to time?.toString(),
-    "type" to if (this is UnknownData) typeName else javaClass.simpleName,
+    "type" to typeLabel(),
     "value" to when (this) {
         is UnknownData -> bytes.joinToString("") { "%02x".format(it) }
+        is StructuredData -> value
         is TimedDoubleSeq -> data
         is TimedFloatSeq -> data
         is TimedLongSeq -> data

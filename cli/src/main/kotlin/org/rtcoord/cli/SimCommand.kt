@@ -4,6 +4,7 @@ import com.github.ajalt.clikt.core.CliktCommand
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.options.default
+import com.github.ajalt.clikt.parameters.options.multiple
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.path
@@ -27,6 +28,7 @@ class SimCommand : CliktCommand("sim") {
         "rtcoord sim examples/localisation.xml" to "simulate the paper's system; the first line says where its naming service is",
         "rtcoord -n 127.0.0.1:PORT run examples/localisation.coord.kts" to "then, in another shell, run a coordinator on it",
         "echo 'break laser0' | rtcoord sim --port 2809 nav.xml" to "a simulated system on the usual naming port, its laser broken",
+        "rtcoord sim --idl idl/ robot.xml" to "a system whose ports carry types of its own, declared by the IDL in idl/",
     )
 
     private val profile by argument("SYSTEM", help = "The RTSProfile (XML or YAML).").path(mustExist = true, canBeDir = false)
@@ -36,9 +38,15 @@ class SimCommand : CliktCommand("sim") {
 
     private val port by option("--port", metavar = "PORT", help = "The naming service's port; by default a free one.").int().default(0)
 
+    private val idl by option(
+        "--idl", metavar = "DIR",
+        help = "A directory of IDL files declaring the system's own data types (besides OpenRTM-aist's, which are known); " +
+            "they may #include \"BasicDataType.idl\" and the like. Repeat for several directories.",
+    ).path(mustExist = false, canBeFile = false).multiple()
+
     override fun run() {
         val system = try {
-            SimulatedSystem.start(profile, host, port)
+            SimulatedSystem.start(profile, host, port, idl)
         } catch (e: ProfileFormatException) {
             throw CommandFailed(e.message.orEmpty())
         } catch (e: IllegalArgumentException) {

@@ -7,6 +7,7 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.omg.CORBA.ORB
+import org.rtcoord.StructuredData
 import org.rtcoord.TimedDouble
 import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TimedLong
@@ -14,6 +15,8 @@ import org.rtcoord.TimedPose2D
 import org.rtcoord.TimedString
 import org.rtcoord.TimedVelocity2D
 import org.rtcoord.UnknownData
+import org.rtcoord.datatypes.DataCodec
+import org.rtcoord.datatypes.StandardDataTypes
 import org.rtcoord.internal.data.DataDecoder
 import org.rtcoord.internal.data.DataTap
 import java.nio.ByteBuffer
@@ -51,6 +54,31 @@ class DataDecoderTest {
 
         val velocity = jacorb { RTC.TimedVelocity2DHelper.write(it, RTC.TimedVelocity2D(time, RTC.Velocity2D(0.1, 0.0, -0.2))) }
         assertEquals(TimedVelocity2D(instant, 0.1, 0.0, -0.2), DataDecoder("IDL:RTC/TimedVelocity2D:1.0", littleEndian = false).decode(velocity))
+    }
+
+    @Test
+    fun `every other standard type decodes member by member, and encodes to JacORB's bytes`() {
+        val geometry = RTC.RangerGeometry(
+            RTC.Geometry3D(RTC.Pose3D(RTC.Point3D(0.1, 0.0, 0.3), RTC.Orientation3D(0.0, 0.0, 1.5)), RTC.Size3D(0.05, 0.05, 0.07)),
+            emptyArray(),
+        )
+        val config = RTC.RangerConfig(-2.35, 2.35, 0.0043, 0.02, 30.0, 0.001, 40.0)
+        val scan = RTC.RangeData(time, doubleArrayOf(1.0, 2.5, 29.9), geometry, config)
+        val bytes = jacorb { RTC.RangeDataHelper.write(it, scan) }
+        val decoded = DataDecoder("IDL:RTC/RangeData:1.0", littleEndian = false).decode(bytes) as StructuredData
+        assertEquals(instant, decoded.time)
+        assertEquals(listOf(1.0, 2.5, 29.9), decoded.member("ranges"))
+        assertEquals(30.0, decoded.member("config.maxRange"))
+        assertEquals(1.5, decoded.member("geometry.geometry.pose.orientation.y"))
+        assertEquals(emptyList<Any>(), decoded.member("geometry.elementGeometries"))
+
+        val codec = DataCodec(StandardDataTypes.named("RangeData")!!)
+        assertEquals(bytes.toList(), codec.encode(decoded.members, littleEndian = false).toList(), "our encoder writes what JacORB writes")
+
+        val image = jacorb { RTC.CameraImageHelper.write(it, RTC.CameraImage(time, 2, 1, 24, "", 1.0, byteArrayOf(1, 2, 3, 4, 5, 6))) }
+        val camera = DataDecoder("CameraImage", littleEndian = false).decode(image) as StructuredData
+        assertEquals(listOf<Byte>(1, 2, 3, 4, 5, 6), camera.member("pixels"))
+        assertEquals(24, camera.member("bpp"), "an unsigned short reads as an Int")
     }
 
     @Test

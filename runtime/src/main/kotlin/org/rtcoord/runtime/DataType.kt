@@ -1,107 +1,82 @@
 package org.rtcoord.runtime
 
-import java.nio.ByteBuffer
-import java.nio.ByteOrder
+import org.rtcoord.datatypes.DataCodec
+import org.rtcoord.datatypes.DataTypeName
+import org.rtcoord.datatypes.IdlType
+import org.rtcoord.datatypes.StandardDataTypes
+import org.rtcoord.datatypes.resolved
 
 /**
- * The data types runtime ports carry, with the CDR encoding OpenRTM's `corba_cdr` transport uses by
- * default: little-endian, no encapsulation header, aligned from the start of the buffer.
+ * The data type a port carries: the [repositoryId] its `dataport.data_type` advertises and, when its IDL
+ * is known ([idl]), how its samples are encoded, by the one codec core decodes them with. A port of a type
+ * whose IDL is not known still connects as the real one does, but its out-port sends nothing.
  */
-public enum class DataType(public val repositoryId: String) {
-    TIMED_LONG("IDL:RTC/TimedLong:1.0"),
-    TIMED_DOUBLE("IDL:RTC/TimedDouble:1.0"),
-    TIMED_DOUBLE_SEQ("IDL:RTC/TimedDoubleSeq:1.0"),
-    TIMED_STRING("IDL:RTC/TimedString:1.0");
+public class DataType(repositoryId: String, public val idl: IdlType?) {
+    /** `IDL:RTC/TimedLong:1.0` and so on, whatever form it was given in. */
+    public val repositoryId: String = DataTypeName.repositoryId(repositoryId)
 
-    /** Encodes [value] (Int, Double, DoubleArray or String, matching this type) stamped with [timeNanos]. */
-    public fun encode(value: Any, timeNanos: Long): ByteArray {
-        val out = CdrOut()
-        out.ulong(timeNanos / 1_000_000_000)
-        out.ulong(timeNanos % 1_000_000_000)
-        when (this) {
-            TIMED_LONG -> out.long(value as Int)
-            TIMED_DOUBLE -> out.double(value as Double)
-            TIMED_DOUBLE_SEQ -> (value as DoubleArray).let { array -> out.ulong(array.size.toLong()); array.forEach(out::double) }
-            TIMED_STRING -> out.string(value as String)
-        }
-        return out.bytes()
+    private val codec = idl?.let(::DataCodec)
+
+    /** The `data` member of a `Timed...` type: the value alone stands for the sample, time-stamped on writing. */
+    private val dataMember = (idl?.resolved as? IdlType.Struct)?.members
+        ?.takeIf { members -> members.size == 2 && members[0].name == "tm" && members[1].name == "data" }
+        ?.get(1)?.type
+
+    /** Whether samples of this type can be encoded (its IDL is known). */
+    public val isEncodable: Boolean get() = codec != null
+
+    /**
+     * Encodes [value] in the byte order a connector negotiated: a whole sample (a [Map] as
+     * [org.rtcoord.datatypes.DataCodec] takes it), or for a `Timed...` type with one `data` member the data
+     * alone (an Int, a Double, a DoubleArray, a String, ...) stamped with [timeNanos]. Throws
+     * [IllegalStateException] when the type's IDL is not known and [IllegalArgumentException] when the value
+     * does not fit it.
+     */
+    public fun encode(value: Any, timeNanos: Long, littleEndian: Boolean = true): ByteArray {
+        val codec = checkNotNull(codec) { "$repositoryId: its IDL is not known, so its samples cannot be encoded" }
+        val sample = if (value is Map<*, *> || dataMember == null) value else mapOf("tm" to time(timeNanos), "data" to value)
+        return codec.encode(sample, littleEndian)
     }
 
-    /** Decodes a sample this type encoded; throws [IllegalArgumentException] on malformed data. */
-    public fun decode(data: ByteArray): Sample {
-        val input = CdrIn(data)
-        val seconds = input.ulong()
-        val nanos = input.ulong()
-        val value: Any = when (this) {
-            TIMED_LONG -> input.long()
-            TIMED_DOUBLE -> input.double()
-            TIMED_DOUBLE_SEQ -> DoubleArray(input.length(8)) { input.double() }
-            TIMED_STRING -> input.string()
+    /**
+     * Decodes a sample in the given byte order: its time stamp and, for a `Timed...` type with one `data`
+     * member, that member (a sequence of doubles as a DoubleArray), else the whole sample. Throws
+     * [IllegalArgumentException] on malformed data and [IllegalStateException] when the IDL is not known.
+     */
+    public fun decode(data: ByteArray, littleEndian: Boolean = true): Sample {
+        val codec = checkNotNull(codec) { "$repositoryId: its IDL is not known, so its samples cannot be decoded" }
+        val decoded = checkNotNull(codec.decode(data, littleEndian))
+        val sample = decoded as? Map<*, *> ?: return Sample(0, decoded)
+        val tm = sample["tm"] as? Map<*, *>
+        val time = tm?.let { (it["sec"] as Long) * 1_000_000_000 + it["nsec"] as Long } ?: 0
+        val value: Any = if (dataMember == null) sample else when (val data = sample["data"]) {
+            is List<*> -> if ((dataMember.resolved as? IdlType.Sequence)?.element?.resolved === IdlType.Primitive.DOUBLE) DoubleArray(data.size) { data[it] as Double } else data
+            else -> data!!
         }
-        return Sample(seconds * 1_000_000_000 + nanos, value)
+        return Sample(time, value)
     }
+
+    override fun equals(other: Any?): Boolean = other is DataType && other.repositoryId == repositoryId
+
+    override fun hashCode(): Int = repositoryId.hashCode()
+
+    override fun toString(): String = repositoryId
 
     public companion object {
-        /** The type with [repositoryId], or null. */
-        public fun of(repositoryId: String): DataType? = values().firstOrNull { it.repositoryId == repositoryId }
+        @JvmField public val TIMED_LONG: DataType = standard("TimedLong")
+        @JvmField public val TIMED_DOUBLE: DataType = standard("TimedDouble")
+        @JvmField public val TIMED_DOUBLE_SEQ: DataType = standard("TimedDoubleSeq")
+        @JvmField public val TIMED_STRING: DataType = standard("TimedString")
+
+        /** The standard type [name] means (`IDL:RTC/TimedPose2D:1.0`, `TimedPose2D`, ...), or null. */
+        @JvmStatic
+        public fun of(name: String): DataType? = StandardDataTypes.named(name)?.let { DataType(name, it) }
+
+        private fun standard(name: String): DataType = checkNotNull(of(name)) { "$name is missing from the idl module" }
+
+        private fun time(nanos: Long): Map<String, Any> = mapOf("sec" to nanos / 1_000_000_000, "nsec" to nanos % 1_000_000_000)
     }
 }
 
 /** One value read from a port and the time stamp it was written with. */
 public data class Sample(val timeNanos: Long, val value: Any)
-
-private class CdrOut {
-    private var buffer = ByteBuffer.allocate(64).order(ByteOrder.LITTLE_ENDIAN)
-
-    private fun reserve(alignment: Int, size: Int) {
-        val padding = (alignment - buffer.position() % alignment) % alignment
-        if (buffer.remaining() < padding + size) {
-            val grown = ByteBuffer.allocate((buffer.capacity() + padding + size) * 2).order(ByteOrder.LITTLE_ENDIAN)
-            buffer.flip()
-            grown.put(buffer)
-            buffer = grown
-        }
-        repeat(padding) { buffer.put(0) }
-    }
-
-    fun ulong(value: Long) { reserve(4, 4); buffer.putInt(value.toInt()) }
-    fun long(value: Int) { reserve(4, 4); buffer.putInt(value) }
-    fun double(value: Double) { reserve(8, 8); buffer.putDouble(value) }
-    fun string(value: String) {
-        val utf8 = value.toByteArray(Charsets.UTF_8)
-        ulong(utf8.size + 1L)
-        reserve(1, utf8.size + 1)
-        buffer.put(utf8).put(0)
-    }
-
-    fun bytes(): ByteArray = buffer.array().copyOf(buffer.position())
-}
-
-private class CdrIn(data: ByteArray) {
-    private val buffer = ByteBuffer.wrap(data).order(ByteOrder.LITTLE_ENDIAN)
-
-    private fun align(alignment: Int, size: Int) {
-        val padding = (alignment - buffer.position() % alignment) % alignment
-        require(buffer.remaining() >= padding + size) { "CDR data ends early at byte ${buffer.position()}" }
-        buffer.position(buffer.position() + padding)
-    }
-
-    fun ulong(): Long { align(4, 4); return buffer.int.toLong() and 0xffffffffL }
-    fun long(): Int { align(4, 4); return buffer.int }
-    fun double(): Double { align(8, 8); return buffer.double }
-
-    /** A sequence length, checked against what is left so a bad length cannot allocate gigabytes. */
-    fun length(elementSize: Int): Int {
-        val length = ulong()
-        require(length * elementSize <= buffer.remaining()) { "CDR sequence of $length elements exceeds the data" }
-        return length.toInt()
-    }
-
-    fun string(): String {
-        val length = length(1)
-        require(length > 0) { "CDR string without its terminating NUL" }
-        val utf8 = ByteArray(length - 1).also(buffer::get)
-        buffer.get()
-        return String(utf8, Charsets.UTF_8)
-    }
-}

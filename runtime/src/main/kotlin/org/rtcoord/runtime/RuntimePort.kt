@@ -11,6 +11,7 @@ import RTC.PortServicePOA
 import RTC.ReturnCode_t
 import _SDOPackage.NameValue
 import org.omg.CORBA.portable.InputStream
+import org.rtcoord.datatypes.DataTypeName
 import org.omg.CORBA.portable.OutputStream
 import org.omg.CORBA.portable.ResponseHandler
 import org.slf4j.LoggerFactory
@@ -28,9 +29,8 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
     private val log = LoggerFactory.getLogger(RuntimePort::class.java)
     private val connectors = ConcurrentHashMap<String, ConnectorProfile>()
     private val publishers = ConcurrentHashMap<String, Publisher>()
-    private val inlet: InPortServant? = (spec as? PortSpec.DataIn)?.let {
-        InPortServant(it.dataType) { component.observers.raiseTraffic(fullName, outgoing = false) }
-    }
+    private val inlets = ConcurrentHashMap<String, InPortServant>()
+    @Volatile private var latestSample: Sample? = null
 
     /** The port's name as OpenRTM reports it: `<instance>.<port>`. */
     val fullName: String = "${component.instanceName}.${spec.name}"
@@ -40,26 +40,31 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
 
     fun activate(orb: RuntimeOrb) {
         ref = PortServiceHelper.narrow(orb.activate(this))
-        inlet?.let { it.ref = OpenRTM.InPortCdrHelper.narrow(orb.activate(it)) }
     }
 
     fun deactivate(orb: RuntimeOrb) {
         publishers.values.forEach(Publisher::close)
         publishers.clear()
-        inlet?.let(orb::deactivate)
+        inlets.values.forEach(orb::deactivate)
+        inlets.clear()
         orb.deactivate(this)
     }
 
-    /** The latest sample received by this in-port. */
-    fun latest(): Sample? = inlet?.latest
+    /** The latest sample received by this in-port, through any of its connectors. */
+    fun latest(): Sample? = latestSample
 
-    /** Pushes [value] to every connected in-port, unless the component's output is frozen. */
+    /**
+     * Pushes [value] to every connected in-port, encoded once for each byte order its connectors
+     * negotiated, unless the component's output is frozen or the type's IDL is not known.
+     */
     fun write(value: Any) {
-        if (component.isOutputFrozen) return
         val type = (spec as PortSpec.DataOut).dataType
-        val data = type.encode(value, System.currentTimeMillis() * 1_000_000)
-        if (publishers.isEmpty()) return
-        publishers.values.forEach { it.offer(data) }
+        if (component.isOutputFrozen || !type.isEncodable || publishers.isEmpty()) return
+        val time = System.currentTimeMillis() * 1_000_000
+        val encoded = HashMap<Boolean, ByteArray>(2)
+        for (publisher in publishers.values) {
+            publisher.offer(encoded.getOrPut(publisher.littleEndian) { type.encode(value, time, publisher.littleEndian) })
+        }
         component.observers.raiseTraffic(fullName, outgoing = true)
     }
 
@@ -87,6 +92,10 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         if (ports.isEmpty()) return ReturnCode_t.BAD_PARAMETER
         val id = profile.value.connector_id
         if (id.isNullOrEmpty()) profile.value.connector_id = UUID.randomUUID().toString() else if (connectors.containsKey(id)) return ReturnCode_t.PRECONDITION_NOT_MET
+        // As OutPortBase.connect and InPortBase.connect: offer both byte orders unless the caller chose.
+        if (spec !is PortSpec.Service && profile.value.properties.none { it.name == ENDIAN }) {
+            profile.value.properties += component.nameValue(ENDIAN, "little,big")
+        }
         val code = ports[0].notify_connect(profile)
         // As PortBase.connect cleans up after a failed handshake; an id no port recorded is refused harmlessly.
         if (code != ReturnCode_t.RTC_OK) disconnect(profile.value.connector_id)
@@ -102,18 +111,30 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
             return ReturnCode_t.PRECONDITION_NOT_MET
         }
         if (!accepts(requested)) return ReturnCode_t.BAD_PARAMETER
+        val littleEndian = if (spec is PortSpec.Service) true else littleEndian(requested) ?: return ReturnCode_t.UNSUPPORTED
 
-        inlet?.let { connector.properties += component.nameValue("dataport.corba_cdr.inport_ior", component.orb.orb.object_to_string(it.ref)) }
+        if (spec is PortSpec.DataIn) {
+            val inlet = InPortServant(spec.dataType, littleEndian) { sample ->
+                latestSample = sample
+                component.observers.raiseTraffic(fullName, outgoing = false)
+            }
+            inlet.ref = OpenRTM.InPortCdrHelper.narrow(component.orb.activate(inlet))
+            inlets[connector.connector_id] = inlet
+            connector.properties += component.nameValue("dataport.corba_cdr.inport_ior", component.orb.orb.object_to_string(inlet.ref))
+        }
         if (me + 1 < connector.ports.size) {
             val next = connector.ports[me + 1].notify_connect(profile)
-            if (next != ReturnCode_t.RTC_OK) return next
+            if (next != ReturnCode_t.RTC_OK) {
+                inlets.remove(connector.connector_id)?.let(component.orb::deactivate)
+                return next
+            }
         }
         val settled = profile.value
         if (spec is PortSpec.DataOut) {
             val inPort = settled.properties.firstOrNull { it.name == "dataport.corba_cdr.inport_ior" }?.stringValue()
                 ?: return ReturnCode_t.BAD_PARAMETER
             publishers[settled.connector_id] = Publisher(
-                OpenRTM.InPortCdrHelper.narrow(component.orb.orb.string_to_object(inPort)), component, fullName,
+                OpenRTM.InPortCdrHelper.narrow(component.orb.orb.string_to_object(inPort)), component, fullName, littleEndian,
             )
         }
         connectors[settled.connector_id] = settled
@@ -138,6 +159,7 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
     override fun notify_disconnect(connectorId: String): ReturnCode_t {
         val connector = connectors.remove(connectorId) ?: return ReturnCode_t.BAD_PARAMETER
         publishers.remove(connectorId)?.close()
+        inlets.remove(connectorId)?.let(component.orb::deactivate)
         component.observers.raise(StatusKind.PORT_PROFILE, "DISCONNECT:$fullName")
         val me = connector.ports.indexOfFirst { it._is_equivalent(ref) }
         if (me + 1 < connector.ports.size) {
@@ -175,7 +197,7 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         val own = properties()
         val dataType = own["dataport.data_type"]
         val askedType = requested["dataport.data_type"]
-        if (dataType != null && askedType != null && askedType != dataType && "IDL:RTC/$askedType:1.0" != dataType) return false
+        if (dataType != null && askedType != null && DataTypeName.repositoryId(askedType) != dataType) return false
         return listOf("dataport.dataflow_type", "dataport.interface_type", "dataport.subscription_type").all { key ->
             val asked = requested[key] ?: return@all true
             val offered = own[key] ?: return@all true
@@ -188,6 +210,22 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
             (spec.provided.map { (name, type) -> PortInterfaceProfile(name, type, PortInterfacePolarity.PROVIDED) } +
                 spec.required.map { (name, type) -> PortInterfaceProfile(name, type, PortInterfacePolarity.REQUIRED) }).toTypedArray()
         else -> emptyArray()
+    }
+}
+
+private const val ENDIAN = "dataport.serializer.cdr.endian"
+
+/**
+ * The byte order a connector's `dataport.serializer.cdr.endian` chose, as OutPortBase.checkEndian reads it:
+ * its first entry; little when the connector names no serializer at all (an old peer); null when the
+ * first entry is neither.
+ */
+private fun littleEndian(requested: Map<String, String>): Boolean? {
+    if (requested.keys.none { it.startsWith("dataport.serializer") }) return true
+    return when (requested[ENDIAN]?.split(',')?.firstOrNull()?.trim()?.lowercase()) {
+        "little" -> true
+        "big" -> false
+        else -> null
     }
 }
 

@@ -4,6 +4,7 @@ import RTC.ConnectorProfile
 import RTC.ConnectorProfileHolder
 import RTC.ReturnCode_t
 import _SDOPackage.NameValue
+import org.rtcoord.datatypes.IdlFiles
 import org.rtcoord.profile.PortConnector
 import org.rtcoord.profile.ProfileFormatException
 import org.rtcoord.profile.RtsProfile
@@ -85,21 +86,27 @@ public class SimulatedSystem private constructor(
     }
 
     public companion object {
-        /** Simulates the profile in [file] (XML or YAML); throws [ProfileFormatException] when it cannot be read. */
-        @JvmStatic
-        @JvmOverloads
-        @Throws(ProfileFormatException::class)
-        public fun start(file: Path, host: String = "127.0.0.1", port: Int = 0): SimulatedSystem = start(RtsProfiles.read(file), host, port)
-
         /**
-         * Simulates [profile] with every ORB and the naming service listening on [host], the naming
-         * service on [port] (0: a free one). Throws [IllegalArgumentException] naming the element of the
-         * profile that cannot be simulated.
+         * Simulates the profile in [file] (XML or YAML), its data types declared by OpenRTM-aist or by the
+         * IDL files in [idlDirectories]; throws [ProfileFormatException] when the profile cannot be read.
          */
         @JvmStatic
         @JvmOverloads
-        public fun start(profile: RtsProfile, host: String = "127.0.0.1", port: Int = 0): SimulatedSystem {
-            val types = SimulatedTypes(profile)
+        @Throws(ProfileFormatException::class)
+        public fun start(file: Path, host: String = "127.0.0.1", port: Int = 0, idlDirectories: List<Path> = emptyList()): SimulatedSystem =
+            start(RtsProfiles.read(file), host, port, idlDirectories)
+
+        /**
+         * Simulates [profile] with every ORB and the naming service listening on [host], the naming
+         * service on [port] (0: a free one), the data types the IDL files in [idlDirectories] declare
+         * besides OpenRTM-aist's (an IDL file that cannot be read is a warning: its types' ports send
+         * nothing). Throws [IllegalArgumentException] naming the element of the profile that cannot be
+         * simulated.
+         */
+        @JvmStatic
+        @JvmOverloads
+        public fun start(profile: RtsProfile, host: String = "127.0.0.1", port: Int = 0, idlDirectories: List<Path> = emptyList()): SimulatedSystem {
+            val types = SimulatedTypes(profile, idlDirectories.takeIf { it.isNotEmpty() }?.let(IdlFiles::readDirectories))
             val naming = NamingService.start(port, host = host)
             val managerPath = profile.ext.properties[ProfileKeys.MANAGER]?.let(::namingPath)
             val runtime = RuntimeProcess.start(naming.corbaloc, host = host)
@@ -123,7 +130,7 @@ public class SimulatedSystem private constructor(
                         require(created.ref.get_configuration().activate_configuration_set(set)) { "${component.instanceName}: cannot activate configuration set $set" }
                     }
                 }
-                (profile.dataPortConnectors + profile.servicePortConnectors).forEach(system::connect)
+                (profile.dataPortConnectors - types.mismatchedConnectors + profile.servicePortConnectors).forEach(system::connect)
                 for (component in system.components) {
                     val result = component.activate()
                     check(result == ReturnCode_t.RTC_OK) { "${component.instanceName}: activating it failed: ${result.value()}" }

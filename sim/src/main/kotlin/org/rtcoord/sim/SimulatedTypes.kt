@@ -1,8 +1,10 @@
 package org.rtcoord.sim
 
+import org.rtcoord.profile.PortConnector
 import org.rtcoord.profile.ProfileComponent
 import org.rtcoord.profile.ProfilePort
 import org.rtcoord.profile.RtsProfile
+import org.rtcoord.datatypes.IdlDefinitions
 import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.DataType
 import org.rtcoord.runtime.ParameterSpec
@@ -11,11 +13,13 @@ import org.rtcoord.runtime.PortSpec
 /**
  * The component types a profile describes: one per component in it (its ports, configuration sets and
  * execution context rate) and one per type its manager can create ([ProfileKeys.MANAGER_TYPES]), whose ports
- * come from [ProfileKeys.typePort] properties or else from an instance of the type in the profile.
+ * come from [ProfileKeys.typePort] properties or else from an instance of the type in the profile. A data
+ * port's type is one of OpenRTM-aist's standard data types or one the user's IDL declares ([userTypes]);
+ * a port of any other type is kept, connectable, and sends nothing (a warning says so once).
  */
-internal class SimulatedTypes(private val profile: RtsProfile) {
-    /** What could not be simulated as the profile says, one line each. */
-    val warnings = mutableListOf<String>()
+internal class SimulatedTypes(private val profile: RtsProfile, private val userTypes: IdlDefinitions? = null) {
+    /** What could not be simulated as the profile says, one line each; first the IDL that could not be read. */
+    val warnings = userTypes?.errors.orEmpty().toMutableList()
 
     /** The type of each component, by instance name. */
     val byInstance: Map<String, ComponentType> = profile.components.associate { it.instanceName to componentType(it) }
@@ -26,6 +30,30 @@ internal class SimulatedTypes(private val profile: RtsProfile) {
         for (typeName in managerTypes()) {
             if (typeName !in this || declaredPorts(typeName).isNotEmpty()) put(typeName, declaredType(typeName))
         }
+    }
+
+    /**
+     * The data connectors left out because their ports carry different data types, which OpenRTM-aist
+     * refuses to connect; each is a warning naming the connector and both types.
+     */
+    val mismatchedConnectors: Set<PortConnector> = profile.dataPortConnectors.filter { connector ->
+        val types = listOf(connector.source, connector.target).map { end ->
+            byInstance[end.instanceName]?.ports?.firstOrNull { "${end.instanceName}.${it.name}" == end.portName }?.let(::dataTypeOf)
+        }
+        val mismatched = types.none { it == null } && types[0] != types[1]
+        if (mismatched) {
+            warn(
+                "connector ${connector.name} (${connector.source.portName} to ${connector.target.portName}): left out: " +
+                    "it joins ${types[0]} to ${types[1]}, which OpenRTM-aist refuses to connect",
+            )
+        }
+        mismatched
+    }.toSet()
+
+    private fun dataTypeOf(port: PortSpec): DataType? = when (port) {
+        is PortSpec.DataIn -> port.dataType
+        is PortSpec.DataOut -> port.dataType
+        is PortSpec.Service -> null
     }
 
     private fun managerTypes(): List<String> =
@@ -101,25 +129,38 @@ internal class SimulatedTypes(private val profile: RtsProfile) {
 
     private fun portSpec(name: String, kind: String, dataType: String?, where: (String) -> String): PortSpec? = when (kind) {
         "CorbaPort" -> PortSpec.Service(name)
-        "DataInPort", "DataOutPort" -> {
-            val type = dataType(dataType) ?: throw IllegalArgumentException(
-                where("data type ${dataType ?: "(none)"} is not simulated (${DataType.values().joinToString { simpleName(it.repositoryId) }} are)"),
-            )
+        "DataInPort", "DataOutPort" -> if (dataType.isNullOrBlank()) {
+            warn(where("left out: the profile gives no data type (dataport.data_type)"))
+            null
+        } else {
+            val type = dataType(dataType, sends = kind == "DataOutPort", where)
             if (kind == "DataInPort") PortSpec.DataIn(name, type) else PortSpec.DataOut(name, type)
         }
         else -> null
     }
 
+    /**
+     * The type [name] means: the user's IDL first (`IDL:RTC/TimedDouble:1.0`, `RTC::TimedDouble` and
+     * `TimedDouble` all name one type), then OpenRTM-aist's standard types; else a type with no IDL, whose
+     * out-ports send nothing.
+     */
+    private fun dataType(name: String, sends: Boolean, where: (String) -> String): DataType {
+        userTypes?.named(name)?.let { return DataType(name, it) }
+        DataType.of(name)?.let { return it }
+        if (sends) warn(where(
+            "sends no data: its data type $name is not one of OpenRTM-aist's and no IDL given declares it " +
+                "(give the directory of its IDL: rtcoord sim --idl DIR, or idl(\"DIR\") in a test)",
+        ))
+        return DataType(name, null)
+    }
+
+    /** Adds [line] to [warnings] once: a type's ports are read for each instance and for its manager. */
+    private fun warn(line: String) {
+        if (line !in warnings) warnings += line
+    }
+
     private companion object {
         /** OpenRTM-aist's default execution context rate (`exec_cxt.periodic.rate`), in Hz. */
         const val DEFAULT_RATE = 1000.0
-
-        /** `IDL:RTC/TimedDouble:1.0`, `RTC::TimedDouble` and `TimedDouble` all name one type. */
-        fun dataType(name: String?): DataType? {
-            val simple = name?.let(::simpleName) ?: return null
-            return DataType.values().firstOrNull { simpleName(it.repositoryId) == simple }
-        }
-
-        fun simpleName(name: String): String = name.removePrefix("IDL:").substringBeforeLast(":1.0").substringAfterLast('/').substringAfterLast("::")
     }
 }

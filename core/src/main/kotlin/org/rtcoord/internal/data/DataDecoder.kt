@@ -1,6 +1,7 @@
 package org.rtcoord.internal.data
 
 import org.rtcoord.PortData
+import org.rtcoord.StructuredData
 import org.rtcoord.TimedBoolean
 import org.rtcoord.TimedDouble
 import org.rtcoord.TimedDoubleSeq
@@ -15,57 +16,68 @@ import org.rtcoord.TimedShort
 import org.rtcoord.TimedString
 import org.rtcoord.TimedVelocity2D
 import org.rtcoord.UnknownData
-import java.nio.ByteOrder
+import org.rtcoord.datatypes.DataCodec
+import org.rtcoord.datatypes.DataTypeName
+import org.rtcoord.datatypes.StandardDataTypes
 import java.time.Instant
 
 /**
  * Decodes the samples of one data type ([typeName] as a port declares it: `IDL:RTC/TimedDouble:1.0`
- * in OpenRTM-aist 1.2 and later, `TimedDouble` before) in one byte order. Bytes that do not decode as
- * the type (short, or longer than it) come out as [UnknownData], as do types it does not know.
+ * in OpenRTM-aist 1.2 and later, `TimedDouble` before) in one byte order, with the codec the runtime
+ * encodes with. The types with a class of their own become it; every other standard type becomes
+ * [StructuredData]. Bytes that do not decode as the type (short, or longer than it) come out as
+ * [UnknownData], as do types it does not know.
  */
-internal class DataDecoder(private val typeName: String, littleEndian: Boolean) {
-    private val order = if (littleEndian) ByteOrder.LITTLE_ENDIAN else ByteOrder.BIG_ENDIAN
-    private val read: ((CdrReader) -> PortData)? = READERS[shortName(typeName)]
+internal class DataDecoder(private val typeName: String, private val littleEndian: Boolean) {
+    private val codec = typeName.takeIf { it.isNotBlank() }?.let(StandardDataTypes::named)?.let(::DataCodec)
+    private val typed: ((Instant, Map<*, *>) -> PortData)? = TYPED[shortName(typeName)]
 
     fun decode(bytes: ByteArray): PortData {
-        val reader = read ?: return unknown(bytes)
-        return try {
-            val cdr = CdrReader(bytes, order)
-            reader(cdr).takeIf { cdr.exhausted } ?: unknown(bytes)
+        val codec = codec ?: return unknown(bytes)
+        val value = try {
+            codec.decode(bytes, littleEndian) as Map<*, *>
         } catch (e: IllegalArgumentException) {
-            unknown(bytes)
+            return unknown(bytes)
         }
+        val time = time(value["tm"])
+        return if (typed != null && time != null) typed.invoke(time, value) else StructuredData(typeName, time, value)
     }
 
-    private fun unknown(bytes: ByteArray) = UnknownData(typeName, bytes, order == ByteOrder.LITTLE_ENDIAN)
+    private fun unknown(bytes: ByteArray) = UnknownData(typeName, bytes, littleEndian)
 
     companion object {
         /** `TimedDouble` from `IDL:RTC/TimedDouble:1.0`, `RTC::TimedDouble` or `TimedDouble`. */
-        fun shortName(typeName: String): String {
-            val name = typeName.trim()
-            return if (name.startsWith("IDL:")) name.removePrefix("IDL:").substringBeforeLast(':').substringAfterLast('/') else name.substringAfterLast("::")
-        }
+        fun shortName(typeName: String): String = if (typeName.isBlank()) "" else DataTypeName.simpleName(typeName)
 
-        private fun CdrReader.time(): Instant {
-            val seconds = ulong()
-            val nanos = ulong()
+        /** `RTC::Time` as an instant; null when [tm] is no time stamp. */
+        private fun time(tm: Any?): Instant? {
+            val fields = tm as? Map<*, *> ?: return null
+            val seconds = fields["sec"] as? Long ?: return null
+            val nanos = fields["nsec"] as? Long ?: return null
             return Instant.ofEpochSecond(seconds, nanos.coerceAtMost(999_999_999))
         }
 
-        private val READERS: Map<String, (CdrReader) -> PortData> = mapOf(
-            "TimedBoolean" to { r -> TimedBoolean(r.time(), r.boolean()) },
-            "TimedOctet" to { r -> TimedOctet(r.time(), r.octet()) },
-            "TimedShort" to { r -> TimedShort(r.time(), r.short()) },
-            "TimedLong" to { r -> TimedLong(r.time(), r.long()) },
-            "TimedFloat" to { r -> TimedFloat(r.time(), r.float()) },
-            "TimedDouble" to { r -> TimedDouble(r.time(), r.double()) },
-            "TimedString" to { r -> TimedString(r.time(), r.string()) },
-            "TimedLongSeq" to { r -> TimedLongSeq(r.time(), List(r.length(4)) { r.long() }) },
-            "TimedFloatSeq" to { r -> TimedFloatSeq(r.time(), List(r.length(4)) { r.float() }) },
-            "TimedDoubleSeq" to { r -> TimedDoubleSeq(r.time(), List(r.length(8)) { r.double() }) },
-            "TimedPoint2D" to { r -> TimedPoint2D(r.time(), r.double(), r.double()) },
-            "TimedPose2D" to { r -> TimedPose2D(r.time(), r.double(), r.double(), r.double()) },
-            "TimedVelocity2D" to { r -> TimedVelocity2D(r.time(), r.double(), r.double(), r.double()) },
+        private fun Map<*, *>.member(name: String): Map<*, *> = get(name) as Map<*, *>
+
+        @Suppress("UNCHECKED_CAST")
+        private val TYPED: Map<String, (Instant, Map<*, *>) -> PortData> = mapOf(
+            "TimedBoolean" to { t, v -> TimedBoolean(t, v["data"] as Boolean) },
+            "TimedOctet" to { t, v -> TimedOctet(t, v["data"] as Byte) },
+            "TimedShort" to { t, v -> TimedShort(t, v["data"] as Short) },
+            "TimedLong" to { t, v -> TimedLong(t, v["data"] as Int) },
+            "TimedFloat" to { t, v -> TimedFloat(t, v["data"] as Float) },
+            "TimedDouble" to { t, v -> TimedDouble(t, v["data"] as Double) },
+            "TimedString" to { t, v -> TimedString(t, v["data"] as String) },
+            "TimedLongSeq" to { t, v -> TimedLongSeq(t, v["data"] as List<Int>) },
+            "TimedFloatSeq" to { t, v -> TimedFloatSeq(t, v["data"] as List<Float>) },
+            "TimedDoubleSeq" to { t, v -> TimedDoubleSeq(t, v["data"] as List<Double>) },
+            "TimedPoint2D" to { t, v -> v.member("data").let { TimedPoint2D(t, it["x"] as Double, it["y"] as Double) } },
+            "TimedPose2D" to { t, v ->
+                val pose = v.member("data")
+                val position = pose.member("position")
+                TimedPose2D(t, position["x"] as Double, position["y"] as Double, pose["heading"] as Double)
+            },
+            "TimedVelocity2D" to { t, v -> v.member("data").let { TimedVelocity2D(t, it["vx"] as Double, it["vy"] as Double, it["va"] as Double) } },
         )
     }
 }

@@ -21,12 +21,21 @@ public abstract class CoordinatorTest(
     internal var systemFile: Path? = null
     internal var coordinatorFile: Path? = null
     internal var coordinatorArgs: List<String> = emptyList()
+    internal val idlDirectories = mutableListOf<Path>()
     internal val steps = mutableListOf<TestStep>()
     internal val noRestarts = mutableListOf<Pair<String, Int>>()
 
     /** Simulates the system the RTSProfile [profile] describes (`rtcoord profile save` writes one). */
     public fun system(profile: String) {
         systemFile = directory.resolve(profile)
+    }
+
+    /**
+     * Reads the IDL files in [directory] for the data types of the system's own, besides OpenRTM-aist's,
+     * as `rtcoord sim --idl` does; call it once per directory.
+     */
+    public fun idl(directory: String) {
+        idlDirectories.add(this.directory.resolve(directory))
     }
 
     /** Runs the coordinator script [script] with [args] against the simulated system. */

@@ -63,7 +63,7 @@ public class CoordinatorTestRunner @JvmOverloads constructor(
         val systemFile = test.systemFile ?: return listOf("$file:1: the test names no system: system(\"SYSTEM.xml\")")
         val coordinatorFile = test.coordinatorFile ?: return listOf("$file:1: the test names no coordinator: coordinator(\"NAME.coord.kts\")")
         val system = try {
-            SimulatedSystem.start(systemFile)
+            SimulatedSystem.start(systemFile, idlDirectories = test.idlDirectories)
         } catch (e: Exception) {
             return listOf("$file:1: cannot simulate $systemFile: ${e.message}")
         }
