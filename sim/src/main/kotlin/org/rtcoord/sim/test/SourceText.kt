@@ -1,0 +1,52 @@
+package org.rtcoord.sim.test
+
+/**
+ * A test file's text, for what failures quote of it: the column a step's word is written at, and the
+ * condition a step passes in braces (`expect(within = 1.seconds) { component("x").state() == ERROR }`).
+ */
+internal class SourceText(private val text: String) {
+    private val starts: List<Int> = listOf(0) + text.indices.filter { text[it] == '\n' }.map { it + 1 }
+
+    /** The 1-based column of [word] on [line], as a whole word; 1 when it is not there. */
+    fun column(line: Int, word: String): Int = wordAt(line, word)?.let { it - starts[line - 1] + 1 } ?: 1
+
+    /** What the braces after [word] on [line] hold, on one line; null when it cannot be found. */
+    fun block(line: Int, word: String): String? {
+        var i = wordAt(line, word) ?: return null
+        while (i < text.length && text[i] != '{') {
+            if (text[i] == '"') i = endOfString(i)
+            i++
+        }
+        if (i >= text.length) return null
+        val open = i
+        var depth = 0
+        while (i < text.length) {
+            when (text[i]) {
+                '"' -> i = endOfString(i)
+                '\'' -> i = text.indexOf('\'', i + 2).takeIf { it >= 0 } ?: return null
+                '{' -> depth++
+                '}' -> if (--depth == 0) return text.substring(open + 1, i).trim().replace(Regex("\\s+"), " ")
+            }
+            i++
+        }
+        return null
+    }
+
+    private fun wordAt(line: Int, word: String): Int? {
+        if (line < 1 || line > starts.size) return null
+        val start = starts[line - 1]
+        val end = starts.getOrNull(line)?.minus(1) ?: text.length
+        return Regex("(?<![\\w$])${Regex.escape(word)}(?![\\w$])").find(text.substring(start, end))?.range?.first?.plus(start)
+    }
+
+    /** The index of the quote that closes the string opening at [start], raw strings included. */
+    private fun endOfString(start: Int): Int {
+        if (text.startsWith("\"\"\"", start)) return (text.indexOf("\"\"\"", start + 3).takeIf { it >= 0 } ?: (text.length - 3)) + 2
+        var i = start + 1
+        while (i < text.length && text[i] != '"') {
+            if (text[i] == '\\') i++
+            i++
+        }
+        return i
+    }
+}
