@@ -8,8 +8,9 @@ import kotlin.io.path.name
 /**
  * Finds the test files of a run and names them: a directory's `*.test.kts` files at any depth (build
  * output, `target`, and hidden directories skipped), each named by its path relative to that directory; a
- * file given by itself, by its file name. Two files of one name are named by their paths relative to the
- * working directory instead, so that no two reports collide; a file given twice runs once.
+ * file given by itself, by its file name. Files of one name are named by as many of the last parts of
+ * their paths as tell them apart (`a/transient`, `b/transient`), so that no two reports collide; a file
+ * given twice runs once.
  */
 internal object TestFiles {
     private const val SUFFIX = ".test.kts"
@@ -20,8 +21,13 @@ internal object TestFiles {
             if (Files.isDirectory(path)) inDirectory(path).map { it to path.relativize(it) } else listOf(path to path.fileName)
         }.distinctBy { (file, _) -> file.toRealPath() }
         val names = found.map { (_, relative) -> nameOf(relative) }
-        val clashing = names.groupingBy { it }.eachCount().filterValues { it > 1 }.keys
-        val unique = found.mapIndexed { i, (file, _) -> if (names[i] in clashing) nameOf(shown(file)) else names[i] }
+        val unique = names.toMutableList()
+        for (clash in names.indices.groupBy { names[it] }.values.filter { it.size > 1 }) {
+            val paths = clash.map { found[it].first.toAbsolutePath().normalize() }
+            // The fewest trailing parts of their paths that tell them apart: a/transient, b/transient.
+            val parts = (2..paths.maxOf { it.nameCount }).firstOrNull { k -> paths.map { suffix(it, k) }.toSet().size == paths.size } ?: paths.maxOf { it.nameCount }
+            clash.forEachIndexed { i, index -> unique[index] = nameOf(suffix(paths[i], parts)) }
+        }
         val seen = HashMap<String, Int>()
         return found.mapIndexed { i, (file, _) ->
             val times = seen.merge(unique[i], 1, Int::plus)!!
@@ -39,6 +45,8 @@ internal object TestFiles {
     }
 
     private fun nameOf(relative: Path): String = relative.toString().replace('\\', '/').removePrefix("/").removeSuffix(SUFFIX)
+
+    private fun suffix(path: Path, parts: Int): Path = path.subpath((path.nameCount - parts).coerceAtLeast(0), path.nameCount)
 
     /** [path] relative to the working directory when it is below it, else absolute. */
     fun shown(path: Path): Path {
