@@ -120,7 +120,7 @@ class ScriptHostTest {
     fun `the type errors newcomers meet first say what to write`(): Unit = runBlocking {
         val timer = script("timer.coord.kts", "every(5) { log(\"tick\") }")
         assertEquals(
-            listOf("$timer:1:7: Argument type mismatch: actual type is 'Int', but 'Duration' was expected (hint: a duration has a unit: 5.seconds, 500.milliseconds or 2.minutes)"),
+            listOf("$timer:1:7: Argument type mismatch: actual type is 'Int', but 'Duration' was expected (hint: a duration has a unit: write 5.seconds (or 5.milliseconds, 5.minutes))"),
             host.check(timer),
         )
         val intensity = script("intensity.coord.kts", "supervise(component(\"odometry0\")) {\n    maxRestarts = 3\n}")

@@ -3,10 +3,8 @@
 package org.rtcoord.dsl.script
 
 import org.rtcoord.InternalRtcoordApi
-import org.rtcoord.RtcException
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
-import org.rtcoord.dsl.InvalidMachineException
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
@@ -36,7 +34,7 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     /** Compiles [script]; returns its errors (none when it compiles). */
     public suspend fun check(script: Path): List<String> = when (val result = compile(script)) {
         is ResultWithDiagnostics.Success -> emptyList()
-        is ResultWithDiagnostics.Failure -> errors(script, result.reports)
+        is ResultWithDiagnostics.Failure -> ScriptProblems.of(script, result.reports)
     }
 
     /**
@@ -46,14 +44,14 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     public suspend fun load(script: Path, args: List<String> = emptyList(), host: TreeConfig = TreeConfig()): Coordination {
         val compiled = when (val result = compile(script)) {
             is ResultWithDiagnostics.Success -> result.value
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
         }
         val evaluation = ScriptEvaluationConfiguration {
             constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent, script.fileName.toString())
             jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
         }
         return when (val result = evaluator(compiled, evaluation)) {
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
             is ResultWithDiagnostics.Success -> when (val value = result.value.returnValue) {
                 is ResultValue.Error -> throw ScriptFailure(listOf(thrown(script, value.error)))
                 else -> value.scriptInstance as? Coordination ?: throw ScriptFailure(listOf("${script.fileName}:1:1: the script did not produce a coordinator"))
@@ -66,25 +64,9 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
         return compiler(script.toFile().toScriptSource(), compilation)
     }
 
-    private fun errors(script: Path, reports: List<ScriptDiagnostic>): List<String> =
-        reports.filter { it.severity >= ScriptDiagnostic.Severity.ERROR }.map { report ->
-            val start = report.location?.start
-            "${report.sourcePath ?: script}:${start?.line ?: 1}:${start?.col ?: 1}: ${report.exception?.let { thrownMessage(it) } ?: CompileHints.withHint(report.message)}"
-        }.ifEmpty { listOf("$script:1:1: compilation failed") }
-
     private fun thrown(script: Path, error: Throwable): String {
         val frame = generateSequence(error) { it.cause }.flatMap { it.stackTrace.asSequence() }.firstOrNull { it.fileName == script.fileName.toString() }
-        return "$script:${frame?.lineNumber ?: 1}:1: ${thrownMessage(error)}"
-    }
-
-    /**
-     * What [error] says to a script's author: the message alone when the DSL or core threw it on purpose
-     * (a bad name, an invalid machine: `require` and `check` included); a programming error's class too.
-     */
-    private fun thrownMessage(error: Throwable): String {
-        val message = error.message
-        val meant = error is IllegalArgumentException || error is IllegalStateException || error is RtcException || error is InvalidMachineException
-        return if (meant && message != null) message else "${error.javaClass.simpleName}: ${message ?: "(no message)"}"
+        return "$script:${frame?.lineNumber ?: 1}:1: ${ScriptProblems.thrownMessage(error)}"
     }
 
     public companion object {
