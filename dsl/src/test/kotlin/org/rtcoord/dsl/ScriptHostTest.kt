@@ -41,7 +41,7 @@ class ScriptHostTest {
         )
         val coordination = host.load(file, listOf("gyro0.rtc"), TreeConfig(callTimeout = kotlin.time.Duration.parse("2s")))
         assertEquals(
-            listOf("on gyro0.rtc enters ERROR", "on gyro0.rtc:gyro disconnects", "on laser_localise0.rtc parameter gain changes", "every 2s"),
+            listOf("on gyro0.rtc enters ERROR", "on gyro0.rtc:gyro disconnects", "on laser_localise0.rtc parameter gain changes where { event -> event is StateChanged }", "every 2s"),
             coordination.description,
         )
         assertEquals(listOf("gyro0.rtc"), coordination.args)

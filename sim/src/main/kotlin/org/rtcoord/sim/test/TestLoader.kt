@@ -1,9 +1,13 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.sim.test
 
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
+import org.rtcoord.dsl.script.ScriptSource
 import org.rtcoord.profile.ProfileFormatException
 import org.rtcoord.profile.RtsProfiles
 import java.nio.file.Files
@@ -21,7 +25,7 @@ internal class TestLoader(private val tests: TestScriptHost, private val scripts
         } catch (e: ScriptFailure) {
             throw UnrunnableTest(e.problems.map(TestFailure::of))
         }
-        val source = TestSource(file.path, SourceText(Files.readString(file.path)))
+        val source = TestSource(file.path, ScriptSource(Files.readString(file.path)))
         val system = declared.system ?: throw UnrunnableTest(listOf(TestFailure("${file.path}:1:1", "the test names no system: write system(\"SYSTEM.xml\")")))
         val coordinator = declared.coordinator ?: throw UnrunnableTest(listOf(TestFailure("${file.path}:1:1", "the test names no coordinator: write coordinator(\"NAME.coord.kts\")")))
         val systemAt = source.at(system.line, "system")

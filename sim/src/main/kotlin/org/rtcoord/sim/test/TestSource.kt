@@ -1,9 +1,13 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.sim.test
 
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.dsl.script.ScriptSource
 import java.nio.file.Path
 
 /** Where a loaded test file's steps are written, and what they say there: how failures name them. */
-internal class TestSource(private val shown: Path, private val text: SourceText) {
+internal class TestSource(private val shown: Path, private val text: ScriptSource) {
     /** `file:line:col` of [step]. */
     fun at(step: TestStep): String = at(step.line, step.word)
 
