@@ -6,6 +6,7 @@ import org.rtcoord.EventOptions
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.internal.DeclaredGuard
+import org.rtcoord.dsl.internal.Selectors
 import org.rtcoord.dsl.script.ScriptSource
 import java.nio.file.Path
 import java.nio.file.Paths
@@ -49,8 +50,12 @@ public open class Coordination @JvmOverloads constructor(
         nameServers += addresses
     }
 
-    /** A component: a full path, a name found on any name server, or (for rules) a glob pattern. */
-    public fun component(name: String): ComponentRef = ComponentRef(name)
+    /**
+     * A component: a full path, a name found on any name server, or (for rules) a glob pattern; with
+     * [type], every component of that type whose name matches (`component(type = "laser")`: every laser,
+     * those that appear later included), as a glob covers them.
+     */
+    public fun component(name: String = "*", type: String? = null): ComponentRef = ComponentRef(Selectors.of(name, type))
 
     /** A port, as `component:port`. */
     public fun port(path: String): PortRef = portRef(path)
