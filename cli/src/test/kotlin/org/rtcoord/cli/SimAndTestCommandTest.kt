@@ -51,6 +51,16 @@ class SimAndTestCommandTest {
     }
 
     @Test
+    fun `rtcoord sim --help lists the commands it takes on stdin one a line`() {
+        val help = runRtcoord("sim", "--help")
+        assertEquals(0, help.statusCode, help.stderr)
+        val lines = help.stdout.lines().map { it.trim() }
+        for (command in listOf("activate NAME", "fail NAME", "break NAME", "hang NAME", "freeze NAME", "repair NAME", "exit NAME", "kill-manager", "restart-naming", "help")) {
+            assertTrue(lines.any { it.startsWith("$command ") }, "a line of its own for $command:\n${help.stdout}")
+        }
+    }
+
+    @Test
     fun `rtcoord sim on a file that is no profile fails in one line naming it`(@TempDir directory: Path) {
         val file = directory.resolve("broken.xml").also { Files.writeString(it, "<nothing") }
         assertTrue(runRtcoord("sim", file.toString()).failure().contains("broken.xml"))
