@@ -60,6 +60,15 @@ class CoordinatorTestRunnerTest {
     }
 
     @Test
+    fun `a failing expectMode says which mode the machine was in and how it got there`(@TempDir directory: Path) {
+        val folder = TestFolder(directory)
+        val test = folder.test("modes.test.kts", "${folder.examples}/modes.coord.kts", "expectMode(\"localisation\", \"degraded\", within = 1.seconds)")
+        val failure = run(test).single().failures.single()
+        assertEquals("$test:3:1: expected mode machine localisation in mode degraded within 1s, but it was in laser", failure.toString())
+        assertEquals(listOf("(start) -> localisation/laser on start"), failure.details)
+    }
+
+    @Test
     fun `expectNoRestartsOf fails for each component a supervisor started again, the failed one and those restarted with it`(@TempDir directory: Path) {
         val folder = TestFolder(directory)
         val test = folder.test(
