@@ -1,11 +1,22 @@
-// The paper's switch as modes of the whole system, on the system simulated from localisation.xml: the
-// laser breaks for good, the machine goes to degraded/odometry and tracks on odometry and the gyro.
+// The paper's switch as modes of the whole system, on the system simulated from localisation.xml: when
+// the laser fails, the machine goes to degraded/odometry and tracks on odometry and the gyro.
 system("localisation.xml")
 coordinator("modes.coord.kts")
 
+// A network's components stop before others start: two localisers never run at once.
+never { component("laser_localise0").state() == ACTIVE && component("odo_localise0").state() == ACTIVE }
 expectMode("localisation", "laser")
-at(2.seconds) { breakDown("laser0") }
-expectMode("localisation", "odometry", within = 10.seconds)
-expectMode("localisation", "degraded/odometry/tracking", within = 10.seconds)
-expect { component("odo_localise0").state() == ACTIVE }
-expect { component("laser_localise0").state() == INACTIVE }
+
+scenario("the laser breaks for good: degraded, tracking on odometry") {
+    at(2.seconds) { breakDown("laser0") }
+    expectMode("localisation", "odometry", within = 10.seconds)
+    expectMode("localisation", "degraded/odometry/tracking", within = 10.seconds)
+    expect { component("odo_localise0").state() == ACTIVE }
+    expect { component("laser_localise0").state() == INACTIVE }
+}
+
+scenario("a laser fault a reset cures: degraded, the laser reset on entry") {
+    at(1.seconds) { fail("laser0") }
+    expectMode("localisation", "degraded/odometry/tracking", within = 10.seconds)
+    expect { component("laser0").state() == INACTIVE && component("odo_localise0").state() == ACTIVE }
+}

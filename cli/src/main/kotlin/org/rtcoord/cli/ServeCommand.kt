@@ -4,6 +4,7 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.default
 import com.github.ajalt.clikt.parameters.groups.provideDelegate
+import com.github.ajalt.clikt.parameters.options.convert
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.path
 import kotlinx.coroutines.Dispatchers
@@ -11,6 +12,8 @@ import kotlinx.coroutines.withContext
 import org.rtcoord.EventOptions
 import org.rtcoord.WatchMode
 import java.nio.file.Path
+import kotlin.time.Duration
+import kotlin.time.DurationUnit
 import org.rtcoord.cli.serve.Chromium
 import org.rtcoord.cli.serve.LiveService
 import org.rtcoord.cli.serve.Recording
@@ -31,6 +34,7 @@ class ServeCommand : TreeCommand("serve") {
         "rtcoord run coordinator.coord.kts --serve" to "the coordinator's rules, modes and supervisors too",
         "rtcoord serve /localhost --record run.jsonl" to "the page, and what it shows written to run.jsonl",
         "rtcoord serve --replay run.jsonl" to "the recorded run played back, with a time slider",
+        "rtcoord serve --replay run.jsonl --screenshot moment.png --at 12.5s" to "a picture of the run 12.5 s after its start",
         "rtcoord serve /localhost --screenshot system.png" to "a picture of the page, taken by headless Chromium; then exit",
     )
 
@@ -48,15 +52,19 @@ class ServeCommand : TreeCommand("serve") {
     private val screenshot by option(
         "--screenshot",
         metavar = "FILE.png",
-        help = "Take a picture of the page with headless Chromium (on the PATH, or RTCOORD_CHROMIUM), save it to FILE.png and exit.",
+        help = "Take a picture of the page with headless Chromium (on the PATH, or RTCOORD_CHROMIUM), save it to FILE.png and exit; " +
+            "with --replay, of the recording at --at.",
     ).path(canBeDir = false)
+
+    private val at by option("--at", metavar = "TIME", help = "With --replay: the moment of the recording the page opens at (and --screenshot pictures), from its start, e.g. 12.5s; default: its start.")
+        .convert("TIME") { text -> Duration.parseOrNull(text)?.takeUnless { it.isNegative() } ?: fail("'$text' is not a time such as 12.5s") }
 
     override suspend fun execute() {
         replay?.let { file ->
-            if (screenshot != null) usage("--screenshot pictures a live system, not a --replay")
             if (pathOf(path).isRoot.not()) usage("--replay plays a recording: give no PATH")
             return replaying(file)
         }
+        if (at != null) usage("--at is a moment of a recording: give --replay FILE")
         val top = systemTop(path)
         serving.settings().exposure()?.let { echo("rtcoord: warning: $it", err = true) }
         val events = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
@@ -79,10 +87,19 @@ class ServeCommand : TreeCommand("serve") {
 
     private suspend fun replaying(file: Path) {
         val recording = Recording.read(file)
+        val moment = at ?: Duration.ZERO
+        if (moment > recording.length) throw CommandFailed("$file lasts ${recording.length}: it has no moment $moment after its start")
         StopSignals().use { signals ->
             LiveService.replay(recording, serving.settings()).use { service ->
-                confirm("replaying $file on ${service.url}")
-                signals.await(duration)
+                val url = service.url + (if ('?' in service.url) "&" else "?") + "at=${moment.toDouble(DurationUnit.SECONDS)}"
+                val picture = screenshot
+                if (picture != null) {
+                    withContext(Dispatchers.IO) { Chromium.screenshot(url, picture) }
+                    confirm("saved a picture of $file at $moment to $picture")
+                } else {
+                    confirm("replaying $file on $url")
+                    signals.await(duration)
+                }
             }
         }
     }

@@ -22,9 +22,10 @@ class SimCommand : CliktCommand("sim") {
         "Simulate the RT system an RTSProfile describes (as `rtcoord profile save` writes it): its components with their ports, " +
             "configuration sets and execution context rates, connected and active, and its manager, on a naming service of " +
             "its own. Prints the naming service's address, then takes faults on stdin, one a line, each answered with a " +
-            "line, until stdin closes:\n\n" + SimConsole.HELP
+            "line, until stdin closes: the commands are listed below."
 
-    override fun helpEpilog(context: Context): String = examples(
+    // In the epilog, which is printed as written: one command a line.
+    override fun helpEpilog(context: Context): String = SimConsole.HELP + "\n\n" + examples(
         "rtcoord sim examples/localisation.xml" to "simulate the paper's system; the first line says where its naming service is",
         "rtcoord -n 127.0.0.1:PORT run examples/localisation.coord.kts" to "then, in another shell, run a coordinator on it",
         "echo 'break laser0' | rtcoord sim --port 2809 nav.xml" to "a simulated system on the usual naming port, its laser broken",

@@ -202,7 +202,7 @@ class CliJarIT {
         val launcher = Files.createDirectories(tree.resolve("cli/src/dist/bin")).resolve("rtcoord")
         Files.copy(root.resolve("cli/src/dist/bin/rtcoord"), launcher)
         Files.writeString(tree.resolve("pom.xml"), "")
-        listOf("idl", "runtime", "core", "dsl", "examples").forEach { Files.createDirectories(tree.resolve(it)) }
+        listOf("idl", "datatypes", "runtime", "core", "dsl", "sim", "examples").forEach { Files.createDirectories(tree.resolve(it)) }
         Files.writeString(tree.resolve("examples/localisation.coord.kts"), "")
         val target = Files.createDirectories(tree.resolve("cli/target"))
         Files.createSymbolicLink(target.resolve("lib"), jar.resolveSibling("lib"))

@@ -1,7 +1,13 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl
 
 import org.rtcoord.EventOptions
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.internal.DeclaredGuard
+import org.rtcoord.dsl.internal.Selectors
+import org.rtcoord.dsl.script.ScriptSource
 import java.nio.file.Path
 import java.nio.file.Paths
 import kotlin.time.Duration
@@ -44,8 +50,12 @@ public open class Coordination @JvmOverloads constructor(
         nameServers += addresses
     }
 
-    /** A component: a full path, a name found on any name server, or (for rules) a glob pattern. */
-    public fun component(name: String): ComponentRef = ComponentRef(name)
+    /**
+     * A component: a full path, a name found on any name server, or (for rules) a glob pattern; with
+     * [type], every component of that type whose name matches (`component(type = "laser")`: every laser,
+     * those that appear later included), as a glob covers them.
+     */
+    public fun component(name: String = "*", type: String? = null): ComponentRef = ComponentRef(Selectors.of(name, type))
 
     /** A port, as `component:port`. */
     public fun port(path: String): PortRef = portRef(path)
@@ -117,12 +127,22 @@ public open class Coordination @JvmOverloads constructor(
         Supervision(components.toList()).apply(configure).also { supervisions += it }
 
     /**
-     * What the script declared, one line per rule, timer and supervisor, then each machine's modes,
-     * indented by nesting: what `check` shows and tools can draw.
+     * What the script declared, one line per rule (with its guards' code, read from the script), timer
+     * and supervisor, then each machine's modes, indented by nesting: what `check` shows and tools can draw.
      */
     public val description: List<String>
-        get() = rules.map { "on ${it.description}" } + dataRules.map { "on ${it.description}" } + timers.map { it.description } + stopActions.map { "on stop" } + supervisions.map { it.description } +
+        get() = rules.map { "on ${it.description}${guardsOf(it)}" } + dataRules.map { "on ${it.description}" } + timers.map { it.description } + stopActions.map { "on stop" } + supervisions.map { it.description } +
             machineList.flatMap { it.description }
+
+    /** Each guard of [rule] as the script writes it, ` where { ... }`; a guard declared in code, or out of the script's reach, as ` where { ... }` literally. */
+    private fun guardsOf(rule: Rule<*>): String {
+        if (rule.guards.isEmpty()) return ""
+        val source = ScriptSource.read(directory.resolve(name))
+        return rule.guards.joinToString("") { guard ->
+            val code = (guard as? DeclaredGuard)?.line?.let { source?.block(it, "where") }
+            " where { ${code ?: "..."} }"
+        }
+    }
 
     internal val dataRules = mutableListOf<DataRule>()
 

@@ -1,5 +1,6 @@
 package org.rtcoord.dsl
 
+import org.rtcoord.dsl.internal.Selectors
 import java.nio.file.Path
 import kotlin.time.Duration
 
@@ -70,8 +71,8 @@ public class ModeBuilder internal constructor(internal val name: String, private
         (network ?: NetworkBuilder(directory::profile).also { network = it }).declare()
     }
 
-    /** A component, by name or path. */
-    public fun component(name: String): ComponentRef = ComponentRef(name)
+    /** A component, by name or path; for a transition's trigger, a glob, or with [type] every component of that type, as for rules. */
+    public fun component(name: String = "*", type: String? = null): ComponentRef = ComponentRef(Selectors.of(name, type))
 
     /** A port, as `component:port`. */
     public fun port(path: String): PortRef = portRef(path)

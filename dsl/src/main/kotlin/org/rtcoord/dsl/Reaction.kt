@@ -12,6 +12,7 @@ import org.rtcoord.dsl.internal.ActionJournal
 import org.rtcoord.dsl.internal.BestEffort
 import org.rtcoord.dsl.internal.Engine
 import org.rtcoord.dsl.internal.ScriptCallSite
+import org.rtcoord.dsl.internal.Selectors
 import org.rtcoord.dsl.internal.Undo
 import org.rtcoord.dsl.internal.catchFailure
 import org.rtcoord.profile.ProfileDifference
@@ -45,18 +46,18 @@ public class Reaction internal constructor(
         get() = (event?.source as? ComponentNode)?.let { engine.reference(it) }
             ?: throw IllegalStateException("this reaction has no source component (it did not come from a component event)")
 
-    /** A component, by name, path or pattern. */
-    public fun component(name: String): ComponentRef = ComponentRef(name)
+    /** A component, by name, path or pattern; with [type], the one component of that type whose name matches. */
+    public fun component(name: String = "*", type: String? = null): ComponentRef = ComponentRef(Selectors.of(name, type))
 
     /**
      * Every component [pattern] names now: a glob such as `*_localise?.rtc` (a plain name gets `.rtc`),
      * a name or a path, each component once. For acting on all of them:
      * `components("*_localise?").forEach { it.deactivate() }`. Empty when none matches a glob; a name or
-     * path that names nothing fails.
+     * path that names nothing fails. With [type], those of that type: `components(type = "laser")`.
      */
-    public suspend fun components(pattern: String): List<ComponentRef> {
+    public suspend fun components(pattern: String = "*", type: String? = null): List<ComponentRef> {
         ScriptCallSite.mark()
-        return engine.identities.nodes(pattern).map(engine::reference)
+        return engine.identities.nodes(Selectors.of(pattern, type)).map(engine::reference)
     }
 
     /** A port, as `component:port`. */

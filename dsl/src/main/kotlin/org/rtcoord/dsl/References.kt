@@ -11,12 +11,13 @@ import org.rtcoord.PortSnapshot
 import org.rtcoord.RtcPath
 import org.rtcoord.TransitionOutcome
 import org.rtcoord.dsl.internal.Engine
+import org.rtcoord.dsl.internal.Selectors
 import org.rtcoord.dsl.internal.Undo
 import kotlin.time.Duration
 
 /**
  * A component named in a script: a full path, a name searched on every name server, or a glob pattern
- * (`*_localise?.rtc`, rules only). A plain selector: the running coordinator resolves it when it is
+ * (`*_localise?.rtc`) or a type (`component(type = "laser")`, selector `* type=laser`), rules only. A plain selector: the running coordinator resolves it when it is
  * used, and again after the component is re-created, so it never pins one CORBA reference for life. Its
  * actions run in a running coordinator's handlers; they wait for their effect and log what they do.
  */
@@ -25,8 +26,8 @@ public class ComponentRef internal constructor(
     /** What the script wrote. */
     public val selector: String,
 ) {
-    /** Whether the selector is a pattern that may match several components. */
-    public val isPattern: Boolean get() = selector.any { it == '*' || it == '?' }
+    /** Whether the selector is a pattern that may match several components: a glob, or a type. */
+    public val isPattern: Boolean get() = Selectors.isPattern(selector)
 
     internal suspend fun node(): ComponentNode = Engine.current().component(selector)
 

@@ -18,6 +18,7 @@ import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
+import org.rtcoord.dsl.internal.DeclaredGuard
 import kotlin.time.Duration
 
 /**
@@ -41,7 +42,7 @@ public class ComponentTriggers internal constructor(
      * The guard reads the system when the handler is about to run, not as it was when the event
      * happened (see [Guard]); to act on the event's own facts, read the event.
      */
-    public fun where(guard: Guard): ComponentTriggers = ComponentTriggers(owner, target, guards + guard)
+    public fun where(guard: Guard): ComponentTriggers = ComponentTriggers(owner, target, guards + DeclaredGuard.of(guard))
 
     /**
      * When the component enters [state] (in any execution context). Edge-triggered by default: a
@@ -122,7 +123,7 @@ public class ComponentTriggers internal constructor(
 @RtcDsl
 public class PortTriggers internal constructor(private val owner: Coordination, private val target: PortRef, private val guards: List<Guard>) {
     /** Narrows the rule to events for which [guard] holds, read when the handler is about to run (see [Guard]). */
-    public fun where(guard: Guard): PortTriggers = PortTriggers(owner, target, guards + guard)
+    public fun where(guard: Guard): PortTriggers = PortTriggers(owner, target, guards + DeclaredGuard.of(guard))
 
     /** When the port gets a connection. */
     public fun connected(handler: suspend Reaction.(PortConnected) -> Unit): Unit = owner.add(EventPatterns.connected(target).rule(guards, handler))
@@ -169,7 +170,7 @@ public class PortTriggers internal constructor(private val owner: Coordination, 
 @RtcDsl
 public class ManagerTriggers internal constructor(private val owner: Coordination, private val target: ManagerRef, private val guards: List<Guard>) {
     /** Narrows the rule to events for which [guard] holds, read when the handler is about to run (see [Guard]). */
-    public fun where(guard: Guard): ManagerTriggers = ManagerTriggers(owner, target, guards + guard)
+    public fun where(guard: Guard): ManagerTriggers = ManagerTriggers(owner, target, guards + DeclaredGuard.of(guard))
 
     /** When the manager (or one of its slaves) creates a component. */
     public fun created(handler: suspend Reaction.(instanceName: String) -> Unit): Unit =
@@ -193,7 +194,7 @@ public class ManagerTriggers internal constructor(private val owner: Coordinatio
 @RtcDsl
 public class ContextTriggers internal constructor(private val owner: Coordination, private val target: ContextRef, private val guards: List<Guard>) {
     /** Narrows the rule to events for which [guard] holds, read when the handler is about to run (see [Guard]). */
-    public fun where(guard: Guard): ContextTriggers = ContextTriggers(owner, target, guards + guard)
+    public fun where(guard: Guard): ContextTriggers = ContextTriggers(owner, target, guards + DeclaredGuard.of(guard))
 
     /** When a binding appears in the context. */
     public fun appeared(handler: suspend Reaction.(Node) -> Unit): Unit = owner.add(EventPatterns.appeared(target).rule(guards) { handler(it.child) })

@@ -189,6 +189,21 @@ class CoordinatorTest : CoordinatedSystem() {
     }
 
     @Test
+    fun `a rule on a type covers the components of that type alone, those created after the start included`(): Unit = runBlocking {
+        val failed = Collections.synchronizedList(mutableListOf<String>())
+        coordinator { on(component(type = "relay")).state(ERROR) { event -> failed += event.source.name } }.use { coordinator ->
+            coordinator.start()
+            val relay = system.runtime.create(Scenarios.relay, "watched0")
+            val laser = system.runtime.create(Scenarios.laser, "other0")
+            await("the rule to cover watched0") { log.any { it.endsWith("now covers ${path("watched0.rtc")}") } }
+            listOf(laser, relay).forEach { it.activate(); it.fail() }
+            await("the rule to fire for the relay") { failed == listOf("watched0.rtc") }
+            assertTrue(log.none { it.endsWith("now covers ${path("other0.rtc")}") }, "a laser is no relay: $log")
+            assertEquals(0, coordinator.failures, log.toString())
+        }
+    }
+
+    @Test
     fun `a glob rule covers components created after the start, and with includeCurrent one created already in ERROR`(): Unit = runBlocking {
         val edge = Collections.synchronizedList(mutableListOf<String>())
         val level = Collections.synchronizedList(mutableListOf<String>())

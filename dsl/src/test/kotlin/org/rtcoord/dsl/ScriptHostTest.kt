@@ -41,7 +41,7 @@ class ScriptHostTest {
         )
         val coordination = host.load(file, listOf("gyro0.rtc"), TreeConfig(callTimeout = kotlin.time.Duration.parse("2s")))
         assertEquals(
-            listOf("on gyro0.rtc enters ERROR", "on gyro0.rtc:gyro disconnects", "on laser_localise0.rtc parameter gain changes", "every 2s"),
+            listOf("on gyro0.rtc enters ERROR", "on gyro0.rtc:gyro disconnects", "on laser_localise0.rtc parameter gain changes where { event -> event is StateChanged }", "every 2s"),
             coordination.description,
         )
         assertEquals(listOf("gyro0.rtc"), coordination.args)
@@ -120,7 +120,7 @@ class ScriptHostTest {
     fun `the type errors newcomers meet first say what to write`(): Unit = runBlocking {
         val timer = script("timer.coord.kts", "every(5) { log(\"tick\") }")
         assertEquals(
-            listOf("$timer:1:7: Argument type mismatch: actual type is 'Int', but 'Duration' was expected (hint: a duration has a unit: 5.seconds, 500.milliseconds or 2.minutes)"),
+            listOf("$timer:1:7: Argument type mismatch: actual type is 'Int', but 'Duration' was expected (hint: a duration has a unit: write 5.seconds (or 5.milliseconds, 5.minutes))"),
             host.check(timer),
         )
         val intensity = script("intensity.coord.kts", "supervise(component(\"odometry0\")) {\n    maxRestarts = 3\n}")

@@ -3,6 +3,8 @@ package org.rtcoord.cli.serve
 import java.io.IOException
 import java.nio.file.Files
 import java.nio.file.Path
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 
 /**
  * A recorded run, as [LiveRecorder] writes it and `serve --replay` plays it: JSON lines
@@ -12,6 +14,9 @@ internal class Recording private constructor(private val lines: List<String>) {
     /** The recording as one JSON array, which the page replays. */
     fun toJson(): String = lines.joinToString(",", "[", "]")
 
+    /** How long the recorded run lasts: from its snapshot to its last line. */
+    val length: Duration get() = (at(lines.last()) - at(lines.first())).milliseconds
+
     /** The page's state at the start: the snapshot's data. */
     fun snapshot(): String = lines.first().substringAfter(DATA).removeSuffix("}")
 
@@ -19,6 +24,8 @@ internal class Recording private constructor(private val lines: List<String>) {
         private val KINDS = setOf("snapshot", "network", "coordinator", "event")
         private val LINE = Regex("""^\{"kind":"([a-z]+)","at":(\d+),"data":[\[{].*}$""")
         private const val DATA = "\"data\":"
+
+        private fun at(line: String): Long = LINE.find(line)?.groupValues?.get(2)?.toLong() ?: 0
 
         /** One line of a recording: [kind] and the page's [json] data, at [at] (epoch milliseconds). */
         fun line(kind: String, at: Long, json: String): String = "{\"kind\":\"$kind\",\"at\":$at,$DATA$json}"

@@ -19,7 +19,9 @@ function startReplay(recording) {
   document.getElementById('replay-play').addEventListener('click', () => (view.replay.playing ? stopPlaying() : play()));
   document.getElementById('replay-speed').addEventListener('change', event => { view.replay.speed = Number(event.target.value); });
   document.getElementById('replay').hidden = false;
-  seek(start);
+  // `?at=12.5` opens the recording 12.5 s after its start (`serve --replay FILE --at 12.5s`).
+  const at = Number(new URLSearchParams(location.search).get('at'));
+  seek(Number.isFinite(at) && at > 0 ? Math.min(view.replay.end, start + Math.round(at * 1000)) : start);
 }
 
 /**

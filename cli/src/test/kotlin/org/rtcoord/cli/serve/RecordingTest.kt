@@ -6,10 +6,13 @@ import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.assertThrows
 import org.junit.jupiter.api.io.TempDir
 import org.rtcoord.cli.Localisation
+import org.rtcoord.cli.failure
 import org.rtcoord.cli.ok
 import org.rtcoord.cli.runRtcoord
+import org.rtcoord.cli.usageError
 import java.nio.file.Files
 import java.nio.file.Path
+import kotlin.time.Duration.Companion.milliseconds
 
 /** `rtcoord record`, and reading a recording: what serve --replay accepts, and the one line that says why it refuses the rest. */
 class RecordingTest {
@@ -29,6 +32,15 @@ class RecordingTest {
         val recording = Recording.read(file)
         assertEquals("""[{"kind":"snapshot","at":1,"data":{"network":{}}},{"kind":"event","at":2,"data":{"seq":1}}]""", recording.toJson())
         assertEquals("""{"network":{}}""", recording.snapshot())
+        assertEquals(1.milliseconds, recording.length)
+    }
+
+    @Test
+    fun `serve --at picks a moment of a replayed recording, one within it`() {
+        val file = directory.resolve("short.jsonl")
+        Files.write(file, listOf(Recording.line("snapshot", 1_000, "{\"network\":{}}"), Recording.line("event", 3_500, "{\"seq\":1}")))
+        assertEquals("rtcoord: $file lasts 2.5s: it has no moment 12.5s after its start", runRtcoord("serve", "--replay", file.toString(), "--at", "12.5s").failure())
+        assertTrue("--at is a moment of a recording" in runRtcoord("serve", "--at", "1s").usageError())
     }
 
     @Test

@@ -57,6 +57,10 @@ class ServeReplayTest {
                 browser.evaluate("seek(rtcoord.replay.start)")
                 assertEquals(started, DrawnSystem.of(browser).states, "the states drawn after going back to the start")
                 assertEquals("replay", browser.evaluate("document.getElementById('connection').textContent").jsonPrimitive.content)
+                // serve --replay --at: the page opens at that moment.
+                browser.navigate(service.url + "?at=" + Recording.read(file).length.inWholeMilliseconds / 1000.0)
+                browser.await("the replay loaded at its end", expression = "rtcoord.replay !== null && rtcoord.replay.at === rtcoord.replay.end")
+                assertEquals(recorded, DrawnSystem.of(browser).states, "the states drawn when the page opens at the end")
             }
         }
     }

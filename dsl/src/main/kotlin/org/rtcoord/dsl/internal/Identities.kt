@@ -135,11 +135,26 @@ internal class Identities(
             .map { it as ComponentNode }
             .fold(emptyList()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
 
-    /** Whether a node's name matches [pattern]; a pattern without a kind (`laser*`) is of components (`laser*.rtc`). */
-    fun globOf(pattern: String): suspend (Node) -> Boolean = NodeFilters.name(if ('.' in pattern) pattern else "$pattern.rtc")
+    /**
+     * Whether a node matches [pattern]: its name the glob (a glob without a kind, `laser*`, is of components,
+     * `laser*.rtc`), and for a typed selector its type, as its profile says it.
+     */
+    fun globOf(pattern: String): suspend (Node) -> Boolean {
+        val glob = Selectors.name(pattern)
+        val named = NodeFilters.name(if ('.' in glob) glob else "$glob.rtc")
+        val type = Selectors.type(pattern) ?: return named
+        return { node -> named(node) && (node as? ComponentNode)?.let { typeOf(it) } == type }
+    }
+
+    /** [node]'s type name; null when it cannot be read (gone as it came). */
+    private suspend fun typeOf(node: ComponentNode): String? = try {
+        node.snapshot().typeName
+    } catch (e: RtcException) {
+        null
+    }
 
     private companion object {
-        fun isPattern(selector: String) = selector.any { it == '*' || it == '?' }
+        fun isPattern(selector: String) = Selectors.isPattern(selector)
     }
 }
 

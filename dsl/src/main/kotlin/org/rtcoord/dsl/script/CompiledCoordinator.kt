@@ -1,5 +1,8 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl.script
 
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
 import java.io.IOException
@@ -79,7 +82,7 @@ public object CompiledCoordinator {
         return try {
             constructor.newInstance(args.toTypedArray(), host, jar.toAbsolutePath().parent, name) as Coordination
         } catch (e: InvocationTargetException) {
-            throw ScriptFailure(listOf(ScriptErrors.thrown(name, e.cause ?: e)))
+            throw ScriptFailure(listOf(ScriptProblems.thrown(name, e.cause ?: e)))
         }
     }
 

@@ -36,7 +36,7 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     /** Compiles [script]; returns its errors (none when it compiles). */
     public suspend fun check(script: Path): List<String> = when (val result = compile(script)) {
         is ResultWithDiagnostics.Success -> emptyList()
-        is ResultWithDiagnostics.Failure -> errors(script, result.reports)
+        is ResultWithDiagnostics.Failure -> ScriptProblems.of(script, result.reports)
     }
 
     /**
@@ -49,16 +49,16 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
         if (CompiledCoordinator.isCompiled(script)) return CompiledCoordinator.load(script, args, host)
         val compiled = when (val result = compile(script)) {
             is ResultWithDiagnostics.Success -> result.value
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
         }
         val evaluation = ScriptEvaluationConfiguration {
             constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent, script.fileName.toString())
             jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
         }
         return when (val result = evaluator(compiled, evaluation)) {
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
             is ResultWithDiagnostics.Success -> when (val value = result.value.returnValue) {
-                is ResultValue.Error -> throw ScriptFailure(listOf(ScriptErrors.thrown(script.toString(), value.error)))
+                is ResultValue.Error -> throw ScriptFailure(listOf(ScriptProblems.thrown(script.toString(), value.error)))
                 else -> value.scriptInstance as? Coordination ?: throw ScriptFailure(listOf("${script.fileName}:1:1: the script did not produce a coordinator"))
             }
         }
@@ -72,7 +72,7 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     public suspend fun compile(script: Path, jar: Path) {
         val compiled = when (val result = compile(script, by = fresh)) {
             is ResultWithDiagnostics.Success -> result.value
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(script, result.reports))
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
         }
         CompiledCoordinatorJar.write(compiled, Files.readString(script), script.fileName.toString(), jar)
     }
@@ -81,12 +81,6 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
         if (!Files.isRegularFile(script)) return ResultWithDiagnostics.Failure(ScriptDiagnostic(ScriptDiagnostic.unspecifiedError, "no such file", sourcePath = script.toString()))
         return by(script.toFile().toScriptSource(), compilation)
     }
-
-    private fun errors(script: Path, reports: List<ScriptDiagnostic>): List<String> =
-        reports.filter { it.severity >= ScriptDiagnostic.Severity.ERROR }.map { report ->
-            val start = report.location?.start
-            "${report.sourcePath ?: script}:${start?.line ?: 1}:${start?.col ?: 1}: ${report.exception?.let { ScriptErrors.message(it) } ?: CompileHints.withHint(report.message)}"
-        }.ifEmpty { listOf("$script:1:1: compilation failed") }
 
     public companion object {
         /**

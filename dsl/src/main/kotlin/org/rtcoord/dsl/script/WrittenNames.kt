@@ -40,7 +40,8 @@ internal object WrittenNames {
                 found += WrittenName(kind, name, argument.text, line, column)
             }
             when (word) {
-                "component", "child" -> arguments.firstOrNull()?.let { if (!member) use(NameKind.COMPONENT, it) }
+                // component(type = "laser") names a type, which covers any number of components, as a glob does.
+                "component", "child" -> arguments.firstOrNull()?.takeIf { it.named == null || it.named == "name" }?.let { if (!member) use(NameKind.COMPONENT, it) }
                 "port" -> arguments.firstOrNull()?.let { argument ->
                     if (!member) use(NameKind.PORT, argument)
                     else {
@@ -70,9 +71,10 @@ internal object WrittenNames {
     /** A port given as `port(...)`, `x.port(...)` or another call is read where that call is written. */
     private fun String.isCall(): Boolean = trimEnd().endsWith(")")
 
-    private class Argument(val text: String, val offset: Int, val literal: String?)
+    /** One argument of a call: its [text] (after `name =` when [named]), where it starts, and the string it is, if a literal. */
+    private class Argument(val text: String, val offset: Int, val literal: String?, val named: String? = null)
 
-    private fun argument(text: String, offset: Int): Argument = Argument(text, offset, literal.find(text)?.groupValues?.get(1)?.let(::unescape))
+    private fun argument(text: String, offset: Int, named: String?): Argument = Argument(text, offset, literal.find(text)?.groupValues?.get(1)?.let(::unescape), named)
 
     /** The arguments of the call whose `(` ends just before [start], split at its top-level commas; null when it does not close. */
     private fun arguments(code: String, start: Int): List<Argument>? {
@@ -85,8 +87,13 @@ internal object WrittenNames {
             val lead = raw.length - raw.trimStart().length
             var text = raw.trim()
             var offset = from + lead
-            namedArgument.find(text)?.let { named -> offset += named.value.length; text = text.substring(named.value.length) }
-            if (text.isNotEmpty()) arguments += argument(text, offset)
+            var name: String? = null
+            namedArgument.find(text)?.let { named ->
+                offset += named.value.length
+                name = named.value.substringBefore('=').trim()
+                text = text.substring(named.value.length)
+            }
+            if (text.isNotEmpty()) arguments += argument(text, offset, name)
         }
         while (i < code.length) {
             when (code[i]) {

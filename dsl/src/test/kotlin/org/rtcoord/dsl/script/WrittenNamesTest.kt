@@ -58,4 +58,9 @@ class WrittenNamesTest {
             read(text),
         )
     }
+
+    @Test
+    fun `a component type is no name, and a glob with a type names the glob`() {
+        assertEquals(listOf("2:11 COMPONENT laser*"), read("on(component(type = \"laser\")).state(ERROR) { }\ncomponent(\"laser*\", type = \"laser\")"))
+    }
 }

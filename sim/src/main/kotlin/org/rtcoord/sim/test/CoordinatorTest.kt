@@ -1,131 +1,62 @@
 package org.rtcoord.sim.test
 
-import org.rtcoord.ComponentNode
 import java.nio.file.Path
 import java.nio.file.Paths
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * What a `NAME.test.kts` says: the [system] to simulate, the [coordinator] to run on it, and a timeline
- * of scenario steps ([at]) and expectations ([expect], [expectMode], [expectLog]), taken in the order
- * written, plus [expectNoRestartsOf], checked when the timeline ends. Each step remembers the line of the
- * test file it was written on, which its failure names. File names are relative to [directory].
+ * What a `NAME.test.kts` says: the [system] to simulate, the [coordinator] to run on it, and its
+ * [scenario]s, each run on a fresh system with the coordinator started anew. Steps and invariants
+ * written at the top (see [Timeline]) start every scenario; a file without scenarios is one scenario,
+ * named after the file. File names are relative to [directory].
  */
 public abstract class CoordinatorTest(
     /** The test file's directory. */
     public val directory: Path = Paths.get(""),
     /** The test file's name. */
     public val name: String = "unnamed.test.kts",
-) {
-    internal var systemFile: Path? = null
-    internal var coordinatorFile: Path? = null
+) : Timeline(name) {
+    internal var system: Declared? = null
+    internal var coordinator: Declared? = null
     internal var coordinatorArgs: List<String> = emptyList()
-    internal val idlDirectories = mutableListOf<Path>()
-    internal val steps = mutableListOf<TestStep>()
-    internal val noRestarts = mutableListOf<Pair<String, Int>>()
+    internal val idlDirectories = mutableListOf<Declared>()
+    internal val scenarios = mutableListOf<Scenario>()
+
+    /** A file the test names, resolved against its directory, with the line it is named on. */
+    internal class Declared(val written: String, val path: Path, val line: Int)
 
     /** Simulates the system the RTSProfile [profile] describes (`rtcoord profile save` writes one). */
     public fun system(profile: String) {
-        systemFile = directory.resolve(profile)
+        system = Declared(profile, directory.resolve(profile), line())
     }
 
     /**
      * Reads the IDL files in [directory] for the data types of the system's own, besides OpenRTM-aist's,
-     * as `rtcoord sim --idl` does; call it once per directory.
+     * as `rtcoord sim --idl` does; once per directory.
      */
     public fun idl(directory: String) {
-        idlDirectories.add(this.directory.resolve(directory))
+        idlDirectories += Declared(directory, this.directory.resolve(directory), line())
     }
 
     /** Runs the coordinator script [script] with [args] against the simulated system. */
     public fun coordinator(script: String, vararg args: String) {
-        coordinatorFile = directory.resolve(script)
+        coordinator = Declared(script, directory.resolve(script), line())
         coordinatorArgs = args.toList()
     }
 
-    /** At [time] after the coordinator started (at once if that is past), does what [scenario] says to the system. */
-    public fun at(time: Duration, scenario: Scenario.() -> Unit) {
-        steps += TestStep.At(line(), time, scenario)
-    }
-
-    /** Expects [condition] to hold within [within] from here in the timeline; polled until it does. */
-    public fun expect(within: Duration = DEFAULT_WITHIN, condition: suspend Expectation.() -> Boolean) {
-        steps += TestStep.Expect(line(), within, "the condition", condition)
-    }
-
     /**
-     * Expects the coordinator's mode machine [machine] to be in [mode] within [within]: a path below the
-     * machine (`degraded/odometry`) or one mode's name (`odometry`); a machine in a nested mode is in
-     * each mode that contains it.
+     * A scenario named [name]: the steps at the top of the file, then [steps], on a system and a
+     * coordinator of its own. Each scenario is a test case of its own in reports.
      */
-    public fun expectMode(machine: String, mode: String, within: Duration = DEFAULT_WITHIN) {
-        steps += TestStep.Expect(line(), within, "mode machine $machine in mode $mode") {
-            val active = modeOf(machine)?.removePrefix("$machine/")
-            active != null && (active == mode || active.startsWith("$mode/") || ('/' !in mode && mode in active.split('/')))
-        }
-    }
-
-    /** Expects the coordinator to log a line containing [text] within [within]. */
-    public fun expectLog(text: String, within: Duration = DEFAULT_WITHIN) {
-        steps += TestStep.Expect(line(), within, "a log line containing '$text'") { log.any { text in it } }
-    }
-
-    /** Expects no supervisor of the coordinator to restart [component] (`laser0` or `laser0.rtc`) during the test. */
-    public fun expectNoRestartsOf(component: String) {
-        noRestarts += component.removeSuffix(".rtc") to line()
-    }
-
-    /** The line of the test file the calling step is written on. */
-    private fun line(): Int = Throwable().stackTrace.firstOrNull { it.fileName == name }?.lineNumber ?: 0
-
-    private companion object {
-        val DEFAULT_WITHIN = 5.seconds
+    public fun scenario(name: String, steps: Scenario.() -> Unit) {
+        scenarios += Scenario(name, fileName, line()).apply(steps)
     }
 }
 
-/** One step of a test's timeline, with the line of the test file it was written on. */
-internal sealed class TestStep(val line: Int) {
-    class At(line: Int, val time: Duration, val scenario: Scenario.() -> Unit) : TestStep(line)
-
-    class Expect(line: Int, val within: Duration, val what: String, val condition: suspend Expectation.() -> Boolean) : TestStep(line)
-}
-
-/** What an expectation can look at: the simulated system's components and the coordinator's modes and log. */
-public interface Expectation {
-    /** The component [name] (`odo_localise0` or `odo_localise0.rtc`) in the simulated system; throws when it does not exist (yet). */
-    public suspend fun component(name: String): ComponentNode
-
-    /** The active mode of the coordinator's mode machine [machine], or null before it has one. */
-    public fun modeOf(machine: String): String?
-
-    /** The coordinator's log, one line a message, so far. */
-    public val log: List<String>
-}
-
-/** The faults and actions a scenario step applies to the simulated system, by component name. */
-public interface Scenario {
-    /** The component breaks: it goes to ERROR and every reset fails until [repair]. */
-    public fun breakDown(component: String)
-
-    /** The component's next execution fails: it goes to ERROR; a reset recovers it. */
-    public fun fail(component: String)
-
-    /** Ends [breakDown], [hang] and [freeze]. */
-    public fun repair(component: String)
-
-    /** Its out-ports stop publishing while it stays ACTIVE. */
-    public fun freeze(component: String)
-
-    /** Its `on_execute` never returns, stalling its execution context. */
-    public fun hang(component: String)
-
-    /** The component exits, as rtexit does. */
-    public fun exit(component: String)
-
-    /** The manager's process dies. */
-    public fun killManager()
-
-    /** The naming service restarts with its bindings. */
-    public fun restartNaming()
-}
+/** A named scenario of a test file: its [Timeline] follows the steps written at the top of the file. */
+public class Scenario internal constructor(
+    /** The scenario's name, which reports name its test case by. */
+    public val name: String,
+    fileName: String,
+    /** The line of the test file it is declared on. */
+    internal val declaredAt: Int,
+) : Timeline(fileName)

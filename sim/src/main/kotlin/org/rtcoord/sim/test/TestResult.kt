@@ -1,22 +1,31 @@
 package org.rtcoord.sim.test
 
-import java.nio.file.Path
 import kotlin.time.Duration
 
-/** How one test file went: its failures as `file:line: what`, none when it passed, and the coordinator's log. */
-public class TestResult(
+/**
+ * How one scenario of a test file went: its [failures], none when it passed, the coordinator's [log] and
+ * the scenario's [timeline]. A test file that cannot be run (it does not compile, names a file that is
+ * not there, a mode its coordinator lacks) is one result, named after the file, with those failures.
+ */
+public class TestResult internal constructor(
     /** The test file. */
-    public val file: Path,
-    /** Each failure, `file:line: what`. */
-    public val failures: List<String>,
-    /** How long the test took, simulated system included. */
+    public val file: TestFile,
+    /** The scenario's name; the file's [TestFile.name] for a file without scenarios or that could not be run. */
+    public val scenario: String,
+    /** Why it failed, each where and what; empty when it passed. */
+    public val failures: List<TestFailure>,
+    /** How long it took, the simulated system's start and stop included. */
     public val duration: Duration,
     /** What the coordinator logged, one line a message. */
     public val log: List<String>,
+    /** What happened, in order, with times from the scenario's start. */
+    public val timeline: List<TimelineEntry>,
 ) {
-    /** Whether every expectation held. */
+    /** Whether every expectation held, no invariant broke and no handler failed unexpectedly. */
     public val passed: Boolean get() = failures.isEmpty()
 
-    /** The test's name: its file name without `.test.kts`. */
-    public val name: String get() = file.fileName.toString().removeSuffix(".test.kts")
+    /** The test file's name, then the scenario's when it has scenarios: `a/transient › laser breaks for good`. */
+    public val name: String get() = if (scenario == file.name) file.name else "${file.name} › $scenario"
+
+    override fun toString(): String = "${if (passed) "PASS" else "FAIL"} $name"
 }

@@ -7,11 +7,11 @@ import org.rtcoord.dsl.script.CompiledScripts
 import org.rtcoord.dsl.script.CoordinatorScript
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
+import org.rtcoord.dsl.script.ScriptProblems
 import java.nio.file.Files
 import java.nio.file.Path
 import kotlin.script.experimental.api.ResultValue
 import kotlin.script.experimental.api.ResultWithDiagnostics
-import kotlin.script.experimental.api.ScriptDiagnostic
 import kotlin.script.experimental.api.ScriptEvaluationConfiguration
 import kotlin.script.experimental.api.constructorArgs
 import kotlin.script.experimental.host.toScriptSource
@@ -35,27 +35,18 @@ internal class TestScriptHost(cacheDirectory: Path? = ScriptHost.defaultCacheDir
         if (!Files.isRegularFile(file)) throw ScriptFailure(listOf("$file:1:1: no such file"))
         val compiled = when (val result = compiler(file.toFile().toScriptSource(), compilation)) {
             is ResultWithDiagnostics.Success -> result.value
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(file, result.reports))
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(file, result.reports))
         }
         val evaluation = ScriptEvaluationConfiguration {
             constructorArgs(file.toAbsolutePath().parent, file.fileName.toString())
             jvm { baseClassLoader(TestScriptHost::class.java.classLoader) }
         }
         return when (val result = evaluator(compiled, evaluation)) {
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(errors(file, result.reports))
+            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(file, result.reports))
             is ResultWithDiagnostics.Success -> when (val value = result.value.returnValue) {
-                is ResultValue.Error -> throw ScriptFailure(listOf("$file:${lineIn(file, value.error)}:1: ${value.error.message ?: value.error.javaClass.simpleName}"))
+                is ResultValue.Error -> throw ScriptFailure(listOf(ScriptProblems.thrown(file.toString(), value.error)))
                 else -> value.scriptInstance as? CoordinatorTest ?: throw ScriptFailure(listOf("$file:1:1: the script did not produce a test"))
             }
         }
     }
-
-    private fun errors(file: Path, reports: List<ScriptDiagnostic>): List<String> =
-        reports.filter { it.severity >= ScriptDiagnostic.Severity.ERROR }.map { report ->
-            val start = report.location?.start
-            "$file:${start?.line ?: 1}:${start?.col ?: 1}: ${report.message}"
-        }.ifEmpty { listOf("$file:1:1: compilation failed") }
-
-    private fun lineIn(file: Path, error: Throwable): Int =
-        error.stackTrace.firstOrNull { it.fileName == file.fileName.toString() }?.lineNumber ?: 1
 }

@@ -1,0 +1,39 @@
+package org.rtcoord.sim.test
+
+import org.rtcoord.profile.RtsProfile
+import java.nio.file.Path
+
+/**
+ * A test file loaded and found runnable: the [profile] of its system, its coordinator script, and its
+ * scenarios, each the steps written at the top of the file followed by its own.
+ */
+internal class LoadedTest(
+    val file: TestFile,
+    val source: TestSource,
+    val profile: RtsProfile,
+    /** The system's profile file, as messages show it. */
+    val systemShown: Path,
+    /** Where the test names its system: `file:line:col`. */
+    val systemAt: String,
+    val coordinator: Path,
+    /** The coordinator script, as messages show it. */
+    val coordinatorShown: Path,
+    /** Where the test names its coordinator: `file:line:col`. */
+    val coordinatorAt: String,
+    val args: List<String>,
+    declared: CoordinatorTest,
+) {
+    /** The directories of the IDL files for the system's own data types. */
+    val idlDirectories: List<Path> = declared.idlDirectories.map { it.path }
+
+    /** The scenarios, in the order declared; the file itself as one when it declares none. */
+    val scenarios: List<ScenarioPlan> =
+        if (declared.scenarios.isEmpty()) listOf(ScenarioPlan(this, file.name, declared.steps.toList()))
+        else declared.scenarios.map { ScenarioPlan(this, it.name, declared.steps + it.steps) }
+}
+
+/** One scenario of a [test]: its [name] and its [steps], those at the top of the file first. */
+internal class ScenarioPlan(val test: LoadedTest, val name: String, val steps: List<TestStep>) {
+    /** The texts of the handler failures it expects: a handler failure with none of them fails it. */
+    val expectedHandlerFailures: List<String> = steps.filterIsInstance<TestStep.ExpectHandlerFailure>().map { it.text }
+}
