@@ -11,8 +11,8 @@ public class ComponentType(
     /** Extra configuration sets besides `default`, by id, each overriding some parameter values. */
     public val configurationSets: Map<String, Map<String, String>> = emptyMap(),
     public val behaviour: () -> Behaviour = { Behaviour.Idle },
-    /** The owned periodic execution context's rate in Hz. */
-    public val rate: Double = 100.0,
+    /** The owned periodic execution context's rate in Hz, unless [contexts] says otherwise. */
+    rate: Double = 100.0,
     /** The observer flavours instances accept (both by default, like a component with fsm4rtc preloaded). */
     public val observerFlavours: Set<ObserverFlavour> = ObserverFlavour.values().toSet(),
     public val vendor: String = "rtcoord",
@@ -21,16 +21,22 @@ public class ComponentType(
     public val description: String = "rtcoord fixture component $typeName",
     /** The state machine of an FSM component (OpenRTM-aist 2.0's StaticFSM), which then offers `ExtendedFsmService`; null for others. */
     public val fsm: FsmSpec? = null,
+    /** The execution contexts instances own, handles 0, 1, ... in this order: by default one periodic context at [rate]. */
+    public val contexts: List<ContextSpec> = listOf(ContextSpec(rate)),
 ) {
+    /** The rate of the first owned context, in Hz. */
+    public val rate: Double get() = contexts.first().rate
+
     init {
         require(typeName.isNotBlank()) { "a component type needs a name" }
+        require(contexts.isNotEmpty()) { "$typeName owns no execution context" }
         val duplicate = ports.groupBy { it.name }.filterValues { it.size > 1 }.keys
         require(duplicate.isEmpty()) { "$typeName declares ports $duplicate twice" }
     }
 
     /** A copy of this type that accepts only the observer [flavours] (none: polling only). */
     public fun acceptingObservers(vararg flavours: ObserverFlavour): ComponentType = ComponentType(
-        typeName, ports, parameters, configurationSets, behaviour, rate, flavours.toSet(), vendor, category, version, description, fsm,
+        typeName, ports, parameters, configurationSets, behaviour, rate, flavours.toSet(), vendor, category, version, description, fsm, contexts,
     )
 }
 
