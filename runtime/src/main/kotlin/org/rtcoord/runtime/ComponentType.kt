@@ -8,7 +8,7 @@ public class ComponentType(
     public val typeName: String,
     public val ports: List<PortSpec> = emptyList(),
     public val parameters: List<ParameterSpec> = emptyList(),
-    /** Extra configuration sets besides `default`, by id, each overriding some parameter values. */
+    /** Extra configuration sets besides `default`, by id, each with the values it holds (activated, it sets only those). */
     public val configurationSets: Map<String, Map<String, String>> = emptyMap(),
     public val behaviour: () -> Behaviour = { Behaviour.Idle },
     /** The owned periodic execution context's rate in Hz, unless [contexts] says otherwise. */
