@@ -48,12 +48,36 @@ public sealed class PortSpec(public val name: String) {
     /** A data out-port sending [dataType]. */
     public class DataOut(name: String, public val dataType: DataType) : PortSpec(name)
 
-    /** A service port providing and requiring the named interfaces (`instance name` to `type`). */
-    public class Service(
-        name: String,
-        public val provided: Map<String, String> = emptyMap(),
-        public val required: Map<String, String> = emptyMap(),
-    ) : PortSpec(name)
+    /**
+     * A service port (OpenRTM-aist's `CorbaPort`) with its [interfaces] in the order the component
+     * registered them. A provided interface has no implementation: a call on it is answered with
+     * `NO_IMPLEMENT` ([NoImplementationServant]).
+     */
+    public class Service(name: String, public val interfaces: List<ServiceInterface>) : PortSpec(name) {
+        /** A port providing the [provided] interfaces then requiring the [required] ones (`instance name` to `type`). */
+        @JvmOverloads
+        public constructor(name: String, provided: Map<String, String> = emptyMap(), required: Map<String, String> = emptyMap()) : this(
+            name,
+            provided.map { (instance, type) -> ServiceInterface(instance, type, ServiceInterface.Polarity.PROVIDED) } +
+                required.map { (instance, type) -> ServiceInterface(instance, type, ServiceInterface.Polarity.REQUIRED) },
+        )
+
+        init {
+            val twice = interfaces.groupBy { it.polarity to it.instanceName }.filterValues { it.size > 1 }.keys
+            require(twice.isEmpty()) { "service port $name registers ${twice.joinToString { "${it.first.name.lowercase()} ${it.second}" }} twice" }
+        }
+    }
+}
+
+/** An interface of a service port: [instanceName] of IDL type [typeName] (`SimpleService::MyService`), provided or required. */
+public class ServiceInterface(public val instanceName: String, public val typeName: String, public val polarity: Polarity) {
+    /** `RTC::PortInterfacePolarity`. */
+    public enum class Polarity { PROVIDED, REQUIRED }
+
+    /** OpenRTM-aist's descriptor of it in connector properties: `<type>.<instance>`. */
+    public val descriptor: String get() = "$typeName.$instanceName"
+
+    override fun toString(): String = "${polarity.name.lowercase()} $instanceName ($typeName)"
 }
 
 /** A configuration parameter: its name, default value and the check a new value must pass. */
