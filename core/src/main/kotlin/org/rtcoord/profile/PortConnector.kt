@@ -24,8 +24,9 @@ public class PortConnector @JvmOverloads constructor(
 ) : ValueObject() {
     /**
      * The properties to connect with: the profile's fields as `dataport.*` properties for a data
-     * connector, overridden by the extension properties, without the object references rtshell leaves
-     * out because they belong to the old connection.
+     * connector, overridden by the extension properties, without the object references that belong to
+     * the old connection: those rtshell leaves out and every value that is an IOR, such as the
+     * `port.<type>.<instance>` a service port publishes for each interface it provides.
      */
     public fun connectionProperties(): Map<String, String> = buildMap {
         dataflowType?.let { put("dataport.dataflow_type", it) }
@@ -33,8 +34,8 @@ public class PortConnector @JvmOverloads constructor(
         subscriptionType?.let { put("dataport.subscription_type", it) }
         dataType?.let { put("dataport.data_type", it) }
         pushInterval?.let { put("dataport.push_interval", it.toString()) }
-        putAll(ext.properties)
-        keys.removeAll { it in STALE_REFERENCES || it == COMPONENT_PATH_ID }
+        putAll(withoutReferences(ext.properties))
+        remove(COMPONENT_PATH_ID)
     }
 
     /** This connector with another [connectorId] (empty: one the ports choose when connected). */
@@ -65,9 +66,13 @@ public class PortConnector @JvmOverloads constructor(
     internal companion object {
         /** The property rtshell stores the end's component path in. */
         const val COMPONENT_PATH_ID = "COMPONENT_PATH_ID"
-        val STALE_REFERENCES = setOf(
+        private val STALE_REFERENCES = setOf(
             "dataport.corba_cdr.inport_ior", "dataport.corba_cdr.inport_ref",
             "dataport.corba_cdr.outport_ior", "dataport.corba_cdr.outport_ref",
         )
+
+        /** [properties] without the object references a connection's ports published: they die with it. */
+        fun withoutReferences(properties: Map<String, String>): Map<String, String> =
+            properties.filter { (key, value) -> key !in STALE_REFERENCES && !value.startsWith("IOR:") }
     }
 }
