@@ -4,7 +4,6 @@ import RTC.LifeCycleState
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.junit.jupiter.api.assertThrows
 import org.rtcoord.fixtures.await
 import org.rtcoord.profile.Extension
 import org.rtcoord.runtime.DataType
@@ -70,7 +69,7 @@ class SimulatedSystemTest {
             assertTrue(out.toString().startsWith("killed the manager"), out.toString())
             assertEquals(false, sim.hasLiveManager)
             console.execute("kill-manager")
-            assertEquals("rtcoord sim: kill-manager: the manager was killed already\n", err.toString())
+            assertEquals("rtcoord sim: kill-manager: the manager manager.mgr was killed already\n", err.toString())
             val address = sim.address
             console.execute("restart-naming")
             assertEquals(address, sim.address)
@@ -81,12 +80,17 @@ class SimulatedSystemTest {
     }
 
     @Test
-    fun `a port whose data type is not simulated is refused with its name`() {
+    fun `a component with a port whose data type is not simulated is left out with its name, the rest simulated`() {
         val renamed = org.rtcoord.profile.RtsProfiles.parse(
             org.rtcoord.profile.RtsProfiles.write(profile, org.rtcoord.profile.ProfileFormat.XML).replace("IDL:RTC/TimedDouble:1.0", "IDL:RTC/TimedShort:1.0"),
             org.rtcoord.profile.ProfileFormat.XML,
         )
-        val error = assertThrows<IllegalArgumentException> { SimulatedSystem.start(renamed).close() }
-        assertEquals("gyro0.gyro: data type IDL:RTC/TimedShort:1.0 is not simulated (TimedLong, TimedDouble, TimedDoubleSeq, TimedString are)", error.message)
+        SimulatedSystem.start(renamed).use { sim ->
+            assertEquals(
+                "component gyro0: gyro0.gyro: data type IDL:RTC/TimedShort:1.0 is not simulated (TimedLong, TimedDouble, TimedDoubleSeq, TimedString are): left out",
+                sim.warnings.first(),
+            )
+            assertEquals(listOf("laser0", "odometry0", "laser_localise0"), sim.components.map { it.instanceName })
+        }
     }
 }

@@ -28,5 +28,7 @@ internal class SimScenario(private val system: SimulatedSystem) : Scenario {
 
     override fun killManager() = system.killManager()
 
+    override fun killManager(name: String) = system.killManager(name)
+
     override fun restartNaming() = system.restartNaming()
 }
