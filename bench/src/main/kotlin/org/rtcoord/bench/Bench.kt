@@ -25,6 +25,7 @@ internal class Bench(private val options: BenchOptions, private val installation
                     Benchmark.STARTUP -> StartupBench(options, installation, report).run()
                     Benchmark.PROFILE -> ProfileBench(options, installation, report).run()
                     Benchmark.DATA -> DataBench(options, report).run()
+                    Benchmark.SIMULATION -> SimulationBench(options, installation, report).run()
                 }
             } catch (e: Exception) {
                 report.skipped(benchmark.label, "failed: ${e.message ?: e.javaClass.simpleName}")

@@ -15,6 +15,7 @@ internal enum class Benchmark(val label: String) {
     STARTUP("startup"),
     PROFILE("profile"),
     DATA("data"),
+    SIMULATION("simulation"),
 }
 
 /**
@@ -60,6 +61,10 @@ internal data class BenchOptions(
     val dataWindow: Duration = 10.seconds,
     /** Silences timed at each threshold. */
     val silenceRepetitions: Int = 5,
+    /** Components in the simulated system whose start is timed. */
+    val simulationSize: Int = 200,
+    /** Timed starts of the simulated system, each kind. */
+    val simulationRepetitions: Int = 10,
 ) {
     companion object {
         const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S] [--launcher-jvm]
@@ -67,7 +72,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data
+  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data, simulation
   --seconds S   the monitoring window (default 60, quick 10)
   --launcher-jvm  the benchmarks' JVM takes the options the rtcoord launcher gives its commands (C1 only),
                 not the JDK's defaults (C1 then C2, as a host application embedding the library runs)"""
@@ -119,6 +124,7 @@ in the same run). Results are printed, never stored.
             microIteration = 1.seconds,
             dataWindow = 5.seconds,
             silenceRepetitions = 3,
+            simulationRepetitions = 3,
         )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
@@ -146,6 +152,8 @@ in the same run). Results are printed, never stored.
             scripts = false,
             dataWindow = 1.seconds,
             silenceRepetitions = 1,
+            simulationSize = 10,
+            simulationRepetitions = 1,
         )
 
         /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */
