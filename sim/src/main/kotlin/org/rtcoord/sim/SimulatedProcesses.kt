@@ -27,11 +27,9 @@ internal class SimulatedProcesses private constructor(
     /** Every process, live or killed. */
     val all: List<RuntimeProcess> get() = listOfNotNull(master?.process, loose) + slaveList.map { it.process }
 
-    /** The process that hosts [instanceName] by the topology. */
-    fun processFor(instanceName: String, topology: ManagerTopology): RuntimeProcess = when {
-        master != null && instanceName in topology.masterComponents -> master.process
-        else -> slaveList.firstOrNull { instanceName in it.hosts }?.process ?: checkNotNull(loose) { "no process hosts $instanceName" }
-    }
+    /** The process the profile placed [instanceName] in: its manager's, or the one no manager owns. */
+    fun processFor(instanceName: String): RuntimeProcess =
+        (listOfNotNull(master) + slaveList).firstOrNull { instanceName in it.hosts }?.process ?: checkNotNull(loose) { "no process hosts $instanceName" }
 
     /**
      * Makes the master start a slave when none of its slaves can create a type, as OpenRTM-aist's runs its

@@ -11,7 +11,7 @@ import org.rtcoord.runtime.RuntimeComponent
 
 /**
  * Brings a simulated system's [processes] to what [profile] saved, as `rtcoord profile restore` and
- * rtshell's `rtstart` leave a system: each component created in the process the [topology] gives it,
+ * rtshell's `rtstart` leave a system: each component created in the process its manager was given,
  * bound at its path, its active configuration set as saved (none, if none was), then every connection
  * made with its properties and every component activated in each context it owns. A step that fails is
  * named in [warnings] and the others are taken all the same.
@@ -19,7 +19,6 @@ import org.rtcoord.runtime.RuntimeComponent
 internal class SimulatedStart(
     private val profile: RtsProfile,
     private val types: SimulatedTypes,
-    private val topology: ManagerTopology,
     private val processes: SimulatedProcesses,
     private val warnings: MutableList<String>,
 ) {
@@ -28,7 +27,7 @@ internal class SimulatedStart(
     fun run() {
         for (component in profile.components) {
             val type = types.byInstance[component.instanceName] ?: continue
-            val process = processes.processFor(component.instanceName, topology)
+            val process = processes.processFor(component.instanceName)
             val runtime = process.create(type, component.instanceName, contexts = ManagerTopology.namingPath(component.pathUri).dropLast(1))
             created[component.instanceName] = runtime
             configure(component, runtime)
@@ -64,7 +63,7 @@ internal class SimulatedStart(
             }
             port
         }
-        val orb = processes.processFor(connector.source.instanceName, topology).orb.orb
+        val orb = processes.processFor(connector.source.instanceName).orb.orb
         val properties = connector.connectionProperties().map { (key, value) -> NameValue(key, orb.create_any().apply { insert_string(value) }) }
         val holder = ConnectorProfileHolder(ConnectorProfile(connector.name, connector.connectorId, ports.toTypedArray(), properties.toTypedArray()))
         val result = ports[0].connect(holder)

@@ -139,7 +139,7 @@ public class SimulatedSystem private constructor(
                 if (!profile.ext.properties[ProfileKeys.MANAGER_COMMAND].isNullOrBlank() && processes.master != null) {
                     processes.startSlavesOnDemand(types.creatable.values)
                 }
-                SimulatedStart(profile, types, topology, processes, warnings).run()
+                SimulatedStart(profile, types, processes, warnings).run()
             } catch (e: Exception) {
                 system.close()
                 throw e
