@@ -26,6 +26,7 @@ internal class Bench(private val options: BenchOptions, private val installation
                     Benchmark.PROFILE -> ProfileBench(options, installation, report).run()
                     Benchmark.DATA -> DataBench(options, report).run()
                     Benchmark.TEST -> TestBench(options, installation, report).run()
+                    Benchmark.SIMULATION -> SimulationBench(options, installation, report).run()
                 }
             } catch (e: Exception) {
                 report.skipped(benchmark.label, "failed: ${e.message ?: e.javaClass.simpleName}")

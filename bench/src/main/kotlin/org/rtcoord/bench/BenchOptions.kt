@@ -16,6 +16,7 @@ internal enum class Benchmark(val label: String) {
     PROFILE("profile"),
     DATA("data"),
     TEST("test"),
+    SIMULATION("simulation"),
 }
 
 /**
@@ -65,6 +66,10 @@ internal data class BenchOptions(
     val testRepetitions: Int = 10,
     /** Timed runs of `rtcoord test examples/`. */
     val suiteRepetitions: Int = 3,
+    /** Components in the simulated system whose start is timed. */
+    val simulationSize: Int = 200,
+    /** Timed starts of the simulated system, each kind. */
+    val simulationRepetitions: Int = 10,
 ) {
     companion object {
         const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S] [--launcher-jvm]
@@ -72,7 +77,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data, test
+  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data, test, simulation
   --seconds S   the monitoring window (default 60, quick 10)
   --launcher-jvm  the benchmarks' JVM takes the options the rtcoord launcher gives its commands (C1 only),
                 not the JDK's defaults (C1 then C2, as a host application embedding the library runs)"""
@@ -126,6 +131,7 @@ in the same run). Results are printed, never stored.
             silenceRepetitions = 3,
             testRepetitions = 5,
             suiteRepetitions = 1,
+            simulationRepetitions = 3,
         )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
@@ -155,6 +161,8 @@ in the same run). Results are printed, never stored.
             silenceRepetitions = 1,
             testRepetitions = 1,
             suiteRepetitions = 1,
+            simulationSize = 10,
+            simulationRepetitions = 1,
         )
 
         /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */

@@ -21,7 +21,7 @@ class BenchSmokeTest {
         val sections = listOf(
             "one call and one notification", "discovery, whole process, N=10", "discovery, library in a warm JVM, N=10", "discovery floor",
             "reaction:", "monitoring cost:", "coordinator round trip:", "memory:", "start-up, whole processes", "start-up breakdown",
-            "profile restore, N=10", "data: tap of a TimedDoubleSeq(181)",
+            "profile restore, N=10", "data: tap of a TimedDoubleSeq(181)", "simulation start, N=10",
         )
         assertEquals(emptyList<String>(), sections.filter { section -> printed.lines().none { it.startsWith(section) } }, "missing sections")
         assertEquals(emptyList<String>(), printed.lines().filter { "failed:" in it }, "failed benchmarks")
@@ -29,5 +29,6 @@ class BenchSmokeTest {
         assertTrue(Regex("""rtcoord RtcTree\.create \+ refresh\s+2\s""").containsMatchIn(printed), "no library discovery row")
         assertTrue(Regex("""rtcoord SystemProfiles\.restore in a warm JVM\s+1\s""").containsMatchIn(printed), "no library restore row")
         assertTrue(Regex("""silence noticed after 100 ms\s+1\s""").containsMatchIn(printed), "no silence detection row")
+        assertTrue(Regex("""rtcoord SimulatedSystem\.start in a warm JVM\s+1\s""").containsMatchIn(printed), "no simulation start row")
     }
 }

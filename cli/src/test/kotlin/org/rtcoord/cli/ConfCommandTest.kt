@@ -21,7 +21,7 @@ class ConfCommandTest {
         val sets = "* default\n    fail  0\n    gain  1.0\n  precise\n    fail  0\n    gain  0.5\n"
         assertEquals(sets, runRtcoord("conf", localiser).ok())
         assertEquals(sets, runRtcoord("conf", localiser, "list").ok())
-        assertEquals("  __constraints__\n    fail  0\n    gain  0<x<10\n$sets", runRtcoord("conf", localiser, "list", "--all").ok())
+        assertEquals("  __constraints__\n    gain  0<x<10\n$sets", runRtcoord("conf", localiser, "list", "--all").ok())
         assertEquals("  precise\n    fail  0\n    gain  0.5\n", runRtcoord("conf", localiser, "list", "--set", "precise").ok())
         assertEquals(
             "{\n  \"active\": \"default\",\n  \"sets\": {\n    \"precise\": {\n      \"fail\": \"0\",\n      \"gain\": \"0.5\"\n    }\n  }\n}\n",

@@ -4,6 +4,7 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.runtime.RuntimeProcess
 import java.nio.file.Files
 import java.nio.file.Path
 
@@ -57,6 +58,24 @@ class SimAndTestCommandTest {
         val lines = help.stdout.lines().map { it.trim() }
         for (command in listOf("activate NAME", "fail NAME", "break NAME", "hang NAME", "freeze NAME", "repair NAME", "exit NAME", "kill-manager", "restart-naming", "help")) {
             assertTrue(lines.any { it.startsWith("$command ") }, "a line of its own for $command:\n${help.stdout}")
+        }
+    }
+
+    @Test
+    fun `rtcoord sim --compare finds no difference from the system a profile was saved from, and names each one it finds`(@TempDir directory: Path) {
+        Localisation().use { live ->
+            val saved = directory.resolve("localisation.xml")
+            runRtcoord("profile", "save", "/${live.naming.address}", "-o", saved.toString()).ok()
+            val same = runRtcoord("sim", "--compare", "/${live.naming.address}", saved.toString())
+            assertEquals(0, same.statusCode, same.stderr)
+            assertEquals("no difference from /${live.naming.address}: 4 components, 2 connections, 2 managers compared\n", same.stdout)
+
+            val slower = directory.resolve("slower.xml")
+            Files.writeString(slower, Files.readString(saved).replaceFirst("rts:rate=\"100.0\"", "rts:rate=\"25.0\""))
+            val differs = runRtcoord("sim", "--compare", "/${live.naming.address}", slower.toString())
+            assertEquals(1, differs.statusCode)
+            assertEquals("/${RuntimeProcess.hostContext}/laser0.rtc: execution context 0: rate: 100.0 live, 25.0 simulated\n", differs.stdout)
+            assertTrue(differs.stderr.trimEnd().endsWith("rtcoord: $slower: 1 difference from /${live.naming.address} (4 components, 2 connections, 2 managers compared)"), differs.stderr)
         }
     }
 

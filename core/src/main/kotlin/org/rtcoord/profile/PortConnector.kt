@@ -4,7 +4,7 @@ import org.jspecify.annotations.Nullable
 import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 import org.rtcoord.profile.internal.COMPONENT_PATH_ID
-import org.rtcoord.profile.internal.STALE_REFERENCES
+import org.rtcoord.profile.internal.withoutReferences
 
 /**
  * A connection between two ports. Data port connectors carry the data-flow fields; service port
@@ -26,8 +26,9 @@ public class PortConnector @JvmOverloads constructor(
 ) : ValueObject() {
     /**
      * The properties to connect with: the profile's fields as `dataport.*` properties for a data
-     * connector, overridden by the extension properties, without the object references rtshell leaves
-     * out because they belong to the old connection.
+     * connector, overridden by the extension properties, without the object references that belong to
+     * the old connection: those rtshell leaves out and every value that is an IOR, such as the
+     * `port.<type>.<instance>` a service port publishes for each interface it provides.
      */
     public fun connectionProperties(): Map<String, String> = buildMap {
         dataflowType?.let { put("dataport.dataflow_type", it) }
@@ -35,8 +36,8 @@ public class PortConnector @JvmOverloads constructor(
         subscriptionType?.let { put("dataport.subscription_type", it) }
         dataType?.let { put("dataport.data_type", it) }
         pushInterval?.let { put("dataport.push_interval", it.toString()) }
-        putAll(ext.properties)
-        keys.removeAll { it in STALE_REFERENCES || it == COMPONENT_PATH_ID }
+        putAll(withoutReferences(ext.properties))
+        remove(COMPONENT_PATH_ID)
     }
 
     /** This connector with another [connectorId] (empty: one the ports choose when connected). */

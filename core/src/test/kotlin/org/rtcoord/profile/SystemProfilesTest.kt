@@ -41,7 +41,21 @@ class SystemProfilesTest {
         assertEquals(setOf("laser0.laser" to "laser_localise0.laser", "odometry0.odo" to "laser_localise0.odo"), all.dataPortConnectors.map { it.source.portName to it.target.portName }.toSet())
         val localiser = all.components.single { it.instanceName == "laser_localise0" }
         assertEquals("0.5", localiser.configurationSet("precise")!!.data["gain"])
-        assertTrue(localiser.configurationSets.none { it.id == "__constraints__" })
+        // Hidden sets too, as rtcryo saves them: a simulator reads the constraints there.
+        assertEquals(mapOf("gain" to "0<x<10"), localiser.configurationSet("__constraints__")!!.data)
+        assertEquals(listOf("PeriodicExecutionContext"), localiser.executionContexts.map { it.ext.properties["type"] })
+        // The managers: the master, its slave, what the slave hosts, has loaded and can load.
+        assertEquals(
+            mapOf(
+                "rtcoord.manager.types" to "laser,gyro,odometry,laser_localise,odo_localise",
+                "rtcoord.slave.1.name" to "manager_slave",
+                "rtcoord.slave.1.components" to "laser0,gyro0,odometry0,laser_localise0",
+                "rtcoord.slave.1.types" to "laser,gyro,odometry,laser_localise",
+                "rtcoord.slave.1.loadable" to "odo_localise",
+            ),
+            all.ext.properties.filterKeys { it != "rtcoord.manager" },
+        )
+        assertEquals(system.path("manager.mgr").removePrefix("/"), all.ext.properties["rtcoord.manager"])
         assertEquals(system.path("laser_localise0.rtc").removePrefix("/"), localiser.pathUri)
         assertTrue(all.dataPortConnectors.all { it.dataType != null && it.ext.properties["dataport.dataflow_type"] == "push" })
         assertEquals(emptyList<ProfileDifference>(), profiles.check(all))

@@ -109,6 +109,14 @@ class OpenRtmCppTest {
         }
 
     @Test
+    fun `fidelity - the real system saved and simulated, with a second slave, service ports and constraints, shows no difference`(): Unit =
+        OpenRtmSimulationScenarios.fidelity(OpenRtmCpp.named(OpenRtmCppBuild.DEFAULT), ::startExtras)
+
+    @Test
+    fun `paper's test on the copy - localisation test kts passes on the simulation of the saved real system`(): Unit =
+        OpenRtmSimulationScenarios.paperTestOnCopy(OpenRtmCpp.named(OpenRtmCppBuild.DEFAULT))
+
+    @Test
     fun `StaticFsm Microwave - the FSM4RTC observer tells each state the machine enters`(): Unit = runBlocking {
         OpenRtmSystem.start(OpenRtmCpp.named(OpenRtmCppBuild.DEFAULT)).use { system ->
             startMicrowave(system)
@@ -152,6 +160,24 @@ class OpenRtmCppTest {
             "manager.modules.preload: ${installation.module("fsm_microwave")}",
             "manager.components.precreate: fsm_microwave",
         )
+    }
+
+    /**
+     * Starts a second slave of the master, `extras`, hosting `config_sample0` (a set outside its
+     * constraints) and `probe_server0` and `probe_client0`, whose service ports (interface `probe` of type
+     * `SDOPackage::SDOService`) are connected. All inactive.
+     */
+    private fun startExtras(system: OpenRtmSystem) {
+        val installation = system.installation
+        system.startSlave(
+            "extras",
+            system.directory,
+            installation.loadPath,
+            listOf("config_sample0", "probe_server0", "probe_client0"),
+            "manager.modules.preload: ${listOf("config_sample", "probe_server", "probe_client").joinToString(", ") { installation.module(it) }}",
+            "manager.components.precreate: config_sample, probe_server, probe_client",
+        )
+        runBlocking { system.witness.connect(system.path("probe_server0.rtc:probe"), system.path("probe_client0.rtc:probe")) }
     }
 
     /** Starts `config_sample0` and `slow_stop0`, inactive, in a manager of their own. */

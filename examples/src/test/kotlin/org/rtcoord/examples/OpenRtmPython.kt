@@ -28,6 +28,39 @@ class OpenRtmPython private constructor(private val python: String) : OpenRtmIns
     // A slave started by hand is named `manager` like its master: OpenRTM-aist-Python's default.
     override val slaveLines: List<String> get() = emptyList()
 
+    /** Compiles [idl] into Python stubs in [directory] with the installation's omniidl, as an example's `gen.sh` would. */
+    fun pythonStubs(idl: Path, directory: Path) {
+        val omniidl = Paths.get(python).resolveSibling("omniidl")
+        val process = ProcessBuilder(omniidl.toString(), "-bpython", "-C$directory", idl.toString()).redirectErrorStream(true).start()
+        val output = process.inputStream.bufferedReader().readText()
+        check(process.waitFor() == 0) { "omniidl failed on $idl: $output" }
+    }
+
+    /**
+     * Starts a second slave of [system]'s master, `extras`, hosting OpenRTM-aist-Python's own ConfigSample
+     * (its hidden `__widget__` and `__constraints__` sets, `mode0` and `mode1`) and SimpleService's
+     * `MyServiceProvider` and `MyServiceConsumer`, whose service ports (`MyService`, interface
+     * `myservice0` of type `MyService`) are connected. All inactive.
+     */
+    fun startExtras(system: OpenRtmSystem) {
+        val examples = examples()
+        val stubs = Files.createDirectories(system.directory.resolve("extras"))
+        pythonStubs(examples.resolve("SimpleService/MyService.idl"), stubs)
+        system.startSlave(
+            "extras",
+            stubs,
+            listOf(examples.resolve("ConfigSample"), examples.resolve("SimpleService")),
+            listOf("ConfigSample0", "MyServiceProvider0", "MyServiceConsumer0"),
+            "manager.modules.preload: ConfigSample.py, MyServiceProvider.py, MyServiceConsumer.py",
+            "manager.components.precreate: ConfigSample, MyServiceProvider, MyServiceConsumer",
+            "example.ConfigSample.config_file: ${examples.resolve("ConfigSample/configsample.conf")}",
+            "exec_cxt.periodic.rate: 20",
+        )
+        kotlinx.coroutines.runBlocking {
+            system.witness.connect(system.path("MyServiceProvider0.rtc:MyService"), system.path("MyServiceConsumer0.rtc:MyService"))
+        }
+    }
+
     /** The directory of OpenRTM-aist-Python's own examples in the installation. */
     fun examples(): Path = Paths.get(
         ProcessBuilder(python, "-c", "import os, OpenRTM_aist; print(os.path.dirname(OpenRTM_aist.__file__))").start().inputStream.bufferedReader().readText().trim(),

@@ -19,6 +19,14 @@ class OpenRtmPythonTest {
         OpenRtmScenarios.supervision(OpenRtmPython.named())
 
     @Test
+    fun `fidelity - the real system saved and simulated, with a second slave, service ports and constraints, shows no difference`(): Unit =
+        OpenRtmPython.named().let { installation -> OpenRtmSimulationScenarios.fidelity(installation, installation::startExtras) }
+
+    @Test
+    fun `paper's test on the copy - localisation test kts passes on the simulation of the saved real system`(): Unit =
+        OpenRtmSimulationScenarios.paperTestOnCopy(OpenRtmPython.named())
+
+    @Test
     fun `modes - with a laser that stays broken the system runs on odometry, and on the laser again once it is repaired`(): Unit =
         OpenRtmScenarios.modes(OpenRtmPython.named())
 }

@@ -21,7 +21,8 @@ import kotlin.time.Duration.Companion.seconds
  * none that can create a component, as the implementation's own daemon would.
  */
 class OpenRtmSystem private constructor(val installation: OpenRtmInstallation) : AutoCloseable {
-    private val directory: Path = Files.createTempDirectory("rtcoord-openrtm")
+    /** The system's own directory (configuration files, logs, what a test puts there): deleted on [close]. */
+    val directory: Path = Files.createTempDirectory("rtcoord-openrtm")
     private val omniNames = OmniNames.start()
     private val masterPort = ServerSocket(0, 1, InetAddress.getLoopbackAddress()).use { it.localPort }
     private val managers = mutableListOf<Process>()
@@ -123,6 +124,27 @@ class OpenRtmSystem private constructor(val installation: OpenRtmInstallation) :
         runBlocking {
             awaitValue("${instances.joinToString(" and ")} in naming", 30.seconds) {
                 runBlocking { runCatching { witness.refresh(); instances.forEach { witness.componentNamed("$it.rtc") } }.getOrNull() }
+            }
+        }
+    }
+
+    /**
+     * Starts another slave of the master, [name], in [workingDirectory], loading modules from [loadPath],
+     * with these configuration lines (its modules, its components), and waits until the master lists it
+     * and the components [instances] name are in naming. A C++ slave carries its master's `manager.name`;
+     * its instance name is [name], as a Python slave's is.
+     */
+    fun startSlave(name: String, workingDirectory: Path, loadPath: List<Path>, instances: List<String>, vararg lines: String) {
+        managers += manager(name, workingDirectory, loadPath, "manager.is_master: NO", "manager.name: manager", "manager.instance_name: $name", *lines)
+        runBlocking {
+            awaitValue("$name below the master and ${instances.joinToString(" and ")} in naming", 30.seconds) {
+                runBlocking {
+                    runCatching {
+                        witness.refresh()
+                        instances.forEach { witness.componentNamed("$it.rtc") }
+                        witness.manager(path("manager.mgr")).children().firstOrNull { it.name == name }
+                    }.getOrNull()
+                }
             }
         }
     }

@@ -30,7 +30,7 @@ import kotlin.time.Duration
 
 /**
  * An RT Component implementing `OpenRTM::DataFlowComponent` as OpenRTM-aist components do: profile,
- * ports, one owned periodic execution context (handle 0) plus participating ones (handles from 1000),
+ * ports, the execution contexts its type says it owns (handles 0, 1, ...) plus participating ones (handles from 1000),
  * configuration sets and ComponentObserver support, running its type's [Behaviour].
  *
  * Tests drive faults through it: [fail] (or parameter `fail=1`) makes the next execution fail into
@@ -75,7 +75,10 @@ public class RuntimeComponent internal constructor(
     private val fsm = type.fsm?.let { spec -> RuntimeFsm(spec, observers::raiseFsm, ::nameValue) }
     private var fsmRef: ExtendedFsmService? = null
     private val ports = type.ports.map { RuntimePort(it, this) }
-    private val owned = RuntimeExecutionContext(runtime, this, type.rate)
+    private val ownedContexts = type.contexts.map { RuntimeExecutionContext(runtime, this, it) }
+
+    /** The first owned context, handle 0: the one tools act in by default. */
+    private val owned = ownedContexts.first()
 
     /** This component's object reference. */
     public lateinit var ref: OpenRTM.DataFlowComponent
@@ -91,24 +94,30 @@ public class RuntimeComponent internal constructor(
         configurationRef = ConfigurationHelper.narrow(orb.activate(configuration))
         fsmRef = fsm?.let { ExtendedFsmServiceHelper.narrow(orb.activate(it)) }
         ports.forEach { it.activate(orb) }
-        owned.activate(orb)
-        owned.join(this, 0)
-        owned.start()
+        ownedContexts.forEachIndexed { handle, context ->
+            context.activate(orb)
+            context.join(this, handle)
+            context.start()
+        }
     }
 
-    /** The lifecycle state in the owned execution context. */
+    /** The lifecycle state in the first owned execution context. */
     public val state: LifeCycleState get() = owned.stateOf(this)
 
     /** Whether the component has exited. */
     public val isExited: Boolean get() = exited
 
-    /** Activates the component in its owned execution context, as `rtact` does. */
+    /** Activates the component in its first owned execution context, as `rtact` does. */
     public fun activate(): ReturnCode_t = owned.activate_component(ref)
 
-    /** Deactivates the component in its owned execution context, as `rtdeact` does. */
+    /** Activates the component in each execution context it owns, in handle order; the first answer that is not `RTC_OK`, else `RTC_OK`. */
+    public fun activateEverywhere(): ReturnCode_t =
+        ownedContexts.map { it.activate_component(ref) }.firstOrNull { it != ReturnCode_t.RTC_OK } ?: ReturnCode_t.RTC_OK
+
+    /** Deactivates the component in its first owned execution context, as `rtdeact` does. */
     public fun deactivate(): ReturnCode_t = owned.deactivate_component(ref)
 
-    /** Resets the component in its owned execution context, as `rtreset` does. */
+    /** Resets the component in its first owned execution context, as `rtreset` does. */
     public fun reset(): ReturnCode_t = owned.reset_component(ref)
 
     /** Makes the next execution fail, sending the component to ERROR; a reset clears it. */
@@ -188,8 +197,8 @@ public class RuntimeComponent internal constructor(
     /** Whether the component's execution hangs ([hangExecution]). */
     public val isExecutionHung: Boolean get() = executionHung
 
-    /** Whether its owned context's thread is stuck in a hung execution (once it reached it). */
-    public val isContextStuck: Boolean get() = owned.isStuck
+    /** Whether an owned context's thread is stuck in a hung execution (once it reached it). */
+    public val isContextStuck: Boolean get() = ownedContexts.any { it.isStuck }
 
     /** Makes every call to this component's objects block until [release]; heartbeats stop too. */
     public fun hang(): Unit = gate.close()
@@ -262,11 +271,11 @@ public class RuntimeComponent internal constructor(
     private fun parameterOrNull(name: String): String? = runCatching { configuration.parameter(name) }.getOrNull()
 
     private fun contextOf(handle: Int): RuntimeExecutionContext? =
-        if (handle == 0) owned else synchronized(lock) { participating[handle] }
+        ownedContexts.getOrNull(handle) ?: synchronized(lock) { participating[handle] }
 
     private fun handleOf(ec: ExecutionContext?): Int {
         if (ec == null) return -1
-        if (ec._is_equivalent(owned.ref)) return 0
+        ownedContexts.indexOfFirst { ec._is_equivalent(it.ref) }.takeIf { it >= 0 }?.let { return it }
         return synchronized(lock) { participating.entries.firstOrNull { ec._is_equivalent(it.value.ref) }?.key } ?: -1
     }
 
@@ -294,7 +303,7 @@ public class RuntimeComponent internal constructor(
         "language" to "Kotlin",
         "lang_type" to "compile",
         "instance_name" to instanceName,
-        "exec_cxt.periodic.type" to "PeriodicExecutionContext",
+        "exec_cxt.periodic.type" to owned.typeName,
         "exec_cxt.periodic.rate" to type.rate.toString(),
         "naming.names" to "$instanceName.rtc",
         "sdo.service.consumer.available_services" to type.observerFlavours.joinToString(",") { it.repositoryId },
@@ -326,19 +335,18 @@ public class RuntimeComponent internal constructor(
 
     /** Leaves every execution context and deactivates all objects; called once, by the runtime. */
     internal fun teardown() {
-        owned.shutdown()
-        owned.leave(this)
+        ownedContexts.forEach { it.shutdown(); it.leave(this) }
         synchronized(lock) { participating.values.toList() }.forEach { it.leave(this) }
         ports.forEach { it.disconnect_all(); it.deactivate(orb) }
         observers.close()
-        listOf(configuration, owned, this).forEach(orb::deactivate)
+        (listOf(configuration) + ownedContexts + this).forEach(orb::deactivate)
     }
 
     override fun is_alive(ec: ExecutionContext?): Boolean = !exited && handleOf(ec) >= 0
 
     override fun get_context(handle: Int): ExecutionContext? = contextOf(handle)?.ref
 
-    override fun get_owned_contexts(): Array<ExecutionContext> = arrayOf(owned.ref)
+    override fun get_owned_contexts(): Array<ExecutionContext> = ownedContexts.map { it.ref }.toTypedArray()
 
     override fun get_participating_contexts(): Array<ExecutionContext> =
         synchronized(lock) { participating.values.map { it.ref }.toTypedArray() }
@@ -396,7 +404,7 @@ public class RuntimeComponent internal constructor(
         override fun latest(port: String): Sample? = port(port).latest()
     }
 
-    internal fun ownedContextIf(ec: ExecutionContext): RuntimeExecutionContext? = owned.takeIf { ec._is_equivalent(it.ref) }
+    internal fun ownedContextIf(ec: ExecutionContext): RuntimeExecutionContext? = ownedContexts.firstOrNull { ec._is_equivalent(it.ref) }
 
     internal fun record(transition: StateTransition) {
         transitionLog += transition

@@ -19,7 +19,8 @@ import org.omg.CORBA.portable.ResponseHandler
 /**
  * A component's `SDOPackage::Configuration` with OpenRTM-aist's configuration-set semantics
  * (`SdoConfiguration.py`, `ConfigAdmin.py`): sets of string parameters (`default`, others, hidden
- * `__name__` ones), the observer service profiles, and the component's bound variables.
+ * `__name__` ones, each with exactly the values it was given), the observer service profiles, and the
+ * component's bound variables.
  *
  * Writing a set's values, adding a set or removing one leaves the component with no active set until
  * one is activated (`get_active_configuration_set` raises `NotAvailable`); nothing is checked against
@@ -55,9 +56,9 @@ internal class RuntimeConfiguration(
 
     init {
         sets["default"] = LinkedHashMap(type.parameters.associate { it.name to it.default })
-        for ((id, values) in type.configurationSets) {
-            sets[id] = LinkedHashMap(sets.getValue("default")).apply { putAll(values) }
-        }
+        // A set holds the values it was given and no others, as ConfigAdmin's sets do: activating one
+        // leaves the variables it does not name as they were.
+        for ((id, values) in type.configurationSets) sets[id] = LinkedHashMap(values)
         type.parameters.forEach { applied[it.name] = it.default; variables[it.name] = it.default }
     }
 

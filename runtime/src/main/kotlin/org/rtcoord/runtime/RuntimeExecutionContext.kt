@@ -20,8 +20,8 @@ import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * A periodic execution context: it holds the lifecycle state of each participant and runs their
- * behaviour at its rate. Transitions follow OpenRTM: activate from INACTIVE, deactivate from ACTIVE,
+ * An execution context of the kind [spec] says (reported by `get_kind` and its profile), periodic
+ * whatever its kind: it holds the lifecycle state of each participant and runs their behaviour at its rate. Transitions follow OpenRTM: activate from INACTIVE, deactivate from ACTIVE,
  * reset from ERROR. As in OpenRTM's state machine, a transition's callbacks and the hints they raise come
  * before the new state shows: a state read meanwhile, which never waits for a transition, finds the old
  * one. A failing `on_execute` aborts the component: `on_deactivated` runs (INACTIVE is announced if it
@@ -44,8 +44,11 @@ import kotlin.time.Duration.Companion.milliseconds
 internal class RuntimeExecutionContext(
     private val runtime: RuntimeProcess,
     private val owner: RuntimeComponent,
-    rate: Double,
+    private val spec: ContextSpec,
 ) : ExecutionContextServicePOA() {
+    /** The implementation it stands for, as its profile's `type` property names it. */
+    val typeName: String get() = spec.typeName
+
     private class Participant(val component: RuntimeComponent, val handle: Int) {
         @Volatile var state: LifeCycleState = LifeCycleState.INACTIVE_STATE
     }
@@ -61,19 +64,19 @@ internal class RuntimeExecutionContext(
 
     /** The participants by their reference's identity, looked up without the lock a transition holds. */
     private val byIdentity = ConcurrentHashMap<String, Participant>()
-    private var rate = rate
+    private var rate = spec.rate
 
     /**
-     * The profile's properties: the options OpenRTM-aist creates a periodic context with
+     * The profile's properties: the options OpenRTM-aist creates a context with
      * (`RTObject.getInheritedECOptions` then `exec_cxt.periodic.*`, copied by `ExecutionContextBase.init`),
-     * with its default configuration's values and the rate as the component's `exec_cxt.periodic.rate`
-     * gives it; `set_rate` leaves them as they are, as OpenRTM-aist does.
+     * with its default configuration's values, its implementation's name and the rate as the component's
+     * `exec_cxt.periodic.rate` gives it; `set_rate` leaves them as they are, as OpenRTM-aist does.
      */
     private val properties = linkedMapOf(
         "sync_transition" to "YES",
         "transition_timeout" to "0.5",
-        "type" to "PeriodicExecutionContext",
-        "rate" to rate.toString(),
+        "type" to spec.typeName,
+        "rate" to spec.rate.toString(),
     )
     private var ticker: ScheduledFuture<*>? = null
 
@@ -191,11 +194,11 @@ internal class RuntimeExecutionContext(
     override fun get_component_state(comp: LightweightRTObject?): LifeCycleState =
         participantOf(comp)?.state ?: LifeCycleState.CREATED_STATE
 
-    override fun get_kind(): ExecutionKind = ExecutionKind.PERIODIC
+    override fun get_kind(): ExecutionKind = spec.kind.idl
 
     override fun get_profile(): ExecutionContextProfile = synchronized(lock) {
         ExecutionContextProfile(
-            ExecutionKind.PERIODIC,
+            spec.kind.idl,
             rate,
             owner.ref,
             participants.keys.map { it.ref }.toTypedArray(),

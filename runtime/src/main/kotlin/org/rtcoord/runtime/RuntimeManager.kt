@@ -200,18 +200,24 @@ public class RuntimeManager(
     }
 
     override fun get_factory_profiles(): Array<ModuleProfile> {
-        val own = factories().map { type ->
-            profile(
-                "implementation_id" to type.typeName, "type_name" to type.typeName, "description" to type.description,
-                "version" to type.version, "vendor" to type.vendor, "category" to type.category, "language" to LANGUAGE,
-            )
-        }
+        val own = factories().map { type -> profile(*typeProfile(type)) }
         return (own + (if (isMaster) fromSlaves { it.get_factory_profiles().toList() } else emptyList())).toTypedArray()
     }
 
-    override fun get_loadable_modules(): Array<ModuleProfile> = loadable.keys.map {
-        profile("module_file_name" to it, "module_file_path" to it, "language" to LANGUAGE)
+    /**
+     * As `ModuleManager.getLoadableModules`: a profile per module on the load path, the profile of the
+     * component type it provides (OpenRTM-aist reads it from the module; a module here that provides
+     * several gives its first) with the module's file and language.
+     */
+    override fun get_loadable_modules(): Array<ModuleProfile> = loadable.values.map { module ->
+        val described = module.types.firstOrNull()?.let(::typeProfile).orEmpty()
+        profile(*described, "module_file_name" to module.fileName, "module_file_path" to module.fileName, "language" to LANGUAGE)
     }.toTypedArray()
+
+    private fun typeProfile(type: ComponentType): Array<Pair<String, String>> = arrayOf(
+        "implementation_id" to type.typeName, "type_name" to type.typeName, "description" to type.description,
+        "version" to type.version, "vendor" to type.vendor, "category" to type.category, "language" to LANGUAGE,
+    )
 
     override fun get_loaded_modules(): Array<ModuleProfile> {
         val own = loaded.map { profile("file_path" to it) }
@@ -227,7 +233,9 @@ public class RuntimeManager(
     override fun unload_module(path: String): ReturnCode_t =
         if (loaded.remove(path)) ReturnCode_t.RTC_OK else ReturnCode_t.BAD_PARAMETER
 
-    override fun get_profile(): ManagerProfile = ManagerProfile(nameValues(configuration + ("name" to name) + ("instance_name" to name)))
+    /** As `ManagerServant.get_profile`: the configuration's `manager` node, its keys without the `manager.` prefix. */
+    override fun get_profile(): ManagerProfile =
+        ManagerProfile(nameValues(configuration.filterKeys { it.startsWith("manager.") }.mapKeys { it.key.removePrefix("manager.") }))
 
     override fun get_configuration(): Array<NameValue> = nameValues(configuration)
 

@@ -35,11 +35,15 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
     /** The port's name as OpenRTM reports it: `<instance>.<port>`. */
     val fullName: String = "${component.instanceName}.${spec.name}"
 
+    /** A service port's interfaces, published and subscribed as OpenRTM-aist's `CorbaPort` does. */
+    private val service: ServiceInterfaces? = (spec as? PortSpec.Service)?.let { ServiceInterfaces(component.instanceName, it) }
+
     lateinit var ref: PortService
         private set
 
     fun activate(orb: RuntimeOrb) {
         ref = PortServiceHelper.narrow(orb.activate(this))
+        service?.activate(orb)
     }
 
     fun deactivate(orb: RuntimeOrb) {
@@ -47,6 +51,7 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         publishers.clear()
         inlets.values.forEach(orb::deactivate)
         inlets.clear()
+        service?.deactivate(orb)
         orb.deactivate(this)
     }
 
@@ -122,6 +127,7 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
             inlets[connector.connector_id] = inlet
             connector.properties += component.nameValue("dataport.corba_cdr.inport_ior", component.orb.orb.object_to_string(inlet.ref))
         }
+        service?.let { connector.properties += it.published().map { (name, value) -> component.nameValue(name, value) } }
         if (me + 1 < connector.ports.size) {
             val next = connector.ports[me + 1].notify_connect(profile)
             if (next != ReturnCode_t.RTC_OK) {
@@ -130,6 +136,8 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
             }
         }
         val settled = profile.value
+        // As PortBase.notify_connect: the connector is recorded even when subscribing failed, then the error answered.
+        val subscribed = service?.subscribes(settled.properties.associate { it.name to it.stringValue() }) ?: true
         if (spec is PortSpec.DataOut) {
             val inPort = settled.properties.firstOrNull { it.name == "dataport.corba_cdr.inport_ior" }?.stringValue()
                 ?: return ReturnCode_t.BAD_PARAMETER
@@ -139,7 +147,7 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         }
         connectors[settled.connector_id] = settled
         component.observers.raise(StatusKind.PORT_PROFILE, "CONNECT:$fullName")
-        return ReturnCode_t.RTC_OK
+        return if (subscribed) ReturnCode_t.RTC_OK else ReturnCode_t.RTC_ERROR
     }
 
     override fun disconnect(connectorId: String): ReturnCode_t {
@@ -206,9 +214,10 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
     }
 
     private fun interfaces(): Array<PortInterfaceProfile> = when (spec) {
-        is PortSpec.Service ->
-            (spec.provided.map { (name, type) -> PortInterfaceProfile(name, type, PortInterfacePolarity.PROVIDED) } +
-                spec.required.map { (name, type) -> PortInterfaceProfile(name, type, PortInterfacePolarity.REQUIRED) }).toTypedArray()
+        is PortSpec.Service -> spec.interfaces.map { service ->
+            val polarity = if (service.polarity == ServiceInterface.Polarity.PROVIDED) PortInterfacePolarity.PROVIDED else PortInterfacePolarity.REQUIRED
+            PortInterfaceProfile(service.instanceName, service.typeName, polarity)
+        }.toTypedArray()
         else -> emptyArray()
     }
 }

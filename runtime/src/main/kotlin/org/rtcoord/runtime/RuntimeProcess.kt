@@ -141,6 +141,24 @@ public class RuntimeProcess private constructor(
         orb.close()
     }
 
+    @Volatile private var killed = false
+
+    /** Whether [kill] ended it. */
+    public val isKilled: Boolean get() = killed
+
+    /**
+     * Ends the process as `kill -9` ends an OpenRTM-aist executable: its ORB stops answering at once, its
+     * components stop executing and tell nobody, and every name it bound stays bound (a dead reference),
+     * since only a clean shutdown unbinds (`Manager.shutdownNaming`). Closing it later changes nothing.
+     */
+    public fun kill() {
+        if (!runtimes.remove(this)) return
+        killed = true
+        scheduler.shutdownNow()
+        scope.cancel()
+        orb.close()
+    }
+
     private fun everywhere(): List<RuntimeProcess> = listOf(this) + runtimes.filter { it !== this }
 
     public companion object {

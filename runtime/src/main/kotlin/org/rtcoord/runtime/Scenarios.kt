@@ -38,7 +38,7 @@ public object Scenarios {
                 PortSpec.DataOut("pose", DataType.TIMED_DOUBLE_SEQ),
             ),
             listOf(fail, ParameterSpec.decimal("gain", 1.0)),
-            configurationSets = mapOf("precise" to mapOf("gain" to "0.5"), "__constraints__" to mapOf("gain" to "0<x<10")),
+            configurationSets = mapOf("precise" to mapOf("fail" to "0", "gain" to "0.5"), "__constraints__" to mapOf("gain" to "0<x<10")),
             behaviour = { Behaviour.fuse(inputs, "pose", ::poseFromOdometry) },
         )
     }

@@ -5,7 +5,7 @@ import java.io.PrintStream
 
 /**
  * The faults `rtcoord sim` takes on stdin, one a line: the fixtures' (`fail`, `break`, `repair`, `freeze`,
- * `hang`, `exit`, `activate`), and `kill-manager` and `restart-naming` on the whole [system]. Each is
+ * `hang`, `exit`, `activate`), `kill-manager [NAME]` and `restart-naming` on the whole [system]. Each is
  * answered with one line on [out], each mistake with one line on [err].
  */
 public class SimConsole(private val system: SimulatedSystem, private val out: PrintStream, private val err: PrintStream) {
@@ -17,9 +17,15 @@ public class SimConsole(private val system: SimulatedSystem, private val out: Pr
         when (words.firstOrNull()) {
             "help" -> say(HELP)
             "kill-manager" -> try {
-                system.killManager()
-                say("killed the manager: it no longer answers and its name stays bound, as a killed rtcd leaves it")
+                val name = words.getOrNull(1)
+                if (name == null) system.killManager() else system.killManager(name)
+                say(
+                    "killed the manager${name?.let { " $it" }.orEmpty()}: it no longer answers, nor do the components it hosted, " +
+                        "and their names stay bound, as a killed rtcd leaves them",
+                )
             } catch (e: IllegalStateException) {
+                complain("kill-manager: ${e.message}")
+            } catch (e: IllegalArgumentException) {
                 complain("kill-manager: ${e.message}")
             }
             "restart-naming" -> {
@@ -43,7 +49,9 @@ public class SimConsole(private val system: SimulatedSystem, private val out: Pr
     public companion object {
         /** What `help` prints. */
         public val HELP: String = FaultConsole.HELP.substringBeforeLast("\n") + "\n" + """
-              kill-manager    the master manager's process dies (kill -9): its name stays bound, nothing can be created
+              kill-manager [NAME]
+                              the process of manager NAME dies (kill -9) with every component it hosts, their names
+                              left bound: a slave (localisation, manager.mgr/localisation) or, without NAME, the master
               restart-naming  the naming service stops and starts again on its port, with its bindings
               help            this list
         """.trimIndent().prependIndent("  ")

@@ -1,28 +1,35 @@
 package org.rtcoord.sim
 
+import org.rtcoord.datatypes.IdlDefinitions
 import org.rtcoord.profile.PortConnector
 import org.rtcoord.profile.ProfileComponent
 import org.rtcoord.profile.ProfilePort
 import org.rtcoord.profile.RtsProfile
-import org.rtcoord.datatypes.IdlDefinitions
 import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.DataType
-import org.rtcoord.runtime.ParameterSpec
 import org.rtcoord.runtime.PortSpec
 
 /**
  * The component types a profile describes: one per component in it (its ports, configuration sets and
- * execution context rate) and one per type its manager can create ([ProfileKeys.MANAGER_TYPES]), whose ports
- * come from [ProfileKeys.typePort] properties or else from an instance of the type in the profile. A data
- * port's type is one of OpenRTM-aist's standard data types or one the user's IDL declares ([userTypes]);
- * a port of any other type is kept, connectable, and sends nothing (a warning says so once).
+ * execution contexts) and one per type its managers can create ([ProfileKeys.MANAGER_TYPES] and each
+ * slave's), whose ports come from [ProfileKeys.typePort] properties or else from an instance of the type
+ * in the profile. A data port's type is one of OpenRTM-aist's standard data types or one the user's IDL
+ * declares ([userTypes]); a port of any other type is kept, connectable, and sends nothing (a warning
+ * says so once). A component whose type cannot be built is left out and named in [warnings].
  */
 internal class SimulatedTypes(private val profile: RtsProfile, private val userTypes: IdlDefinitions? = null) {
     /** What could not be simulated as the profile says, one line each; first the IDL that could not be read. */
     val warnings = userTypes?.errors.orEmpty().toMutableList()
 
-    /** The type of each component, by instance name. */
-    val byInstance: Map<String, ComponentType> = profile.components.associate { it.instanceName to componentType(it) }
+    /** The type of each component that can be simulated, by instance name. */
+    val byInstance: Map<String, ComponentType> = profile.components.mapNotNull { component ->
+        try {
+            component.instanceName to componentType(component)
+        } catch (e: IllegalArgumentException) {
+            warnings += "component ${component.instanceName}: ${e.message}: left out"
+            null
+        }
+    }.toMap()
 
     /** The types the manager can create, by type name: those listed, and those of the profile's components. */
     val creatable: Map<String, ComponentType> = buildMap {
@@ -56,27 +63,29 @@ internal class SimulatedTypes(private val profile: RtsProfile, private val userT
         is PortSpec.Service -> null
     }
 
-    private fun managerTypes(): List<String> =
-        profile.ext.properties[ProfileKeys.MANAGER_TYPES].orEmpty().split(',').map { it.trim() }.filter { it.isNotEmpty() }
+    /** The types the master and each slave can create, as the profile lists them. */
+    private fun managerTypes(): List<String> {
+        val slaves = profile.ext.properties.filterKeys { it.startsWith(ProfileKeys.SLAVE_PREFIX) && (it.endsWith(".types") || it.endsWith(".loadable")) }
+        return (listOfNotNull(profile.ext.properties[ProfileKeys.MANAGER_TYPES]) + slaves.values)
+            .flatMap { it.split(',') }.map { it.trim() }.filter { it.isNotEmpty() }.distinct()
+    }
 
     private fun componentType(component: ProfileComponent): ComponentType {
         val id = component.id.split(':')
         val typeName = id.getOrNull(3)?.takeIf { it.isNotBlank() } ?: component.instanceName
         val declared = declaredPorts(typeName)
         val ports = declared.ifEmpty {
-            component.dataPorts.mapNotNull { dataPort(component, it) } + component.servicePorts.map { PortSpec.Service(it.name) }
+            component.dataPorts.mapNotNull { dataPort(component, it) } +
+                component.servicePorts.map { servicePort(it, "${component.instanceName}.${it.name}", warnings) }
         }
-        val rate = component.executionContexts.firstOrNull()?.rate?.takeIf { it > 0 } ?: DEFAULT_RATE
-        val sets = component.configurationSets.associate { it.id to it.data }
-        val defaults = sets["default"] ?: sets.values.firstOrNull().orEmpty()
-        val names = (defaults.keys + sets.values.flatMap { it.keys }).distinct()
+        val configuration = SimulatedConfiguration(component)
         return ComponentType(
             typeName,
             ports = ports,
-            parameters = names.map { name -> ParameterSpec(name, defaults[name] ?: sets.values.firstNotNullOf { it[name] }) },
-            configurationSets = sets.filterKeys { it != "default" },
+            parameters = configuration.parameters,
+            configurationSets = configuration.sets,
             behaviour = { SimulatedBehaviour(ports) },
-            rate = rate,
+            contexts = SimulatedContexts(component, warnings).specs,
             vendor = id.getOrNull(1).orEmpty(),
             category = id.getOrNull(2).orEmpty(),
             version = id.getOrNull(4).orEmpty(),
@@ -157,10 +166,5 @@ internal class SimulatedTypes(private val profile: RtsProfile, private val userT
     /** Adds [line] to [warnings] once: a type's ports are read for each instance and for its manager. */
     private fun warn(line: String) {
         if (line !in warnings) warnings += line
-    }
-
-    private companion object {
-        /** OpenRTM-aist's default execution context rate (`exec_cxt.periodic.rate`), in Hz. */
-        const val DEFAULT_RATE = 1000.0
     }
 }

@@ -3,7 +3,7 @@ package org.rtcoord.profile.internal
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
-import org.rtcoord.ManagerNode
+import org.rtcoord.PortInterface
 import org.rtcoord.PortKind
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
@@ -47,7 +47,7 @@ internal class SystemCapture(private val tree: RtcTree) {
                     val peerComponent = byInstance[peerInstance] ?: continue
                     val source = end(byInstance.getValue(snapshot.instanceName), port.fullName)
                     val target = end(peerComponent, peer.fullName)
-                    val properties = connection.properties.filterKeys { it !in STALE_REFERENCES }
+                    val properties = withoutReferences(connection.properties)
                     if (port.kind == PortKind.DATA_OUT) {
                         data += PortConnector(
                             connection.id, connection.name, source, target,
@@ -66,20 +66,8 @@ internal class SystemCapture(private val tree: RtcTree) {
         val now = LocalDateTime.now().truncatedTo(ChronoUnit.SECONDS).format(DateTimeFormatter.ISO_LOCAL_DATE_TIME)
         return RtsProfile(
             systemId, abstract = abstract, creationDate = now, updateDate = now, components = components, dataPortConnectors = data,
-            servicePortConnectors = service, ext = Extension(properties = manager(below)),
+            servicePortConnectors = service, ext = Extension(properties = ManagerCapture(tree).properties(below, byInstance.keys)),
         )
-    }
-
-    /**
-     * The first master manager bound below [below] and the types it can create, as properties of the
-     * system (`rtcoord.manager`, `rtcoord.manager.types`): the schema has no place for managers, and a
-     * simulator needs them. Composite types, which every manager has, are left out.
-     */
-    private suspend fun manager(below: RtcPath): Map<String, String> {
-        val manager = tree.find(below) { it is ManagerNode && it.path.names.lastOrNull()?.endsWith(".mgr") == true }.toList()
-            .firstOrNull() as ManagerNode? ?: return emptyMap()
-        val types = manager.factories().filterNot { it["category"].orEmpty().startsWith("composite.") }.mapNotNull { it["type_name"] }.distinct()
-        return mapOf("rtcoord.manager" to manager.path.toString().removePrefix("/"), "rtcoord.manager.types" to types.joinToString(","))
     }
 
     private suspend fun component(node: ComponentNode, s: ComponentSnapshot): ProfileComponent {
@@ -95,10 +83,16 @@ internal class SystemCapture(private val tree: RtcTree) {
                 val kind = if (port.kind == PortKind.DATA_IN) "DataInPort" else "DataOutPort"
                 ProfilePort(port.name, Extension(properties = listOfNotNull("port.port_type" to kind, port.dataType?.let { "dataport.data_type" to it }).toMap()))
             },
-            servicePorts = s.ports.filter { it.kind == PortKind.SERVICE }.map { ProfilePort(it.name, Extension(properties = mapOf("port.port_type" to "CorbaPort"))) },
-            configurationSets = configuration.sets.filterKeys { !isHidden(it) }.toSortedMap().map { (id, values) -> ConfigurationSet(id, values) },
-            executionContexts = s.contexts.filter { it.owned }.map { ExecutionContext(it.handle.toString(), it.kind.uppercase(), it.rate) },
-            ext = Extension(properties = mapOf("COMPONENT_PATH_ID" to node.path.toString().removePrefix("/"))),
+            servicePorts = s.ports.filter { it.kind == PortKind.SERVICE }.map { port ->
+                ProfilePort(port.name, Extension(properties = mapOf("port.port_type" to "CorbaPort") + interfaceProperties(port.interfaces)))
+            },
+            // Hidden sets too, as rtcryo saves them: `__constraints__` tells a simulator what the parameters accept.
+            configurationSets = configuration.sets.toSortedMap().map { (id, values) -> ConfigurationSet(id, values) },
+            executionContexts = s.contexts.filter { it.owned }.map { context ->
+                val type = context.properties["type"]?.let { mapOf(CONTEXT_TYPE to it) }.orEmpty()
+                ExecutionContext(context.handle.toString(), context.kind.uppercase(), context.rate, ext = Extension(properties = type))
+            },
+            ext = Extension(properties = mapOf(COMPONENT_PATH_ID to node.path.toString().removePrefix("/"))),
         )
     }
 
@@ -108,7 +102,17 @@ internal class SystemCapture(private val tree: RtcTree) {
     )
 
     internal companion object {
+        /** The property of a saved execution context naming its implementation, as its profile's `type` does. */
+        const val CONTEXT_TYPE = "type"
+
+        /** The prefix of a service port's property for one of its interfaces: `rtcoord.interface.provided.<instance>` = its type. */
+        const val INTERFACE = "rtcoord.interface"
+
         fun componentId(s: ComponentSnapshot) = "RTC:${s.vendor}:${s.category}:${s.typeName}:${s.version}"
+
+        /** A service port's interfaces in their order, as the schema has no place for them: `rtcoord.interface.<polarity>.<instance>` = type. */
+        fun interfaceProperties(interfaces: List<PortInterface>): Map<String, String> =
+            interfaces.associate { "$INTERFACE.${it.polarity.name.lowercase()}.${it.instanceName}" to it.typeName }
 
         /** Sets such as `__constraints__` describe parameters; they are not configuration to restore. */
         fun isHidden(set: String) = set.startsWith("__") && set.endsWith("__")

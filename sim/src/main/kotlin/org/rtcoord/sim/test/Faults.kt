@@ -21,8 +21,14 @@ public interface Faults {
     /** The component exits, as rtexit does. */
     public fun exit(component: String)
 
-    /** The manager's process dies. */
+    /** The master manager's process dies, with the components it hosts itself. */
     public fun killManager()
+
+    /**
+     * The process of manager [name] dies with every component it hosts: a slave (`localisation`, or
+     * `manager.mgr/localisation`) or the master (`manager.mgr`), as the profile saved them.
+     */
+    public fun killManager(name: String)
 
     /** The naming service restarts with its bindings. */
     public fun restartNaming()

@@ -31,5 +31,7 @@ internal class SimFaults(private val system: SimulatedSystem, private val applie
 
     override fun killManager() = fault("killManager") { system.killManager() }
 
+    override fun killManager(name: String) = fault("killManager $name") { system.killManager(name) }
+
     override fun restartNaming() = fault("restartNaming") { system.restartNaming() }
 }
