@@ -23,10 +23,12 @@ import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
 /**
- * 200 components change state (activate, deactivate, fail, reset) and connections at random, with a
- * fixed seed, for a minute while a tree watches them all in push mode; the fixtures log what really
- * happened. Every transition must arrive as exactly one event, in order: none lost, none phantom, and
- * no component reported lost. `scripts/soak --minutes N` runs it longer (`-Drtcoord.soak.minutes=N`).
+ * Components change state (activate, deactivate, fail, reset) and connections at random, with a fixed
+ * seed, while a tree watches them all in push mode; the fixtures log what really happened. Every
+ * transition must arrive as exactly one event, in order: none lost, none phantom, and no component
+ * reported lost. The default build runs a smoke of it (50 components for 5 s); the soak itself, 200
+ * components for a minute or more, runs on request: `scripts/soak --minutes N`
+ * (`-Drtcoord.soak.minutes=N`).
  */
 class SoakTest {
     /** A relay executing at 10 Hz, so an injected failure turns into ERROR within a tenth of a second. */
@@ -35,10 +37,12 @@ class SoakTest {
     private class Seen(val transition: Pair<LifeCycle, LifeCycle>, val at: Long)
 
     @Test
-    fun `200 components changing at random lose no transition and invent none`(): Unit = runBlocking {
-        val length = (System.getProperty("rtcoord.soak.minutes")?.toDoubleOrNull() ?: 1.0).minutes
+    fun `components changing at random lose no transition and invent none`(): Unit = runBlocking {
+        val soakMinutes = System.getProperty("rtcoord.soak.minutes")?.toDoubleOrNull()
+        val length = soakMinutes?.minutes ?: SMOKE_LENGTH
+        val size = if (soakMinutes != null) COMPONENTS else SMOKE_COMPONENTS
         NamingService.start().use { naming ->
-            Scenarios.scale(naming.corbaloc, COMPONENTS, type).use { system ->
+            Scenarios.scale(naming.corbaloc, size, type).use { system ->
                 RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
                     val seen = ConcurrentHashMap<String, ConcurrentLinkedQueue<Seen>>()
                     val alarms = ConcurrentLinkedQueue<RtcEvent>()
@@ -51,7 +55,7 @@ class SoakTest {
                         }
                     }
                     await("an observer on every component") { system.components.all { it.observerIds.size == 1 } }
-                    println("soak: $COMPONENTS components watched in ${attaching.elapsedNow()}")
+                    println("soak: $size components watched in ${attaching.elapsedNow()}")
 
                     val begun = System.nanoTime()
                     val driven = Churn(system.components, system::connect, Random(SEED)).run(length)
@@ -80,7 +84,7 @@ class SoakTest {
                     }
                     val total = truth.values.sumOf { it.size }
                     println(
-                        "soak: ${length.inWholeSeconds} s, $COMPONENTS components, ${driven.operations} operations " +
+                        "soak: ${length.inWholeSeconds} s, $size components, ${driven.operations} operations " +
                             "(${driven.connections} connects, ${driven.disconnections} disconnects): $total transitions, " +
                             "${seen.values.sumOf { it.size }} events, $lost lost, $phantom phantom, ${alarms.size} liveness alarms, " +
                             "max latency ${maxLatency / 1_000_000} ms",
@@ -147,6 +151,8 @@ class SoakTest {
 
     private companion object {
         const val COMPONENTS = 200
+        const val SMOKE_COMPONENTS = 50
+        val SMOKE_LENGTH = 5.seconds
         const val SEED = 20_240_610L
         const val MAX_CONNECTIONS = 100
         val PAUSE = 10.milliseconds
