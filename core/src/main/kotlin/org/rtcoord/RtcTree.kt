@@ -9,6 +9,7 @@ import kotlinx.coroutines.flow.callbackFlow
 import kotlinx.coroutines.flow.flow
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.NameServerIdentity
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.events.AfterSnapshot
 import java.util.concurrent.CopyOnWriteArrayList
@@ -45,11 +46,15 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     /** The name servers, in the order they were added. */
     public val nameServers: List<NameServerNode> get() = ArrayList(servers)
 
-    /** Adds a name server (`host`, `host:port` or `corbaloc:`), or returns it if the tree has it already. */
+    /**
+     * Adds a name server (`host`, `host:port` or `corbaloc:`), or returns it if the tree has it already,
+     * under this spelling or another that reaches the same server (`localhost:2810` and
+     * `127.0.0.1:2810`): one name server is one node, named as first given.
+     */
     public fun addNameServer(address: String): NameServerNode {
         val path = RtcPath.nameServer(address)
         synchronized(servers) {
-            servers.firstOrNull { it.path == path }?.let { return it }
+            known(path)?.let { return it }
             return NameServerNode(path, core).also {
                 servers += it
                 root.showSettled()
@@ -57,13 +62,19 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         }
     }
 
-    /** Removes the name server at [address]; returns whether the tree had it. */
+    /** Removes the name server at [address] (or another spelling of it); returns whether the tree had it. */
     public fun removeNameServer(address: String): Boolean {
         val path = RtcPath.nameServer(address)
         synchronized(servers) {
-            return servers.removeIf { it.path == path }.also { root.showSettled() }
+            val server = known(path) ?: return false
+            return servers.remove(server).also { root.showSettled() }
         }
     }
+
+    /** The node of the name server at [path], under that spelling or another. */
+    private fun known(path: RtcPath): NameServerNode? =
+        servers.firstOrNull { it.path == path }
+            ?: servers.firstOrNull { NameServerIdentity.same(it.path.nameServer!!, path.nameServer!!) }
 
     /**
      * The node at [path] (absolute, or relative to [workingDirectory]). A name server named in an

@@ -61,6 +61,26 @@ class NameServersTest {
     }
 
     @Test
+    fun `a name server written two ways is one node, named as first given, reached by either`(): Unit = runBlocking {
+        NamingService.start().use { naming ->
+            Scenarios.localisation(naming.corbaloc).use {
+                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                    val other = "localhost:${naming.port}"
+                    val server = tree.nameServers.single()
+                    assertTrue(server === tree.addNameServer(other))
+                    assertTrue(server === tree.addNameServer("corbaloc:iiop:$other/NameService"))
+                    val gyro = tree.component("/$other/${RuntimeProcess.hostContext}/gyro0.rtc")
+                    assertEquals("/${naming.address}/${RuntimeProcess.hostContext}/gyro0.rtc", gyro.path.toString())
+                    assertEquals(listOf(server), tree.nameServers)
+                    assertEquals(1, tree.find { it is ComponentNode && it.name == "gyro0.rtc" }.toList().size)
+                    assertTrue(tree.removeNameServer(other))
+                    assertEquals(emptyList<NameServerNode>(), tree.nameServers)
+                }
+            }
+        }
+    }
+
+    @Test
     fun `a name server restarted empty is read again, and components that register again are found`(): Unit = runBlocking {
         var naming = NamingService.start()
         try {

@@ -285,6 +285,19 @@ class CoordinatorTest : CoordinatedSystem() {
     }
 
     @Test
+    fun `a name server written another way is the same one, and manager() is not ambiguous beside it`(): Unit = runBlocking {
+        coordinator {
+            on(context("/localhost:${naming.port}")).unreachable { log("the name server stopped answering") }
+            after(0.seconds) { manager().create("gyro", "gyro1") }
+        }.use { coordinator ->
+            coordinator.start()
+            await("gyro1 to be created through the one master manager") { log.any { it.startsWith("created ") } }
+            assertEquals(listOf(naming.address), tree.nameServers.map { it.address }, "one node, named as first given")
+            assertEquals(0, coordinator.failures, log.toString())
+        }
+    }
+
+    @Test
     fun `one plan runs twice at once, each run acting and logging on its own, and again after both ended`(): Unit = runBlocking {
         val coordination = Coordination(emptyList(), config).apply {
             on(component("gyro0")).state(ERROR) { event -> log("${event.source.name} failed; gyro0 is ${component("gyro0").state()}") }

@@ -46,13 +46,18 @@ internal class Engine(
     /** The manager [ref] names, watched from now on for its death and return. */
     suspend fun manager(ref: ManagerRef): ManagerNode = find(ref).also { managers?.watch(it) }
 
+    /**
+     * The manager [ref] names: by path, or by name on the first name server (in the run's order) that has
+     * one so named, as `manager()` means the master manager of the first name server.
+     */
     private suspend fun find(ref: ManagerRef): ManagerNode {
         if (ref.selector.startsWith("/")) return tree.manager(ref.selector)
         val found = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER) and NodeFilters.name(ref.selector)).toList()
-        return when (found.size) {
-            1 -> found.single() as ManagerNode
+        val first = tree.nameServers.map { server -> found.filter { it.path.nameServer == server.path.nameServer } }.firstOrNull { it.isNotEmpty() }.orEmpty()
+        return when (first.size) {
+            1 -> first.single() as ManagerNode
             0 -> throw NotFoundException(ref.selector, "no such manager on ${tree.nameServers.joinToString { it.address }}")
-            else -> throw AmbiguousNameException(ref.selector, found.map { it.path.toString() })
+            else -> throw AmbiguousNameException(ref.selector, first.map { it.path.toString() })
         }
     }
 
