@@ -61,8 +61,9 @@ public open class Coordination @JvmOverloads constructor(
     public fun port(path: String): PortRef = portRef(path)
 
     /**
-     * A manager, by name (found on any name server) or path. A running coordinator watches it from the
-     * start: its death and its return are logged, and `on(manager()).died { ... }` reacts to them.
+     * A manager, by path or by name (on the first name server, in the run's order, that has one so named).
+     * A running coordinator watches it from the start: its death and its return are logged, and
+     * `on(manager()).died { ... }` reacts to them.
      */
     public fun manager(name: String = "manager.mgr"): ManagerRef = ManagerRef(name).also { managers += name }
 
