@@ -74,6 +74,18 @@ class ExploreTest {
     }
 
     @Test
+    fun `an exploration stopped early reports what it found so far, unshrunk`(@TempDir directory: Path) {
+        val test = boom(directory, "components(\"laser0\"); faults { fail() }; window(0.seconds, 200.milliseconds)")
+        val explorer = FaultExplorer(ScriptHost())
+        val report = runBlocking { explorer.explore(test, ExploreOptions(seed = 2, runs = 50, maxFaults = 1)) { explorer.stop() } }
+        assertTrue(report.interrupted)
+        assertTrue(report.runs in 1..2, "runs: ${report.runs}")
+        val found = report.failures.single()
+        assertEquals(found.drawn, found.smallest)
+        assertEquals(null, found.test)
+    }
+
+    @Test
     fun `a fault that cannot be applied skips its run, counted with why`(@TempDir directory: Path) {
         val test = boom(directory, "components(\"ghost0\"); faults { exit() }; window(0.seconds, 200.milliseconds)")
         val report = runBlocking { FaultExplorer(ScriptHost()).explore(test, ExploreOptions(seed = 1, runs = 2, maxFaults = 1)) }
