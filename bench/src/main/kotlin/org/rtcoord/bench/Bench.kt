@@ -27,6 +27,7 @@ internal class Bench(private val options: BenchOptions, private val installation
                     Benchmark.DATA -> DataBench(options, report).run()
                     Benchmark.TEST -> TestBench(options, installation, report).run()
                     Benchmark.SIMULATION -> SimulationBench(options, installation, report).run()
+                    Benchmark.EXPLORE -> ExploreBench(options, installation, report).run()
                 }
             } catch (e: Exception) {
                 report.skipped(benchmark.label, "failed: ${e.message ?: e.javaClass.simpleName}")

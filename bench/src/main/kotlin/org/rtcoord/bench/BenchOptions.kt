@@ -17,6 +17,7 @@ internal enum class Benchmark(val label: String) {
     DATA("data"),
     TEST("test"),
     SIMULATION("simulation"),
+    EXPLORE("explore"),
 }
 
 /**
@@ -70,6 +71,8 @@ internal data class BenchOptions(
     val simulationSize: Int = 200,
     /** Timed starts of the simulated system, each kind. */
     val simulationRepetitions: Int = 10,
+    /** Runs of `rtcoord test --explore` per processor used. */
+    val exploreRuns: Int = 20,
 ) {
     companion object {
         const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S] [--launcher-jvm]
@@ -77,7 +80,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data, test, simulation
+  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data, test, simulation, explore
   --seconds S   the monitoring window (default 60, quick 10)
   --launcher-jvm  the benchmarks' JVM takes the options the rtcoord launcher gives its commands (C1 only),
                 not the JDK's defaults (C1 then C2, as a host application embedding the library runs)"""
@@ -132,6 +135,7 @@ in the same run). Results are printed, never stored.
             testRepetitions = 5,
             suiteRepetitions = 1,
             simulationRepetitions = 3,
+            exploreRuns = 6,
         )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
@@ -163,6 +167,7 @@ in the same run). Results are printed, never stored.
             suiteRepetitions = 1,
             simulationSize = 10,
             simulationRepetitions = 1,
+            exploreRuns = 1,
         )
 
         /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */

@@ -269,7 +269,11 @@ public class Coordinator(
         log("rule '${rule.description}' fired: ${describe(event)}")
         val activity = ruleActivities.getValue(rule)
         activity.fired(describe(event))
-        run("rule '${rule.description}'", activity::failed) { reaction.handle { rule.handler(this, event) } }
+        try {
+            run("rule '${rule.description}'", activity::failed) { reaction.handle { rule.handler(this, event) } }
+        } finally {
+            activity.returned()
+        }
     }
 
     private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {

@@ -31,6 +31,8 @@ public class RuleActivity internal constructor(
         public val failures: Int = 0,
         /** The last failure's message. */
         public val lastFailure: String? = null,
+        /** How many of its handler runs have started and not returned yet. */
+        public val running: Int = 0,
     ) : ValueObject() {
         @JvmSynthetic internal fun copy(
             firings: Int = this.firings,
@@ -38,10 +40,14 @@ public class RuleActivity internal constructor(
             lastEvent: String? = this.lastEvent,
             failures: Int = this.failures,
             lastFailure: String? = this.lastFailure,
-        ): Status = Status(firings, lastFired, lastEvent, failures, lastFailure)
+            running: Int = this.running,
+        ): Status = Status(firings, lastFired, lastEvent, failures, lastFailure, running)
 
         override fun fields(): ValueFields =
-            ValueFields("firings" to firings, "lastFired" to lastFired, "lastEvent" to lastEvent, "failures" to failures, "lastFailure" to lastFailure)
+            ValueFields(
+                "firings" to firings, "lastFired" to lastFired, "lastEvent" to lastEvent, "failures" to failures, "lastFailure" to lastFailure,
+                "running" to running,
+            )
     }
 
     private val current = MutableStateFlow(Status())
@@ -50,7 +56,11 @@ public class RuleActivity internal constructor(
     public val status: StateFlow<Status> = current.asStateFlow()
 
     internal fun fired(event: String) {
-        current.update { it.copy(firings = it.firings + 1, lastFired = Instant.now(), lastEvent = event) }
+        current.update { it.copy(firings = it.firings + 1, lastFired = Instant.now(), lastEvent = event, running = it.running + 1) }
+    }
+
+    internal fun returned() {
+        current.update { it.copy(running = it.running - 1) }
     }
 
     internal fun failed(message: String) {

@@ -53,6 +53,10 @@ public class FaultConsole(
                 component.thawOutput()
                 say("repaired $name: resets succeed, it executes and publishes again")
             }
+            "lose-connectors" -> {
+                component.loseConnectors()
+                say("lost the connectors of $name, as an out-port whose peer stopped answering drops them: it runs on, unconnected")
+            }
             "exit" -> {
                 component.exit()
                 say("exited $name, as rtexit does: it finalised, and its name leaves naming")
@@ -82,7 +86,7 @@ public class FaultConsole(
     }
 
     public companion object {
-        private val COMMANDS = setOf("activate", "fail", "break", "hang", "freeze", "repair", "exit")
+        private val COMMANDS = setOf("activate", "fail", "break", "hang", "freeze", "repair", "lose-connectors", "exit")
 
         private val RETURN_CODES = listOf("RTC_OK", "RTC_ERROR", "BAD_PARAMETER", "UNSUPPORTED", "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET")
 
@@ -105,6 +109,8 @@ public class FaultConsole(
                               flows, and activate/deactivate/reset answer RTC_ERROR after 0.5 s until repair
               freeze NAME     its out-ports stop publishing while it stays ACTIVE and executes (a sensor gone silent)
               repair NAME     end break, hang and freeze: resets succeed, it executes and publishes again
+              lose-connectors NAME
+                              every connector of its ports is lost, as when its peer stops answering: both ends drop it
               exit NAME       the component exits, as rtexit does
               help            this list
         """.trimIndent()

@@ -172,6 +172,15 @@ public class RuntimeComponent internal constructor(
     public val isOutputFrozen: Boolean get() = outputFrozen
 
     /**
+     * Loses every connector of the component's ports, as an out-port whose write meets `CONNECTION_LOST`
+     * (its peer unreachable) disconnects that connector: each port of each connector drops it and tells
+     * its observers. The component runs on, unconnected.
+     */
+    public fun loseConnectors() {
+        ports.forEach { it.disconnect_all() }
+    }
+
+    /**
      * Makes the component's `on_activated`, `on_deactivated` and `on_reset` each take [duration] (zero:
      * none), as callbacks that open or close a slow device do. Longer than its context's transition
      * timeout (0.5 s), the context answers `RTC_ERROR` while the callback still runs, and the new state

@@ -5,7 +5,7 @@ import java.io.PrintStream
 
 /**
  * The faults `rtcoord sim` takes on stdin, one a line: the fixtures' (`fail`, `break`, `repair`, `freeze`,
- * `hang`, `exit`, `activate`), `kill-manager [NAME]` and `restart-naming` on the whole [system]. Each is
+ * `hang`, `lose-connectors`, `exit`, `activate`), `kill-manager [NAME]` and `restart-naming` on the whole [system]. Each is
  * answered with one line on [out], each mistake with one line on [err].
  */
 public class SimConsole(private val system: SimulatedSystem, private val out: PrintStream, private val err: PrintStream) {

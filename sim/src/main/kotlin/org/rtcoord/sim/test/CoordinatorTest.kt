@@ -20,6 +20,7 @@ public abstract class CoordinatorTest(
     internal var coordinatorArgs: List<String> = emptyList()
     internal val idlDirectories = mutableListOf<Declared>()
     internal val scenarios = mutableListOf<Scenario>()
+    internal val searchSpace = SearchSpace()
 
     /** A file the test names, resolved against its directory, with the line it is named on. */
     internal class Declared(val written: String, val path: Path, val line: Int)
@@ -41,6 +42,15 @@ public abstract class CoordinatorTest(
     public fun coordinator(script: String, vararg args: String) {
         coordinator = Declared(script, directory.resolve(script), line())
         coordinatorArgs = args.toList()
+    }
+
+    /**
+     * Narrows what `rtcoord test --explore` searches: which components and managers its faults are on,
+     * which faults, the moments they are drawn at, and faults out of scope (`exclude { killManager() }`).
+     * Running the test without `--explore` ignores it.
+     */
+    public fun explore(space: SearchSpace.() -> Unit) {
+        searchSpace.apply(space)
     }
 
     /**

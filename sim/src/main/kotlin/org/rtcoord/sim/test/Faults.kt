@@ -21,6 +21,9 @@ public interface Faults {
     /** The component exits, as rtexit does. */
     public fun exit(component: String)
 
+    /** Every connector of the component's ports is lost, as when its peer stops answering: both ends drop it. */
+    public fun loseConnectors(component: String)
+
     /** The master manager's process dies, with the components it hosts itself. */
     public fun killManager()
 

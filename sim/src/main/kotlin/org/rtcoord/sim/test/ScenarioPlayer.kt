@@ -28,6 +28,8 @@ internal class ScenarioPlayer(
     /** Plays [steps]; the failure of the first that fails, or null. */
     suspend fun play(steps: List<TestStep>): TestFailure? {
         for (step in steps) {
+            // Its faults are applied alongside the steps, from the scenario's start (ScenarioRun).
+            if (step is TestStep.Meanwhile) continue
             val failure = when (step) {
                 is TestStep.At -> at(step)
                 is TestStep.Expect -> expect(step)
@@ -35,7 +37,7 @@ internal class ScenarioPlayer(
                 is TestStep.ExpectLog -> expectLog(step)
                 is TestStep.ExpectHandlerFailure -> expectHandlerFailure(step)
                 is TestStep.Invariant -> null.also { observer.begin(step) }
-                is TestStep.NoRestarts -> null
+                is TestStep.NoRestarts, is TestStep.Meanwhile -> null
             }
             observer.step("${source.at(step)} ${if (failure == null) "held" else "failed"}")
             if (failure != null) return failure

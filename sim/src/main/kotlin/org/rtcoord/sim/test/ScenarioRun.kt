@@ -6,6 +6,7 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.select
@@ -41,10 +42,12 @@ import org.rtcoord.dsl.LiveCheck
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.sim.SimulatedSystem
+import java.time.Instant
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
+import kotlin.time.toKotlinDuration
 
 /**
  * Runs one scenario: simulates the test's system afresh, starts its coordinator on it, observes both
@@ -55,7 +58,12 @@ import kotlin.time.TimeSource
  * system to be quiet for a moment, so that what that step set going is checked too. Whatever happens, it
  * returns a result.
  */
-internal class ScenarioRun(private val plan: ScenarioPlan, private val scripts: ScriptHost) {
+internal class ScenarioRun(
+    private val plan: ScenarioPlan,
+    private val scripts: ScriptHost,
+    /** Faults applied besides the scenario's own: an explored schedule. */
+    private val schedule: List<Injection> = emptyList(),
+) {
     private val test = plan.test
     private val log = CopyOnWriteArrayList<String>()
     private val broken = CompletableDeferred<TestFailure>()
@@ -125,17 +133,47 @@ internal class ScenarioRun(private val plan: ScenarioPlan, private val scripts: 
         observer.origin = origin
         val watching = launch { watch(tree, coordination, coordinator, observer) }
         val player = ScenarioPlayer(system, coordinator, LiveReads(system, tree, coordinator, log), observer, test.source, origin)
+        val injecting = launch { inject(system, observer, origin, (plan.injections + schedule).sortedBy { it.time }) }
         val playing = async { player.play(plan.steps) }
-        val first = select { broken.onAwait { it }; playing.onAwait { it } }
+        // The scenario lasts until its steps are done and its last fault applied, or its first failure.
+        val first = select<TestFailure?> { broken.onAwait { it }; playing.onAwait { it } }
+            ?: select<TestFailure?> { broken.onAwait { it }; injecting.onJoin { null } }
         playing.cancel()
+        injecting.cancel()
         if (first == null) settle(observer)
+        val stuck = if (first == null) stuck(coordinator) else null
         watching.cancel()
         val end = if (first == null) player.endChecks(plan.steps) else emptyList()
         // What was observed up to now is checked before the verdict: an invariant may break on the last events.
         observer.close()
         withTimeoutOrNull(DRAIN) { observing.join() }
-        val failure = first ?: (if (broken.isCompleted) broken.await() else null) ?: unexpected(coordinator.handlerFailures).firstOrNull()
+        val failure = first ?: (if (broken.isCompleted) broken.await() else null) ?: unexpected(coordinator.handlerFailures).firstOrNull() ?: stuck
         return listOfNotNull(failure) + end
+    }
+
+    /**
+     * Applies [injections] (in time order) each at its time from [origin], then waits [AFTERMATH]. One that
+     * cannot be applied ends the scenario: a failure at the test's line, or for a schedule's fault a
+     * skipped run.
+     */
+    private suspend fun inject(system: SimulatedSystem, observer: ScenarioObserver, origin: TimeSource.Monotonic.ValueTimeMark, injections: List<Injection>) {
+        for (injection in injections) {
+            delay(injection.time - origin.elapsedNow())
+            try {
+                injection.faults(SimFaults(system, observer::fault))
+            } catch (e: CancellationException) {
+                throw e
+            } catch (e: Exception) {
+                val why = e.message ?: e.javaClass.simpleName
+                broke(
+                    injection.at?.let { TestFailure(it, "at ${injection.time}: $why") }
+                        ?: TestFailure("schedule", "at ${TimelineEntry.seconds(injection.time)}: cannot be applied: $why", skipped = true),
+                )
+                return
+            }
+        }
+        // What the last fault sets going takes a moment to show (a state change polled, a handler run): it is watched for first.
+        if (injections.isNotEmpty()) delay(AFTERMATH)
     }
 
     /**
@@ -149,6 +187,26 @@ internal class ScenarioRun(private val plan: ScenarioPlan, private val scripts: 
                 withTimeoutOrNull(QUIET) { observer.changes.first { it != seen } } ?: break
             }
         }
+    }
+
+    /**
+     * Whether the coordinator stopped reacting: a rule's handler that has not returned [STUCK] after it
+     * fired, which holds back the rule's later events. Waits for the handlers running now to return, each
+     * at most until then.
+     */
+    private suspend fun stuck(coordinator: Coordinator): TestFailure? {
+        for (rule in coordinator.rules) {
+            val status = rule.status.value
+            val since = status.lastFired?.takeIf { status.running > 0 } ?: continue
+            val left = STUCK - java.time.Duration.between(since, Instant.now()).toKotlinDuration()
+            if (left.isPositive() && withTimeoutOrNull(left) { rule.status.first { it.running == 0 } } != null) continue
+            return TestFailure(
+                test.coordinatorShown.toString(),
+                "the coordinator stopped reacting: the handler of rule '${rule.description}' had not returned $STUCK after it fired on ${status.lastEvent}",
+                listOf("a handler that does not return holds back its rule's later events; every remote call has a deadline, so it waits on something else"),
+            )
+        }
+        return null
     }
 
     /** Starts [coordinator]; the failures saying why it cannot start, or null once it has. */
@@ -212,6 +270,12 @@ internal class ScenarioRun(private val plan: ScenarioPlan, private val scripts: 
         /** How long the system must be quiet after the last step, and how long that may be waited for. */
         val QUIET = 200.milliseconds
         val SETTLE = 1.seconds
+
+        /** How long the scenario lasts after its last fault applied alongside its steps, at least. */
+        val AFTERMATH = 1.seconds
+
+        /** How long a handler may run before the coordinator is said to have stopped reacting. */
+        val STUCK = 10.seconds
 
         /** How long the last entries may take to be checked once the steps are done. */
         val DRAIN = 5.seconds

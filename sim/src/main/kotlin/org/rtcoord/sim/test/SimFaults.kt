@@ -29,6 +29,8 @@ internal class SimFaults(private val system: SimulatedSystem, private val applie
 
     override fun exit(component: String) = fault("exit $component") { named(component).exit() }
 
+    override fun loseConnectors(component: String) = fault("loseConnectors $component") { named(component).loseConnectors() }
+
     override fun killManager() = fault("killManager") { system.killManager() }
 
     override fun killManager(name: String) = fault("killManager $name") { system.killManager(name) }

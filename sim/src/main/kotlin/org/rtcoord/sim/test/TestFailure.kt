@@ -12,6 +12,8 @@ public class TestFailure internal constructor(
     public val message: String,
     /** What explains it, a line each. */
     public val details: List<String> = emptyList(),
+    /** Not a failure of the coordinator: a fault of an explored schedule that could not be applied, which skips the run. */
+    internal val skipped: Boolean = false,
 ) {
     /** `FILE:LINE:COL: MESSAGE`. */
     override fun toString(): String = "$at: $message"

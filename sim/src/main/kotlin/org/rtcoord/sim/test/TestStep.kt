@@ -11,6 +11,11 @@ internal sealed class TestStep(val line: Int) {
         override val word: String get() = "at"
     }
 
+    /** Faults applied alongside the steps, each at its time from the scenario's start: see [Meanwhile]. */
+    class Meanwhile(line: Int, val faults: List<At>) : TestStep(line) {
+        override val word: String get() = "meanwhile"
+    }
+
     class Expect(line: Int, val within: Duration, val condition: suspend Observation.() -> Boolean) : TestStep(line) {
         override val word: String get() = "expect"
     }

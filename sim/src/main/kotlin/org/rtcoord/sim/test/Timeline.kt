@@ -21,6 +21,16 @@ public abstract class Timeline internal constructor(
     }
 
     /**
+     * Applies the faults of [faults]' `at(...) { }` steps at their times from the coordinator's start,
+     * alongside the steps of the scenario wherever this is written, whatever step the timeline is waiting
+     * on; the scenario lasts at least until the last is applied. `rtcoord test --explore` applies the
+     * schedules it draws this way, and writes the tests it finds with it.
+     */
+    public fun meanwhile(faults: Meanwhile.() -> Unit) {
+        steps += TestStep.Meanwhile(line(), Meanwhile(fileName).apply(faults).faults.toList())
+    }
+
+    /**
      * Expects [condition] to hold within [within] from here in the timeline. It is read again on every
      * event of the system and the coordinator, and at least every 50 ms; a failure shows what each read
      * of it returned at the deadline.

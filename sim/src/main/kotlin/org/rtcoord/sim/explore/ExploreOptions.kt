@@ -1,0 +1,46 @@
+package org.rtcoord.sim.explore
+
+import kotlin.time.Duration
+
+/**
+ * How `rtcoord test --explore` searches: [seed] draws the schedules; it stops after [runs] runs or once
+ * [duration] is up (the first that comes; both null: at [DEFAULT_RUNS]); each schedule has up to
+ * [maxFaults] faults; [parallelism] runs go at once, each on a system of its own; a distinct failure is
+ * shrunk in at most [shrinkRuns] runs; [writeTests] writes each as a regression test next to the test.
+ */
+public class ExploreOptions @JvmOverloads constructor(
+    /** What the schedules are drawn from: the same seed draws the same schedules. */
+    public val seed: Long,
+    /** How many runs, or null for as many as [duration] allows. */
+    public val runs: Int? = null,
+    /** How long to explore, or null for [runs] runs. */
+    public val duration: Duration? = null,
+    /** The most faults a schedule has. */
+    public val maxFaults: Int = DEFAULT_MAX_FAULTS,
+    /** How many runs go at once. */
+    public val parallelism: Int = 1,
+    /** The most runs shrinking one distinct failure may take. */
+    public val shrinkRuns: Int = DEFAULT_SHRINK_RUNS,
+    /** Whether each distinct failure is written as `NAME.found-SEED-INDEX.test.kts` next to the test. */
+    public val writeTests: Boolean = true,
+) {
+    init {
+        require(runs == null || runs > 0) { "--runs must be at least 1" }
+        require(maxFaults >= 1) { "--max-faults must be at least 1" }
+        require(parallelism >= 1) { "--parallel must be at least 1" }
+    }
+
+    /** The runs to make: [runs], or [DEFAULT_RUNS] when neither it nor [duration] is given, or unbounded. */
+    internal val runLimit: Long get() = runs?.toLong() ?: if (duration == null) DEFAULT_RUNS.toLong() else Long.MAX_VALUE
+
+    public companion object {
+        /** Runs made when neither their number nor a duration is given. */
+        public const val DEFAULT_RUNS: Int = 100
+
+        /** The most faults a schedule has unless told. */
+        public const val DEFAULT_MAX_FAULTS: Int = 3
+
+        /** The most runs shrinking one failure takes unless told. */
+        public const val DEFAULT_SHRINK_RUNS: Int = 40
+    }
+}

@@ -1,0 +1,32 @@
+package org.rtcoord.sim.test
+
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.io.TempDir
+import java.nio.file.Path
+
+/** A coordinator that stops reacting (a handler that never returns) fails its scenario once the timeline is done. */
+class StuckCoordinatorTest {
+    @Test
+    fun `a handler that has not returned 10 s after it fired fails the scenario, naming the rule and what fired it`(@TempDir directory: Path) {
+        val folder = TestFolder(directory)
+        val stuck = folder.write("stuck.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) {\n    delay(60.seconds)\n}")
+        val test = folder.test(
+            "stuck.test.kts", stuck.toString(),
+            """
+            at(500.milliseconds) { fail("laser0") }
+            expect(within = 3.seconds) { component("laser0").state() == ERROR }
+            """,
+        )
+        val result = runBlocking { CoordinatorTestRunner().let { it.runAll(it.files(listOf(test))) } }.single()
+        val failure = result.failures.single()
+        assertEquals(stuck.toString(), failure.at)
+        assertTrue(
+            Regex("""the coordinator stopped reacting: the handler of rule 'laser0\.rtc enters ERROR' had not returned 10s after it fired on StateChanged at \S+laser0\.rtc""")
+                .matches(failure.message),
+            failure.message,
+        )
+    }
+}
