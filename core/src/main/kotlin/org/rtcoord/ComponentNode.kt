@@ -15,7 +15,7 @@ import kotlin.time.TimeSource
  * wait for the effect where there is one to wait for (a lifecycle operation returns once the state is
  * reached), and fail with an [RtcException] naming this path and the reason.
  */
-public class ComponentNode internal constructor(
+public sealed class ComponentNode(
     path: RtcPath,
     core: TreeCore,
     @get:JvmSynthetic internal val component: ComponentObject,
@@ -83,7 +83,7 @@ public class ComponentNode internal constructor(
 
     /** The component's state in [context], read now. */
     @JvmSynthetic
-    public suspend fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle = calls.state(context)
+    public suspend fun state(context: ContextSelector = ContextSelector.Handle(0)): LifeCycle = calls.state(context)
 
     /**
      * Activates the component in [context] and waits until it is ACTIVE, within [deadline] (the tree's
@@ -91,12 +91,12 @@ public class ComponentNode internal constructor(
      * first is not a failure while the state arrives before [deadline]: the outcome says it was slow.
      */
     @JvmSynthetic
-    public suspend fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
+    public suspend fun activate(context: ContextSelector = ContextSelector.Handle(0), deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.ACTIVATE, context, deadline)
 
     /** Deactivates the component in [context] and waits until it is INACTIVE; slow transitions as in [activate]. */
     @JvmSynthetic
-    public suspend fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
+    public suspend fun deactivate(context: ContextSelector = ContextSelector.Handle(0), deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.DEACTIVATE, context, deadline)
 
     /**
@@ -105,7 +105,7 @@ public class ComponentNode internal constructor(
      * component stays in ERROR either way: it fails then, naming the state.
      */
     @JvmSynthetic
-    public suspend fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: Duration? = null): TransitionOutcome =
+    public suspend fun reset(context: ContextSelector = ContextSelector.Handle(0), deadline: Duration? = null): TransitionOutcome =
         calls.perform(LifecycleOperation.RESET, context, deadline)
 
     /**
@@ -146,7 +146,7 @@ public class ComponentNode internal constructor(
         if (snapshot.port(name) == null) {
             throw NotFoundException("$subject:$name", "no such port (ports: ${snapshot.ports.joinToString { it.name }.ifEmpty { "none" }})")
         }
-        return Port(this, name)
+        return PortImpl(this, name)
     }
 
     /** Disconnects every connection of every port. */
@@ -157,9 +157,9 @@ public class ComponentNode internal constructor(
 
     /** The execution context [context] of this component. */
     @JvmSynthetic
-    public suspend fun executionContext(context: ContextSelector = ContextSelector.DEFAULT): ExecutionContextView {
+    public suspend fun executionContext(context: ContextSelector = ContextSelector.Handle(0)): ExecutionContextView {
         val (handle, ec) = calls.context(context)
-        return ExecutionContextView(this, handle, calls.onContext(handle, ec))
+        return ExecutionContextViewImpl(this, handle, calls.onContext(handle, ec))
     }
 
     /**
@@ -211,3 +211,7 @@ public class ComponentNode internal constructor(
         refresh()
     }
 }
+
+/** The [ComponentNode]s the tree makes ([Node] says why that class is sealed). */
+internal class ComponentNodeImpl(path: RtcPath, core: TreeCore, component: ComponentObject, namingParent: NamingDirectory? = null) :
+    ComponentNode(path, core, component, namingParent)

@@ -99,7 +99,7 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
 
     private suspend fun bury(child: Node, cause: RtcException) {
         listingLock.withLock {
-            listing.update { children -> children?.map { if (it === child) ZombieNode(child.path, core, cause, this) else it } }
+            listing.update { children -> children?.map { if (it === child) ZombieNodeImpl(child.path, core, cause, this) else it } }
         }
     }
 }

@@ -40,7 +40,8 @@ public enum class Overlap {
  * @property trafficInterval the least time between two [PortTraffic] events of one port, as the observer
  *   asks the component (`port_profile.send_event.min_interval`, `receive_event.min_interval`).
  *
- * Java callers write `new EventOptions()` for the defaults, or use a [Builder].
+ * Java callers write `new EventOptions()` for the defaults, or use a [Builder]:
+ * `new EventOptions.Builder().mode(WatchMode.POLL).build()`.
  */
 public class EventOptions(
     public val mode: WatchMode = WatchMode.AUTO,
@@ -75,11 +76,11 @@ public class EventOptions(
     /** A [Builder] holding these options, to change some and keep the rest: `options.newBuilder().overlap(Overlap.QUEUE).build()`. */
     public fun newBuilder(): Builder = Builder(this)
 
-    /** Builds [EventOptions] step by step, for Java callers: `EventOptions.builder().mode(WatchMode.POLL).build()`. */
-    public class Builder internal constructor(from: EventOptions) {
-        /** A builder holding the defaults. */
-        public constructor() : this(DEFAULTS)
-
+    /**
+     * Builds [EventOptions] step by step, for Java callers: `new EventOptions.Builder().mode(WatchMode.POLL).build()`;
+     * from [from]'s values, the defaults unless given.
+     */
+    public class Builder @JvmOverloads constructor(from: EventOptions = EventOptions()) {
         private var mode = from.mode
         private var pollPeriod: Duration = from.pollPeriod
         private var overlap = from.overlap
@@ -107,15 +108,6 @@ public class EventOptions(
 
         /** The options; fails as the constructor does on a bad value. */
         public fun build(): EventOptions = EventOptions(mode, pollPeriod, overlap, heartbeat, missedBeats, trafficInterval)
-    }
-
-    /** How Java callers get a [Builder]. */
-    public companion object {
-        private val DEFAULTS = EventOptions()
-
-        /** A [Builder] holding the defaults. */
-        @JvmStatic
-        public fun builder(): Builder = Builder()
     }
 }
 

@@ -2,8 +2,11 @@ package org.rtcoord
 
 import org.rtcoord.internal.ContextCalls
 
-/** One execution context of a component, as that component knows it (by [handle]). */
-public class ExecutionContextView internal constructor(
+/**
+ * One execution context of a component, as that component knows it (by [handle]):
+ * [ComponentNode.executionContext] gives it. The class is sealed for the reason [Node] gives.
+ */
+public sealed class ExecutionContextView(
     /** The component through which the context was reached. */
     public val component: ComponentNode,
     /** The component's handle for the context. */
@@ -41,3 +44,6 @@ public class ExecutionContextView internal constructor(
         component.refresh()
     }
 }
+
+/** The [ExecutionContextView]s a component gives. */
+internal class ExecutionContextViewImpl(component: ComponentNode, handle: Int, calls: ContextCalls) : ExecutionContextView(component, handle, calls)

@@ -27,12 +27,15 @@ public fun interface ListenerFailureHandler {
     /** Called once for each time a listener or handler threw. */
     public fun onFailure(failure: ListenerFailure)
 
-    /** The handler trees have by default. */
-    public companion object {
-        /** Logs each failure as a warning: the listener, the event, and the stack trace of what it threw. */
-        @JvmField
-        public val LOG: ListenerFailureHandler = ListenerFailureHandler { failure ->
+    /**
+     * The handler trees have by default: logs each failure as a warning, with the listener, the event
+     * and the stack trace of what it threw. Java: `ListenerFailureHandler.Log.INSTANCE`.
+     */
+    public object Log : ListenerFailureHandler {
+        override fun onFailure(failure: ListenerFailure) {
             LoggerFactory.getLogger(ListenerFailure::class.java).warn("listener {} failed on {}: {}", failure.listener, failure.event, failure.error.toString(), failure.error)
         }
+
+        override fun toString(): String = "ListenerFailureHandler.Log"
     }
 }

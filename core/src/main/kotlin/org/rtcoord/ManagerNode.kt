@@ -18,7 +18,7 @@ import kotlin.time.TimeSource
  * components includes its slaves', which are shown below the slaves only. A master forwards creation
  * to a slave; deletion goes to whichever manager hosts the component.
  */
-public class ManagerNode internal constructor(
+public sealed class ManagerNode(
     path: RtcPath,
     core: TreeCore,
     @get:JvmSynthetic internal val ref: Manager,
@@ -44,7 +44,7 @@ public class ManagerNode internal constructor(
                 val components = async { calls.componentsOf(slave) }
                 val name = slaveName.await() ?: return@async null
                 val node = previous.filterIsInstance<ManagerNode>().firstOrNull { it.name == name && it.ref._is_equivalent(slave) }
-                    ?: ManagerNode(path.child(name), core, slave, null, this@ManagerNode)
+                    ?: ManagerNodeImpl(path.child(name), core, slave, null, this@ManagerNode)
                 // The master's listing says where they run: known before the slave's own listing is read.
                 node to components.await().orEmpty().map { core.components.objectFor(it).apply { hostedBy(node) } }
             }
@@ -56,7 +56,7 @@ public class ManagerNode internal constructor(
                 // Listed but gone: it exited and its manager has not cleaned it up yet.
                 val name = "${reachable { component.instanceName(subject) } ?: return@async null}.rtc"
                 previous.filterIsInstance<ComponentNode>().firstOrNull { it.component === component && it.name == name }
-                    ?: ComponentNode(path.child(name), core, component)
+                    ?: ComponentNodeImpl(path.child(name), core, component)
             }
         }
         slaveListings.map { it.first } + componentNodes.awaitAll().filterNotNull()
@@ -98,7 +98,7 @@ public class ManagerNode internal constructor(
         }
         return relist().filterIsInstance<ComponentNode>().firstOrNull { it.component === component }
             ?: findBelowSlaves(component)
-            ?: ComponentNode(path.child(name), core, component)
+            ?: ComponentNodeImpl(path.child(name), core, component)
     }
 
     /**
@@ -196,3 +196,7 @@ public class ManagerNode internal constructor(
             slave.relist().filterIsInstance<ComponentNode>().firstOrNull { it.component === component }
         }
 }
+
+/** The [ManagerNode]s the tree makes ([Node] says why that class is sealed). */
+internal class ManagerNodeImpl(path: RtcPath, core: TreeCore, ref: Manager, namingParent: NamingDirectory?, master: ManagerNode? = null) :
+    ManagerNode(path, core, ref, namingParent, master)

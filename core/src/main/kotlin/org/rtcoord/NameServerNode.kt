@@ -7,7 +7,7 @@ import org.rtcoord.internal.NameServerProbe
 import org.rtcoord.internal.TreeCore
 
 /** A name server: its root naming context, at `corbaloc:iiop:host:port/NameService`. */
-public class NameServerNode internal constructor(path: RtcPath, core: TreeCore) : NamingDirectory(path, core) {
+public sealed class NameServerNode(path: RtcPath, core: TreeCore) : NamingDirectory(path, core) {
     override val kind: NodeKind get() = NodeKind.NAME_SERVER
 
     /** `host:port`. */
@@ -31,3 +31,6 @@ public class NameServerNode internal constructor(path: RtcPath, core: TreeCore) 
         throw NameServerProbe(core, path, address).explain(e)
     }
 }
+
+/** The [NameServerNode]s the tree makes ([Node] says why that class is sealed). */
+internal class NameServerNodeImpl(path: RtcPath, core: TreeCore) : NameServerNode(path, core)

@@ -50,22 +50,22 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
         val childPath = path.child(name)
         val old = previous.firstOrNull { it.name == name }
         if (binding.binding_type == BindingType.ncontext) {
-            return old as? ContextNode ?: ContextNode(childPath, core, this, binding.binding_name)
+            return old as? ContextNode ?: ContextNodeImpl(childPath, core, this, binding.binding_name)
         }
         val target = calls.resolve(binding.binding_name) ?: return null
         return when (childPath.kind) {
             "rtc" -> {
                 val component = core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target))
-                (old as? ComponentNode)?.takeIf { it.component === component } ?: ComponentNode(childPath, core, component, this)
+                (old as? ComponentNode)?.takeIf { it.component === component } ?: ComponentNodeImpl(childPath, core, component, this)
             }
-            "mgr" -> (old as? ManagerNode)?.takeIf { it.ref._is_equivalent(target) } ?: ManagerNode(childPath, core, ManagerHelper.unchecked_narrow(target), this)
-            else -> UnknownNode(childPath, core, target)
+            "mgr" -> (old as? ManagerNode)?.takeIf { it.ref._is_equivalent(target) } ?: ManagerNodeImpl(childPath, core, ManagerHelper.unchecked_narrow(target), this)
+            else -> UnknownNodeImpl(childPath, core, target)
         }
     }
 }
 
 /** A naming context below a name server's root. */
-public class ContextNode internal constructor(
+public sealed class ContextNode(
     path: RtcPath,
     core: TreeCore,
     private val parent: NamingDirectory,
@@ -85,3 +85,7 @@ public class ContextNode internal constructor(
         return NamingCalls.contextAt(core, path, parent.root(), fullName)
     }
 }
+
+/** The [ContextNode]s the tree makes ([Node] says why that class is sealed). */
+internal class ContextNodeImpl(path: RtcPath, core: TreeCore, parent: NamingDirectory, binding: Array<NameComponent>) :
+    ContextNode(path, core, parent, binding)

@@ -20,6 +20,10 @@ public enum class NodeKind {
  * The suspend members and flows of nodes are for Kotlin: Java does not see them (`@JvmSynthetic`), since
  * a `Continuation` is no way to call a remote operation from Java. Java calls them through the facades of
  * `org.rtcoord.java` (`JavaTree`, `JavaComponent`, `JavaPort`, ...), blocking or as a `CompletableFuture`.
+ *
+ * Only the tree makes nodes: each class is sealed, and the tree makes its one `internal` subclass
+ * (`ComponentNodeImpl`, ...). Kotlin compiles a sealed class's constructor as private, which javac cannot
+ * call; an `internal` constructor would be public to javac.
  */
 public sealed class Node(
     /** Where the node is: `/host:port/ctx/name.rtc`. */

@@ -3,6 +3,13 @@ package org.rtcoord
 /** A name server address: [normalised] `host:port`, and as the user [written] it, for display. */
 internal class NameServerAddress(val normalised: String, val written: String)
 
+/** What [PathParser] reads of a path's text: the fields of an [RtcPath], which only that class makes. */
+internal class PathParts(val address: NameServerAddress?, val names: List<String>, val port: String?, val objectReference: String?, val isDirectory: Boolean) {
+    companion object {
+        val ROOT = PathParts(null, emptyList(), null, null, true)
+    }
+}
+
 /** The text forms of [RtcPath], described on that class. */
 internal object PathParser {
     private const val DEFAULT_PORT = 2809
@@ -10,7 +17,7 @@ internal object PathParser {
     private const val NAME_SERVICE = "NameService"
     private val IIOP_VERSION = Regex("""^\d+\.\d+@""")
 
-    fun parse(text: String, workingDirectory: RtcPath?): RtcPath {
+    fun parse(text: String, workingDirectory: RtcPath?): PathParts {
         require(workingDirectory == null || (workingDirectory.objectReference == null && workingDirectory.port == null)) {
             "working directory $workingDirectory is not a node of the tree"
         }
@@ -18,23 +25,26 @@ internal object PathParser {
         // rtctree writes a name server address that holds a '/' below the root, then '#': accept that slash.
         val corbaloc = text.removePrefix("/")
         return when {
-            text == "/" -> RtcPath.ROOT
+            text == "/" -> PathParts.ROOT
             corbaloc.startsWith(CORBALOC, ignoreCase = true) -> parseCorbaloc(text, corbaloc)
-            text.startsWith('/') -> walk(text, RtcPath.ROOT, corbaloc, 0)
+            text.startsWith('/') -> walk(text, PathParts.ROOT, corbaloc, 0)
             workingDirectory == null -> throw BadPathException(text, 0, "relative path without a working directory")
-            else -> walk(text, workingDirectory, text, 0)
+            else -> walk(text, PathParts(workingDirectory.address, workingDirectory.names, null, null, true), text, 0)
         }
     }
 
-    fun nameServer(address: String): RtcPath {
-        val path = when {
+    /**
+     * The name server at [address] (`host`, `host:port` or `corbaloc:iiop:host:port[/NameService]`) as the
+     * text of its path, `/host[:port]` as written.
+     */
+    fun nameServer(address: String): String {
+        val server = when {
             address.startsWith(CORBALOC, ignoreCase = true) ->
-                parseCorbaloc(address, if ('/' in address) address else "$address/$NAME_SERVICE")
+                parseCorbaloc(address, if ('/' in address) address else "$address/$NAME_SERVICE").takeIf { it.names.isEmpty() }?.address
             '/' in address -> null
-            else -> RtcPath(address(address, 0, address), emptyList(), null, null, false)
+            else -> address(address, 0, address)
         }
-        if (path?.nameServer == null || path.names.isNotEmpty()) throw BadPathException(address, 0, "not a name server address")
-        return path
+        return "/" + (server ?: throw BadPathException(address, 0, "not a name server address")).written
     }
 
     /** Parses `host[:port]`, the segment at [position] of [subject]. */
@@ -71,7 +81,7 @@ internal object PathParser {
             ?: throw BadPathException(subject, position, "bad port '$port'")
 
     /** [corbaloc] is [subject] without the leading slash rtctree may add. */
-    private fun parseCorbaloc(subject: String, corbaloc: String): RtcPath {
+    private fun parseCorbaloc(subject: String, corbaloc: String): PathParts {
         val reference = corbaloc.substringBefore('#')
         val addresses = reference.substring(CORBALOC.length).substringBefore('/')
         val key = reference.substringAfter('/', "")
@@ -79,10 +89,10 @@ internal object PathParser {
         val server = if (key == NAME_SERVICE) iiopAddress(subject, addresses) else null
         val continuation = corbaloc.substringAfter('#', "").takeIf { '#' in corbaloc }
         return when {
-            server != null && continuation != null -> walk(subject, RtcPath(server, emptyList(), null, null, false), continuation, 1)
-            server != null -> RtcPath(server, emptyList(), null, null, false)
+            server != null && continuation != null -> walk(subject, PathParts(server, emptyList(), null, null, false), continuation, 1)
+            server != null -> PathParts(server, emptyList(), null, null, false)
             continuation != null -> throw BadPathException(subject, 0, "'#' follows only a corbaloc:iiop:host:port/NameService")
-            else -> RtcPath(null, emptyList(), null, reference, false)
+            else -> PathParts(null, emptyList(), null, reference, false)
         }
     }
 
@@ -101,7 +111,7 @@ internal object PathParser {
      * Applies the `/`-separated segments of [body], numbered from [first] in messages, to [base]. The
      * first segment below the root is a name server address.
      */
-    private fun walk(subject: String, base: RtcPath, body: String, first: Int): RtcPath {
+    private fun walk(subject: String, base: PathParts, body: String, first: Int): PathParts {
         val directory = body.endsWith('/')
         val segments = body.removeSuffix("/").split('/')
         var server = base.address
@@ -128,6 +138,6 @@ internal object PathParser {
             }
         }
         val isDirectory = directory || segments.last() == "." || segments.last() == ".."
-        return server?.let { RtcPath(it, names, port, null, isDirectory) } ?: RtcPath.ROOT
+        return server?.let { PathParts(it, names, port, null, isDirectory) } ?: PathParts.ROOT
     }
 }

@@ -14,8 +14,11 @@ import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.PortCalls
 import org.rtcoord.internal.ValueFields
 
-/** A port of a component, addressed as `component.rtc:name`. */
-public class Port internal constructor(
+/**
+ * A port of a component, addressed as `component.rtc:name`: [ComponentNode.port] gives it. The class is
+ * sealed for the reason [Node] gives.
+ */
+public sealed class Port(
     /** The component the port belongs to. */
     public val component: ComponentNode,
     /** The port's name without the instance prefix. */
@@ -152,6 +155,9 @@ public class Port internal constructor(
 
     override fun toString(): String = "port $path"
 }
+
+/** The [Port]s a component gives. */
+internal class PortImpl(component: ComponentNode, name: String) : Port(component, name)
 
 /** A connection as read from one of its ports. */
 public class Connection(public val id: String, public val name: String, public val properties: Map<String, String>, public val ports: List<End>) : ValueObject() {

@@ -7,8 +7,8 @@ import org.rtcoord.internal.TreeCore
  * them, whatever answers at its address: one that cannot be listed is a [ZombieNode] whose cause says
  * why (unreachable, hung, or something else answering there), and never fails the others' reads.
  */
-public class RootNode internal constructor(core: TreeCore, private val servers: () -> List<NameServerNode>) :
-    DirectoryNode(RtcPath.ROOT, core) {
+public sealed class RootNode(core: TreeCore, private val servers: () -> List<NameServerNode>) :
+    DirectoryNode(RtcPath("/"), core) {
     override val kind: NodeKind get() = NodeKind.ROOT
 
     @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> = servers()
@@ -18,3 +18,6 @@ public class RootNode internal constructor(core: TreeCore, private val servers: 
 
     @JvmSynthetic override fun buries(failure: RtcException): Boolean = true
 }
+
+/** The [RootNode] the tree makes ([Node] says why that class is sealed). */
+internal class RootNodeImpl(core: TreeCore, servers: () -> List<NameServerNode>) : RootNode(core, servers)

@@ -1,12 +1,14 @@
+@file:JvmName("RtcPaths")
+
 package org.rtcoord
 
 /**
  * The absolute path of a node of the RTC tree, optionally with a port of its last object, or a direct
- * object reference.
+ * object reference: `RtcPath("/host/ctx/laser0.rtc:laser")`, `RtcPath("/")` for the root.
  *
  * The tree is the root `/`, then name servers, then naming contexts (nested), then the objects bound
  * in them: components (`name.rtc`), managers (`name.mgr`) and others; below a manager come its slave
- * managers and the components it manages. The text forms [parse] reads:
+ * managers and the components it manages. The text forms its constructor reads:
  *
  * - `/host[:port]/ctx/.../name.kind[:port]`: the first segment is the name server address (port 2809
  *   when absent), the others are names `id.kind` (the kind may be empty) made of any characters but
@@ -21,13 +23,26 @@ package org.rtcoord
  * Instances are immutable. Equality, hashing and ordering follow the canonical text ([toString]); how
  * the name server address was written and [isDirectory] do not take part.
  */
-public class RtcPath internal constructor(
+public class RtcPath private constructor(
     @get:JvmSynthetic internal val address: NameServerAddress?,
     names: List<String>,
     port: String?,
     objectReference: String?,
     isDirectory: Boolean,
 ) : Comparable<RtcPath> {
+    /**
+     * Reads [text] in one of the forms described above; a relative one resolves against
+     * [workingDirectory], a node of the tree without a port.
+     *
+     * @throws BadPathException naming the offending segment when [text] does not follow the grammar
+     *   or is relative without a working directory.
+     */
+    @JvmOverloads
+    @Throws(BadPathException::class)
+    public constructor(text: String, workingDirectory: RtcPath? = null) : this(PathParser.parse(text, workingDirectory))
+
+    private constructor(parts: PathParts) : this(parts.address, parts.names, parts.port, parts.objectReference, parts.isDirectory)
+
     /** The normalised `host:port` of the name server; null for the root and for object references. */
     public val nameServer: String? = address?.normalised
 
@@ -67,7 +82,7 @@ public class RtcPath internal constructor(
         get() = when {
             isRoot || objectReference != null -> null
             port != null -> RtcPath(address, names, null, null, false)
-            names.isEmpty() -> ROOT
+            names.isEmpty() -> RtcPath(PathParts.ROOT)
             else -> RtcPath(address, names.dropLast(1), null, null, false)
         }
 
@@ -86,6 +101,7 @@ public class RtcPath internal constructor(
      *   name server (below the root, `:` starts the port of the address); or if this is a port path or
      *   an object reference.
      */
+    @Throws(BadPathException::class)
     public fun child(name: String): RtcPath {
         val subject = text.removeSuffix("/") + "/" + name
         val position = if (isRoot) 0 else names.size + 1
@@ -105,6 +121,7 @@ public class RtcPath internal constructor(
      * @throws BadPathException if [port] is empty or contains `/` or `:`, or if this is not a named
      *   object (the root, a name server, an object reference).
      */
+    @Throws(BadPathException::class)
     public fun withPort(port: String?): RtcPath {
         if (port == null) return if (this.port == null) this else RtcPath(address, names, null, null, false)
         val subject = "$text:$port"
@@ -151,31 +168,13 @@ public class RtcPath internal constructor(
      * `/127.0.0.1:2809/host.host_cxt/laser0.rtc:laser`; for an object reference its `corbaloc:` address.
      */
     override fun toString(): String = text
-
-    /** The root and the parsers. */
-    public companion object {
-        /** The root `/`. */
-        @JvmField
-        public val ROOT: RtcPath = RtcPath(null, emptyList(), null, null, true)
-
-        /**
-         * Reads [text] in one of the forms described on [RtcPath]; relative paths resolve against
-         * [workingDirectory], a node of the tree without a port.
-         *
-         * @throws BadPathException naming the offending segment when [text] does not follow the grammar
-         *   or is relative without a working directory.
-         */
-        @JvmStatic
-        @JvmOverloads
-        public fun parse(text: String, workingDirectory: RtcPath? = null): RtcPath =
-            PathParser.parse(text, workingDirectory)
-
-        /**
-         * The name server at [address]: `host`, `host:port` or `corbaloc:iiop:host:port[/NameService]`.
-         *
-         * @throws BadPathException if [address] is none of these.
-         */
-        @JvmStatic
-        public fun nameServer(address: String): RtcPath = PathParser.nameServer(address)
-    }
 }
+
+/**
+ * The path of the name server at [address]: `host`, `host:port` or `corbaloc:iiop:host:port[/NameService]`,
+ * as [TreeConfig.nameServers] takes it. Java: `RtcPaths.nameServerPath(address)`.
+ *
+ * @throws BadPathException naming [address] if it is none of these.
+ */
+@Throws(BadPathException::class)
+public fun nameServerPath(address: String): RtcPath = RtcPath(PathParser.nameServer(address))

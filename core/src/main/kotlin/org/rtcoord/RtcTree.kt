@@ -22,15 +22,21 @@ import java.util.concurrent.CopyOnWriteArrayList
  * a dead, hung or unreachable object becomes a [ZombieNode] without holding up the rest. Close the tree
  * to release its ORB (unless the host application supplied it). Java callers use it through
  * [org.rtcoord.java.JavaTree].
+ *
+ * `RtcTree(config)` makes a tree configured by [config]; `RtcTree()` one with the defaults, whose name
+ * servers are added later ([addNameServer]).
  */
-public class RtcTree private constructor(public val config: TreeConfig) : AutoCloseable {
+public class RtcTree @JvmOverloads constructor(
+    /** How the tree talks to the system. */
+    public val config: TreeConfig = TreeConfig(),
+) : AutoCloseable {
     @get:JvmSynthetic internal val core = TreeCore(config) { ArrayList(servers) }
     // Read through copies: toList() and firstOrNull() read the size, then the elements, and a name server
     // removed in between fails them.
     private val servers = CopyOnWriteArrayList<NameServerNode>()
 
     /** The root node; its children are the name servers. */
-    public val root: RootNode = RootNode(core) { ArrayList(servers) }
+    public val root: RootNode = RootNodeImpl(core) { ArrayList(servers) }
 
     init {
         config.nameServers.forEach(::addNameServer)
@@ -52,10 +58,10 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * `127.0.0.1:2810`): one name server is one node, named as first given.
      */
     public fun addNameServer(address: String): NameServerNode {
-        val path = RtcPath.nameServer(address)
+        val path = nameServerPath(address)
         synchronized(servers) {
             known(path)?.let { return it }
-            return NameServerNode(path, core).also {
+            return NameServerNodeImpl(path, core).also {
                 servers += it
                 root.showSettled()
             }
@@ -64,7 +70,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
 
     /** Removes the name server at [address] (or another spelling of it); returns whether the tree had it. */
     public fun removeNameServer(address: String): Boolean {
-        val path = RtcPath.nameServer(address)
+        val path = nameServerPath(address)
         synchronized(servers) {
             val server = known(path) ?: return false
             return servers.remove(server).also { root.showSettled() }
@@ -81,7 +87,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * absolute path is added if the tree does not have it yet. Reads only what the path needs.
      */
     @JvmSynthetic
-    public suspend fun node(path: String, workingDirectory: RtcPath? = null): Node = node(RtcPath.parse(path, workingDirectory))
+    public suspend fun node(path: String, workingDirectory: RtcPath? = null): Node = node(RtcPath(path, workingDirectory))
 
     /** The node at [path]; a port suffix is ignored (see [port]). */
     @JvmSynthetic
@@ -156,7 +162,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
     /** The port at `component.rtc:port`. */
     @JvmSynthetic
     public suspend fun port(path: String, workingDirectory: RtcPath? = null): Port {
-        val parsed = RtcPath.parse(path, workingDirectory)
+        val parsed = RtcPath(path, workingDirectory)
         val port = parsed.port ?: throw BadPathException(path, parsed.names.size, "no port given (component.rtc:port)")
         return component(parsed.withPort(null).toString()).port(port)
     }
@@ -173,7 +179,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
 
     /** Reads the subtree at [path] again, [depth] levels deep (the whole of it by default), concurrently. */
     @JvmSynthetic
-    public suspend fun refresh(path: RtcPath = RtcPath.ROOT, depth: Int = Int.MAX_VALUE) {
+    public suspend fun refresh(path: RtcPath = RtcPath("/"), depth: Int = Int.MAX_VALUE) {
         node(path).refresh(depth)
     }
 
@@ -183,7 +189,7 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
      * where it is bound in naming; below a manager (an alias) only when its naming path is not found.
      */
     @JvmSynthetic
-    public fun find(from: RtcPath = RtcPath.ROOT, predicate: suspend (Node) -> Boolean = { true }): Flow<Node> = find(from, Int.MAX_VALUE, predicate)
+    public fun find(from: RtcPath = RtcPath("/"), predicate: suspend (Node) -> Boolean = { true }): Flow<Node> = find(from, Int.MAX_VALUE, predicate)
 
     /** As [find], going at most [maxDepth] levels below [from] ([from] is level 0), as rtfind's `-m`. */
     @JvmSynthetic
@@ -309,18 +315,11 @@ public class RtcTree private constructor(public val config: TreeConfig) : AutoCl
         val target = core.orb.orb.string_to_object(corbaloc)
         return when {
             core.remote.call(corbaloc, "_is_a") { target._is_a("IDL:omg.org/RTC/RTObject:1.0") } ->
-                ComponentNode(path, core, core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target)))
+                ComponentNodeImpl(path, core, core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target)))
             core.remote.call(corbaloc, "_is_a") { target._is_a("IDL:RTM/Manager:1.0") } ->
-                ManagerNode(path, core, ManagerHelper.unchecked_narrow(target), null)
-            else -> UnknownNode(path, core, target)
+                ManagerNodeImpl(path, core, ManagerHelper.unchecked_narrow(target), null)
+            else -> UnknownNodeImpl(path, core, target)
         }
-    }
-
-    public companion object {
-        /** A tree configured by [config]. */
-        @JvmStatic
-        @JvmOverloads
-        public fun create(config: TreeConfig = TreeConfig()): RtcTree = RtcTree(config)
     }
 }
 

@@ -9,9 +9,10 @@ package org.rtcoord
  * It holds what the tree knows: the nodes its listings found (each component once, at its
  * [ComponentNode.canonicalPath]), their states as the tree's events last told them (as last read for a
  * component nobody watches), and what it cannot know: name servers that do not answer, managers found
- * dead.
+ * dead. Only the tree makes one, as it makes its entries: these classes are sealed for the reason [Node]
+ * gives.
  */
-public class SystemSnapshot internal constructor(
+public sealed class SystemSnapshot(
     /** The number of the last event this snapshot holds. */
     public val sequence: Long,
     /** Every component the tree's listings found, once each, in the order they were found. */
@@ -35,7 +36,7 @@ public class SystemSnapshot internal constructor(
  * context handle as the tree's events last told them, and how it is watched. [alive] is false for a
  * component found dead or unreachable; its states are then the last ones known.
  */
-public class ComponentEntry internal constructor(
+public sealed class ComponentEntry(
     /** The component, at its canonical path. */
     public val node: ComponentNode,
     /** Its lifecycle state in each execution context, by handle; empty before it was first read. */
@@ -70,7 +71,7 @@ public class ComponentEntry internal constructor(
 }
 
 /** A name server in a [SystemSnapshot]; [lostSince] (milliseconds since the epoch) and [cause] are set while it does not answer. */
-public class NameServerEntry internal constructor(
+public sealed class NameServerEntry(
     /** The name server. */
     public val node: NameServerNode,
     /** Since when it has not answered; null while it answers (or was never asked). */
@@ -83,3 +84,14 @@ public class NameServerEntry internal constructor(
 
     override fun toString(): String = "${node.path} ${if (reachable) "reachable" else "unreachable: ${cause?.reason}"}"
 }
+
+/** The [SystemSnapshot]s the tree makes. */
+internal class SystemSnapshotImpl(sequence: Long, components: List<ComponentEntry>, nameServers: List<NameServerEntry>, managerOutages: List<ManagerDied>) :
+    SystemSnapshot(sequence, components, nameServers, managerOutages)
+
+/** The [ComponentEntry]s the tree makes. */
+internal class ComponentEntryImpl(node: ComponentNode, states: Map<Int, LifeCycle>, alive: Boolean, watchMethod: WatchMethod?, fsm: FsmStatus?) :
+    ComponentEntry(node, states, alive, watchMethod, fsm)
+
+/** The [NameServerEntry]s the tree makes. */
+internal class NameServerEntryImpl(node: NameServerNode, lostSince: Long?, cause: RtcException?) : NameServerEntry(node, lostSince, cause)

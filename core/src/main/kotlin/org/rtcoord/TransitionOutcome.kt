@@ -6,9 +6,10 @@ package org.rtcoord
  * wait `transition_timeout` (0.5 s by default) for the new state and then answer `RTC_ERROR`, while the
  * callback (`on_activated`, `on_deactivated`, `on_reset`, or an `on_execute` the context thread is busy
  * in) runs on; rtcoord then reads the state until the operation's own deadline, and a state that
- * arrives is a success, a slow one.
+ * arrives is a success, a slow one. Only the tree makes one: the class is sealed for the reason [Node]
+ * gives.
  */
-public class TransitionOutcome internal constructor(
+public sealed class TransitionOutcome(
     /** The state the component is in now, the one the operation leads to. */
     public val state: LifeCycle,
     /**
@@ -26,3 +27,6 @@ public class TransitionOutcome internal constructor(
     /** `ACTIVE`, or `ACTIVE, slow: the context answered RTC_ERROR, the state arrived after 812 ms`. */
     override fun toString(): String = if (lateAnswer == null) state.name else "$state, slow: the context answered $lateAnswer, the state arrived after $elapsedMillis ms"
 }
+
+/** The [TransitionOutcome]s the tree makes. */
+internal class TransitionOutcomeImpl(state: LifeCycle, lateAnswer: String?, elapsedMillis: Long) : TransitionOutcome(state, lateAnswer, elapsedMillis)

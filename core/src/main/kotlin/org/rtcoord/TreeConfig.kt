@@ -1,6 +1,5 @@
 package org.rtcoord
 
-import org.rtcoord.internal.ListenAddress
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.toKotlinDuration
@@ -23,9 +22,11 @@ import kotlin.time.toKotlinDuration
  *   components call observers back there); give an address explicitly when they cannot. `0.0.0.0`
  *   listens on every interface, and only when given.
  * @property listenerFailures where what event listeners and handlers throw goes, with the listener and the
- *   event ([ListenerFailure]); by default it is logged ([ListenerFailureHandler.LOG]). Never dropped.
+ *   event ([ListenerFailure]); by default it is logged ([ListenerFailureHandler.Log]). Never dropped.
  *
- * Java callers write `new TreeConfig(List.of("127.0.0.1:2809"))`, or use a [Builder].
+ * Java callers write `new TreeConfig(List.of("127.0.0.1:2809"))`, or use a [Builder]:
+ * `new TreeConfig.Builder().nameServer("127.0.0.1").build()`. [listenAddressProblem] checks a listen
+ * address before it is given.
  */
 public class TreeConfig(
     public val nameServers: List<String> = emptyList(),
@@ -34,7 +35,7 @@ public class TreeConfig(
     public val concurrency: Int = 32,
     public val orb: Any? = null,
     public val listenAddress: String? = null,
-    public val listenerFailures: ListenerFailureHandler = ListenerFailureHandler.LOG,
+    public val listenerFailures: ListenerFailureHandler = ListenerFailureHandler.Log,
 ) {
     /** A configuration with [nameServers] and the defaults for the rest. */
     public constructor(nameServers: List<String>) : this(nameServers, 3.seconds)
@@ -50,14 +51,14 @@ public class TreeConfig(
         require(problem == null) { "listen address: $problem" }
     }
 
-    /** Builds a [TreeConfig] step by step, for Java callers: `TreeConfig.builder().nameServer("127.0.0.1").build()`. */
+    /** Builds a [TreeConfig] step by step, for Java callers: `new TreeConfig.Builder().nameServer("127.0.0.1").build()`. */
     public class Builder {
         private val nameServers = mutableListOf<String>()
         private var callTimeout: Duration = 3.seconds
         private var concurrency = 32
         private var orb: Any? = null
         private var listenAddress: String? = null
-        private var listenerFailures = ListenerFailureHandler.LOG
+        private var listenerFailures: ListenerFailureHandler = ListenerFailureHandler.Log
 
         /** Adds a name server (see [TreeConfig.nameServers]). */
         public fun nameServer(address: String): Builder = apply { nameServers += address }
@@ -79,15 +80,5 @@ public class TreeConfig(
 
         /** The configuration; fails as the constructor does on a bad value. */
         public fun build(): TreeConfig = TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress, listenerFailures)
-    }
-
-    public companion object {
-        /** A [Builder] holding the defaults. */
-        @JvmStatic
-        public fun builder(): Builder = Builder()
-
-        /** Why a tree's ORB could not listen on [address], or null when it can: one of this host's addresses, or `0.0.0.0`. */
-        @JvmStatic
-        public fun listenAddressProblem(address: String): String? = ListenAddress.problem(address)
     }
 }

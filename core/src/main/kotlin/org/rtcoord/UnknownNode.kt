@@ -3,7 +3,7 @@ package org.rtcoord
 import org.rtcoord.internal.TreeCore
 
 /** A bound object that is neither a component nor a manager (its binding's kind is [bindingKind]). */
-public class UnknownNode internal constructor(
+public sealed class UnknownNode(
     path: RtcPath,
     core: TreeCore,
     /** The reference bound at [path]. */
@@ -17,3 +17,6 @@ public class UnknownNode internal constructor(
     @JvmSynthetic
     override suspend fun refresh(depth: Int): Unit = Unit
 }
+
+/** The [UnknownNode]s the tree makes ([Node] says why that class is sealed). */
+internal class UnknownNodeImpl(path: RtcPath, core: TreeCore, reference: org.omg.CORBA.Object) : UnknownNode(path, core, reference)

@@ -8,7 +8,7 @@ import org.rtcoord.internal.TreeCore
  * could not be listed, for whatever reason: unreachable or hung, or something other than a name server
  * answering at its address (a [WrongKindException] saying what answers).
  */
-public class ZombieNode internal constructor(
+public sealed class ZombieNode(
     path: RtcPath,
     core: TreeCore,
     /** Why the object is taken for dead. */
@@ -29,3 +29,6 @@ public class ZombieNode internal constructor(
         context.unbind(name)
     }
 }
+
+/** The [ZombieNode]s the tree makes ([Node] says why that class is sealed). */
+internal class ZombieNodeImpl(path: RtcPath, core: TreeCore, cause: RtcException, parent: DirectoryNode) : ZombieNode(path, core, cause, parent)

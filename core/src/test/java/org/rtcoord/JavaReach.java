@@ -1,6 +1,5 @@
 package org.rtcoord;
 
-import java.io.IOException;
 import java.lang.reflect.Constructor;
 import java.lang.reflect.Executable;
 import java.lang.reflect.Field;
@@ -52,27 +51,13 @@ public final class JavaReach {
     private final Path idl;
 
     /**
-     * Fails unless [leaks] are those listed in {@code api/java-leaks.txt} of [module] (relative to the
-     * module's directory): a new leak fails, and so does one that is gone, so that the list only
-     * shrinks. The list is what javac still reaches that it should not: Companion fields Kotlin callers
-     * still go through, and {@code internal} constructors, which no annotation hides from javac; it is
-     * debt to pay, not a list of exceptions. With {@code -Drtcoord.api.update=true} it is rewritten instead.
+     * Fails, listing them, if javac reaches any leak from the classes in [packages] of the class directories
+     * (or jars) [anchors] were loaded from: there is no list of leaks tolerated.
      */
-    public static void assertOnlyKnown(String module, List<String> leaks) throws IOException {
-        Path known = Paths.get("api", "java-leaks.txt");
-        String update = "mvn -pl " + module + " -am test -Dtest='JavaSurfaceTest,JavaReachTest' -Dsurefire.failIfNoSpecifiedTests=false -Drtcoord.api.update=true";
-        if (Boolean.getBoolean("rtcoord.api.update")) {
-            Files.createDirectories(known.getParent());
-            Files.writeString(known, leaks.stream().map(l -> l + "\n").collect(Collectors.joining()));
-        }
-        List<String> listed = Files.exists(known) ? Files.readAllLines(known) : List.of();
-        List<String> added = leaks.stream().filter(l -> !listed.contains(l)).collect(Collectors.toList());
-        List<String> gone = listed.stream().filter(l -> !leaks.contains(l)).collect(Collectors.toList());
-        if (!added.isEmpty()) {
-            throw new AssertionError("javac reaches what it should not, and " + module + "/" + known + " does not list it:\n" + String.join("\n", added));
-        }
-        if (!gone.isEmpty()) {
-            throw new AssertionError("leaks listed in " + module + "/" + known + " are gone: run `" + update + "` and commit the file:\n" + String.join("\n", gone));
+    public static void assertNone(List<Class<?>> anchors, List<String> packages) throws Exception {
+        List<String> leaks = leaks(anchors, packages);
+        if (!leaks.isEmpty()) {
+            throw new AssertionError("javac reaches what it should not from " + packages + ":\n" + String.join("\n", leaks));
         }
     }
 

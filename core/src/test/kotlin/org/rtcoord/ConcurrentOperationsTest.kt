@@ -17,7 +17,7 @@ class ConcurrentOperationsTest {
     fun `many coroutines operate and read different nodes at once without deadlock or lost update`(): Unit = runBlocking {
         NamingService.start().use { naming ->
             Scenarios.scale(naming.corbaloc, 40).use {
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     tree.refresh()
                     val components = tree.find { it is ComponentNode }.toList().map { it as ComponentNode }
                     withTimeout(60.seconds) {
@@ -34,7 +34,7 @@ class ConcurrentOperationsTest {
                             repeat(100) { launch(Dispatchers.Default) { components.random().snapshot() } }
                         }
                     }
-                    RtcTree.create(TreeConfig(listOf(naming.address))).use { witness ->
+                    RtcTree(TreeConfig(listOf(naming.address))).use { witness ->
                         witness.refresh()
                         val seen = witness.find { it is ComponentNode }.toList().map { it as ComponentNode }
                         assertEquals(40, seen.size)

@@ -87,7 +87,7 @@ class DataTapTest {
     @Test
     fun `a restarted tree removes the tap connector its crashed predecessor left, and no live tree's`(): Unit = runBlocking {
         val path = localisation.path("gyro0.rtc:gyro")
-        val crashed = RtcTree.create(TreeConfig(listOf(localisation.naming.address)))
+        val crashed = RtcTree(TreeConfig(listOf(localisation.naming.address)))
         try {
             samples(crashed.port(path))
             val (other, otherQueue) = samples(tree.port(path))
@@ -95,7 +95,7 @@ class DataTapTest {
             crashed.core.orb.orb.destroy()
             assertEquals(2, tapConnectors("gyro0", "gyro").size, "the crashed tree's tap stays behind")
 
-            RtcTree.create(TreeConfig(listOf(localisation.naming.address))).use { restarted ->
+            RtcTree(TreeConfig(listOf(localisation.naming.address))).use { restarted ->
                 val queue = LinkedBlockingQueue<PortData>()
                 restarted.port(path).tap { queue += it }
                 assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDouble)
@@ -137,7 +137,7 @@ class DataTapTest {
     @Test
     fun `port traffic events come from the observer's SEND and RECEIVE hints, at most one per interval per port`(): Unit = runBlocking {
         val recorder = EventRecorder()
-        val options = EventOptions.builder().mode(WatchMode.PUSH).trafficInterval(JavaDuration.ofMillis(200)).build()
+        val options = EventOptions.Builder().mode(WatchMode.PUSH).trafficInterval(JavaDuration.ofMillis(200)).build()
         val laser = tree.on(localisation.path("laser0.rtc"), PortTraffic::class.java, options, recorder.handler)
         tree.on(localisation.path("laser_localise0.rtc"), PortTraffic::class.java, options, recorder.handler).use {
             val received = recorder.next<PortTraffic> { it.port == "laser" && it.source.name == "laser_localise0.rtc" }

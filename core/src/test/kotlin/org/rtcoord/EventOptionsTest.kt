@@ -20,8 +20,8 @@ class EventOptionsTest {
 
     @Test
     fun `the builder starts from the defaults and checks what it builds as the constructor does`() {
-        assertEquals(fields(EventOptions()), fields(EventOptions.builder().build()))
-        val e = assertThrows<IllegalArgumentException> { EventOptions.builder().missedBeats(0).build() }
+        assertEquals(fields(EventOptions()), fields(EventOptions.Builder().build()))
+        val e = assertThrows<IllegalArgumentException> { EventOptions.Builder().missedBeats(0).build() }
         assertEquals("missedBeats must be positive, was 0", e.message)
     }
 }

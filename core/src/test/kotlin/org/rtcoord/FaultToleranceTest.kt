@@ -81,7 +81,7 @@ class FaultToleranceTest {
         LogCapture(ListingMonitor::class.java).use { logs ->
             restart.start().use { server ->
                 Scenarios.localisation(server.corbaloc).use { system ->
-                    RtcTree.create(TreeConfig(listOf(server.address))).use { tree ->
+                    RtcTree(TreeConfig(listOf(server.address))).use { tree ->
                         val host = "/${server.address}/${RuntimeProcess.hostContext}"
                         val recorder = EventRecorder()
                         tree.on(host, RtcEvent::class.java, push, recorder.handler)
@@ -106,7 +106,7 @@ class FaultToleranceTest {
                         assertEquals(LifeCycle.ERROR, recorder.next<StateChanged> { it.source.name == "laser0.rtc" }.new, "events flow after the restart")
 
                         tree.refresh()
-                        val found = tree.find(RtcPath.parse(host)) { it.path.parent == RtcPath.parse(host) }.toList().map { it.name }.toSet()
+                        val found = tree.find(RtcPath(host)) { it.path.parent == RtcPath(host) }.toList().map { it.name }.toSet()
                         assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc", "late0.rtc", "manager.mgr"), found)
                         assertEquals(LifeCycle.ERROR, tree.component("$host/laser0.rtc").state())
                     }
@@ -279,7 +279,7 @@ class FaultToleranceTest {
         LocalisationSystem().use { localisation ->
             // Heartbeats far apart, so the component itself finds no observer dead while the test runs.
             val quiet = EventOptions(WatchMode.PUSH, heartbeat = 60.seconds)
-            val crashed = RtcTree.create(TreeConfig(listOf(localisation.naming.address)))
+            val crashed = RtcTree(TreeConfig(listOf(localisation.naming.address)))
             try {
                 crashed.on<StateChanged>(localisation.path("gyro0.rtc"), quiet) {}
                 restartAfterCrash(crashed, localisation, quiet)
@@ -293,7 +293,7 @@ class FaultToleranceTest {
         val gyro = localisation.system.component("gyro0")
         val path = localisation.path("gyro0.rtc")
         val left = gyro.observerIds.single()
-        RtcTree.create(TreeConfig(listOf(localisation.naming.address))).use { other ->
+        RtcTree(TreeConfig(listOf(localisation.naming.address))).use { other ->
             val alive = EventRecorder()
             other.on(path, StateChanged::class.java, quiet, alive.handler)
             val kept = (gyro.observerIds - left).single()
@@ -303,7 +303,7 @@ class FaultToleranceTest {
             crashed.core.orb.orb.destroy()
             assertEquals(setOf(left, kept), gyro.observerIds)
 
-            RtcTree.create(TreeConfig(listOf(localisation.naming.address))).use { restarted ->
+            RtcTree(TreeConfig(listOf(localisation.naming.address))).use { restarted ->
                 val recorder = EventRecorder()
                 restarted.on(path, StateChanged::class.java, quiet, recorder.handler)
                 val mine = (gyro.observerIds - kept - left).single()

@@ -37,7 +37,7 @@ class FsmWatchTest {
         val told = EventRecorder()
         tree.on(node, RtcEvent::class.java, EventOptions(), told.handler)
         assertEquals(ObserverFlavour.OMG, (told.next<WatchMethodChanged>().new as WatchMethod.Pushed).flavour, "the flavour it offers, as C++ 2.0 by default")
-        assertEquals(FsmStatus(null, "not told yet: OpenRTM-aist tells the state only when it changes"), fsmOf(node))
+        assertEquals(FsmStatusImpl(null, "not told yet: OpenRTM-aist tells the state only when it changes"), fsmOf(node))
 
         fixture.fsmEvent("minute")
         assertEquals(FsmStateChanged(node, null, "Programmed"), told.next<FsmStateChanged>())
@@ -46,7 +46,7 @@ class FsmWatchTest {
         fixture.fsmEvent("close")
         assertEquals(FsmStateChanged(node, "Disabled", "Operational"), told.next<FsmStateChanged>(), "entering a nested state enters each on the way down")
         assertEquals(FsmStateChanged(node, "Operational", "Idle"), told.next<FsmStateChanged>())
-        assertEquals(FsmStatus("Idle", null), fsmOf(node))
+        assertEquals(FsmStatusImpl("Idle", null), fsmOf(node))
         assertTrue(told.drained<FsmStateChanged>().isEmpty(), "leaving a state or initialising one is no event")
     }
 
@@ -64,9 +64,9 @@ class FsmWatchTest {
         unwatchedNode.snapshot()
 
         legacy.fsmEvent("minute")
-        assertEquals(FsmStatus(null, "its observer, OpenRTM::ComponentObserver, carries no FSM status"), fsmOf(legacyNode))
-        assertEquals(FsmStatus(null, "polled: OpenRTM-aist tells the state only to FSM4RTC observers"), fsmOf(polledNode))
-        assertEquals(FsmStatus(null, "not watched: OpenRTM-aist tells the state only to FSM4RTC observers, as it changes"), fsmOf(unwatchedNode))
+        assertEquals(FsmStatusImpl(null, "its observer, OpenRTM::ComponentObserver, carries no FSM status"), fsmOf(legacyNode))
+        assertEquals(FsmStatusImpl(null, "polled: OpenRTM-aist tells the state only to FSM4RTC observers"), fsmOf(polledNode))
+        assertEquals(FsmStatusImpl(null, "not watched: OpenRTM-aist tells the state only to FSM4RTC observers, as it changes"), fsmOf(unwatchedNode))
         assertNull(fsmOf(tree.component(localisation.path("laser0.rtc"))), "a component without an FSM has no FSM status")
     }
 }

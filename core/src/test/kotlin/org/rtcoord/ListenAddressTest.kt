@@ -39,7 +39,7 @@ class ListenAddressTest {
     @Test
     fun `a configured address is the only one listened on and handed out`() {
         LocalisationSystem().use { localisation ->
-            RtcTree.create(TreeConfig(listOf(localisation.naming.address), listenAddress = "127.0.0.2")).use { tree ->
+            RtcTree(TreeConfig(listOf(localisation.naming.address), listenAddress = "127.0.0.2")).use { tree ->
                 val (carried, listening) = observed(localisation, tree)
                 assertEquals(listOf("127.0.0.2"), carried.map { it.substringBeforeLast(':') })
                 assertEquals(carried, listening)

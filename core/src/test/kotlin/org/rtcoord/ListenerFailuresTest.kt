@@ -16,7 +16,7 @@ class ListenerFailuresTest {
         NamingService.start().use { naming ->
             Scenarios.localisation(naming.corbaloc).use {
                 val failures = LinkedBlockingQueue<ListenerFailure>()
-                RtcTree.create(TreeConfig(listOf(naming.address), listenerFailures = { failures += it })).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address), listenerFailures = { failures += it })).use { tree ->
                     val gyro = "/${naming.address}/${RuntimeProcess.hostContext}/gyro0.rtc"
                     val handler: suspend (StateChanged) -> Unit = { event -> error("handler broke on ${event.new}") }
                     val subscription = tree.on(gyro, StateChanged::class.java, handler = handler)

@@ -9,7 +9,7 @@ import org.rtcoord.runtime.naming.NamingService
 class LocalisationSystem : AutoCloseable {
     val naming: NamingService = NamingService.start()
     val system: RtSystem = Scenarios.localisation(naming.corbaloc)
-    val tree: RtcTree = RtcTree.create(TreeConfig(nameServers = listOf(naming.address)))
+    val tree: RtcTree = RtcTree(TreeConfig(nameServers = listOf(naming.address)))
 
     /** `/127.0.0.1:port/<host>.host_cxt` */
     val host: String = "/${naming.address}/${RuntimeProcess.hostContext}"

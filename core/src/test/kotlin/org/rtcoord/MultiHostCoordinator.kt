@@ -19,7 +19,7 @@ fun main(args: Array<String>) {
     runBlocking {
         // Short deadlines and heartbeats keep the test short: a cut host is presumed dead within about 4 s.
         // Tighter limits (1 s) raised false alarms for the host that stays connected on a loaded 2-core machine.
-        RtcTree.create(TreeConfig(listOf(args[0]), callTimeout = 2.seconds)).use { tree ->
+        RtcTree(TreeConfig(listOf(args[0]), callTimeout = 2.seconds)).use { tree ->
             tree.on("/${args[0]}", RtcEvent::class.java, EventOptions(heartbeat = 500.milliseconds, missedBeats = 4)) { event ->
                 val change = (event as? StateChanged)?.let { " ${it.old} ${it.new}" }.orEmpty()
                 println("event ${event.javaClass.simpleName} ${event.path}$change")

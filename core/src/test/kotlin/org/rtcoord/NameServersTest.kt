@@ -27,7 +27,7 @@ class NameServersTest {
                 NamingService.start().use { embedded ->
                     Scenarios.scale(omni.corbaloc, 5).use {
                         Scenarios.localisation(embedded.corbaloc).use {
-                            RtcTree.create(TreeConfig(listOf(omni.address, nowhere, embedded.address))).use { tree ->
+                            RtcTree(TreeConfig(listOf(omni.address, nowhere, embedded.address))).use { tree ->
                                 val elapsed = measureTime { tree.refresh() }
                                 assertTrue(elapsed < 3.seconds, "refresh took $elapsed")
 
@@ -48,7 +48,7 @@ class NameServersTest {
     @Test
     fun `name servers are added and removed at run time`(): Unit = runBlocking {
         NamingService.start().use { naming ->
-            RtcTree.create().use { tree ->
+            RtcTree().use { tree ->
                 assertTrue(tree.root.children().isEmpty())
                 val server = tree.addNameServer("corbaloc:iiop:${naming.address}/NameService")
                 assertTrue(server === tree.addNameServer(naming.address))
@@ -64,7 +64,7 @@ class NameServersTest {
     fun `a name server written two ways is one node, named as first given, reached by either`(): Unit = runBlocking {
         NamingService.start().use { naming ->
             Scenarios.localisation(naming.corbaloc).use {
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     val other = "localhost:${naming.port}"
                     val server = tree.nameServers.single()
                     assertTrue(server === tree.addNameServer(other))
@@ -85,7 +85,7 @@ class NameServersTest {
         var naming = NamingService.start()
         try {
             Scenarios.localisation(naming.corbaloc).use { system ->
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     tree.refresh()
                     assertEquals(4, tree.find { it is ComponentNode }.toList().size, "each once, at its naming path")
 
@@ -113,7 +113,7 @@ class NameServersTest {
             RuntimeProcess.start(null).use { runtime ->
                 RuntimeManager(runtime, isMaster = true)
                 val managerPort = "${runtime.orb.host}:${runtime.orb.port}"
-                RtcTree.create(TreeConfig(listOf(managerPort, naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(managerPort, naming.address))).use { tree ->
                     tree.refresh()
                     val servers = tree.root.children()
                     assertEquals(listOf(NodeKind.ZOMBIE, NodeKind.NAME_SERVER), servers.map { it.kind })
@@ -132,7 +132,7 @@ class NameServersTest {
             val manager = RuntimeManager(runtime, isMaster = true)
             runtime.orb.bindKey("NameService", manager.ref)
             val address = "${runtime.orb.host}:${runtime.orb.port}"
-            RtcTree.create(TreeConfig(listOf(address))).use { tree ->
+            RtcTree(TreeConfig(listOf(address))).use { tree ->
                 tree.root.survey()
                 val server = tree.root.children().single() as ZombieNode
                 assertEquals("/$address: is a manager (IDL:RTM/Manager:1.0), not a name server", server.cause.message)

@@ -69,7 +69,7 @@ class OneTruthTest {
     fun `a name server stopped during a watch is reported gone and back, and nothing appears twice`(restart: NameServerRestart): Unit = runBlocking {
         restart.start().use { server ->
             Scenarios.localisation(server.corbaloc).use { system ->
-                RtcTree.create(TreeConfig(listOf(server.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(server.address))).use { tree ->
                     val recorder = EventRecorder()
                     val appeared = Collections.synchronizedList(ArrayList<RtcPath>())
                     tree.on("/${server.address}", RtcEvent::class.java, push) { event ->
@@ -116,7 +116,7 @@ class OneTruthTest {
             }
             server.bindKey("NameService", server.activate(refusing))
             val address = "127.0.0.1:${server.port}"
-            RtcTree.create(TreeConfig(listOf(address))).use { tree ->
+            RtcTree(TreeConfig(listOf(address))).use { tree ->
                 val recorder = EventRecorder()
                 tree.on("/$address", RtcEvent::class.java, push, recorder.handler)
                 // Listed again and refused at least twice: the watch saw it answer wrongly.
@@ -134,7 +134,7 @@ class OneTruthTest {
         Socket().use { reserved ->
             reserved.bind(InetSocketAddress(InetAddress.getLoopbackAddress(), 0))
             val address = "127.0.0.1:${reserved.localPort}"
-            RtcTree.create(TreeConfig(listOf(address))).use { tree ->
+            RtcTree(TreeConfig(listOf(address))).use { tree ->
                 val recorder = EventRecorder()
                 tree.on("/$address", RtcEvent::class.java, push, recorder.handler)
                 assertTrue(recorder.next<NameServerLost>(timeout = 5.seconds).cause is UnreachableException)
@@ -157,7 +157,7 @@ class OneTruthTest {
             val listed = belowManager.children().filterIsInstance<ComponentNode>() +
                 belowManager.children().filterIsInstance<ManagerNode>().flatMap { it.children().filterIsInstance<ComponentNode>() }
             assertTrue(listed.isNotEmpty())
-            for (alias in listed) assertTrue(alias.canonicalPath.startsWith(RtcPath.parse(localisation.host)), "${alias.path} -> ${alias.canonicalPath}")
+            for (alias in listed) assertTrue(alias.canonicalPath.startsWith(RtcPath(localisation.host)), "${alias.path} -> ${alias.canonicalPath}")
         }
     }
 }

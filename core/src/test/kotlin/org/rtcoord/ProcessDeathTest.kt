@@ -26,7 +26,7 @@ class ProcessDeathTest {
     fun `every component of a SIGKILLed process is reported within one and a half heartbeats, each saying why`(): Unit = runBlocking {
         NamingService.start().use { naming ->
             FixtureProcess.start("--naming", naming.address, "--scenario", "localisation").use { process ->
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     val host = "/${naming.address}/${RuntimeProcess.hostContext}"
                     val names = listOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc")
                     val gone = ConcurrentHashMap<String, Long>()

@@ -16,7 +16,7 @@ import java.util.concurrent.TimeUnit
 
 class RtcPathTest {
     private fun path(text: String, workingDirectory: String? = null) =
-        RtcPath.parse(text, workingDirectory?.let { RtcPath.parse(it) })
+        RtcPath(text, workingDirectory?.let { RtcPath(it) })
 
     private fun bad(text: String, position: Int, reason: String, parse: () -> Any?) {
         val e = assertThrows(BadPathException::class.java) { parse() }
@@ -29,7 +29,7 @@ class RtcPathTest {
     @Test
     fun `the root`() {
         val root = path("/")
-        assertEquals(RtcPath.ROOT, root)
+        assertEquals(RtcPath("/"), root)
         assertTrue(root.isRoot)
         assertTrue(root.isDirectory)
         assertNull(root.nameServer)
@@ -40,7 +40,7 @@ class RtcPathTest {
         assertEquals("/", root.name)
         assertEquals("", root.kind)
         assertEquals("/", root.toString())
-        assertEquals(RtcPath.ROOT, path("/localhost/ctx/../.."))
+        assertEquals(RtcPath("/"), path("/localhost/ctx/../.."))
     }
 
     private class NameServerCase(val text: String, val nameServer: String, val written: String, val isDirectory: Boolean)
@@ -61,7 +61,7 @@ class RtcPathTest {
             assertEquals(case.isDirectory, server.isDirectory)
             assertEquals(emptyList<String>(), server.names)
             assertNull(server.port)
-            assertEquals(RtcPath.ROOT, server.parent)
+            assertEquals(RtcPath("/"), server.parent)
             assertEquals("/${case.nameServer}", server.toString())
         }
     }
@@ -226,7 +226,7 @@ class RtcPathTest {
             assertEquals(text, reference.name)
             assertEquals(text, reference.toString())
             assertTrue(reference.startsWith(reference))
-            assertFalse(reference.startsWith(RtcPath.ROOT))
+            assertFalse(reference.startsWith(RtcPath("/")))
             bad("$text/x", 1, "nothing below an object reference") { reference.child("x") }
             bad("$text:in", 0, "a port only on a named object") { reference.withPort("in") }
         }
@@ -239,8 +239,8 @@ class RtcPathTest {
     ).map { text ->
         dynamicTest(text) {
             val parsed = path(text)
-            assertEquals(parsed, RtcPath.parse(parsed.toString()))
-            assertEquals(parsed.toString(), RtcPath.parse(parsed.toString()).toString())
+            assertEquals(parsed, RtcPath(parsed.toString()))
+            assertEquals(parsed.toString(), RtcPath(parsed.toString()).toString())
         }
     }
 
@@ -249,9 +249,9 @@ class RtcPathTest {
         val port = path("/h/ctx/c.rtc:in")
         val ancestors = generateSequence(port) { it.parent }.map { it.toString() }.toList()
         assertEquals(listOf("/h:2809/ctx/c.rtc:in", "/h:2809/ctx/c.rtc", "/h:2809/ctx", "/h:2809", "/"), ancestors)
-        assertEquals(port, RtcPath.ROOT.child("h").child("ctx").child("c.rtc").withPort("in"))
-        assertEquals(path("/h:1"), RtcPath.ROOT.child("h:1"))
-        assertEquals("h", RtcPath.ROOT.child("h").name)
+        assertEquals(port, RtcPath("/").child("h").child("ctx").child("c.rtc").withPort("in"))
+        assertEquals(path("/h:1"), RtcPath("/").child("h:1"))
+        assertEquals("h", RtcPath("/").child("h").name)
         assertEquals(path("/h/ctx/c.rtc"), port.withPort(null))
         assertEquals(path("/h/c.rtc:out"), path("/h/c.rtc:in").withPort("out"))
     }
@@ -263,10 +263,10 @@ class RtcPathTest {
         bad("/h:2809/a:b", 1, "':' in a name") { server.child("a:b") }
         bad("/h:2809/..", 1, "'..' is not a name") { server.child("..") }
         bad("/h:2809/", 1, "empty name") { server.child("") }
-        bad("/..", 0, "not a name server address") { RtcPath.ROOT.child("..") }
-        bad("/h:99999", 0, "bad port '99999'") { RtcPath.ROOT.child("h:99999") }
+        bad("/..", 0, "not a name server address") { RtcPath("/").child("..") }
+        bad("/h:99999", 0, "bad port '99999'") { RtcPath("/").child("h:99999") }
         bad("/h:2809/c.rtc:in/x", 2, "nothing below a port") { path("/h/c.rtc:in").child("x") }
-        bad("/:in", 0, "a port only on a named object") { RtcPath.ROOT.withPort("in") }
+        bad("/:in", 0, "a port only on a named object") { RtcPath("/").withPort("in") }
         bad("/h:2809:in", 0, "a port only on a named object") { server.withPort("in") }
         bad("/h:2809/c.rtc:a:b", 1, "bad port name 'a:b'") { path("/h/c.rtc").withPort("a:b") }
         bad("/h:2809/c.rtc:", 1, "empty port name") { path("/h/c.rtc").withPort("") }
@@ -282,7 +282,7 @@ class RtcPathTest {
             assertFalse(port.startsWith(path(it)), it)
         }
         assertFalse(path("/h/ctx").startsWith(path("/h/ctx/c.rtc")))
-        assertFalse(RtcPath.ROOT.startsWith(path("/h")))
+        assertFalse(RtcPath("/").startsWith(path("/h")))
     }
 
     @TestFactory
@@ -310,15 +310,15 @@ class RtcPathTest {
 
     @Test
     fun `nameServer accepts host, host and port, and corbaloc addresses`() {
-        assertEquals(path("/localhost:2809"), RtcPath.nameServer("localhost"))
-        assertEquals("localhost", RtcPath.nameServer("localhost").name)
-        assertEquals(path("/h:1"), RtcPath.nameServer("h:1"))
-        assertEquals(path("/h:1"), RtcPath.nameServer("corbaloc:iiop:h:1"))
-        assertEquals(path("/h:1"), RtcPath.nameServer("corbaloc:iiop:h:1/NameService"))
-        bad("h/x", 0, "not a name server address") { RtcPath.nameServer("h/x") }
-        bad("corbaloc:iiop:h:1/manager", 0, "not a name server address") { RtcPath.nameServer("corbaloc:iiop:h:1/manager") }
-        bad("h:99999", 0, "bad port '99999'") { RtcPath.nameServer("h:99999") }
-        bad("", 0, "empty name server address") { RtcPath.nameServer("") }
+        assertEquals(path("/localhost:2809"), nameServerPath("localhost"))
+        assertEquals("localhost", nameServerPath("localhost").name)
+        assertEquals(path("/h:1"), nameServerPath("h:1"))
+        assertEquals(path("/h:1"), nameServerPath("corbaloc:iiop:h:1"))
+        assertEquals(path("/h:1"), nameServerPath("corbaloc:iiop:h:1/NameService"))
+        bad("h/x", 0, "not a name server address") { nameServerPath("h/x") }
+        bad("corbaloc:iiop:h:1/manager", 0, "not a name server address") { nameServerPath("corbaloc:iiop:h:1/manager") }
+        bad("h:99999", 0, "bad port '99999'") { nameServerPath("h:99999") }
+        bad("", 0, "empty name server address") { nameServerPath("") }
     }
 
     /** How rtshell's commands read each `(working directory, path)`, one line each (see the script). */

@@ -16,7 +16,7 @@ class ScaleDiscoveryTest {
     fun `a thousand components are discovered completely`(): Unit = runBlocking {
         NamingService.start().use { naming ->
             Scenarios.scale(naming.corbaloc, 1000).use {
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     val elapsed = measureTime { tree.refresh() }
                     println("discovered 1000 components with full profiles in $elapsed")
                     val components = tree.find { it is ComponentNode }.toList().map { it as ComponentNode }
@@ -35,7 +35,7 @@ class ScaleDiscoveryTest {
                 FixtureProcess.start("--naming", naming.address, "--scenario", "component:dead0").kill()
                 system.component("relay42").hang()
                 try {
-                    RtcTree.create(TreeConfig(listOf(naming.address), callTimeout = 1.seconds)).use { tree ->
+                    RtcTree(TreeConfig(listOf(naming.address), callTimeout = 1.seconds)).use { tree ->
                         val elapsed = measureTime { tree.refresh() }
                         println("discovered 200 components, one hung and one dead, in $elapsed (deadline 1 s)")
                         assertTrue(elapsed < 3.seconds, "discovery took $elapsed")

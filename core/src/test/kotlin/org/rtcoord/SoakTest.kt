@@ -43,7 +43,7 @@ class SoakTest {
         val size = if (soakMinutes != null) COMPONENTS else SMOKE_COMPONENTS
         NamingService.start().use { naming ->
             Scenarios.scale(naming.corbaloc, size, type).use { system ->
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     val seen = ConcurrentHashMap<String, ConcurrentLinkedQueue<Seen>>()
                     val alarms = ConcurrentLinkedQueue<RtcEvent>()
                     val attaching = TimeSource.Monotonic.markNow()

@@ -117,9 +117,9 @@ class TreeDiscoveryTest {
         val server = tree.node("/${localisation.naming.address}")
         assertTrue(server is NameServerNode)
         assertTrue(tree.node("/${localisation.naming.address}/") === server)
-        val working = RtcPath.parse(localisation.host + "/")
+        val working = RtcPath(localisation.host + "/")
         assertEquals("gyro0.rtc", tree.node("gyro0.rtc", working).name)
-        assertEquals(NodeKind.CONTEXT, tree.node("..", RtcPath.parse(localisation.host + "/manager.mgr")).kind)
+        assertEquals(NodeKind.CONTEXT, tree.node("..", RtcPath(localisation.host + "/manager.mgr")).kind)
     }
 
     @Test
@@ -132,7 +132,7 @@ class TreeDiscoveryTest {
         assertEquals(setOf("laser_localise0.rtc"), withPose)
 
         with(NodeFilters) {
-            val named = tree.find(predicate = name("g?ro*.rtc") and under(RtcPath.parse(localisation.host))).toList().map { it.path.toString() }
+            val named = tree.find(predicate = name("g?ro*.rtc") and under(RtcPath(localisation.host))).toList().map { it.path.toString() }
             assertEquals(listOf(localisation.path("gyro0.rtc")), named, "once, at its naming path, not again below its manager")
             val laserFed = tree.find(predicate = hasPort("laser", "TimedDoubleSeq") and kind(NodeKind.COMPONENT)).toList()
             assertEquals(setOf("laser0.rtc", "laser_localise0.rtc"), laserFed.map { it.name }.toSet())
@@ -170,7 +170,7 @@ class TreeDiscoveryTest {
 
     @Test
     fun `a survey shows a hung component as a zombie within the call deadline`(): Unit = runBlocking {
-        RtcTree.create(TreeConfig(nameServers = listOf(localisation.naming.address), callTimeout = 1.seconds)).use { quick ->
+        RtcTree(TreeConfig(nameServers = listOf(localisation.naming.address), callTimeout = 1.seconds)).use { quick ->
             val gyro = localisation.system.component("gyro0")
             gyro.hang()
             try {

@@ -17,7 +17,7 @@ import kotlin.time.Duration.Companion.seconds
 class TreeOperationsTest {
     private val localisation = LocalisationSystem()
     private val tree = localisation.tree
-    private val witness = RtcTree.create(TreeConfig(nameServers = listOf(localisation.naming.address)))
+    private val witness = RtcTree(TreeConfig(nameServers = listOf(localisation.naming.address)))
 
     @AfterEach
     fun stop() {

@@ -120,7 +120,7 @@ class WatchReportTest {
     @Test
     fun `a manager that stops answering and answers again is one death and one return`(): Unit = runBlocking {
         val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
-        RtcTree.create(TreeConfig(listOf(localisation.naming.address), callTimeout = 1.seconds)).use { tree ->
+        RtcTree(TreeConfig(listOf(localisation.naming.address), callTimeout = 1.seconds)).use { tree ->
             FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hung0", "--master", master).use { process ->
                 val events = EventRecorder()
                 tree.on(localisation.host, RtcEvent::class.java, EventOptions(heartbeat = 300.milliseconds), events.handler)

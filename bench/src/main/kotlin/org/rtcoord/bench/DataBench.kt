@@ -101,7 +101,7 @@ internal class DataBench(private val options: BenchOptions, private val report: 
                 component(scanner(rate), "scanner0")
                 activate("scanner0")
             }.use {
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     val port = tree.port("/${naming.address}/${RuntimeProcess.hostContext}/scanner0.rtc:scan")
                     delay(options.dataWindow / 2) // warm-up, untapped
                     val idleCpu = cpuPerSecond(options.dataWindow)
@@ -146,7 +146,7 @@ internal class DataBench(private val options: BenchOptions, private val report: 
                 activate("scanner0")
             }.use { system ->
                 val config = TreeConfig(listOf(naming.address))
-                RtcTree.create(config).use { tree ->
+                RtcTree(config).use { tree ->
                     val fixture = system.component("scanner0")
                     for (threshold in listOf(100.milliseconds, 500.milliseconds, 1.seconds)) {
                         val delays = List(options.silenceRepetitions) {

@@ -93,7 +93,7 @@ internal class DiscoveryBench(private val options: BenchOptions, private val ins
     /** A fresh tree over the system, every component read (profile, ports, contexts, states). */
     private suspend fun discover(n: Int, address: String): Discovery {
         val start = System.nanoTime()
-        val tree = RtcTree.create(TreeConfig(listOf(address)))
+        val tree = RtcTree(TreeConfig(listOf(address)))
         try {
             val created = System.nanoTime()
             tree.refresh()

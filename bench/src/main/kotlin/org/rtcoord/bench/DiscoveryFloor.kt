@@ -77,7 +77,7 @@ internal class DiscoveryFloor(val roundTrip: Samples, val threads: Int, val call
 
         /** The naming paths (`a/b/name.rtc`) of the system's components, as a tree finds them. */
         private suspend fun componentNames(address: String): List<String> =
-            RtcTree.create(TreeConfig(listOf(address))).use { tree ->
+            RtcTree(TreeConfig(listOf(address))).use { tree ->
                 tree.refresh()
                 tree.find { it is ComponentNode }.toList().map { it.path.names.joinToString("/") }
             }

@@ -40,7 +40,7 @@ internal class MemoryBench(private val options: BenchOptions, private val report
     /** Bytes per component, and what they cover. */
     private suspend fun measure(n: Int, address: String): Pair<Double, String> {
         // A generous deadline: on a loaded machine a component answering late must not turn into a zombie.
-        val tree = RtcTree.create(TreeConfig(listOf(address), callTimeout = 1.minutes))
+        val tree = RtcTree(TreeConfig(listOf(address), callTimeout = 1.minutes))
         try {
             tree.node("/$address/")
             val before = Heap.live()

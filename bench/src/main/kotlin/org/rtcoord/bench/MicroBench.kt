@@ -27,7 +27,7 @@ import java.nio.file.Paths
 internal class MicroBench(private val options: BenchOptions, private val report: Report) {
     suspend fun run() {
         FixtureProcess.start("--scenario", "scale:10").use { fixtures ->
-            RtcTree.create(TreeConfig(listOf(fixtures.address))).use { tree ->
+            RtcTree(TreeConfig(listOf(fixtures.address))).use { tree ->
                 tree.refresh()
                 val node = tree.find { it is ComponentNode }.toList().first()
                 val subscription = tree.on(node, StateChanged::class.java, EventOptions(WatchMode.PUSH)) {}

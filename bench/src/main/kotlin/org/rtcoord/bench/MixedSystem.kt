@@ -43,7 +43,7 @@ internal object MixedSystem {
             master.adopt(RuntimeManager(sensorProcess, isMaster = false, name = "sensors", modules = listOf(RuntimeModule("sensors.so", sensors))))
             master.adopt(RuntimeManager(processingProcess, isMaster = false, name = "processing", modules = listOf(RuntimeModule("processing.so", processing))))
             repeat((size + 9) / 10) { group -> group(group, sensorProcess, processingProcess) }
-            kotlinx.coroutines.runBlocking { RtcTree.create(TreeConfig(listOf(naming.address))).use { SystemProfiles(it).save() } }
+            kotlinx.coroutines.runBlocking { RtcTree(TreeConfig(listOf(naming.address))).use { SystemProfiles(it).save() } }
         } finally {
             processes.forEach(RuntimeProcess::close)
         }

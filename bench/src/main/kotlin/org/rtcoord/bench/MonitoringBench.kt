@@ -43,7 +43,7 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
     }
 
     private suspend fun watch(address: String, components: ProcessHandle, label: String, watching: EventOptions?) {
-        RtcTree.create(TreeConfig(listOf(address))).use { tree ->
+        RtcTree(TreeConfig(listOf(address))).use { tree ->
             tree.refresh()
             val nodes = tree.find { it is ComponentNode }.toList()
             val subscriptions = watching?.let { options ->

@@ -21,7 +21,7 @@ internal class ProfileBench(private val options: BenchOptions, private val insta
     suspend fun run() {
         val n = options.profileSize
         FixtureProcess.start("--scenario", "pipeline:$n", timeout = 10.minutes).use { fixtures ->
-            RtcTree.create(TreeConfig(listOf(fixtures.address))).use { tree ->
+            RtcTree(TreeConfig(listOf(fixtures.address))).use { tree ->
                 val profiles = SystemProfiles(tree)
                 val saved = profiles.save()
                 check(saved.components.size == n && saved.dataPortConnectors.size == n - 1) {

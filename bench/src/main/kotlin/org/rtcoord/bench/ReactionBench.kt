@@ -39,7 +39,7 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
                 component(pushed, "push0")
                 repeat(POLLED) { component(Scenarios.relay, "poll$it") }
             }.use { system ->
-                RtcTree.create(TreeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
                     val context = "/${naming.address}/${RuntimeProcess.hostContext}"
                     // As many changes of each kind as the poll makes in all: a kind's p99 is then not the second largest of 200.
                     val pushChanges = options.reactionChanges * Kind.values().size

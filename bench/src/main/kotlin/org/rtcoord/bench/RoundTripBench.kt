@@ -47,7 +47,7 @@ internal class RoundTripBench(private val options: BenchOptions, private val ins
         NamingService.start().use { naming ->
             Scenarios.localisation(naming.corbaloc).use { system ->
                 val config = TreeConfig(listOf(naming.address))
-                RtcTree.create(config).use { tree ->
+                RtcTree(config).use { tree ->
                     Coordinator(tree, host.load(script, emptyList(), config), EventOptions(WatchMode.PUSH)).use { coordinator ->
                         coordinator.start()
                         faultAndRecovery(system)

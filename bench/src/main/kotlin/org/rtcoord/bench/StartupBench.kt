@@ -105,7 +105,7 @@ internal class StartupBench(private val options: BenchOptions, private val insta
             val command = TimedCommand(RUN_COMPILED, listOf(installation.launcher.toString(), "-n", address, "run", "--for", "1ms", jar.toString()), installation.root)
             report.row(RUN_COMPILED, timeInterleaved(listOf(command), options.processWarmups, options.startupRepetitions).single(), "no compiler, no script cache")
             val config = TreeConfig(listOf(address))
-            RtcTree.create(config).use { tree ->
+            RtcTree(config).use { tree ->
                 runBlocking { (tree.node("/$address/") as DirectoryNode).survey() }
                 val times = (0 until WARM_LOADS + options.startupRepetitions).map {
                     val start = System.nanoTime()
@@ -144,7 +144,7 @@ internal class StartupBench(private val options: BenchOptions, private val insta
             val rows = listOf(
                 "JVM start to main" to "process start, JVM init with the archive, loading the main class",
                 "command line made and parsed" to "Clikt: rtcoord and its ls subcommand, as the launcher runs them",
-                "RtcTree.create" to "the tree and its scopes; the ORB starts at the first call",
+                "RtcTree(config)" to "the tree and its scopes; the ORB starts at the first call",
                 "first call: list the name server" to "ORB init, connection, naming resolve and list",
                 "rest of ls -l -R: survey" to "every context, manager and component below, concurrently",
                 "tree closed" to "ORB shut down",

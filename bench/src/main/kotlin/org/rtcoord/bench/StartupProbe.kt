@@ -26,7 +26,7 @@ internal object StartupProbe {
         useCommandLogging()
         rtcoord(listOf("ls", "-l", "-R", "/$address/"))
         val parsed = System.nanoTime()
-        val tree = RtcTree.create(TreeConfig(listOf(address)))
+        val tree = RtcTree(TreeConfig(listOf(address)))
         val created = System.nanoTime()
         val server = runBlocking { tree.node("/$address/") as DirectoryNode }
         runBlocking { server.children() }

@@ -39,7 +39,7 @@ class DemoCommand : TreeCommand("demo") {
         echo("Starting an embedded naming service and the paper's localisation system...")
         NamingService.start().use { naming ->
             Scenarios.localisation(naming.corbaloc).use { system ->
-                RtcTree.create(session.treeConfig(listOf(naming.address))).use { tree ->
+                RtcTree(session.treeConfig(listOf(naming.address))).use { tree ->
                     demonstrate(naming, system, tree)
                 }
             }

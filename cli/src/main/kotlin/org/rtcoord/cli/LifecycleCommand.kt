@@ -55,7 +55,7 @@ abstract class LifecycleCommand(
             .int().convert { ContextSelector.Handle(it) },
         option("--index", "-e", metavar = "N", help = "The Nth execution context, owned ones first (rtshell's -e).")
             .int().convert { ContextSelector.Index(it) },
-    ).single().default(ContextSelector.DEFAULT)
+    ).single().default(ContextSelector.Handle(0))
 
     override suspend fun execute() {
         val pending = paths.map { checked(it) }.filter { (_, state) -> state != to }.map { (component, _) -> component }

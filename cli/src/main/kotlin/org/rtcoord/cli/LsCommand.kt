@@ -14,6 +14,7 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.WrongKindException
 import org.rtcoord.ZombieNode
+import org.rtcoord.nameServerPath
 
 /** `rtcoord ls`: rtls, without its hangs, its 200-entry limit or its all-or-nothing failures. */
 class LsCommand : TreeCommand("ls") {
@@ -70,7 +71,7 @@ class LsCommand : TreeCommand("ls") {
     private fun workingDirectories(): List<String> {
         session.workingDirectory?.let { return listOf(it.toString()) }
         if (session.nameServers.isEmpty()) fail(NO_NAME_SERVER)
-        return session.nameServers.map { "${RtcPath.nameServer(it)}/" }
+        return session.nameServers.map { "${nameServerPath(it)}/" }
     }
 
     private fun show(blocks: List<Block>) {

@@ -7,6 +7,7 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import org.rtcoord.RtcPath
+import org.rtcoord.nameServerPath
 import org.rtcoord.profile.ProfileFormat
 import org.rtcoord.profile.RtsProfiles
 import org.rtcoord.profile.SystemProfiles
@@ -32,7 +33,7 @@ class ProfileSaveCommand : TreeCommand("save") {
     private val abstract by option("--abstract", metavar = "TEXT", help = "A description of the system.").default("")
 
     override suspend fun execute() {
-        val below = path?.let { pathOf(it) } ?: session.nameServers.singleOrNull()?.let { RtcPath.nameServer(it) } ?: RtcPath.ROOT
+        val below = path?.let { pathOf(it) } ?: session.nameServers.singleOrNull()?.let { nameServerPath(it) } ?: RtcPath("/")
         val profile = SystemProfiles(tree).save(below, connected, systemId, abstract)
         val format = if (yaml || output?.let { RtsProfiles.formatOf(it, "") } == ProfileFormat.YAML) ProfileFormat.YAML else ProfileFormat.XML
         val text = RtsProfiles.write(profile, format)

@@ -17,6 +17,8 @@ import com.github.ajalt.mordant.terminal.Terminal
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.TreeConfig
+import org.rtcoord.listenAddressProblem
+import org.rtcoord.nameServerPath
 import java.util.Properties
 import kotlin.time.Duration.Companion.seconds
 
@@ -77,7 +79,7 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
         metavar = "ADDRESS",
         help = "The one address to listen on for components calling back (watch, run, demo). Default: the address this " +
             "host uses to reach the first name server, loopback for a local one. 0.0.0.0 listens on every interface.",
-    ).convert { address -> TreeConfig.listenAddressProblem(address)?.let { fail(it) } ?: address }
+    ).convert { address -> listenAddressProblem(address)?.let { fail(it) } ?: address }
 
     private val json by option("--json", help = "Machine-readable output (JSON) from every listing command.").flag()
 
@@ -109,7 +111,7 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
         val variable = CWD_VARIABLES.firstOrNull { !currentContext.readEnvvar(it).isNullOrBlank() } ?: return null
         val text = currentContext.readEnvvar(variable)!!
         return try {
-            RtcPath.parse(text)
+            RtcPath(text)
         } catch (e: RtcException) {
             throw UsageError("$variable: ${e.message}")
         }
@@ -127,7 +129,7 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
 
         /** [address] if it is `host`, `host:port` or a name server's `corbaloc:`; else [invalid] with why. */
         private inline fun nameServer(address: String, invalid: (String) -> Nothing): String = try {
-            RtcPath.nameServer(address)
+            nameServerPath(address)
             address
         } catch (e: RtcException) {
             invalid(e.message ?: "'$address' is not HOST[:PORT]")

@@ -3,6 +3,7 @@ package org.rtcoord.cli
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
+import org.rtcoord.nameServerPath
 import kotlin.time.Duration
 
 /**
@@ -29,9 +30,9 @@ class Session(
      * Where relative paths start: the [workingDirectory] the environment set, else the first name server
      * given; null when there is neither.
      */
-    val start: RtcPath? get() = workingDirectory ?: nameServers.firstOrNull()?.let(RtcPath::nameServer)
+    val start: RtcPath? get() = workingDirectory ?: nameServers.firstOrNull()?.let(::nameServerPath)
 
-    private val lazyTree = lazy { RtcTree.create(treeConfig()) }
+    private val lazyTree = lazy { RtcTree(treeConfig()) }
 
     /** A tree's configuration for [servers], with the run's deadline and listen address. */
     fun treeConfig(servers: List<String> = nameServers): TreeConfig = TreeConfig(servers, timeout, listenAddress = listenAddress)

@@ -101,7 +101,7 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
         if (start == null && !text.startsWith('/') && !text.startsWith("corbaloc:", ignoreCase = true)) {
             fail("$text: a relative path needs a start: give -n HOST[:PORT] (relative paths start at the first name server) or set RTCOORD_CWD")
         }
-        return RtcPath.parse(text, start)
+        return RtcPath(text, start)
     }
 
     /**
@@ -143,7 +143,7 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
      * lacks a name, the component that lacks a port. [e] itself when nothing is close or it cannot tell.
      */
     private suspend fun suggesting(e: NotFoundException): NotFoundException {
-        val path = runCatching { RtcPath.parse(e.subject) }.getOrNull() ?: return e
+        val path = runCatching { RtcPath(e.subject) }.getOrNull() ?: return e
         val hint = runCatching {
             val port = path.port
             when {

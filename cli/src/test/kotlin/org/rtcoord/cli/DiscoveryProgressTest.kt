@@ -12,7 +12,7 @@ import kotlin.time.Duration.Companion.milliseconds
 /** Progress during a long discovery, as a terminal would get it; a quick one shows nothing. */
 class DiscoveryProgressTest {
     private val localisation = Localisation()
-    private val tree = RtcTree.create(TreeConfig(listOf(localisation.naming.address), callTimeout = 1500.milliseconds))
+    private val tree = RtcTree(TreeConfig(listOf(localisation.naming.address), callTimeout = 1500.milliseconds))
     private val written = mutableListOf<String>()
     private val progress = StatusLine { written += it }
 

@@ -16,7 +16,7 @@ class PrintCommandTest {
     fun stop() = localisation.close()
 
     /** The tap connectors on [port], read by a tree of the test's own. */
-    private fun taps(port: String): List<String> = RtcTree.create(TreeConfig(listOf(localisation.naming.address))).use { tree ->
+    private fun taps(port: String): List<String> = RtcTree(TreeConfig(listOf(localisation.naming.address))).use { tree ->
         runBlocking { tree.port(localisation.path(port)).connections() }.map { it.id }.filter { it.startsWith("rtcoord-tap-") }
     }
 

@@ -12,6 +12,7 @@ import org.rtcoord.NotFoundException
 import org.rtcoord.OperationFailedException
 import org.rtcoord.TimedOutException
 import org.rtcoord.TransitionOutcome
+import org.rtcoord.TransitionOutcomeImpl
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeMark
@@ -87,7 +88,7 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
         }
         val stamp = awaitState(operation, ec, handle, started + limit, limit, late)
         component.publishStates(mapOf(handle to operation.to), stamp)
-        return TransitionOutcome(operation.to, late, started.elapsedNow().inWholeMilliseconds)
+        return TransitionOutcomeImpl(operation.to, late, started.elapsedNow().inWholeMilliseconds)
     }
 
     /**

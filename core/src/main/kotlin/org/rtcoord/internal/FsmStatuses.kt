@@ -1,6 +1,7 @@
 package org.rtcoord.internal
 
 import org.rtcoord.FsmStatus
+import org.rtcoord.FsmStatusImpl
 import org.rtcoord.ObserverFlavour
 import org.rtcoord.WatchMethod
 
@@ -8,7 +9,7 @@ import org.rtcoord.WatchMethod
 internal const val FSM_SERVICE_ID = "IDL:omg.org/RTC/ExtendedFsmService:1.0"
 
 /** Why the state of a component watched by [method] (null: not watched) is not known. */
-internal fun unknownFsmStatus(method: WatchMethod?): FsmStatus = FsmStatus(
+internal fun unknownFsmStatus(method: WatchMethod?): FsmStatus = FsmStatusImpl(
     null,
     when (method) {
         is WatchMethod.Pushed -> when (method.flavour) {

@@ -19,8 +19,11 @@ import kotlin.time.toKotlinDuration
  * A [ComponentNode] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`).
  * A lifecycle operation acts on [context] (the first owned context unless given) and waits for the state
  * within [deadline] (the tree's call deadline unless given), as [ComponentNode.activate] does.
+ *
+ * [JavaTree.component] finds one by path; `new JavaComponent(node)` drives a node at hand: an event's
+ * source ([org.rtcoord.StateChanged.source]), a snapshot's [org.rtcoord.ComponentEntry.node].
  */
-public class JavaComponent internal constructor(
+public class JavaComponent(
     /** The component this facade drives. */
     @get:JvmSynthetic public val node: ComponentNode,
 ) {
@@ -50,11 +53,11 @@ public class JavaComponent internal constructor(
     /** The component's state in [context], read now. */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun state(context: ContextSelector = ContextSelector.DEFAULT): LifeCycle = calls.await { node.state(context) }
+    public fun state(context: ContextSelector = ContextSelector.Handle(0)): LifeCycle = calls.await { node.state(context) }
 
     /** [state], when done. */
     @JvmOverloads
-    public fun stateAsync(context: ContextSelector = ContextSelector.DEFAULT): CompletableFuture<LifeCycle> = calls.future { node.state(context) }
+    public fun stateAsync(context: ContextSelector = ContextSelector.Handle(0)): CompletableFuture<LifeCycle> = calls.future { node.state(context) }
 
     /**
      * Activates the component and waits until it is ACTIVE; returns how it got there: [TransitionOutcome.isSlow] when the state came only after its
@@ -62,12 +65,12 @@ public class JavaComponent internal constructor(
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun activate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): TransitionOutcome =
+    public fun activate(context: ContextSelector = ContextSelector.Handle(0), deadline: @Nullable Duration? = null): TransitionOutcome =
         calls.await { node.activate(context, deadline?.toKotlinDuration()) }
 
     /** [activate], when done. */
     @JvmOverloads
-    public fun activateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
+    public fun activateAsync(context: ContextSelector = ContextSelector.Handle(0), deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
         calls.future { node.activate(context, deadline?.toKotlinDuration()) }
 
     /**
@@ -76,12 +79,12 @@ public class JavaComponent internal constructor(
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun deactivate(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): TransitionOutcome =
+    public fun deactivate(context: ContextSelector = ContextSelector.Handle(0), deadline: @Nullable Duration? = null): TransitionOutcome =
         calls.await { node.deactivate(context, deadline?.toKotlinDuration()) }
 
     /** [deactivate], when done. */
     @JvmOverloads
-    public fun deactivateAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
+    public fun deactivateAsync(context: ContextSelector = ContextSelector.Handle(0), deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
         calls.future { node.deactivate(context, deadline?.toKotlinDuration()) }
 
     /**
@@ -90,12 +93,12 @@ public class JavaComponent internal constructor(
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun reset(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): TransitionOutcome =
+    public fun reset(context: ContextSelector = ContextSelector.Handle(0), deadline: @Nullable Duration? = null): TransitionOutcome =
         calls.await { node.reset(context, deadline?.toKotlinDuration()) }
 
     /** [reset], when done. */
     @JvmOverloads
-    public fun resetAsync(context: ContextSelector = ContextSelector.DEFAULT, deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
+    public fun resetAsync(context: ContextSelector = ContextSelector.Handle(0), deadline: @Nullable Duration? = null): CompletableFuture<TransitionOutcome> =
         calls.future { node.reset(context, deadline?.toKotlinDuration()) }
 
     /** Asks the component to exit and waits until naming no longer shows it (see [ComponentNode.exit]). */
@@ -129,12 +132,12 @@ public class JavaComponent internal constructor(
     /** The execution context [context] of this component. */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun executionContext(context: ContextSelector = ContextSelector.DEFAULT): JavaExecutionContext =
+    public fun executionContext(context: ContextSelector = ContextSelector.Handle(0)): JavaExecutionContext =
         calls.await { JavaExecutionContext(node.executionContext(context)) }
 
     /** [executionContext], when done. */
     @JvmOverloads
-    public fun executionContextAsync(context: ContextSelector = ContextSelector.DEFAULT): CompletableFuture<JavaExecutionContext> =
+    public fun executionContextAsync(context: ContextSelector = ContextSelector.Handle(0)): CompletableFuture<JavaExecutionContext> =
         calls.future { JavaExecutionContext(node.executionContext(context)) }
 
     /** The configuration sets, read now if they never were. */

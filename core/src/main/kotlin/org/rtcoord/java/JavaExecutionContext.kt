@@ -5,8 +5,12 @@ import org.rtcoord.RtcException
 import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 
-/** An [ExecutionContextView] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
-public class JavaExecutionContext internal constructor(
+/**
+ * An [ExecutionContextView] for Java callers: each operation blocking, and as a [CompletableFuture]
+ * (`...Async`). [JavaComponent.executionContext] gives one; `new JavaExecutionContext(context)` drives a
+ * context at hand.
+ */
+public class JavaExecutionContext(
     /** The execution context this facade drives. */
     @get:JvmSynthetic public val context: ExecutionContextView,
 ) {

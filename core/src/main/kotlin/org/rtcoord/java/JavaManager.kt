@@ -6,8 +6,12 @@ import org.rtcoord.RtcException
 import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 
-/** A [ManagerNode] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
-public class JavaManager internal constructor(
+/**
+ * A [ManagerNode] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`).
+ * [JavaTree.manager] finds one by path; `new JavaManager(node)` drives a manager at hand, such as an
+ * event's source ([org.rtcoord.ManagerDied.source]).
+ */
+public class JavaManager(
     /** The manager this facade drives. */
     @get:JvmSynthetic public val node: ManagerNode,
 ) {

@@ -9,9 +9,10 @@ import org.rtcoord.ZombieNode
 /**
  * A node of the tree for Java callers: where it is, its name and kind, and for a dead registration why
  * (see [Node]). Operate on it through [JavaTree.component], [JavaTree.manager] and [JavaTree.port] with
- * its [path]. Two facades of the same node are equal.
+ * its [path]. Two facades of the same node are equal; `new JavaNode(node)` shows a node at hand.
  */
-public class JavaNode internal constructor(
+public class JavaNode(
+    /** The node shown. */
     private val node: Node,
 ) {
     /** Where the node is: `/host:port/ctx/name.rtc`. */

@@ -12,8 +12,11 @@ import org.rtcoord.Subscription
 import org.rtcoord.internal.JavaCalls
 import java.util.concurrent.CompletableFuture
 
-/** A [Port] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). */
-public class JavaPort internal constructor(
+/**
+ * A [Port] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`).
+ * [JavaTree.port] and [JavaComponent.port] find one by name; `new JavaPort(port)` drives a port at hand.
+ */
+public class JavaPort(
     /** The port this facade drives. */
     @get:JvmSynthetic public val port: Port,
 ) {

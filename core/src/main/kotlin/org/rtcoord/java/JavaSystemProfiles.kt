@@ -27,12 +27,12 @@ public class JavaSystemProfiles(
     /** The running system below [below] as a profile (see [SystemProfiles.save]). */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun save(below: String = "/", onlyConnected: Boolean = false): RtsProfile = calls.await { profiles.save(RtcPath.parse(below), onlyConnected) }
+    public fun save(below: String = "/", onlyConnected: Boolean = false): RtsProfile = calls.await { profiles.save(RtcPath(below), onlyConnected) }
 
     /** [save], when done. */
     @JvmOverloads
     public fun saveAsync(below: String = "/", onlyConnected: Boolean = false): CompletableFuture<RtsProfile> =
-        calls.future { profiles.save(RtcPath.parse(below), onlyConnected) }
+        calls.future { profiles.save(RtcPath(below), onlyConnected) }
 
     /** Restores [profile] onto the running system (see [SystemProfiles.restore]). */
     @JvmOverloads

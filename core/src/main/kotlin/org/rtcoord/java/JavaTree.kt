@@ -30,6 +30,7 @@ import java.util.function.Predicate
  * the operation failed with) and as a [CompletableFuture] (`...Async`), paths as strings, events
  * delivered on an [Executor] the caller chooses. Nodes come back as [JavaNode]s; operate on them through
  * [JavaComponent], [JavaManager] and [JavaPort]. Closing it closes the tree, and ends its threads.
+ * `new JavaTree(tree)` drives a tree Kotlin code made, and closes it with the facade.
  *
  * ```java
  * try (JavaTree tree = new JavaTree(new TreeConfig(List.of("127.0.0.1:2809")))) {
@@ -38,13 +39,13 @@ import java.util.function.Predicate
  * }
  * ```
  */
-public class JavaTree internal constructor(
+public class JavaTree(
     /** The tree this facade drives; Kotlin code shares it with the suspend API. */
     @get:JvmSynthetic public val tree: RtcTree,
 ) : AutoCloseable {
     /** A tree configured by [config] (the defaults unless given), with its facade. */
     @JvmOverloads
-    public constructor(config: TreeConfig = TreeConfig()) : this(RtcTree.create(config))
+    public constructor(config: TreeConfig = TreeConfig()) : this(RtcTree(config))
 
     /** How the tree talks to the system. */
     public val config: TreeConfig get() = tree.config
@@ -126,12 +127,12 @@ public class JavaTree internal constructor(
     /** Reads the subtree at [path] again, [depth] levels deep (the whole of it by default). */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun refresh(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { tree.refresh(RtcPath.parse(path), depth) }
+    public fun refresh(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { tree.refresh(RtcPath(path), depth) }
 
     /** [refresh], when done. */
     @JvmOverloads
     public fun refreshAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> =
-        calls.done { tree.refresh(RtcPath.parse(path), depth) }
+        calls.done { tree.refresh(RtcPath(path), depth) }
 
     /**
      * Every node below [from] (included), at most [maxDepth] levels down, that [filter] accepts, in
@@ -255,7 +256,7 @@ public class JavaTree internal constructor(
     }
 
     private suspend fun unbindAt(path: String) {
-        val parsed = RtcPath.parse(path)
+        val parsed = RtcPath(path)
         val parent = parsed.parent?.let { tree.node(it) }
         if (parent !is NamingDirectory) throw WrongKindException(path, "binding in a naming context", "child of ${parent?.kind?.label() ?: "nothing"}")
         parent.unbind(parsed.name)

@@ -26,7 +26,7 @@ public class SystemProfiles(private val tree: RtcTree) {
      */
     @JvmSynthetic
     public suspend fun save(
-        below: RtcPath = RtcPath.ROOT,
+        below: RtcPath = RtcPath("/"),
         onlyConnected: Boolean = false,
         systemId: String = "RTSystem:rtcoord:RTSystem:0",
         abstract: String = "",

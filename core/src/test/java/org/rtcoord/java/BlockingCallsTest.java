@@ -53,7 +53,7 @@ class BlockingCallsTest {
     void start() throws IOException {
         silent = new ServerSocket(0, 50, InetAddress.getLoopbackAddress());
         background.execute(this::acceptAndNeverAnswer);
-        tree = new JavaTree(TreeConfig.builder().callTimeout(CALL_TIMEOUT).build());
+        tree = new JavaTree(new TreeConfig.Builder().callTimeout(CALL_TIMEOUT).build());
     }
 
     @AfterEach

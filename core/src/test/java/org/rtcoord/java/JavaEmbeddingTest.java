@@ -61,7 +61,7 @@ class JavaEmbeddingTest {
     void start() {
         naming = NamingService.Companion.start(0, null, "127.0.0.1");
         system = Scenarios.INSTANCE.localisation(naming.getCorbaloc(), "127.0.0.1");
-        TreeConfig config = TreeConfig.builder()
+        TreeConfig config = new TreeConfig.Builder()
                 .nameServer(naming.getAddress())
                 .callTimeout(Duration.ofSeconds(5))
                 .build();
@@ -86,11 +86,11 @@ class JavaEmbeddingTest {
         assertEquals(List.of("127.0.0.1:2810"), plain.getNameServers());
         assertEquals(3000, plain.getCallTimeoutMillis());
         assertEquals(5000, tree.getConfig().getCallTimeoutMillis());
-        EventOptions options = EventOptions.builder().mode(WatchMode.POLL).pollPeriod(Duration.ofMillis(200)).build();
+        EventOptions options = new EventOptions.Builder().mode(WatchMode.POLL).pollPeriod(Duration.ofMillis(200)).build();
         assertEquals(200, options.getPollPeriodMillis());
         assertEquals(1000, new EventOptions().getHeartbeatMillis());
         IllegalArgumentException bad = assertThrows(IllegalArgumentException.class,
-                () -> TreeConfig.builder().callTimeout(Duration.ZERO).build());
+                () -> new TreeConfig.Builder().callTimeout(Duration.ZERO).build());
         assertEquals("callTimeout must be positive, was 0s", bad.getMessage());
     }
 
@@ -212,7 +212,7 @@ class JavaEmbeddingTest {
                     event -> seen.add(threadKind() + ": " + event.getOld() + " -> " + event.getNew()));
             Subscription parameters = tree.subscribeAsync(path("laser_localise0.rtc"), ParameterChanged.class, ui,
                     event -> seen.add(threadKind() + ": " + event.getName() + "=" + event.getNew()),
-                    EventOptions.builder().mode(WatchMode.POLL).pollPeriod(Duration.ofMillis(100)).build()).get(10, TimeUnit.SECONDS);
+                    new EventOptions.Builder().mode(WatchMode.POLL).pollPeriod(Duration.ofMillis(100)).build()).get(10, TimeUnit.SECONDS);
 
             tree.component(path("gyro0.rtc")).deactivate();
             assertEquals("ui thread: ACTIVE -> INACTIVE", seen.poll(10, TimeUnit.SECONDS));

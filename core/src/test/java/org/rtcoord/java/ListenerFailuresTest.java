@@ -40,7 +40,7 @@ class ListenerFailuresTest {
     private final NamingService naming = NamingService.Companion.start(0, null, "127.0.0.1");
     private final RtSystem system = Scenarios.INSTANCE.localisation(naming.getCorbaloc(), "127.0.0.1");
     private final BlockingQueue<ListenerFailure> failures = new LinkedBlockingQueue<>();
-    private final JavaTree tree = new JavaTree(TreeConfig.builder().nameServer(naming.getAddress()).listenerFailures(failures::add).build());
+    private final JavaTree tree = new JavaTree(new TreeConfig.Builder().nameServer(naming.getAddress()).listenerFailures(failures::add).build());
     private final ExecutorService ui = Executors.newSingleThreadExecutor(runnable -> new Thread(runnable, "ui thread"));
 
     @AfterEach

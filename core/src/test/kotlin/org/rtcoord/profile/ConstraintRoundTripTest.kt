@@ -20,7 +20,7 @@ import org.rtcoord.runtime.naming.NamingService
 class ConstraintRoundTripTest {
     private val naming = NamingService.start()
     private val system = Scenarios.configSample(naming.corbaloc)
-    private val tree = RtcTree.create(TreeConfig(nameServers = listOf(naming.address)))
+    private val tree = RtcTree(TreeConfig(nameServers = listOf(naming.address)))
     private val profiles = SystemProfiles(tree)
     private val path = "/${naming.address}/${RuntimeProcess.hostContext}/ConfigSample0.rtc"
     private val outside = "$path: configuration set 'mode0': int_param0: '12345' is outside 0<=x<=150"

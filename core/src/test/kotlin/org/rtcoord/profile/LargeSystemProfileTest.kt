@@ -17,7 +17,7 @@ class LargeSystemProfileTest {
     fun `save, restore, check and start work on 200 components`(): Unit = runBlocking {
         NamingService.start().use { naming ->
             Scenarios.pipeline(naming.corbaloc, COUNT).use {
-                RtcTree.create(TreeConfig(nameServers = listOf(naming.address))).use { tree ->
+                RtcTree(TreeConfig(nameServers = listOf(naming.address))).use { tree ->
                     val profiles = SystemProfiles(tree)
                     val (saved, saving) = measureTimedValue { profiles.save() }
                     assertEquals(COUNT, saved.components.size)

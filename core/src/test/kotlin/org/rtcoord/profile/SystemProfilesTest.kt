@@ -158,7 +158,7 @@ class SystemProfilesTest {
         val refused = assertThrows<ProfileRefusedException> { runBlocking { profiles.restore(outOfRange, createMissing = true, strict = true) } }
         assertTrue(refused.reason.startsWith("$localiserPath: configuration set 'default': gain: '99' is outside 0<x<10"), refused.reason)
         assertTrue(refused.reason.endsWith("; the components created for it were deleted again") && '\n' !in refused.reason, refused.reason)
-        system.tree.refresh(RtcPath.parse(system.host))
+        system.tree.refresh(RtcPath(system.host))
         assertThrows<NotFoundException> { runBlocking { system.tree.component(localiserPath) } }
 
         val unknownType = saved.withComponents(saved.components.map { if (it !== localiser) it else it.withId("RTC:rtcoord:test:no_such_type:1.0") })
@@ -259,7 +259,7 @@ class SystemProfilesTest {
     @Test
     fun `each step has its deadline, even against a servant that never answers`() = runBlocking {
         // Calls of their own would wait for the ORB's 20 s: the step's deadline must end the wait.
-        RtcTree.create(TreeConfig(nameServers = listOf(system.naming.address), callTimeout = 20.seconds)).use { patient ->
+        RtcTree(TreeConfig(nameServers = listOf(system.naming.address), callTimeout = 20.seconds)).use { patient ->
             val saved = profiles.save()
             val ordered = activation(saved, Triple(0, "laser0", Condition.None), Triple(0, "odometry0", Condition.None), Triple(1, "gyro0", Condition.None))
             val started = TimeSource.Monotonic.markNow()

@@ -140,14 +140,14 @@ internal object EventPatterns {
     fun returned(target: ManagerRef) = EventPattern("$target answers again", Target.Manager(target), ManagerReturned::class.java) { target.names(it.source) }
 
     fun appeared(target: ContextRef) =
-        EventPattern("$target gains a binding", Target.Context(target), NodeAppeared::class.java) { it.source.path.toString() == RtcPath.parse(target.path).toString() }
+        EventPattern("$target gains a binding", Target.Context(target), NodeAppeared::class.java) { it.source.path.toString() == RtcPath(target.path).toString() }
 
     fun vanished(target: ContextRef) =
-        EventPattern("$target loses a binding", Target.Context(target), NodeVanished::class.java) { it.source.path.toString() == RtcPath.parse(target.path).toString() }
+        EventPattern("$target loses a binding", Target.Context(target), NodeVanished::class.java) { it.source.path.toString() == RtcPath(target.path).toString() }
 
     fun unreachable(target: ContextRef) =
-        EventPattern("$target's name server stops answering", Target.Context(target), NameServerLost::class.java) { it.source.address == RtcPath.parse(target.path).nameServer }
+        EventPattern("$target's name server stops answering", Target.Context(target), NameServerLost::class.java) { it.source.address == RtcPath(target.path).nameServer }
 
     fun reachable(target: ContextRef) =
-        EventPattern("$target's name server answers again", Target.Context(target), NameServerReturned::class.java) { it.source.address == RtcPath.parse(target.path).nameServer }
+        EventPattern("$target's name server answers again", Target.Context(target), NameServerReturned::class.java) { it.source.address == RtcPath(target.path).nameServer }
 }

@@ -155,7 +155,7 @@ public class ManagerRef internal constructor(public val selector: String) {
 
     /** Whether it names [manager] itself (by path, or by name), not one of its slaves. */
     internal fun names(manager: ManagerNode): Boolean =
-        if (selector.startsWith("/")) manager.path == RtcPath.parse(selector) else manager.name == selector
+        if (selector.startsWith("/")) manager.path == RtcPath(selector) else manager.name == selector
 
     override fun toString(): String = selector
 }

@@ -29,8 +29,8 @@ abstract class CoordinatedSystem(
     protected val naming: NamingService = NamingService.start()
     protected val system: RtSystem = declareSystem(naming.corbaloc)
     protected val config: TreeConfig = TreeConfig(nameServers = listOf(naming.address))
-    protected val tree: RtcTree = RtcTree.create(config)
-    private val witnessTree = lazy { RtcTree.create(config) }
+    protected val tree: RtcTree = RtcTree(config)
+    private val witnessTree = lazy { RtcTree(config) }
 
     /** A second tree, so that what the coordinator did is read back without its tree's cache. */
     protected val witness: RtcTree by witnessTree

@@ -54,7 +54,7 @@ class CoordinatorFaultTest {
     fun `a killed component is lost, a rule re-creates it through a manager, and the rules follow the new one`(): Unit = runBlocking {
         val system = rtSystem(naming.corbaloc) { manager(RuntimeModule("relays.so", listOf(Scenarios.relay))) }.closedAfter()
         val victim = FixtureProcess.start("--naming", naming.address, "--scenario", "component:victim0").closedAfter()
-        val tree = RtcTree.create(TreeConfig(listOf(naming.address))).closedAfter()
+        val tree = RtcTree(TreeConfig(listOf(naming.address))).closedAfter()
         val errors = AtomicInteger()
         val coordinator = coordinator(tree) {
             val manager = manager()
@@ -86,7 +86,7 @@ class CoordinatorFaultTest {
         val trigger = rtSystem(naming.corbaloc) { component(Scenarios.relay, "trigger0") }.closedAfter().component("trigger0")
         val manager = FixtureProcess.start("--naming", naming.address, "--scenario", "localisation", "--create-delay", "60000").closedAfter()
         val deadline = 10.seconds
-        val tree = RtcTree.create(TreeConfig(listOf(naming.address), callTimeout = deadline)).closedAfter()
+        val tree = RtcTree(TreeConfig(listOf(naming.address), callTimeout = deadline)).closedAfter()
         val created = CopyOnWriteArrayList<String>()
         val coordinator = coordinator(tree) {
             on(component("trigger0")).state(ERROR) {
@@ -119,7 +119,7 @@ class CoordinatorFaultTest {
     @Test
     fun `the death of the master manager the script uses is reported at once, and its rule fires`(): Unit = runBlocking {
         val manager = FixtureProcess.start("--naming", naming.address, "--scenario", "localisation").closedAfter()
-        val tree = RtcTree.create(TreeConfig(listOf(naming.address))).closedAfter()
+        val tree = RtcTree(TreeConfig(listOf(naming.address))).closedAfter()
         val died = CopyOnWriteArrayList<String>()
         val coordinator = coordinator(tree) {
             val master = manager()
@@ -143,7 +143,7 @@ class CoordinatorFaultTest {
     fun `a rule on a name server fires when it stops answering and when it answers again`(): Unit = runBlocking {
         var server = NamingService.start()
         try {
-            val tree = RtcTree.create(TreeConfig(listOf(server.address))).closedAfter()
+            val tree = RtcTree(TreeConfig(listOf(server.address))).closedAfter()
             val heard = CopyOnWriteArrayList<String>()
             val coordinator = coordinator(tree) {
                 on(context("/${server.address}")).unreachable { event -> heard += "lost ${event.source.address}" }
@@ -167,7 +167,7 @@ class CoordinatorFaultTest {
     fun `handlers that throw, hang or lag behind the events delay no other rule and lose nothing`(): Unit = runBlocking {
         val system = Scenarios.localisation(naming.corbaloc).closedAfter()
         val busy = system.runtime.create(Scenarios.relay, "busy0").also { it.activate() }
-        val tree = RtcTree.create(TreeConfig(listOf(naming.address))).closedAfter()
+        val tree = RtcTree(TreeConfig(listOf(naming.address))).closedAfter()
         val slow = Collections.synchronizedList(mutableListOf<LifeCycle>())
         val prompt = Collections.synchronizedList(mutableListOf<LifeCycle>())
         val coordinator = coordinator(tree) {

@@ -251,7 +251,7 @@ class CoordinatorTest : CoordinatedSystem() {
             val host = "/${naming.address}/${org.rtcoord.runtime.RuntimeProcess.hostContext}"
             tree.component("$host/gyro0.rtc").exit()
             await("gyro0 to be gone") { system.runtime.components.none { it.instanceName == "gyro0" } }
-            RtcTree.create(config).use { other -> other.manager("$host/manager.mgr").create("gyro", "gyro0") }
+            RtcTree(config).use { other -> other.manager("$host/manager.mgr").create("gyro", "gyro0") }
             val new = system.component("gyro0")
 
             await("the rule to watch the new gyro0") { new.observerIds.size == 1 }
@@ -306,7 +306,7 @@ class CoordinatorTest : CoordinatedSystem() {
         fun run(tree: RtcTree, log: MutableList<String>) = Coordinator(tree, coordination, EventOptions(WatchMode.PUSH)) { log += it }
         fun reactions(log: List<String>) = log.count { it == "gyro0.rtc failed; gyro0 is ERROR" }
         val gyro = system.component("gyro0")
-        RtcTree.create(config).use { otherTree ->
+        RtcTree(config).use { otherTree ->
             run(tree, logs[0]).use { first ->
                 run(otherTree, logs[1]).use { second ->
                     first.start()

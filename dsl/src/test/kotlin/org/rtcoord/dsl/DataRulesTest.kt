@@ -25,8 +25,8 @@ class DataRulesTest {
     private val naming = NamingService.start()
     private val system = Scenarios.localisation(naming.corbaloc)
     private val config = TreeConfig(nameServers = listOf(naming.address))
-    private val tree = RtcTree.create(config)
-    private val witness = RtcTree.create(config)
+    private val tree = RtcTree(config)
+    private val witness = RtcTree(config)
     private val log = ConcurrentLinkedQueue<String>()
 
     @AfterEach

@@ -100,7 +100,7 @@ class MachineInterpreterTest {
         assertEquals(listOf("entry of m/b: cannot start b"), failures)
     }
 
-    private val tree = RtcTree.create()
+    private val tree = RtcTree()
 
     @AfterEach
     fun closeTree() = tree.close()

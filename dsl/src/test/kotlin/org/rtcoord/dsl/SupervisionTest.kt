@@ -58,7 +58,7 @@ class SupervisionTest : CoordinatedSystem(
 
     /** The component [name] as a second tree reads it now, its naming context read again. */
     private suspend fun fresh(name: String): ComponentNode {
-        witness.refresh(RtcPath.parse(host), depth = 0)
+        witness.refresh(RtcPath(host), depth = 0)
         return witness.component(path(name)).also { it.refresh() }
     }
 

@@ -42,8 +42,8 @@ class ExampleSystem(script: String, options: EventOptions, args: List<String> = 
         }
     }
     private val config = TreeConfig(nameServers = listOf(naming.address))
-    private val tree = RtcTree.create(config)
-    val witness: RtcTree = RtcTree.create(config)
+    private val tree = RtcTree(config)
+    val witness: RtcTree = RtcTree(config)
 
     /** The slave manager process hosting the pipeline, with [Pipeline.SEPARATE_PROCESS]. */
     val pipelineProcess: FixtureProcess? = if (pipeline == Pipeline.SEPARATE_PROCESS) startPipeline() else null

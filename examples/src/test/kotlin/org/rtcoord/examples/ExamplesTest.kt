@@ -238,7 +238,7 @@ class ExamplesTest {
             assertEquals(listOf("stop laser_localise0.rtc", "start laser0.rtc", "start laser_localise0.rtc"), steps)
             val before = localiser.latest("laser")
             await("the new laser's data to reach the localiser") { localiser.latest("laser") !== before }
-            example.witness.refresh(RtcPath.parse(example.path("laser0.rtc")).parent!!, depth = 0)
+            example.witness.refresh(RtcPath(example.path("laser0.rtc")).parent!!, depth = 0)
             val connections = example.witness.port(example.path("laser0.rtc:laser")).connections()
             assertEquals(listOf(example.path("laser_localise0.rtc:laser")), connections.map { it.ports.last().path.toString() })
             assertEquals(1, example.witness.port(example.path("laser_localise0.rtc:laser")).connections().size, "no stale connector left")
@@ -293,7 +293,7 @@ class ExamplesTest {
             println("supervision example: slave manager SIGKILL to the pipeline ACTIVE again in another slave in ${killed.elapsedNow()}")
             val localiser = pipeline.last()
             await("the localiser to get laser and odometry data again") { localiser.latest("laser") != null && localiser.latest("odo") != null }
-            example.witness.refresh(RtcPath.parse(example.path("laser0.rtc")).parent!!, depth = 0)
+            example.witness.refresh(RtcPath(example.path("laser0.rtc")).parent!!, depth = 0)
             assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
             assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
             assertEquals(1, example.log.count { it.endsWith("failed together: one restart") }, example.log.joinToString("\n"))

@@ -30,7 +30,7 @@ object OpenRtmScenarios {
             val log = CopyOnWriteArrayList<String>()
             val config = TreeConfig(nameServers = listOf(system.naming))
             val coordination = ExampleSystem.scripts.load(Paths.get(script), emptyList(), config)
-            RtcTree.create(config).use { tree ->
+            RtcTree(config).use { tree ->
                 Coordinator(tree, coordination) { line -> log += line.also { println("coordinator: $it") } }.use { coordinator ->
                     coordinator.start()
                     test(system, coordinator, log)

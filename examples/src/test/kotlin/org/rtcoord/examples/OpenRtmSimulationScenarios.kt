@@ -3,7 +3,7 @@ package org.rtcoord.examples
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
-import org.rtcoord.RtcPath
+import org.rtcoord.nameServerPath
 import org.rtcoord.profile.ProfileFormat
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
@@ -29,10 +29,10 @@ object OpenRtmSimulationScenarios {
     fun fidelity(installation: OpenRtmInstallation, extras: (OpenRtmSystem) -> Unit): Unit = runBlocking {
         OpenRtmSystem.start(installation).use { system ->
             extras(system)
-            val saved = SystemProfiles(system.witness).save(RtcPath.nameServer(system.naming))
+            val saved = SystemProfiles(system.witness).save(nameServerPath(system.naming))
             SimulatedSystem.start(saved).use { simulation ->
                 println("${installation.label}: simulating the saved system: ${simulation.warnings.joinToString("; ").ifEmpty { "no warnings" }}")
-                val comparison = SimulationComparison.of(system.witness, RtcPath.nameServer(system.naming), simulation)
+                val comparison = SimulationComparison.of(system.witness, nameServerPath(system.naming), simulation)
                 comparison.differences.forEach { println("${installation.label}: difference: $it") }
                 println("${installation.label}: ${comparison.compared} compared, ${comparison.differences.size} differences")
                 assertEquals(emptyList<String>(), comparison.differences)
@@ -55,7 +55,7 @@ object OpenRtmSimulationScenarios {
     fun paperTestOnCopy(installation: OpenRtmInstallation): Unit = runBlocking {
         val directory = Files.createTempDirectory("rtcoord-copy")
         try {
-            val saved = OpenRtmSystem.start(installation).use { system -> SystemProfiles(system.witness).save(RtcPath.nameServer(system.naming)) }
+            val saved = OpenRtmSystem.start(installation).use { system -> SystemProfiles(system.witness).save(nameServerPath(system.naming)) }
             Files.writeString(directory.resolve("real.xml"), RtsProfiles.write(withOdoLocalisePorts(saved), ProfileFormat.XML))
             Files.copy(Paths.get("localisation.coord.kts"), directory.resolve("localisation.coord.kts"))
             val test = directory.resolve("real.test.kts")

@@ -27,7 +27,7 @@ class OpenRtmSystem private constructor(val installation: OpenRtmInstallation) :
     private val masterPort = ServerSocket(0, 1, InetAddress.getLoopbackAddress()).use { it.localPort }
     private val managers = mutableListOf<Process>()
     private val common: List<String> = commonLines()
-    val witness: RtcTree = RtcTree.create(TreeConfig(nameServers = listOf(omniNames.address)))
+    val witness: RtcTree = RtcTree(TreeConfig(nameServers = listOf(omniNames.address)))
 
     /** The naming service's address (`host:port`), for the coordinator's tree. */
     val naming: String get() = omniNames.address

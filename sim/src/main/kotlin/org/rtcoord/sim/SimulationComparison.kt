@@ -5,6 +5,7 @@ import kotlinx.coroutines.coroutineScope
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
+import org.rtcoord.nameServerPath
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.SystemProfiles
 
@@ -36,8 +37,8 @@ public class SimulationComparison private constructor(
         public suspend fun of(live: RtcTree, below: RtcPath, simulation: SimulatedSystem): SimulationComparison = coroutineScope {
             val saved = async { SystemProfiles(live).save(below) }
             val simulated = async {
-                RtcTree.create(TreeConfig(nameServers = listOf(simulation.address))).use { tree ->
-                    val path = below.names.fold(RtcPath.nameServer(simulation.address)) { path, name -> path.child(name) }
+                RtcTree(TreeConfig(nameServers = listOf(simulation.address))).use { tree ->
+                    val path = below.names.fold(nameServerPath(simulation.address)) { path, name -> path.child(name) }
                     SystemProfiles(tree).save(path)
                 }
             }

@@ -12,7 +12,7 @@ import org.rtcoord.runtime.naming.NamingService
 fun savedLocalisation(): RtsProfile = NamingService.start().use { naming ->
     Scenarios.localisation(naming.corbaloc).use {
         runBlocking {
-            RtcTree.create(TreeConfig(nameServers = listOf(naming.address))).use { tree -> SystemProfiles(tree).save() }
+            RtcTree(TreeConfig(nameServers = listOf(naming.address))).use { tree -> SystemProfiles(tree).save() }
         }
     }
 }

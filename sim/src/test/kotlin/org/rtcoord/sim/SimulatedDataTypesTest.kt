@@ -101,7 +101,7 @@ class SimulatedDataTypesTest {
     fun `a coordinator's data rules see the device types decoded, and every sample differs`(): Unit = runBlocking {
         SimulatedSystem.start(TypedSystem.profile(), idlDirectories = listOf(TypedSystem.acmeIdl)).use { sim ->
             val config = TreeConfig(listOf(sim.address))
-            RtcTree.create(config).use { tree ->
+            RtcTree(config).use { tree ->
                 val scans = Channel<StructuredData>(Channel.UNLIMITED)
                 val poses = Channel<TimedPose2D>(Channel.UNLIMITED)
                 val coordination = Coordination(emptyList(), config).apply {

@@ -3,7 +3,7 @@ package org.rtcoord.sim
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
-import org.rtcoord.RtcPath
+import org.rtcoord.nameServerPath
 import org.rtcoord.profile.ProfileFormat
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
@@ -16,7 +16,7 @@ class SimulationComparisonTest {
         TwoSlaveSystem.start().use { live ->
             val saved = live.save()
             live.tree().use { tree ->
-                val root = RtcPath.nameServer(live.address)
+                val root = nameServerPath(live.address)
                 SimulatedSystem.start(saved).use { sim ->
                     val same = SimulationComparison.of(tree, root, sim)
                     assertEquals(emptyList<String>(), same.differences)

@@ -61,7 +61,7 @@ class TwoSlaveSystem private constructor(private val naming: NamingService) : Au
     fun save(): RtsProfile = runBlocking { tree().use { SystemProfiles(it).save() } }
 
     /** A tree on the system's naming service; the caller closes it. */
-    fun tree(): RtcTree = RtcTree.create(TreeConfig(nameServers = listOf(address)))
+    fun tree(): RtcTree = RtcTree(TreeConfig(nameServers = listOf(address)))
 
     private fun connect(from: String, to: String, vararg properties: Pair<String, String>) {
         val ports = listOf(from, to).map { address ->

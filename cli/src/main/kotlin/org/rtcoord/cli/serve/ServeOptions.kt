@@ -8,7 +8,7 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.path
 import com.github.ajalt.clikt.parameters.types.restrictTo
-import org.rtcoord.TreeConfig
+import org.rtcoord.listenAddressProblem
 import java.nio.file.Path
 
 /**
@@ -26,7 +26,7 @@ class ServeOptions(prefix: String = "") : OptionGroup("Live view") {
         metavar = "ADDRESS",
         help = "The address the page is served on (default 127.0.0.1). Any other lets other hosts see the system: " +
             "add --${prefix}token.",
-    ).convert { address -> TreeConfig.listenAddressProblem(address)?.let { fail(it) } ?: address }.default(LOOPBACK)
+    ).convert { address -> listenAddressProblem(address)?.let { fail(it) } ?: address }.default(LOOPBACK)
 
     /** The token every API request must carry, or null when none is required. */
     val token: String? by option(

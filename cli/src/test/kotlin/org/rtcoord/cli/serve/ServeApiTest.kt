@@ -32,7 +32,7 @@ import kotlin.time.Duration.Companion.seconds
 /** The live view's API, straight over HTTP: the snapshot, the event stream, details, operating and the token. */
 class ServeApiTest {
     private val localisation = Localisation()
-    private val tree = RtcTree.create(TreeConfig(listOf(localisation.naming.address), 3.seconds))
+    private val tree = RtcTree(TreeConfig(listOf(localisation.naming.address), 3.seconds))
     private val http = HttpClient.newHttpClient()
     private val services = mutableListOf<LiveService>()
 

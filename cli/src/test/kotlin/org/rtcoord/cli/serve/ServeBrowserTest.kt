@@ -26,7 +26,7 @@ import kotlin.time.Duration.Companion.seconds
 class ServeBrowserTest {
     private val localisation = Localisation()
     private val nameServer = "/${localisation.naming.address}"
-    private val tree = RtcTree.create(TreeConfig(listOf(localisation.naming.address), 3.seconds))
+    private val tree = RtcTree(TreeConfig(listOf(localisation.naming.address), 3.seconds))
     private val closing = mutableListOf<AutoCloseable>()
 
     @AfterEach

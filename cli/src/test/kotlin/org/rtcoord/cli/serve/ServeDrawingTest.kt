@@ -27,7 +27,7 @@ class ServeDrawingTest {
     @Test
     fun `the localisation system is drawn true, before and after the laser fails`() {
         Localisation().use { localisation ->
-            RtcTree.create(TreeConfig(listOf(localisation.naming.address), 3.seconds)).use { tree ->
+            RtcTree(TreeConfig(listOf(localisation.naming.address), 3.seconds)).use { tree ->
                 val script = Paths.get(System.getProperty("rtcoord.root", ".."), "examples", "localisation.coord.kts").toAbsolutePath()
                 val coordination = runBlocking { ScriptHost().load(script, host = TreeConfig(listOf(localisation.naming.address), 3.seconds)) }
                 Coordinator(tree, coordination, EventOptions()).use { coordinator ->

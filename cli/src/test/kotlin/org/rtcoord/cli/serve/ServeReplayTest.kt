@@ -30,7 +30,7 @@ class ServeReplayTest {
         val recorded: Map<String, String>
         val started: Map<String, String>
         Localisation().use { localisation ->
-            RtcTree.create(TreeConfig(listOf(localisation.naming.address), 3.seconds)).use { tree ->
+            RtcTree(TreeConfig(listOf(localisation.naming.address), 3.seconds)).use { tree ->
                 val top = runBlocking { tree.node("/${localisation.naming.address}") }
                 runBlocking { LiveService.start(tree, top, null, EventOptions(), ServeSettings(record = file)) {} }.use {
                     started = states(tree)

@@ -15,7 +15,7 @@ import kotlin.time.Duration.Companion.seconds
 internal fun servedScenario(scenario: (String) -> RtSystem, block: (tree: RtcTree, service: LiveService, browser: HeadlessChromium) -> Unit) {
     NamingService.start().use { naming ->
         scenario(naming.corbaloc).use {
-            RtcTree.create(TreeConfig(listOf(naming.address), 10.seconds)).use { tree ->
+            RtcTree(TreeConfig(listOf(naming.address), 10.seconds)).use { tree ->
                 val service = runBlocking { LiveService.start(tree, tree.node("/${naming.address}"), null, EventOptions(), ServeSettings()) {} }
                 service.use { HeadlessChromium.start().use { browser -> block(tree, service, browser) } }
             }

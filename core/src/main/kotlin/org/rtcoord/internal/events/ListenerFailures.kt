@@ -18,7 +18,7 @@ internal class ListenerFailures(private val handler: ListenerFailureHandler) : A
         try {
             handler.onFailure(failure)
         } catch (e: Exception) {
-            ListenerFailureHandler.LOG.onFailure(failure)
+            ListenerFailureHandler.Log.onFailure(failure)
             log.warn("the listener failure handler {} failed on it: {}", handler, e.toString(), e)
         }
     }

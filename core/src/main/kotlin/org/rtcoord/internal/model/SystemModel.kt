@@ -1,16 +1,16 @@
 package org.rtcoord.internal.model
 
 import org.rtcoord.BecameZombie
-import org.rtcoord.ComponentEntry
+import org.rtcoord.ComponentEntryImpl
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.FsmStateChanged
-import org.rtcoord.FsmStatus
+import org.rtcoord.FsmStatusImpl
 import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
-import org.rtcoord.NameServerEntry
+import org.rtcoord.NameServerEntryImpl
 import org.rtcoord.NameServerLost
 import org.rtcoord.NameServerNode
 import org.rtcoord.NameServerReturned
@@ -22,6 +22,7 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
 import org.rtcoord.SystemSnapshot
+import org.rtcoord.SystemSnapshotImpl
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMethodChanged
 import org.rtcoord.internal.ComponentObject
@@ -91,12 +92,12 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
         val components = found.map { (component, node) ->
             val told = states[component] ?: node.snapshots.value?.contexts?.associate { it.handle to it.state }.orEmpty()
             val method = methods[component]
-            val fsm = fsmStates[component]?.let { FsmStatus(it, null) }
+            val fsm = fsmStates[component]?.let { FsmStatusImpl(it, null) }
                 ?: unknownFsmStatus(method).takeIf { node.snapshots.value?.offersFsmService == true }
-            ComponentEntry(node.canonical, told, alive = component !in dead, watchMethod = method, fsm = fsm)
+            ComponentEntryImpl(node.canonical, told, alive = component !in dead, watchMethod = method, fsm = fsm)
         }
-        val servers = nameServers().map { server -> outages[server.path].let { NameServerEntry(server, it?.since, it?.cause) } }
-        SystemSnapshot(sequence, components, servers, managerOutages.values.toList())
+        val servers = nameServers().map { server -> outages[server.path].let { NameServerEntryImpl(server, it?.since, it?.cause) } }
+        SystemSnapshotImpl(sequence, components, servers, managerOutages.values.toList())
     }
 
     private fun apply(event: RtcEvent) {

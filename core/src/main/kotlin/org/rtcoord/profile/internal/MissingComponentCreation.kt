@@ -23,7 +23,7 @@ internal class MissingComponentCreation(private val tree: RtcTree) {
         val path = "/" + c.pathUri.removePrefix("/")
         val type = c.id.split(':').getOrNull(3)?.takeIf { it.isNotBlank() }
             ?: throw ProfileRefusedException("$path: component id '${c.id}' names no type to create (RTC:vendor:category:type:version)")
-        Planned(c, path, type, managerFor(RtcPath.parse(path)) ?: throw ProfileRefusedException("$path: no manager in its naming context or above it to create it"))
+        Planned(c, path, type, managerFor(RtcPath(path)) ?: throw ProfileRefusedException("$path: no manager in its naming context or above it to create it"))
     }
 
     /** Creates [planned]'s component; returns what was done, one line. */

@@ -53,7 +53,7 @@ internal class FollowedPattern(val pattern: String, private val owner: Identitie
         lock.withLock {
             listeners += listener
             if (subscription == null && !closed) {
-                subscription = owner.tree.on(owner.tree.node(RtcPath.ROOT), this.types, owner.options.queued(), ::take)
+                subscription = owner.tree.on(owner.tree.node(RtcPath("/")), this.types, owner.options.queued(), ::take)
                 // Those there already are covered without a word; their arrival events find them covered.
                 owner.matching(pattern).filter { node -> covered.none { it.isSameComponent(node) } }.forEach { cover(it) }
             } else {

@@ -30,7 +30,7 @@ class CompiledCoordinatorTest {
     private val naming = NamingService.start()
     private val system = Scenarios.localisation(naming.corbaloc)
     private val config = TreeConfig(listOf(naming.address))
-    private val tree = RtcTree.create(config)
+    private val tree = RtcTree(config)
 
     @AfterEach
     fun stop() {

@@ -96,7 +96,7 @@ internal class ScenarioRun(
             system.close()
             return system.warnings.map { TestFailure(test.systemAt, "${test.systemShown}: $it") }
         }
-        return system.use { RtcTree.create(TreeConfig(listOf(system.address))).use { tree -> coordinate(system, tree) } }
+        return system.use { RtcTree(TreeConfig(listOf(system.address))).use { tree -> coordinate(system, tree) } }
     }
 
     private suspend fun coordinate(system: SimulatedSystem, tree: RtcTree): List<TestFailure> = coroutineScope {
