@@ -3,15 +3,20 @@ package org.rtcoord
 import org.slf4j.LoggerFactory
 
 /**
- * An event listener or handler that threw: [listener] as it was registered (a Kotlin handler passed to
- * [RtcTree.on] or [RtcTree.onWatching], a Java [EventListener]), the [event] it was given and the [error]
- * it threw. The listener keeps receiving the events that follow.
+ * An event listener or handler that threw, or whose executor refused its task: [listener] as it was
+ * registered (a Kotlin handler passed to [RtcTree.on] or [RtcTree.onWatching], a Java [EventListener], a
+ * listener of a coordinator's `subscribe...`), the [event] it was given and the [error] it threw. The
+ * listener keeps receiving the events that follow.
  */
 public class ListenerFailure(
     /** The handler or listener that threw, as it was registered. */
     public val listener: Any,
-    /** The event it was given. */
-    public val event: RtcEvent,
+    /**
+     * What it was given: the [RtcEvent] for an event listener or handler; for a listener of a
+     * coordinator's `subscribe...`, the change as a `Map.Entry` (the rule, machine or supervisor, and its
+     * status).
+     */
+    public val event: Any,
     /** What it threw. */
     public val error: Throwable,
 ) {

@@ -2,7 +2,6 @@ package org.rtcoord.internal.events
 
 import org.rtcoord.ListenerFailure
 import org.rtcoord.ListenerFailureHandler
-import org.rtcoord.RtcEvent
 import org.slf4j.LoggerFactory
 import kotlin.coroutines.AbstractCoroutineContextElement
 import kotlin.coroutines.CoroutineContext
@@ -13,7 +12,7 @@ import kotlin.coroutines.CoroutineContext
  */
 internal class ListenerFailures(private val handler: ListenerFailureHandler) : AbstractCoroutineContextElement(Key) {
     /** Tells the handler that [listener] threw [error] on [event]; if the handler throws too, both are logged. */
-    fun report(listener: Any, event: RtcEvent, error: Throwable) {
+    fun report(listener: Any, event: Any, error: Throwable) {
         val failure = ListenerFailure(listener, event, error)
         try {
             handler.onFailure(failure)

@@ -17,9 +17,11 @@ import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.internal.JavaCalls
+import org.rtcoord.internal.reportListenerFailure
 import org.rtcoord.internal.runTask
 import org.rtcoord.internal.treeScope
 import org.slf4j.LoggerFactory
+import java.util.AbstractMap.SimpleImmutableEntry
 import java.util.concurrent.Executor
 import java.util.concurrent.RejectedExecutionException
 import java.util.concurrent.atomic.AtomicBoolean
@@ -29,7 +31,7 @@ import java.util.concurrent.atomic.AtomicBoolean
  * of its `subscribe...` listeners, in one scope, a child of [tree]'s on the tree's threads: closing the
  * coordinator ends them, and nothing runs on kotlinx's shared threads.
  */
-internal class JavaCoordinatorRun(private val coordinator: Coordinator, tree: RtcTree) : AutoCloseable {
+internal class JavaCoordinatorRun(private val coordinator: Coordinator, private val tree: RtcTree) : AutoCloseable {
     private val scope = CoroutineScope(
         tree.treeScope().coroutineContext + SupervisorJob(tree.treeScope().coroutineContext.job) + CoroutineName("java coordinator ${coordinator.name}"),
     )
@@ -39,8 +41,10 @@ internal class JavaCoordinatorRun(private val coordinator: Coordinator, tree: Rt
 
     /**
      * Delivers the values of [sources] (each with its key) to [deliver] on [executor], one at a time: the
-     * current one of each, then each change. What [listener] throws, or [executor]'s refusal, is logged and
-     * the next value delivered; a refusal is logged once, as every later task will likely be refused too.
+     * current one of each, then each change. What [listener] throws, and each refusal of [executor], goes
+     * to the tree's listener failure handler with the change (key and value), as an event listener's
+     * does, and the next value is delivered; a refusal is logged too, once, as every later task will
+     * likely be refused as well.
      */
     fun <T> follow(executor: Executor, listener: Any, what: String, sources: List<Pair<String, StateFlow<T>>>, deliver: (String, T) -> Unit): Subscription {
         val refusalLogged = AtomicBoolean()
@@ -50,10 +54,11 @@ internal class JavaCoordinatorRun(private val coordinator: Coordinator, tree: Rt
                     executor.runTask { deliver(key, value) }
                 } catch (e: CancellationException) {
                     throw e
-                } catch (e: RejectedExecutionException) {
-                    if (refusalLogged.compareAndSet(false, true)) log.warn("coordinator {}: listener {} of its {} gets no more changes: {}", coordinator.name, listener, what, e.message)
                 } catch (e: Throwable) {
-                    log.warn("coordinator {}: listener {} of its {} failed on {}={}: {}", coordinator.name, listener, what, key, value, e.toString(), e)
+                    if (e is RejectedExecutionException && refusalLogged.compareAndSet(false, true)) {
+                        log.warn("coordinator {}: listener {} of its {} gets no more changes: {} (each one refused goes to the tree's listener failure handler)", coordinator.name, listener, what, e.message)
+                    }
+                    tree.reportListenerFailure(listener, SimpleImmutableEntry(key, value), e)
                 }
             }
         }

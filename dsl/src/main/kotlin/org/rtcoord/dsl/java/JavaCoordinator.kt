@@ -59,8 +59,10 @@ public class JavaCoordinator private constructor(
     /**
      * Calls [listener] on [executor] with each rule's description and status (see [RuleActivity]): the
      * current one of every rule at once, then each change, one at a time. Close the [Subscription] to stop;
-     * closing the coordinator stops it too. What the listener throws, and [executor]'s refusal of a
-     * task, are logged as warnings; the next change is delivered all the same.
+     * closing the coordinator stops it too. What the listener throws, and each refusal of [executor], go to
+     * the tree's [org.rtcoord.TreeConfig.listenerFailures] with the listener and the change (a `Map.Entry`
+     * of the rule's description and its status); a refusal is logged too, once. The next change is
+     * delivered all the same.
      */
     public fun subscribeRules(executor: Executor, listener: BiConsumer<String, RuleActivity.Status>): Subscription =
         run.follow(executor, listener, "rules", coordinator.rules.map { rule -> rule.description to rule.status }) { description, status -> listener.accept(description, status) }
@@ -68,7 +70,7 @@ public class JavaCoordinator private constructor(
     /**
      * Calls [listener] on [executor] with each mode machine's name and active mode (null before it has
      * one): the current mode of every machine at once, then each change. Close the [Subscription] to
-     * stop. Failures are logged, as for [subscribeRules].
+     * stop. Failures go to the tree's listener failure handler, as for [subscribeRules].
      */
     public fun subscribeModes(executor: Executor, listener: BiConsumer<String, @Nullable String?>): Subscription =
         run.follow(executor, listener, "modes", coordinator.machines.map { machine -> machine.name to machine.mode }) { name, mode -> listener.accept(name, mode) }
@@ -77,12 +79,12 @@ public class JavaCoordinator private constructor(
      * Calls [listener] on [executor] with each supervisor's name and status (see [SupervisorActivity]):
      * children, restarts, the back-off it waits out, its escalation; the status of every supervisor at
      * once, before [start] too (nothing done yet), then each change. Close the [Subscription] to stop.
-     * Failures are logged, as for [subscribeRules].
+     * Failures go to the tree's listener failure handler, as for [subscribeRules].
      */
     public fun subscribeSupervisors(executor: Executor, listener: BiConsumer<String, SupervisorActivity.Status>): Subscription =
         run.follow(executor, listener, "supervisors", coordinator.supervision.map { supervisor -> supervisor.name to supervisor.status }) { name, status -> listener.accept(name, status) }
 
-    /** Calls [listener] on [executor] with how many handler runs have failed: the count now, then each change. Failures are logged, as for [subscribeRules]. */
+    /** Calls [listener] on [executor] with how many handler runs have failed: the count now, then each change. Failures go to the tree's listener failure handler, as for [subscribeRules]. */
     public fun subscribeFailures(executor: Executor, listener: IntConsumer): Subscription =
         run.follow(executor, listener, "failures", listOf("failures" to coordinator.failureCounts)) { _, count -> listener.accept(count) }
 

@@ -6,8 +6,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.rtcoord.ClosedException;
 import org.rtcoord.LifeCycle;
+import org.rtcoord.ListenerFailure;
 import org.rtcoord.Subscription;
 import org.rtcoord.TreeConfig;
+import org.rtcoord.dsl.RuleActivity;
 import org.rtcoord.dsl.script.ScriptFailure;
 import org.rtcoord.runtime.RuntimeProcess;
 import org.rtcoord.runtime.RtSystem;
@@ -20,13 +22,19 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
+import java.util.Map;
+import java.util.function.BiConsumer;
+import java.util.function.IntConsumer;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -160,6 +168,30 @@ class JavaCoordinatorTest {
                 assertTrue(seen != null && seen.matches("(log|rules): rtcoord-(tree|call)-\\d+( @.*)?"), String.valueOf(seen));
                 if (seen.startsWith("log: ")) break;
             }
+        }
+    }
+
+    @Test
+    void aListenerThatThrowsOrIsRefusedReachesTheTreesFailureHandler() throws Exception {
+        BlockingQueue<ListenerFailure> heard = new LinkedBlockingQueue<>();
+        TreeConfig config = new TreeConfig.Builder().nameServer(naming.getAddress()).listenerFailures(heard::add).build();
+        try (JavaTree hooked = new JavaTree(config);
+             JavaCoordinator coordinator = JavaCoordinator.fromText(hooked, "reset.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n")) {
+            BiConsumer<String, RuleActivity.Status> throwing = (rule, status) -> { throw new IllegalStateException("view gone"); };
+            coordinator.subscribeRules(Runnable::run, throwing);
+            // Before, only logged: the handler never heard of it.
+            ListenerFailure failure = heard.poll(10, TimeUnit.SECONDS);
+            assertNotNull(failure, "the tree's listener failure handler did not hear of the listener's failure");
+            assertSame(throwing, failure.getListener());
+            assertEquals("view gone", failure.getError().getMessage());
+            assertEquals("gyro0.rtc enters ERROR", ((Map.Entry<?, ?>) failure.getEvent()).getKey());
+            // An executor that refuses (SWT's display disposed) loses no change without the handler hearing of it.
+            IntConsumer counter = count -> { };
+            coordinator.subscribeFailures(task -> { throw new RejectedExecutionException("display disposed"); }, counter);
+            ListenerFailure refused = heard.poll(10, TimeUnit.SECONDS);
+            assertNotNull(refused, "the tree's listener failure handler did not hear of the refusal");
+            assertSame(counter, refused.getListener());
+            assertInstanceOf(RejectedExecutionException.class, refused.getError());
         }
     }
 
