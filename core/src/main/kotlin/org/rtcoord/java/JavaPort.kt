@@ -25,51 +25,95 @@ public class JavaPort(
     /** Where the port is: `/host:port/ctx/name.rtc:port`. */
     public val path: RtcPath get() = port.path
 
-    /** The port as last read. */
+    /**
+     * The port as last read.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun snapshot(): PortSnapshot = calls.await { port.snapshot() }
 
-    /** [snapshot], when done. */
+    /** [snapshot], when done; it fails with what [snapshot] throws. */
     public fun snapshotAsync(): CompletableFuture<PortSnapshot> = calls.future { port.snapshot() }
 
     /**
      * Connects this port to [others] with connector [properties] and [name] (made up when null), and
      * returns the new connector (see [Port.connect]).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
     public fun connect(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: @Nullable String? = null): ConnectorSnapshot =
         calls.await { port.connect(others.map { it.port }, properties, name) }
 
-    /** [connect], when done. */
+    /** [connect], when done; it fails with what [connect] throws. */
     @JvmOverloads
     public fun connectAsync(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: @Nullable String? = null): CompletableFuture<ConnectorSnapshot> =
         calls.future { port.connect(others.map { it.port }, properties, name) }
 
-    /** Removes the connection [connectorId] from this port and its peers. */
+    /**
+     * Removes the connection [connectorId] from this port and its peers.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun disconnect(connectorId: String): Unit = calls.await { port.disconnect(connectorId) }
 
-    /** [disconnect], when done. */
+    /** [disconnect], when done; it fails with what [disconnect] throws. */
     public fun disconnectAsync(connectorId: String): CompletableFuture<Void?> = calls.done { port.disconnect(connectorId) }
 
-    /** Removes every connection of this port. */
+    /**
+     * Removes every connection of this port.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun disconnectAll(): Unit = calls.await { port.disconnectAll() }
 
-    /** [disconnectAll], when done. */
+    /** [disconnectAll], when done; it fails with what [disconnectAll] throws. */
     public fun disconnectAllAsync(): CompletableFuture<Void?> = calls.done { port.disconnectAll() }
 
-    /** This port's connections, read now. */
+    /**
+     * This port's connections, read now.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun connections(): List<Connection> = calls.await { port.connections() }
 
-    /** [connections], when done. */
+    /** [connections], when done; it fails with what [connections] throws. */
     public fun connectionsAsync(): CompletableFuture<List<Connection>> = calls.future { port.connections() }
 
     /**
      * Subscribes [listener] to this out-port's data and returns once subscribed; cancel the returned
      * [Subscription] to stop (see [Port.tap]).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun tap(listener: DataListener): Subscription = calls.await { port.tap(listener) }

@@ -52,55 +52,111 @@ public class JavaTree(
 
     private val calls = JavaCalls(tree.core.scope)
 
-    /** The node at [path] (absolute; a name server it names is added). */
+    /**
+     * The node at [path] (absolute; a name server it names is added).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun node(path: String): JavaNode = calls.await { JavaNode(tree.node(path)) }
 
-    /** [node], when done. */
+    /** [node], when done; it fails with what [node] throws. */
     public fun nodeAsync(path: String): CompletableFuture<JavaNode> = calls.future { JavaNode(tree.node(path)) }
 
-    /** The children of the naming context, name server, manager or root at [path], listed now if they never were. */
+    /**
+     * The children of the naming context, name server, manager or root at [path], listed now if they never were.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun children(path: String): List<JavaNode> = calls.await { directory(path).children().map(::JavaNode) }
 
-    /** [children], when done. */
+    /** [children], when done; it fails with what [children] throws. */
     public fun childrenAsync(path: String): CompletableFuture<List<JavaNode>> = calls.future { directory(path).children().map(::JavaNode) }
 
-    /** The component at [path]. */
+    /**
+     * The component at [path].
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun component(path: String): JavaComponent = calls.await { JavaComponent(tree.component(path)) }
 
-    /** [component], when done. */
+    /** [component], when done; it fails with what [component] throws. */
     public fun componentAsync(path: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.component(path)) }
 
-    /** The component named [name] (`laser0.rtc` or `laser0`) wherever it is registered (see [RtcTree.componentNamed]). */
+    /**
+     * The component named [name] (`laser0.rtc` or `laser0`) wherever it is registered (see [RtcTree.componentNamed]).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun componentNamed(name: String): JavaComponent = calls.await { JavaComponent(tree.componentNamed(name)) }
 
-    /** [componentNamed], when done. */
+    /** [componentNamed], when done; it fails with what [componentNamed] throws. */
     public fun componentNamedAsync(name: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.componentNamed(name)) }
 
-    /** The manager at [path]. */
+    /**
+     * The manager at [path].
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun manager(path: String): JavaManager = calls.await { JavaManager(tree.manager(path)) }
 
-    /** [manager], when done. */
+    /** [manager], when done; it fails with what [manager] throws. */
     public fun managerAsync(path: String): CompletableFuture<JavaManager> = calls.future { JavaManager(tree.manager(path)) }
 
-    /** The port at `component.rtc:port`. */
+    /**
+     * The port at `component.rtc:port`.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun port(path: String): JavaPort = calls.await { JavaPort(tree.port(path)) }
 
-    /** [port], when done. */
+    /** [port], when done; it fails with what [port] throws. */
     public fun portAsync(path: String): CompletableFuture<JavaPort> = calls.future { JavaPort(tree.port(path)) }
 
-    /** Connects the ports at [from] and [to] with connector [properties] (see [RtcTree.connect]). */
+    /**
+     * Connects the ports at [from] and [to] with connector [properties] (see [RtcTree.connect]).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
     public fun connect(from: String, to: String, properties: Map<String, String> = emptyMap()): ConnectorSnapshot =
         calls.await { tree.connect(from, to, properties) }
 
-    /** [connect], when done. */
+    /** [connect], when done; it fails with what [connect] throws. */
     @JvmOverloads
     public fun connectAsync(from: String, to: String, properties: Map<String, String> = emptyMap()): CompletableFuture<ConnectorSnapshot> =
         calls.future { tree.connect(from, to, properties) }
@@ -108,28 +164,50 @@ public class JavaTree(
     /**
      * Reads the naming context, name server, manager or root at [path] and everything below it down to
      * [depth] levels, concurrently (see [DirectoryNode.survey]).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
     public fun survey(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { directory(path).survey(depth) }
 
-    /** [survey], when done. */
+    /** [survey], when done; it fails with what [survey] throws. */
     @JvmOverloads
     public fun surveyAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> = calls.done { directory(path).survey(depth) }
 
-    /** Removes the binding at [path] from its naming context, whatever it is bound to, dead or alive (as `rtdel`). */
+    /**
+     * Removes the binding at [path] from its naming context, whatever it is bound to, dead or alive (as `rtdel`).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @Throws(RtcException::class, InterruptedException::class)
     public fun unbind(path: String): Unit = calls.await { unbindAt(path) }
 
-    /** [unbind], when done. */
+    /** [unbind], when done; it fails with what [unbind] throws. */
     public fun unbindAsync(path: String): CompletableFuture<Void?> = calls.done { unbindAt(path) }
 
-    /** Reads the subtree at [path] again, [depth] levels deep (the whole of it by default). */
+    /**
+     * Reads the subtree at [path] again, [depth] levels deep (the whole of it by default).
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
+     */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
     public fun refresh(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { tree.refresh(RtcPath(path), depth) }
 
-    /** [refresh], when done. */
+    /** [refresh], when done; it fails with what [refresh] throws. */
     @JvmOverloads
     public fun refreshAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> =
         calls.done { tree.refresh(RtcPath(path), depth) }
@@ -139,13 +217,19 @@ public class JavaTree(
      * depth-first order (see [RtcTree.find]). [filter] sees each node as it was last read. Unreachable
      * contexts and managers below are skipped; [from], or a name server the walk reaches, that cannot be
      * listed fails the call as [children] does: a search of a dead name server is not an empty one.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
     public fun find(from: String, filter: Predicate<JavaNode>, maxDepth: Int = Int.MAX_VALUE): List<JavaNode> =
         calls.await { findAll(from, filter, maxDepth) }
 
-    /** [find], when done. */
+    /** [find], when done; it fails with what [find] throws. */
     @JvmOverloads
     public fun findAsync(from: String, filter: Predicate<JavaNode>, maxDepth: Int = Int.MAX_VALUE): CompletableFuture<List<JavaNode>> =
         calls.future { findAll(from, filter, maxDepth) }
@@ -156,6 +240,12 @@ public class JavaTree(
      * A UI passes its toolkit's executor (SWT: `display::asyncExec`) and touches its widgets in the listener.
      * What the listener throws goes to [TreeConfig.listenerFailures], naming it and the event.
      * Returns once the node is watched; close the [Subscription] to stop.
+     *
+     * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
+     *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
+     *   cancelled.
+     * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
