@@ -24,7 +24,10 @@ internal class Bench(private val options: BenchOptions, private val installation
                     Benchmark.MEMORY -> MemoryBench(options, report).run()
                     Benchmark.STARTUP -> StartupBench(options, installation, report).run()
                     Benchmark.PROFILE -> ProfileBench(options, installation, report).run()
-                    Benchmark.DATA -> DataBench(options, report).run()
+                    Benchmark.DATA -> {
+                        DataBench(options, report).run()
+                        SimulatedPortBench(options, installation, report).run()
+                    }
                     Benchmark.TEST -> TestBench(options, installation, report).run()
                     Benchmark.SIMULATION -> SimulationBench(options, installation, report).run()
                     Benchmark.EXPLORE -> ExploreBench(options, installation, report).run()

@@ -8,7 +8,6 @@ import org.rtcoord.RtcTree
 import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
-import org.rtcoord.datatypes.MadeUpValues
 import org.rtcoord.dsl.Coordination
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.runtime.Behaviour
@@ -32,8 +31,6 @@ import kotlin.time.Duration.Companion.seconds
  * tap's listener, matched by the scan's first value (its tick). CPU per sample is what tapping adds to
  * this JVM (push, receipt, decode, delivery) over the same fixture running untapped. Silence detection
  * delay is from freezing the scanner's output to a coordinator's `silentFor` handler, less the threshold.
- * A simulated RangeData out-port's cost is this JVM's CPU with it writing at 100 Hz to a connected
- * in-port, less the same pair with the writer inactive.
  */
 internal class DataBench(private val options: BenchOptions, private val report: Report) {
     private val os = ManagementFactory.getOperatingSystemMXBean() as com.sun.management.OperatingSystemMXBean
@@ -55,43 +52,6 @@ internal class DataBench(private val options: BenchOptions, private val report: 
         report.section("data: tap of a TimedDoubleSeq($SCAN) out-port, fixture in the bench JVM; ${options.dataWindow.inWholeSeconds} s windows")
         for (rate in listOf(100.0, 1000.0)) rate(rate)
         silence()
-        simulatedRanger()
-    }
-
-    /**
-     * What `rtcoord sim` spends on one out-port of RangeData (1081 ranges) at 100 Hz: made-up values
-     * ([MadeUpValues], as the simulation's behaviour makes them), encoded and pushed to a connected in-port
-     * in this JVM that decodes them, against the same pair with the writer inactive.
-     */
-    private suspend fun simulatedRanger() {
-        val rangeData = DataType.of("IDL:RTC/RangeData:1.0")!!
-        val values = MadeUpValues(rangeData.idl!!, seed = "ranger0.range".hashCode())
-        val ranger = ComponentType(
-            "ranger", listOf(PortSpec.DataOut("range", rangeData)), rate = 100.0,
-            behaviour = { Behaviour.source("range") { values.at(System.currentTimeMillis() * 1_000_000)!! } },
-        )
-        val sink = ComponentType("sink", listOf(PortSpec.DataIn("range", rangeData)), rate = 100.0)
-        NamingService.start().use { naming ->
-            rtSystem(naming.corbaloc) {
-                component(ranger, "ranger0")
-                component(sink, "sink0")
-                connect("ranger0:range", "sink0:range")
-                activate("sink0")
-            }.use { system ->
-                delay(options.dataWindow / 2)
-                val idleCpu = cpuPerSecond(options.dataWindow)
-                system.component("ranger0").activate()
-                delay(options.dataWindow / 2) // warm-up
-                val writingCpu = cpuPerSecond(options.dataWindow)
-                if (system.component("sink0").latest("range") == null) {
-                    return report.skipped("simulated RangeData out-port at 100 Hz", "no sample reached the in-port")
-                }
-                report.value(
-                    "simulated RangeData(1081) out-port at 100 Hz", (writingCpu - idleCpu) * 100, "% of a core",
-                    "made up, encoded, pushed and decoded by a connected in-port in this JVM; ${figure(writingCpu * 100)} % writing, ${figure(idleCpu * 100)} % idle",
-                )
-            }
-        }
     }
 
     private suspend fun rate(rate: Double) {
