@@ -14,7 +14,11 @@ public class DataCodec(public val type: IdlType) {
     /** [value] as CDR in little-endian or big-endian order; throws [IllegalArgumentException] naming the member that does not fit. */
     public fun encode(value: Any?, littleEndian: Boolean): ByteArray {
         val out = CdrOutput(order(littleEndian), capacity = lastSize)
-        write(out, type, value, type.name)
+        try {
+            write(out, type, value)
+        } catch (e: Mismatch) {
+            throw IllegalArgumentException("${type.name}${e.path}: ${e.reason}")
+        }
         return out.bytes().also { lastSize = maxOf(it.size, MINIMUM_CAPACITY) }
     }
 
@@ -35,65 +39,80 @@ public class DataCodec(public val type: IdlType) {
 
     private fun order(littleEndian: Boolean) = if (littleEndian) ByteOrder.LITTLE_ENDIAN else ByteOrder.BIG_ENDIAN
 
-    private fun write(out: CdrOutput, type: IdlType, value: Any?, path: String) {
+    /** Writes [value] as [type]; a value that does not fit throws [Mismatch], which each enclosing member names. */
+    private fun write(out: CdrOutput, type: IdlType, value: Any?) {
         when (type) {
-            is IdlType.Primitive -> writePrimitive(out, type, value, path)
+            is IdlType.Primitive -> writePrimitive(out, type, value)
             is IdlType.StringType -> {
-                val text = value as? String ?: mismatch(path, "a string", value)
-                require(type.bound == 0 || text.length <= type.bound) { "$path: ${text.length} characters exceed the bound ${type.bound}" }
+                val text = value as? String ?: mismatch("a string", value)
+                if (type.bound != 0 && text.length > type.bound) throw Mismatch("${text.length} characters exceed the bound ${type.bound}")
                 if (type.wide) out.wideString(text) else out.string(text)
             }
             is IdlType.Sequence -> {
-                val elements = elements(value, path)
-                require(type.bound == 0 || elements.size <= type.bound) { "$path: ${elements.size} elements exceed the bound ${type.bound}" }
+                val elements = elements(value)
+                if (type.bound != 0 && elements.size > type.bound) throw Mismatch("${elements.size} elements exceed the bound ${type.bound}")
                 out.long(elements.size)
-                writeElements(out, type.element, elements, path)
+                writeElements(out, type.element, elements)
             }
             is IdlType.ArrayType -> {
-                val elements = elements(value, path)
-                require(elements.size == type.length) { "$path: ${elements.size} elements where the array holds ${type.length}" }
-                writeElements(out, type.element, elements, path)
+                val elements = elements(value)
+                if (elements.size != type.length) throw Mismatch("${elements.size} elements where the array holds ${type.length}")
+                writeElements(out, type.element, elements)
             }
             is IdlType.Struct -> {
-                val fields = value as? Map<*, *> ?: mismatch(path, "a struct (a map of its members)", value)
+                val fields = value as? Map<*, *> ?: mismatch("a struct (a map of its members)", value)
                 for (member in type.members) {
-                    val memberPath = "$path.${member.name}"
-                    require(fields.containsKey(member.name)) { "$memberPath: missing" }
-                    write(out, member.type, fields[member.name], memberPath)
+                    if (!fields.containsKey(member.name)) throw Mismatch("missing").under(".${member.name}")
+                    member(member.name) { write(out, member.type, fields[member.name]) }
                 }
             }
-            is IdlType.Enum -> out.long(ordinal(type, value, path))
+            is IdlType.Enum -> out.long(ordinal(type, value))
             is IdlType.Union -> {
-                val fields = value as? Map<*, *> ?: mismatch(path, "a union (a map with its discriminator)", value)
+                val fields = value as? Map<*, *> ?: mismatch("a union (a map with its discriminator)", value)
                 val discriminator = fields[IdlType.UNION_DISCRIMINATOR]
-                write(out, type.discriminator, discriminator, "$path.${IdlType.UNION_DISCRIMINATOR}")
+                member(IdlType.UNION_DISCRIMINATOR) { write(out, type.discriminator, discriminator) }
                 val case = type.caseFor(discriminatorKey(type.discriminator, discriminator)) ?: return
-                write(out, case.type, fields[case.name], "$path.${case.name}")
+                member(case.name) { write(out, case.type, fields[case.name]) }
             }
-            is IdlType.Alias -> write(out, type.type, value, path)
+            is IdlType.Alias -> write(out, type.type, value)
         }
     }
 
-    private fun writeElements(out: CdrOutput, element: IdlType, elements: Elements, path: String) {
+    private fun writeElements(out: CdrOutput, element: IdlType, elements: Elements) {
         val resolved = element.resolved
         when {
             resolved === IdlType.Primitive.DOUBLE && elements.doubles != null -> out.doubles(elements.doubles)
             resolved === IdlType.Primitive.OCTET && elements.octets != null -> out.octets(elements.octets)
-            else -> for (index in 0 until elements.size) write(out, element, elements[index], "$path[$index]")
+            else -> for (index in 0 until elements.size) {
+                try {
+                    write(out, element, elements[index])
+                } catch (e: Mismatch) {
+                    throw e.under("[$index]")
+                }
+            }
         }
     }
 
-    private fun writePrimitive(out: CdrOutput, type: IdlType.Primitive, value: Any?, path: String) {
+    /** Runs [write] for the member [name], naming it in a [Mismatch]: the path is built only for an error. */
+    private inline fun member(name: String, write: () -> Unit) {
+        try {
+            write()
+        } catch (e: Mismatch) {
+            throw e.under(".$name")
+        }
+    }
+
+    private fun writePrimitive(out: CdrOutput, type: IdlType.Primitive, value: Any?) {
         when (type) {
-            IdlType.Primitive.BOOLEAN -> out.octet(if (value as? Boolean ?: mismatch(path, "a boolean", value)) 1 else 0)
-            IdlType.Primitive.CHAR -> out.octet(character(value, path).code.toByte())
-            IdlType.Primitive.WCHAR -> out.wideChar(character(value, path))
-            IdlType.Primitive.OCTET -> out.octet(number(value, path).toByte())
-            IdlType.Primitive.SHORT, IdlType.Primitive.USHORT -> out.short(number(value, path).toShort())
-            IdlType.Primitive.LONG, IdlType.Primitive.ULONG -> out.long(number(value, path).toLong().toInt())
-            IdlType.Primitive.LONGLONG, IdlType.Primitive.ULONGLONG -> out.longLong(number(value, path).toLong())
-            IdlType.Primitive.FLOAT -> out.float(number(value, path).toFloat())
-            IdlType.Primitive.DOUBLE -> out.double(number(value, path).toDouble())
+            IdlType.Primitive.BOOLEAN -> out.octet(if (value as? Boolean ?: mismatch("a boolean", value)) 1 else 0)
+            IdlType.Primitive.CHAR -> out.octet(character(value).code.toByte())
+            IdlType.Primitive.WCHAR -> out.wideChar(character(value))
+            IdlType.Primitive.OCTET -> out.octet(number(value).toByte())
+            IdlType.Primitive.SHORT, IdlType.Primitive.USHORT -> out.short(number(value).toShort())
+            IdlType.Primitive.LONG, IdlType.Primitive.ULONG -> out.long(number(value).toLong().toInt())
+            IdlType.Primitive.LONGLONG, IdlType.Primitive.ULONGLONG -> out.longLong(number(value).toLong())
+            IdlType.Primitive.FLOAT -> out.float(number(value).toFloat())
+            IdlType.Primitive.DOUBLE -> out.double(number(value).toDouble())
         }
     }
 
@@ -153,23 +172,23 @@ public class DataCodec(public val type: IdlType) {
             else -> 1
         }
 
-        fun mismatch(path: String, expected: String, value: Any?): Nothing =
-            throw IllegalArgumentException("$path: expected $expected, got ${value?.let { it::class.java.simpleName + " " + it }?.take(80) ?: "null"}")
+        fun mismatch(expected: String, value: Any?): Nothing =
+            throw Mismatch("expected $expected, got ${value?.let { it::class.java.simpleName + " " + it }?.take(80) ?: "null"}")
 
-        fun number(value: Any?, path: String): Number = value as? Number ?: mismatch(path, "a number", value)
+        fun number(value: Any?): Number = value as? Number ?: mismatch("a number", value)
 
-        fun character(value: Any?, path: String): Char = when {
+        fun character(value: Any?): Char = when {
             value is Char -> value
             value is String && value.length == 1 -> value[0]
-            else -> mismatch(path, "a character", value)
+            else -> mismatch("a character", value)
         }
 
-        fun ordinal(type: IdlType.Enum, value: Any?, path: String): Int = when (value) {
+        fun ordinal(type: IdlType.Enum, value: Any?): Int = when (value) {
             is String -> type.enumerators.indexOf(value).takeIf { it >= 0 }
-                ?: throw IllegalArgumentException("$path: $value is not one of ${type.name}'s enumerators (${type.enumerators.joinToString()})")
+                ?: throw Mismatch("$value is not one of ${type.name}'s enumerators (${type.enumerators.joinToString()})")
             is Number -> value.toInt().takeIf { it in type.enumerators.indices }
-                ?: throw IllegalArgumentException("$path: ${type.name} has no enumerator $value")
-            else -> mismatch(path, "an enumerator of ${type.name}", value)
+                ?: throw Mismatch("${type.name} has no enumerator $value")
+            else -> mismatch("an enumerator of ${type.name}", value)
         }
 
         /** A discriminator as union labels hold it: integers widened to Long, enumerators by name. */
@@ -179,7 +198,7 @@ public class DataCodec(public val type: IdlType) {
             else -> (value as? Number)?.toLong() ?: value ?: 0L
         }
 
-        fun elements(value: Any?, path: String): Elements = when (value) {
+        fun elements(value: Any?): Elements = when (value) {
             is DoubleArray -> Elements(value.size, { value[it] }, doubles = value)
             is ByteArray -> Elements(value.size, { value[it] }, octets = value)
             is List<*> -> Elements(value.size, value::get)
@@ -190,8 +209,19 @@ public class DataCodec(public val type: IdlType) {
             is ShortArray -> Elements(value.size, value::get)
             is BooleanArray -> Elements(value.size, value::get)
             is CharArray -> Elements(value.size, value::get)
-            else -> mismatch(path, "a list or an array", value)
+            else -> mismatch("a list or an array", value)
         }
+    }
+
+    /**
+     * A value that does not fit its type, [reason] said of the member at [path] (`.geometry.size[2]`), which
+     * the enclosing members prepend to as it goes up: no path is built while samples encode.
+     */
+    private class Mismatch(val reason: String) : RuntimeException(reason, null, false, false) {
+        var path: String = ""
+            private set
+
+        fun under(segment: String): Mismatch = apply { path = segment + path }
     }
 
     /** A sequence's or array's elements, whatever holds them; primitive arrays of the common kinds kept for bulk writes. */

@@ -3,6 +3,7 @@ package org.rtcoord.datatypes
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertNotEquals
 import org.junit.jupiter.api.Assertions.assertNull
+import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import java.nio.file.Paths
@@ -48,6 +49,26 @@ class StandardDataTypesTest {
         assertEquals(listOf<Byte>(1, 0, 0, 0), little.take(4))
         assertEquals(listOf<Byte>(0, 0, 0, 1), big.take(4))
         assertNotEquals(little.toList(), big.toList())
+    }
+
+    @Test
+    fun `a value that does not fit is refused, naming the member at fault`() {
+        val codec = DataCodec(StandardDataTypes.named("RangeData")!!)
+        @Suppress("UNCHECKED_CAST")
+        val value = MadeUpValues(codec.type, seed = 3).at(1_000_000_001) as MutableMap<String, Any?>
+        fun Map<*, *>.with(name: String, change: MutableMap<Any?, Any?>.() -> Unit) = toMutableMap().apply { this[name] = (this[name] as Map<*, *>).toMutableMap().apply(change) }
+        value["geometry"] = (value["geometry"] as Map<*, *>).with("geometry") { this["size"] = (this["size"] as Map<*, *>).toMutableMap().apply { this["l"] = "long" } }
+        val wrong = assertThrows(IllegalArgumentException::class.java) { codec.encode(value, littleEndian = true) }
+        assertEquals("RTC::RangeData.geometry.geometry.size.l: expected a number, got String long", wrong.message)
+        value.remove("ranges")
+        val missing = assertThrows(IllegalArgumentException::class.java) { codec.encode(value, littleEndian = true) }
+        assertEquals("RTC::RangeData.ranges: missing", missing.message)
+        val points = DataCodec(StandardDataTypes.named("PointCloud")!!)
+        @Suppress("UNCHECKED_CAST")
+        val cloud = MadeUpValues(points.type, seed = 3).at(1_000_000_001) as MutableMap<String, Any?>
+        cloud["points"] = (cloud["points"] as List<*>).toMutableList().apply { this[2] = 42 }
+        val element = assertThrows(IllegalArgumentException::class.java) { points.encode(cloud, littleEndian = false) }
+        assertEquals("RTC::PointCloud.points[2]: expected a struct (a map of its members), got Integer 42", element.message)
     }
 
     @Test
