@@ -73,7 +73,8 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
     /** `./rtcoord sim FILE` with its console open (an empty stdin would end it), until closed. */
     private inner class Simulation(file: String) : AutoCloseable {
         private val process = ProcessBuilder(installation.launcher.toString(), "sim", file)
-            .directory(installation.root.toFile()).redirectErrorStream(true).start()
+            .directory(installation.root.toFile()).redirectErrorStream(true)
+            .apply { environment().keys.removeAll(TimedCommand.IGNORED_VARIABLES) }.start()
         private val lines = LinkedBlockingQueue<String>()
 
         /** The `host:port` of the simulation's naming service. */
@@ -84,13 +85,22 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
                 isDaemon = true
                 start()
             }
+            naming = try {
+                awaitReady()
+            } catch (e: Exception) {
+                process.destroyForcibly()
+                throw e
+            }
+        }
+
+        /** The naming address the simulation prints before its `ready` line. */
+        private fun awaitReady(): String {
             var address: String? = null
             while (true) {
                 val line = lines.poll(60, TimeUnit.SECONDS) ?: error("rtcoord sim printed nothing for 60 s")
                 if (line.startsWith("naming ")) address = line.removePrefix("naming ")
-                if (line.startsWith("ready ")) break
+                if (line.startsWith("ready ")) return checkNotNull(address) { "rtcoord sim said ready without its naming address" }
             }
-            naming = checkNotNull(address) { "rtcoord sim said ready without its naming address" }
         }
 
         /** The process's CPU time per second of wall time over [window]. */

@@ -46,7 +46,8 @@ internal class TimedCommand(
         }
     }
 
-    private companion object {
+    companion object {
+        /** Name server variables, removed from a command's environment: only its arguments say what it talks to. */
         val IGNORED_VARIABLES = listOf("RTCOORD_NAMESERVERS", "RTCTREE_NAMESERVERS", "RTCOORD_CWD", "RTCSH_CWD")
     }
 }
