@@ -70,7 +70,7 @@ class SimCommand : TreeCommand("sim") {
             fail("$profile: ${e.message}", e)
         }
         system.use {
-            system.warnings.forEach { echo("rtcoord sim: $profile: $it", err = true) }
+            (system.warnings + system.notes).forEach { echo("rtcoord sim: $profile: $it", err = true) }
             val live = compare
             if (live != null) return compare(system, pathOf(live))
             echo("naming ${system.address}")

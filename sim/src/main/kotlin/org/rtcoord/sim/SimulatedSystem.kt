@@ -18,7 +18,8 @@ import java.nio.file.Path
  * slave in a process of its own with the components it hosted, creating the types it could.
  *
  * What the profile names that cannot be simulated is left out and said in [warnings], one line each; the
- * rest runs. Faults come through the [components] (`breakDown`, `fail`, `hangExecution`, ...),
+ * rest runs. What the profile cannot tell (the ports of a type the managers can create but no component
+ * of the profile is) is said in [notes]. Faults come through the [components] (`breakDown`, `fail`, `hangExecution`, ...),
  * [killManager] and [restartNaming].
  */
 public class SimulatedSystem private constructor(
@@ -27,6 +28,12 @@ public class SimulatedSystem private constructor(
     private val processes: SimulatedProcesses,
     /** What the profile says that could not be simulated, one line each: the element, then why. */
     public val warnings: List<String>,
+    /**
+     * What the profile cannot tell, one line each: a type its managers can create with no instance in it and
+     * no `rtcoord.type.TYPE.port.PORT` properties, whose instances are created without ports. The saved
+     * system itself is simulated whole: a test of it does not fail for these.
+     */
+    public val notes: List<String>,
 ) : AutoCloseable {
     /** The naming service's `HOST:PORT`, as `rtcoord -n` and rtshell paths (`/HOST:PORT/`) take it. */
     public val address: String get() = naming.address
@@ -141,7 +148,7 @@ public class SimulatedSystem private constructor(
                 naming.close()
                 throw e
             }
-            val system = SimulatedSystem(host, naming, processes, warnings)
+            val system = SimulatedSystem(host, naming, processes, warnings, types.notes.toList())
             try {
                 if (!profile.ext.properties[ProfileKeys.MANAGER_COMMAND].isNullOrBlank() && processes.master != null) {
                     processes.startSlavesOnDemand(types.creatable.values)

@@ -21,6 +21,9 @@ internal class SimulatedTypes(private val profile: RtsProfile, private val userT
     /** What could not be simulated as the profile says, one line each; first the IDL that could not be read. */
     val warnings = userTypes?.errors.orEmpty().toMutableList()
 
+    /** What the profile cannot tell, one line each: the types the managers can create whose ports are not known. */
+    val notes = mutableListOf<String>()
+
     /** The type of each component that can be simulated, by instance name. */
     val byInstance: Map<String, ComponentType> = profile.components.mapNotNull { component ->
         try {
@@ -97,7 +100,7 @@ internal class SimulatedTypes(private val profile: RtsProfile, private val userT
     private fun declaredType(typeName: String): ComponentType {
         val ports = declaredPorts(typeName)
         if (ports.isEmpty()) {
-            warnings += "type $typeName, which the manager can create, has no instance and no ${ProfileKeys.typePort(typeName, "PORT")} " +
+            notes += "type $typeName, which the manager can create, has no instance and no ${ProfileKeys.typePort(typeName, "PORT")} " +
                 "properties in the profile: its instances have no ports"
         }
         return ComponentType(typeName, ports = ports, behaviour = { SimulatedBehaviour(ports) }, description = "simulated $typeName")

@@ -35,8 +35,9 @@ class SimulatedSystemTest {
                     "type odo_localise, which the manager can create, has no instance and no rtcoord.type.odo_localise.port.PORT properties " +
                         "in the profile: its instances have no ports",
                 ),
-                sim.warnings,
+                sim.notes,
             )
+            assertEquals(emptyList<String>(), sim.warnings, "the saved system is simulated whole")
         }
     }
 
