@@ -25,7 +25,7 @@ class HelpCommand : CliktCommand("help") {
 }
 
 /**
- * What `rtcoord [COMMAND...] --help` shows, as the message Clikt prints it from. A word that names no
+ * What `rtcoord COMMAND... --help` shows, as the message Clikt prints it from. A word that names no
  * command is a usage error (Clikt would show the help of the last command it knew instead).
  */
 internal fun helpOf(command: List<String>): PrintHelpMessage {
