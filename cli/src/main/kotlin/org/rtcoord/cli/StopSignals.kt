@@ -4,6 +4,7 @@ import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.withTimeoutOrNull
 import sun.misc.Signal
 import sun.misc.SignalHandler
+import java.util.concurrent.CopyOnWriteArraySet
 import kotlin.time.Duration
 
 /**
@@ -18,6 +19,7 @@ internal class StopSignals : AutoCloseable {
     private val previous = HashMap<String, SignalHandler>()
 
     init {
+        waiting += this
         for (name in listOf("INT", "TERM")) {
             try {
                 previous[name] = Signal.handle(Signal(name)) { signal ->
@@ -41,7 +43,19 @@ internal class StopSignals : AutoCloseable {
     /** Gives the signals back to the JVM. */
     @Synchronized
     override fun close() {
+        waiting -= this
         previous.forEach { (name, handler) -> Signal.handle(Signal(name), handler) }
         previous.clear()
+    }
+
+    internal companion object {
+        private val waiting = CopyOnWriteArraySet<StopSignals>()
+
+        /**
+         * Stops every command of this JVM that is running until stopped, as a SIGINT to its process would;
+         * false when none is. For callers that run commands inside their own JVM (the tests), where a
+         * real signal would end the caller too.
+         */
+        fun interrupt(): Boolean = waiting.onEach { it.stop("SIGINT") }.isNotEmpty()
     }
 }

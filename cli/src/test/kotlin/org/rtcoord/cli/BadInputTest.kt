@@ -242,7 +242,7 @@ class BadInputTest {
         )
         val before = liveState()
         try {
-            val log = runRtcoord("-n", ns, "run", "--for", "3s", handler).ok().lines()
+            val log = runRtcoordUntil("-n", ns, "run", handler, what = "the handler's failure") { "failed at create-then-connect.coord.kts:3: " in it }.ok().lines()
             val created = log.single { "created " in it }.substringAfter("created ")
             // The first: the summary repeats it.
             val failure = log.first { "timer after 0s failed at create-then-connect.coord.kts:3: " in it }
@@ -272,8 +272,11 @@ class BadInputTest {
         assertTrue(stopped.output.contains("timer every 200ms failed at failing.coord.kts:1: IllegalStateException: the handler gives up"), stopped.output)
         assertTrue(stopped.output.contains("stopped by a handler that failed (--fail-on-handler-error); 1 handler failure;"), stopped.output)
 
-        val kept = runRtcoord("-n", ns, "run", "--for", "1s", failing).ok()
-        assertTrue(Regex("stopped; [2-9]\\d* handler failures").containsMatchIn(kept), kept)
+        val kept = RunningCommand("-n", ns, "run", failing).use { running ->
+            running.awaitLines("a second failure", 2) { "timer every 200ms failed at failing.coord.kts:1" in it }
+            running.stop().ok()
+        }
+        assertTrue(Regex("stopped by SIGINT; [2-9]\\d* handler failures").containsMatchIn(kept), kept)
     }
 
     @Test
@@ -283,7 +286,7 @@ class BadInputTest {
             "after(0.seconds) {\n    component(\"laser_localise0\").configure {\n        set(\"gain\", \"2.0\")\n        set(\"nope\", \"1\")\n    }\n}\n",
         )
         val before = liveState()
-        val log = runRtcoord("-n", ns, "run", "--for", "2s", configure).ok()
+        val log = runRtcoordUntil("-n", ns, "run", configure, what = "the handler's failure") { "failed at configure.coord.kts:2: " in it }.ok()
         assertTrue(
             log.lines().any { it.endsWith("timer after 0s failed at configure.coord.kts:2: NotFoundException: $localiser: no parameter 'nope' in configuration set 'default' (parameters: fail, gain)") },
             log,

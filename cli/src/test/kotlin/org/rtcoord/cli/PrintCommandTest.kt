@@ -48,8 +48,12 @@ class PrintCommandTest {
 
     @Test
     fun `watch --data prints each out-port's rate every second`() {
-        val lines = runRtcoord("watch", "--data", localisation.path("laser0.rtc"), "--for", "2500ms").ok().lines()
         val rate = Regex("""\S+ \S+ /\S+/laser0\.rtc:laser data (\d+\.\d) Hz""")
+        val lines = RunningCommand("watch", "--data", localisation.path("laser0.rtc")).use { watching ->
+            watching.awaitLines("two rates of the laser's port", 2) { rate.matches(it) }
+            watching.awaitLine("the port's traffic") { it.endsWith("port laser sent data") }
+            watching.stop().ok().lines()
+        }
         val rates = lines.mapNotNull { rate.matchEntire(it)?.groupValues?.get(1)?.toDouble() }
         assertTrue(rates.size >= 2, lines.joinToString("\n"))
         assertTrue(rates.all { it in 20.0..140.0 }, "the laser runs at 100 Hz: $rates")

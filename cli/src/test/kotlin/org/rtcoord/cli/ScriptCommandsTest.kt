@@ -1,7 +1,6 @@
 package org.rtcoord.cli
 
 import RTC.RTObjectHelper
-import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
@@ -17,7 +16,6 @@ import java.net.InetSocketAddress
 import java.net.Socket
 import java.nio.file.Files
 import java.nio.file.Path
-import java.util.concurrent.CompletableFuture
 
 /** `check`, `run` and `demo`: the commands that compile and run coordinator scripts. */
 class ScriptCommandsTest {
@@ -120,13 +118,15 @@ class ScriptCommandsTest {
                 "three.coord.kts",
                 "after(0.seconds) {\n    log(\"parsing\")\n    val n = \"three\".toInt()\n}\nafter(0.seconds) {\n    component(\"lazer0.rtc\").deactivate()\n}\n",
             )
-            val result = runRtcoord("-n", localisation.naming.address, "run", "--for", "2s", failing.toString())
+            val result = runRtcoordUntil("-n", localisation.naming.address, "run", failing.toString(), what = "the second handler's failure") {
+                "failed at three.coord.kts:6" in it
+            }
             assertEquals(0, result.statusCode, result.output)
             val thrown = "timer after 0s failed at three.coord.kts:3: NumberFormatException: For input string: \"three\""
             assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} ${Regex.escape(thrown)}\n""").containsMatchIn(result.stdout), result.stdout)
             val lookup = "timer after 0s failed at three.coord.kts:6: NotFoundException: lazer0.rtc: "
             assertTrue(lookup in result.stdout, result.stdout)
-            assertTrue("stopped; 2 handler failures; 1 failed action\n" in result.stdout, result.stdout)
+            assertTrue("stopped by SIGINT; 2 handler failures; 1 failed action\n" in result.stdout, result.stdout)
             assertTrue("\n  $thrown\n" in result.stdout, result.stdout)
             assertTrue("\n  $lookup" in result.stdout, result.stdout)
             assertTrue("\n  failed action: deactivate lazer0.rtc: " in result.stdout, result.stdout)
@@ -163,7 +163,7 @@ class ScriptCommandsTest {
             assertEquals("rtcoord: $silent:2:9: laser0.rtc:scan: no such port (ports: laser)\n", noPort.stderr)
 
             val never = script("never.coord.kts", "on(component(\"laser_localise0.rtc\")).configParam(\"gian\") { _, _ -> }\n")
-            val warned = runRtcoord("-n", localisation.naming.address, "run", "--for", "1s", never.toString())
+            val warned = runRtcoordUntil("-n", localisation.naming.address, "run", never.toString(), what = "the coordinator started") { "coordinating:" in it }
             assertEquals(0, warned.statusCode, warned.output)
             assertEquals(
                 "rtcoord: warning: $never:1:50: gian: laser_localise0.rtc has no parameter 'gian' (parameters: fail, gain); what names it can never fire\n",
@@ -176,16 +176,18 @@ class ScriptCommandsTest {
     }
 
     @Test
-    fun `run coordinates until --for elapses, then detaches its observers`() {
+    fun `run coordinates until interrupted, then detaches its observers`() {
         Localisation().use { localisation ->
             val gyro = localisation.system.component("gyro0")
             val restart = script("restart.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) {\n    reset()\n    activate()\n}\n")
             val run = runWatchingGyro(localisation, restart)
 
             gyro.fail()
-            await("the rule to bring gyro0 back") { run.isDone || (gyro.state == RTC.LifeCycleState.ACTIVE_STATE && "activate" in runLog(run)) }
-            val result = run.get()
+            run.awaitLine("the rule's activation") { Regex("""\d\d:\d\d:\d\d\.\d{3} activate /""").containsMatchIn(it) }
+            await("gyro0 back") { gyro.state == RTC.LifeCycleState.ACTIVE_STATE }
+            val result = run.stop()
             assertEquals(0, result.statusCode, result.stderr)
+            assertTrue("stopped by SIGINT; 0 handler failures; 0 failed actions\n" in result.stdout, result.stdout)
             assertTrue("rule 'gyro0.rtc enters ERROR' fired" in result.stdout, result.stdout)
             assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} reset /""").containsMatchIn(result.stdout), result.stdout)
             val watched = Regex("""\d\d:\d\d:\d\d\.\d{3} /\S+/gyro0\.rtc watched: pushed by its OpenRTM::ComponentObserver, heartbeat every 1s\n""")
@@ -254,12 +256,13 @@ class ScriptCommandsTest {
             val run = runWatchingGyro(localisation, modes)
 
             gyro.fail()
-            val result = run.get()
+            run.awaitLine("the machine back in gyro/up") { it.endsWith("mode gyro/down -> gyro/up on done") }
+            val result = run.stop()
             assertEquals(0, result.statusCode, result.stderr)
             for (line in listOf("mode gyro: starts in gyro/up", "mode gyro/up -> gyro/down on gyro0.rtc enters ERROR", "mode gyro/down -> gyro/up on done")) {
                 assertTrue(Regex("""\d\d:\d\d:\d\d\.\d{3} ${Regex.escape(line)}\n""").containsMatchIn(result.stdout), result.stdout)
             }
-            assertTrue("stopped; 0 handler failures; 0 failed actions; gyro in gyro/up, 0 events no transition took" in result.stdout, result.stdout)
+            assertTrue("stopped by SIGINT; 0 handler failures; 0 failed actions; gyro in gyro/up, 0 events no transition took" in result.stdout, result.stdout)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, gyro.state)
         }
     }
@@ -269,8 +272,12 @@ class ScriptCommandsTest {
         Localisation().use { localisation ->
             val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
             FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--master", master).use { process ->
-                val rule = script("hosted.coord.kts", "on(component(\"hosted0.rtc\")).state(ERROR) { reset() }\n")
-                val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "15s", rule.toString()) }
+                // The rule on gyro0 logs a marker: what the death had to say is printed before it.
+                val rule = script(
+                    "hosted.coord.kts",
+                    "on(component(\"hosted0.rtc\")).state(ERROR) { reset() }\non(component(\"gyro0.rtc\")).state(INACTIVE) { log(\"marker\") }\n",
+                )
+                val run = RunningCommand("-n", localisation.naming.address, "run", rule.toString())
                 val orb = localisation.system.runtime.orb.orb
                 val hosted = RTObjectHelper.narrow(
                     NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc)).resolve_str("${RuntimeProcess.hostContext}/hosted0.rtc"),
@@ -279,7 +286,10 @@ class ScriptCommandsTest {
                     hosted.get_service_profiles().any { it.id.startsWith("rtcoord-observer-") }
                 }
                 process.kill()
-                val result = run.get()
+                run.awaitLine("the manager's death") { " manager stopped answering " in it }
+                runRtcoord("deact", localisation.path("gyro0.rtc")).ok()
+                run.awaitLine("the marker") { it.endsWith(" marker") }
+                val result = run.stop()
                 assertEquals(0, result.statusCode, result.stderr)
                 val died = Regex("""\d\d:\d\d:\d\d\.\d{3} /\S+/manager_${process.pid} manager stopped answering \(.*\); its components went with it: hosted0\.rtc\n""")
                 assertEquals(1, died.findAll(result.stdout).count(), result.stdout)
@@ -293,14 +303,17 @@ class ScriptCommandsTest {
         try {
             Scenarios.localisation(naming.corbaloc).use { system ->
                 val rule = script("gyro.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n")
-                val run = CompletableFuture.supplyAsync { runRtcoord("-n", naming.address, "run", "--for", "10s", rule.toString()) }
+                val run = RunningCommand("-n", naming.address, "run", rule.toString())
                 await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { system.component("gyro0").observerIds.isNotEmpty() }
                 val saved = naming.snapshot()
                 naming.close()
-                // The run's output is read at its end: the outage lasts three of its one-second checks.
+                run.awaitLine("the name server said unreachable") { " name server unreachable " in it }
+                // Said once, not at each of its one-second checks: the outage lasts three of them. Nothing counts
+                // the checks of a name server that refuses connections, so this one waits them out.
                 Thread.sleep(3_000)
                 naming = NamingService.start(naming.port, saved)
-                val result = run.get()
+                run.awaitLine("the name server said to answer again") { " name server answers again" in it }
+                val result = run.stop()
                 assertEquals(0, result.statusCode, result.stderr)
                 val lost = Regex("""\d\d:\d\d:\d\d\.\d{3} /\Q${naming.address}\E name server unreachable \(.+\n""")
                 val back = Regex("""\d\d:\d\d:\d\d\.\d{3} /\Q${naming.address}\E name server answers again, after \d+\.\d+ s\n""")
@@ -339,10 +352,11 @@ class ScriptCommandsTest {
             val run = runWatchingGyro(localisation, restart)
 
             gyro.breakDown()
-            val result = run.get()
+            run.awaitLine("the handler's failure") { "failed at broken.coord.kts:3" in it }
+            val result = run.stop()
             assertEquals(0, result.statusCode, result.stderr)
             val path = localisation.path("gyro0.rtc")
-            assertTrue("stopped; 1 handler failure; 2 failed actions (1 attempted, went on)\n" in result.stdout, result.stdout)
+            assertTrue("stopped by SIGINT; 1 handler failure; 2 failed actions (1 attempted, went on)\n" in result.stdout, result.stdout)
             // The reset that stopped the handler is on line 3; its failure surfaced after the call suspended.
             assertTrue("  rule 'gyro0.rtc enters ERROR' failed at broken.coord.kts:3: OperationFailedException: $path: reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline)\n" in result.stdout, result.stdout)
             assertTrue("  failed action: reset $path: reset failed: RTC_ERROR (in context 0; still ERROR at its 3000 ms deadline) (attempted, went on)\n" in result.stdout, result.stdout)
@@ -367,13 +381,9 @@ class ScriptCommandsTest {
         assertTrue("laser0 could not be reset (reset failed: RTC_ERROR (in context 0; still ERROR at its 1000 ms deadline)): it stays in ERROR" in result.stdout, result.stdout)
     }
 
-    /** What [run] printed so far, once it finished; empty while it runs (the harness hands it over at the end). */
-    private fun runLog(run: CompletableFuture<com.github.ajalt.clikt.testing.CliktCommandTestResult>): String =
-        if (run.isDone) run.get().stdout else ""
-
-    /** Starts `rtcoord run --for 8s SCRIPT` in the background and waits until the coordinator observes gyro0. */
-    private fun runWatchingGyro(localisation: Localisation, script: Path): CompletableFuture<CliktCommandTestResult> {
-        val run = CompletableFuture.supplyAsync { runRtcoord("-n", localisation.naming.address, "run", "--for", "8s", script.toString()) }
+    /** Starts `rtcoord run SCRIPT` in the background and waits until the coordinator observes gyro0. */
+    private fun runWatchingGyro(localisation: Localisation, script: Path): RunningCommand {
+        val run = RunningCommand("-n", localisation.naming.address, "run", script.toString())
         await("the coordinator to observe gyro0", timeout = kotlin.time.Duration.parse("60s")) { localisation.system.component("gyro0").observerIds.isNotEmpty() }
         return run
     }

@@ -283,11 +283,11 @@ public class Coordinator(
         }
     }
 
-    /** Logs the failure and lists it, then counts it: whoever sees the count can read the line and the list. */
+    /** Lists the failure, logs it, then counts it: whoever sees the line finds it in the list, and whoever sees the count both. */
     private fun failed(what: String, e: Throwable) {
         val failure = HandlerFailure.of(what, e)
-        log(failure.toString())
         failureList += failure
+        log(failure.toString())
         failureCount.update { it + 1 }
     }
 

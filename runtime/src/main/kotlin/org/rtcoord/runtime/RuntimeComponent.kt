@@ -209,6 +209,12 @@ public class RuntimeComponent internal constructor(
     /** Whether an owned context's thread is stuck in a hung execution (once it reached it). */
     public val isContextStuck: Boolean get() = ownedContexts.any { it.isStuck }
 
+    /**
+     * How many periods its first owned context has run so far: a test that shows what the component
+     * does not do in some periods waits for them to pass instead of sleeping.
+     */
+    public val periods: Long get() = owned.periods
+
     /** Makes every call to this component's objects block until [release]; heartbeats stop too. */
     public fun hang(): Unit = gate.close()
 

@@ -86,6 +86,11 @@ internal class RuntimeExecutionContext(
     /** Whether the thread is stuck in a participant's hung execution. */
     val isStuck: Boolean get() = synchronized(lock) { stuckIn != null }
 
+    /** How many periods the context has run so far, stuck ones included. */
+    @Volatile
+    var periods: Long = 0
+        private set
+
     lateinit var ref: ExecutionContextService
         private set
 
@@ -301,6 +306,7 @@ internal class RuntimeExecutionContext(
 
     private fun tick() {
         synchronized(lock) {
+            periods++
             // The stuck execution returns once the hang ends; until then the thread does nothing else.
             stuckIn?.let { if (it.isExecutionHung) return else stuckIn = null }
             for (participant in participants.values) {

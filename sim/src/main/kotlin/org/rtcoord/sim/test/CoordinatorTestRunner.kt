@@ -10,6 +10,7 @@ import kotlinx.coroutines.sync.withPermit
 import kotlinx.coroutines.withContext
 import org.rtcoord.dsl.script.ScriptHost
 import java.nio.file.Path
+import kotlin.time.Duration
 import kotlin.time.TimeSource
 
 /**
@@ -24,6 +25,9 @@ public class CoordinatorTestRunner @JvmOverloads constructor(
     private val scripts: ScriptHost = ScriptHost(),
 ) {
     private val loader = TestLoader(TestScriptHost(), scripts)
+
+    /** How long a handler may run before the coordinator is said to have stopped reacting: shorter in the tests of that verdict. */
+    internal var stuckAfter: Duration = ScenarioRun.STUCK
 
     /**
      * The test files [paths] name, each with a name unique in the run: each file as given, each directory's
@@ -74,5 +78,5 @@ public class CoordinatorTestRunner @JvmOverloads constructor(
     }
 
     /** Runs [scenario] on a system of its own. */
-    internal suspend fun run(scenario: ScenarioPlan): TestResult = withContext(Dispatchers.IO) { ScenarioRun(scenario, scripts).run() }
+    internal suspend fun run(scenario: ScenarioPlan): TestResult = withContext(Dispatchers.IO) { ScenarioRun(scenario, scripts, stuckAfter = stuckAfter).run() }
 }

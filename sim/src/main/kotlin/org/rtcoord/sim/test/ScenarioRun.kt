@@ -44,6 +44,7 @@ import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.sim.SimulatedSystem
 import java.time.Instant
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -63,6 +64,8 @@ internal class ScenarioRun(
     private val scripts: ScriptHost,
     /** Faults applied besides the scenario's own: an explored schedule. */
     private val schedule: List<Injection> = emptyList(),
+    /** How long a handler may run before the coordinator is said to have stopped reacting. */
+    private val stuckAfter: Duration = STUCK,
 ) {
     private val test = plan.test
     private val log = CopyOnWriteArrayList<String>()
@@ -190,7 +193,7 @@ internal class ScenarioRun(
     }
 
     /**
-     * Whether the coordinator stopped reacting: a rule's handler that has not returned [STUCK] after it
+     * Whether the coordinator stopped reacting: a rule's handler that has not returned [stuckAfter] after it
      * fired, which holds back the rule's later events. Waits for the handlers running now to return, each
      * at most until then.
      */
@@ -198,11 +201,11 @@ internal class ScenarioRun(
         for (rule in coordinator.rules) {
             val status = rule.status.value
             val since = status.lastFired?.takeIf { status.running > 0 } ?: continue
-            val left = STUCK - java.time.Duration.between(since, Instant.now()).toKotlinDuration()
+            val left = stuckAfter - java.time.Duration.between(since, Instant.now()).toKotlinDuration()
             if (left.isPositive() && withTimeoutOrNull(left) { rule.status.first { it.running == 0 } } != null) continue
             return TestFailure(
                 test.coordinatorShown.toString(),
-                "the coordinator stopped reacting: the handler of rule '${rule.description}' had not returned $STUCK after it fired on ${status.lastEvent}",
+                "the coordinator stopped reacting: the handler of rule '${rule.description}' had not returned $stuckAfter after it fired on ${status.lastEvent}",
                 listOf("a handler that does not return holds back its rule's later events; every remote call has a deadline, so it waits on something else"),
             )
         }
@@ -264,7 +267,7 @@ internal class ScenarioRun(
         return listOf(following, managers)
     }
 
-    private companion object {
+    internal companion object {
         val START_DEADLINE = 30.seconds
 
         /** How long the system must be quiet after the last step, and how long that may be waited for. */
