@@ -11,6 +11,7 @@ import kotlinx.coroutines.flow.toList
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.NameServerIdentity
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.componentsFound
 import org.rtcoord.internal.events.AfterSnapshot
 import java.util.concurrent.CopyOnWriteArrayList
 
@@ -119,10 +120,9 @@ public class RtcTree @JvmOverloads constructor(
     @JvmSynthetic
     public suspend fun componentNamed(name: String): ComponentNode {
         val wanted = if ('.' in name) name else "$name.rtc"
-        suspend fun search() = find { it is ComponentNode && it.name == wanted }.toList().map { it as ComponentNode }
-        // Naming-context paths first: that is where users look for a component, not below its manager.
-        val found = search().ifEmpty { refresh(depth = Int.MAX_VALUE); search() }.sortedBy { node -> node.path.names.any { it.endsWith(".mgr") } }
-        val distinct = found.fold(emptyList<ComponentNode>()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+        // At its naming path, where users look for a component, not below its manager.
+        suspend fun search() = componentsFound(listOf(root)) { it.name == wanted }
+        val distinct = search().ifEmpty { refresh(depth = Int.MAX_VALUE); search() }
         return when (distinct.size) {
             0 -> throw notFound(name)
             1 -> distinct.single()

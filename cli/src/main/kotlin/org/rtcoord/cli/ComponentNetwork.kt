@@ -1,14 +1,17 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.cli
 
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import org.rtcoord.ComponentNode
-import org.rtcoord.DirectoryNode
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.Node
 import org.rtcoord.PortKind
 import org.rtcoord.PortSnapshot
 import org.rtcoord.RtcPath
+import org.rtcoord.internal.componentsListed
 
 /**
  * The components below [top] and the connections of their ports, as a [DotGraph]. Works from what
@@ -16,9 +19,8 @@ import org.rtcoord.RtcPath
  */
 internal class ComponentNetwork(private val top: Node) {
     /** Every component below [top] once: under its naming context rather than under its manager. */
-    val components: List<ComponentNode> = below(top).filter { it.snapshots.value != null }
+    val components: List<ComponentNode> = componentsListed(listOf(top)) { it.snapshots.value != null }
         .sortedBy { component -> component.path.names.count { it.endsWith(".mgr") } }
-        .fold(emptyList()) { kept, next -> if (kept.any { it.isSameComponent(next) }) kept else kept + next }
 
     /** The graph. */
     suspend fun graph(): DotGraph = coroutineScope {
@@ -72,12 +74,6 @@ internal class ComponentNetwork(private val top: Node) {
     }
 
     private fun snapshot(component: ComponentNode) = component.snapshots.value!!
-
-    private fun below(node: Node): List<ComponentNode> = when (node) {
-        is ComponentNode -> listOf(node)
-        is DirectoryNode -> node.listed.value.orEmpty().flatMap(::below)
-        else -> emptyList()
-    }
 
     /** One port of a connection: the vertex it belongs to, its name, kind and data type. */
     private data class End(val vertex: String, val port: String, val kind: PortKind, val dataType: String?)

@@ -1,15 +1,14 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.cli
 
 import kotlinx.coroutines.delay
-import kotlinx.coroutines.flow.filterIsInstance
-import kotlinx.coroutines.flow.toList
-import org.rtcoord.ComponentNode
-import org.rtcoord.DirectoryNode
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.Node
 import org.rtcoord.Port
 import org.rtcoord.PortKind
 import org.rtcoord.RtcException
-import org.rtcoord.RtcTree
+import org.rtcoord.internal.componentsFound
 import java.time.Instant
 import java.time.ZoneId
 import java.util.concurrent.atomic.AtomicLong
@@ -47,14 +46,8 @@ internal class PortRates private constructor(private val counted: List<Pair<Port
         private fun round(rate: Double): Double = Math.round(rate * 10) / 10.0
 
         /** Taps every data out-port of the components at or below [nodes]; returns once every tap is connected. */
-        suspend fun tap(tree: RtcTree, nodes: List<Node>, period: Duration = 1.seconds): PortRates {
-            val components = nodes.flatMap { node ->
-                when (node) {
-                    is ComponentNode -> listOf(node)
-                    is DirectoryNode -> tree.find(node.path) { it is ComponentNode }.filterIsInstance<ComponentNode>().toList()
-                    else -> emptyList()
-                }
-            }.fold(emptyList<ComponentNode>()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+        suspend fun tap(nodes: List<Node>, period: Duration = 1.seconds): PortRates {
+            val components = componentsFound(nodes)
             val ports = components.flatMap { component ->
                 val snapshot = try { component.snapshot() } catch (e: RtcException) { return@flatMap emptyList() }
                 snapshot.ports.filter { it.kind == PortKind.DATA_OUT }.map { component.port(it.name) }

@@ -54,7 +54,7 @@ class WatchCommand : TreeCommand("watch") {
             val types = if (data) setOf(RtcEvent::class.java, PortTraffic::class.java) else setOf(RtcEvent::class.java)
             // The system as it is when every event is caught, then what changes: nothing lost in between.
             tree.follow(nodes, types, options, start = { snapshot -> presentLines(snapshot, nodes).forEach(::echo) }) { events.send(it) }
-            val rates = if (data) PortRates.tap(tree, nodes) else null
+            val rates = if (data) PortRates.tap(nodes) else null
             coroutineScope {
                 val printing = launch {
                     for (event in events) if (session.json) echo(toJson(event.toJson(), pretty = false)) else echo(event.line())

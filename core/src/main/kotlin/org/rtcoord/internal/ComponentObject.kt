@@ -61,7 +61,18 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
      * listing is an alias). The latest node at that path, since a listing may make it anew.
      */
     val canonical: ComponentNode?
-        get() = synchronized(nodes) { nodes.values.firstOrNull { !it.path.isAlias } ?: nodes.values.firstOrNull() }
+        get() = synchronized(nodes) { preferred(nodes.values) }
+
+    /**
+     * The node of [found] (some of this component's nodes, as one walk found them) that stands for it: the
+     * [canonical] one when it is among them, else by the same rule among them alone.
+     */
+    fun canonicalAmong(found: Collection<ComponentNode>): ComponentNode {
+        val paths = found.mapTo(HashSet()) { it.path }
+        return synchronized(nodes) { preferred(nodes.values.filter { it.path in paths }) } ?: found.first()
+    }
+
+    private fun preferred(nodes: Collection<ComponentNode>): ComponentNode? = nodes.firstOrNull { !it.path.isAlias } ?: nodes.firstOrNull()
 
     /** Records that the tree shows this component at [node]'s path. */
     fun knownAs(node: ComponentNode) {

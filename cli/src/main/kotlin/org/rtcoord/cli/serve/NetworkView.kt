@@ -37,7 +37,7 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
                 "type" to snapshot.typeName,
                 "parent" to component.path.parent?.toString(),
                 // As the tree's events tell it: a read may run ahead of them (a deactivation held).
-                "state" to (entry?.overallState ?: snapshot.overallState).name,
+                "state" to (entry?.overallState ?: org.rtcoord.LifeCycle.UNKNOWN).name,
                 "hostedBy" to managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
                 "fsm" to entry?.fsm?.toJson(),
                 "ports" to snapshot.ports.map { port ->

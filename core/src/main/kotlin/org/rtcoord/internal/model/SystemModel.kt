@@ -3,7 +3,6 @@ package org.rtcoord.internal.model
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentEntryImpl
 import org.rtcoord.ComponentFinalized
-import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.FsmStatusImpl
@@ -14,7 +13,6 @@ import org.rtcoord.NameServerEntryImpl
 import org.rtcoord.NameServerLost
 import org.rtcoord.NameServerNode
 import org.rtcoord.NameServerReturned
-import org.rtcoord.Node
 import org.rtcoord.ObserverFlavour
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
@@ -26,6 +24,7 @@ import org.rtcoord.SystemSnapshotImpl
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMethodChanged
 import org.rtcoord.internal.ComponentObject
+import org.rtcoord.internal.componentsListed
 import org.rtcoord.internal.unknownFsmStatus
 
 /**
@@ -36,7 +35,10 @@ import org.rtcoord.internal.unknownFsmStatus
  *
  * The model keeps what no node keeps: the states as the events told them (a watched component's read may
  * run ahead of its events while a deactivation is held), name servers that do not answer and managers
- * found dead. Structure (which nodes exist) stays with the nodes' listings, read here without a call.
+ * found dead. Structure (which nodes exist) stays with the nodes' listings, walked here without a call
+ * ([componentsListed]). A component nobody watches has no events: its states are its latest read, taken
+ * here and nowhere else, so that no view chooses between the model and a read (see the owners' table
+ * in docs/architecture.md).
  */
 internal class SystemModel(private val nameServers: () -> List<NameServerNode>) {
     private class Outage(val since: Long, val cause: RtcException)
@@ -80,21 +82,13 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
 
     /** The model now: every component the listings found, at its canonical path, with its states as told. */
     fun snapshot(root: DirectoryNode): SystemSnapshot = synchronized(this) {
-        val found = LinkedHashMap<ComponentObject, ComponentNode>()
-        fun walk(node: Node) {
-            when (node) {
-                is ComponentNode -> found.putIfAbsent(node.component, node)
-                is DirectoryNode -> node.listed.value?.forEach(::walk)
-                else -> Unit
-            }
-        }
-        walk(root)
-        val components = found.map { (component, node) ->
+        val components = componentsListed(listOf(root)).map { node ->
+            val component = node.component
             val told = states[component] ?: node.snapshots.value?.contexts?.associate { it.handle to it.state }.orEmpty()
             val method = methods[component]
             val fsm = fsmStates[component]?.let { FsmStatusImpl(it, null) }
                 ?: unknownFsmStatus(method).takeIf { node.snapshots.value?.offersFsmService == true }
-            ComponentEntryImpl(node.canonical, told, alive = component !in dead, watchMethod = method, fsm = fsm)
+            ComponentEntryImpl(node, told, alive = component !in dead, watchMethod = method, fsm = fsm)
         }
         val servers = nameServers().map { server -> outages[server.path].let { NameServerEntryImpl(server, it?.since, it?.cause) } }
         SystemSnapshotImpl(sequence, components, servers, managerOutages.values.toList())

@@ -1,12 +1,12 @@
 package org.rtcoord.profile.internal
 
-import kotlinx.coroutines.flow.toList
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.PortInterface
 import org.rtcoord.PortKind
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
+import org.rtcoord.internal.componentsFound
 import org.rtcoord.profile.ConfigurationSet
 import org.rtcoord.profile.ExecutionContext
 import org.rtcoord.profile.Extension
@@ -24,9 +24,7 @@ internal class SystemCapture(private val tree: RtcTree) {
     suspend fun capture(below: RtcPath, onlyConnected: Boolean, systemId: String, abstract: String): RtsProfile {
         tree.refresh(below)
         // Naming-context paths only, as rtcryo: a component below its manager is the same component.
-        val nodes = tree.find(below) { it is ComponentNode && it.path.names.none { name -> name.endsWith(".mgr") } }.toList()
-            .map { it as ComponentNode }
-            .fold(emptyList<ComponentNode>()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+        val nodes = componentsFound(listOf(tree.node(below))) { it.path.names.none { name -> name.endsWith(".mgr") } }
         val snapshots = nodes.associateWith { it.snapshot() }
         val chosen = if (onlyConnected) nodes.filter { node -> snapshots.getValue(node).ports.any { it.connectors.isNotEmpty() } } else nodes
         val components = chosen.map { component(it, snapshots.getValue(it)) }

@@ -1,19 +1,20 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl.internal
 
 import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.flow.toList
 import org.rtcoord.AmbiguousNameException
 import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.Node
 import org.rtcoord.NodeFilters
-import org.rtcoord.NodeFilters.and
-import org.rtcoord.NodeKind
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
+import org.rtcoord.internal.componentsFound
 import java.util.concurrent.ConcurrentHashMap
 
 /**
@@ -130,10 +131,10 @@ internal class Identities(
     }
 
     /** The components [pattern] matches now, each once however many paths reach it. */
-    suspend fun matching(pattern: String): List<ComponentNode> =
-        tree.find(predicate = NodeFilters.kind(NodeKind.COMPONENT) and globOf(pattern)).toList()
-            .map { it as ComponentNode }
-            .fold(emptyList()) { kept, node -> if (kept.any { it.isSameComponent(node) }) kept else kept + node }
+    suspend fun matching(pattern: String): List<ComponentNode> {
+        val glob = globOf(pattern)
+        return componentsFound(listOf(tree.root)) { glob(it) }
+    }
 
     /**
      * Whether a node matches [pattern]: its name the glob (a glob without a kind, `laser*`, is of components,

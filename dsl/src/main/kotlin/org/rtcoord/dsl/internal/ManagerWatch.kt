@@ -15,12 +15,14 @@ import java.util.concurrent.ConcurrentHashMap
  * instead of leaving it to the next creation to fail: the managers its script uses, each watched from
  * when the script names it or first uses it on one subscription that covers its slaves too, and those
  * the tree finds dead because they hosted a component it watches. Each death and return is said once,
- * however many of these it concerns.
+ * however many of these it concerns: the tree publishes each as one event, with one sequence number,
+ * to every subscription it reaches. Whether a manager answers is the tree's to know
+ * ([RtcTree.snapshot]'s `deadManagers`), not this log's.
  */
 internal class ManagerWatch(private val tree: RtcTree, private val options: EventOptions, private val log: (String) -> Unit) : AutoCloseable {
     private val watched = ConcurrentHashMap<RtcPath, Subscription>()
-    /** The managers said dead and not said back yet. */
-    private val dead = ConcurrentHashMap.newKeySet<RtcPath>()
+    /** The sequence numbers of the deaths and returns said. */
+    private val said = ConcurrentHashMap.newKeySet<Long>()
     @Volatile private var hosting: Subscription? = null
     @Volatile private var closed = false
 
@@ -38,11 +40,11 @@ internal class ManagerWatch(private val tree: RtcTree, private val options: Even
 
     private fun report(event: RtcEvent) {
         when (event) {
-            is ManagerDied -> if (dead.add(event.source.path)) {
+            is ManagerDied -> if (said.add(event.sequence)) {
                 val hosted = if (event.components.isEmpty()) "it hosted no component" else "its components went with it: ${event.components.joinToString { it.name }}"
                 log("${event.source.path} manager stopped answering (${event.cause.reason}); $hosted")
             }
-            is ManagerReturned -> if (dead.remove(event.source.path)) log("${event.source.path} manager answers again")
+            is ManagerReturned -> if (said.add(event.sequence)) log("${event.source.path} manager answers again")
             else -> Unit
         }
     }
