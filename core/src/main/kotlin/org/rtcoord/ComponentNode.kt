@@ -1,11 +1,11 @@
 package org.rtcoord
 
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.StateFlow
 import org.rtcoord.internal.ComponentCalls
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.LifecycleOperation
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.pollUntil
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
@@ -126,15 +126,8 @@ public sealed class ComponentNode(
     @JvmSynthetic internal suspend fun awaitUnbound(operation: String) {
         val context = namingParent ?: return
         val limit = core.remote.defaultDeadline
-        val deadline = TimeSource.Monotonic.markNow() + limit
-        var pause = 5.milliseconds
-        while (context.binds(name, component)) {
-            if (deadline.hasPassedNow()) {
-                throw TimedOutException(subject, "$operation (the component finalised, but is still bound in naming)", limit.inWholeMilliseconds)
-            }
-            delay(pause)
-            pause = (pause * 2).coerceAtMost(50.milliseconds)
-        }
+        pollUntil(TimeSource.Monotonic.markNow() + limit, 5.milliseconds, 50.milliseconds) { Unit.takeUnless { context.binds(name, component) } }
+            ?: throw TimedOutException(subject, "$operation (the component finalised, but is still bound in naming)", limit.inWholeMilliseconds)
         context.relist()
     }
 

@@ -4,11 +4,11 @@ import RTM.Manager
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.delay
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.ManagerCalls
 import org.rtcoord.internal.ManagerCalls.Companion.reachable
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.pollUntil
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
 
@@ -107,18 +107,17 @@ public sealed class ManagerNode(
      */
     private suspend fun awaitNameFree(type: String, instanceName: String) {
         val deadline = TimeSource.Monotonic.markNow() + core.remote.defaultDeadline
-        while (instanceName in calls.hostedInstanceNames()) {
-            if (hostOf(instanceName)?.second?.let { answers(it) } == true) {
-                throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
+        pollUntil(deadline, 20.milliseconds) {
+            when {
+                instanceName !in calls.hostedInstanceNames() -> Unit
+                hostOf(instanceName)?.second?.let { answers(it) } == true ->
+                    throw BadParameterException(subject, "create '$type'", "a component named '$instanceName' exists already")
+                else -> null
             }
-            if (deadline.hasPassedNow()) {
-                throw TimedOutException(
-                    subject, "create '$type' (the name '$instanceName' is still held by a component that exited)",
-                    core.remote.defaultDeadline.inWholeMilliseconds,
-                )
-            }
-            delay(20.milliseconds)
-        }
+        } ?: throw TimedOutException(
+            subject, "create '$type' (the name '$instanceName' is still held by a component that exited)",
+            core.remote.defaultDeadline.inWholeMilliseconds,
+        )
     }
 
     /**

@@ -5,10 +5,12 @@ import kotlinx.coroutines.delay
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.ComponentNode
 import org.rtcoord.EventOptions
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcTree
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
+import org.rtcoord.internal.pollUntil
 import org.rtcoord.runtime.RtSystem
 import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
@@ -46,6 +48,7 @@ class DemoCommand : TreeCommand("demo") {
         }
     }
 
+    @OptIn(InternalRtcoordApi::class)
     private suspend fun demonstrate(naming: NamingService, system: RtSystem, tree: RtcTree) {
         val host = "/${naming.address}/${RuntimeProcess.hostContext}"
         echo("The system, at $host:")
@@ -63,8 +66,9 @@ class DemoCommand : TreeCommand("demo") {
             val failed = TimeSource.Monotonic.markNow()
             system.component("laser0").breakDown()
             val recovered = withTimeoutOrNull(30.seconds) {
-                while (runCatching { tree.component("$host/odo_localise0.rtc").state() }.getOrNull() != LifeCycle.ACTIVE) delay(20.milliseconds)
-                failed.elapsedNow()
+                pollUntil(null, 20.milliseconds) {
+                    failed.elapsedNow().takeIf { runCatching { tree.component("$host/odo_localise0.rtc").state() }.getOrNull() == LifeCycle.ACTIVE }
+                }
             }
             echo("\nThe system after the coordinator's reaction:")
             tree.refresh()

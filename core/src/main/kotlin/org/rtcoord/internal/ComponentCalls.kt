@@ -3,7 +3,6 @@ package org.rtcoord.internal
 import RTC.ExecutionContext
 import RTC.RTObject
 import RTC.ReturnCode_t
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.withContext
 import org.rtcoord.Composition
 import org.rtcoord.ContextSelector
@@ -100,22 +99,17 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
     private suspend fun awaitState(operation: LifecycleOperation, ec: ExecutionContext, handle: Int, deadline: TimeMark, limit: Duration, late: String?): Long {
         val verb = operation.verb
         val target = operation.to
-        var pause = 1.milliseconds
-        while (true) {
+        var last: LifeCycle? = null
+        return pollUntil(deadline, 1.milliseconds, 20.milliseconds) {
             val stamp = component.stamp()
-            val state = state(ec)
-            if (state == target) return stamp
+            val state = state(ec).also { last = it }
             if (state == LifeCycle.ERROR && operation.from != LifeCycle.ERROR) {
                 throw OperationFailedException(subject, verb, late ?: ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
             }
-            if (deadline.hasPassedNow()) {
-                throw when (late) {
-                    null, "no answer" -> TimedOutException(subject, "$verb (waiting for $target, still $state)", limit.inWholeMilliseconds)
-                    else -> OperationFailedException(subject, verb, late, "in context $handle; still $state at its ${limit.inWholeMilliseconds} ms deadline")
-                }
-            }
-            delay(pause)
-            pause = (pause * 2).coerceAtMost(20.milliseconds)
+            stamp.takeIf { state == target }
+        } ?: throw when (late) {
+            null, "no answer" -> TimedOutException(subject, "$verb (waiting for $target, still $last)", limit.inWholeMilliseconds)
+            else -> OperationFailedException(subject, verb, late, "in context $handle; still $last at its ${limit.inWholeMilliseconds} ms deadline")
         }
     }
 

@@ -68,6 +68,16 @@ class ProfileCorpusTest {
     }
 
     @Test
+    fun `line breaks, tabs and markup in attribute values survive the XML form`() {
+        // A reader turns a raw line break or tab in an attribute into a space: they must be written as references.
+        val value = "two\nlines\r\tand <markup> & \"quotes\" 'é'"
+        val profile = RtsProfiles.read(corpus("full-system.xml")).let { it.withExt(it.ext.withProperties(mapOf("note" to value))) }
+        val xml = RtsProfiles.write(profile, ProfileFormat.XML)
+        assertEquals(value, RtsProfiles.parse(xml, ProfileFormat.XML, "written").ext.properties["note"], xml)
+        assertEquals(profile, RtsProfiles.parse(xml, ProfileFormat.XML, "written"))
+    }
+
+    @Test
     fun `what rtsprofile wrote from a file reads as that file, but for what rtsprofile drops`() {
         val ours = RtsProfiles.read(corpus("full-system.xml"))
         val theirs = RtsProfiles.read(corpus("full-system-by-rtsprofile.yaml"))

@@ -1,11 +1,11 @@
 package org.rtcoord.dsl
 
 import kotlinx.coroutines.TimeoutCancellationException
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
 import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.ComponentNode
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcEvent
 import org.rtcoord.dsl.internal.ActionJournal
@@ -15,6 +15,7 @@ import org.rtcoord.dsl.internal.ScriptCallSite
 import org.rtcoord.dsl.internal.Selectors
 import org.rtcoord.dsl.internal.Undo
 import org.rtcoord.dsl.internal.catchFailure
+import org.rtcoord.internal.pollUntil
 import org.rtcoord.profile.ProfileDifference
 import org.rtcoord.profile.RestoreReport
 import org.rtcoord.profile.SystemProfiles
@@ -226,10 +227,11 @@ public class Reaction internal constructor(
      * not after [timeout]: `await(5.seconds) { component("odo_localise0.rtc").state() == ACTIVE }`. A
      * condition that throws ends the wait with its failure. To wait a fixed time, `delay(500.milliseconds)`.
      */
+    @OptIn(InternalRtcoordApi::class)
     public suspend fun await(timeout: Duration, poll: Duration = 100.milliseconds, condition: suspend Reaction.() -> Boolean) {
         ScriptCallSite.mark()
         withTimeoutOrNull(timeout) {
-            while (!condition()) delay(poll)
+            pollUntil(null, poll) { Unit.takeIf { condition() } }
         } ?: throw TimedOut("the condition did not hold within $timeout")
     }
 

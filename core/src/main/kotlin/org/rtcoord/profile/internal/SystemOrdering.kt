@@ -14,6 +14,7 @@ import org.rtcoord.ContextSelector
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.TransitionOutcome
+import org.rtcoord.internal.pollUntil
 import org.rtcoord.profile.Condition
 import org.rtcoord.profile.OrderedAction
 import org.rtcoord.profile.OrderedTarget
@@ -116,7 +117,7 @@ internal class SystemOrdering(private val tree: RtcTree) {
                 } else {
                     val node = nodes[path] ?: tree.component(path)
                     val selector = ContextSelector.Handle(target.contextId?.toIntOrNull() ?: 0)
-                    while (node.state(selector) != action.reaches) delay(10)
+                    pollUntil(null, 10.milliseconds) { Unit.takeIf { node.state(selector) == action.reaches } }
                 }
             }
             return null

@@ -8,21 +8,40 @@ import org.rtcoord.profile.PortConnector
 import org.rtcoord.profile.ProfileComponent
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.TargetComponent
+import org.xml.sax.helpers.AttributesImpl
+import java.io.StringWriter
+import javax.xml.transform.OutputKeys
+import javax.xml.transform.TransformerFactory
+import javax.xml.transform.sax.SAXTransformerFactory
+import javax.xml.transform.sax.TransformerHandler
+import javax.xml.transform.stream.StreamResult
 
 /**
  * Writes the XML form with the prefixes and `xsi:type`s RTSystemEditor and rtsprofile use (`rts:`,
  * `rtsExt:`), indented, extension data and unknown content included.
+ *
+ * The JDK's serializer (SAX events into an identity [javax.xml.transform.Transformer]) writes it, not its
+ * StAX writer: StAX leaves line breaks and tabs in attribute values as they are, and every reader turns
+ * them into spaces, so a comment or configuration value of two lines would come back as one. The
+ * serializer writes them as character references.
  */
 internal class XmlProfileWriter {
-    private val out = StringBuilder()
-    private var depth = 0
+    private val out = StringWriter()
+    private val xml: TransformerHandler = (TransformerFactory.newDefaultInstance() as SAXTransformerFactory).newTransformerHandler().apply {
+        transformer.setOutputProperty(OutputKeys.ENCODING, "UTF-8")
+        transformer.setOutputProperty(OutputKeys.INDENT, "yes")
+        transformer.setOutputProperty("{http://xml.apache.org/xslt}indent-amount", "4")
+        // Without a standalone declaration the JDK's serializer puts the root on the declaration's line.
+        transformer.setOutputProperty(OutputKeys.STANDALONE, "yes")
+        setResult(StreamResult(out))
+    }
 
     fun write(profile: RtsProfile): String {
-        out.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n")
+        xml.startDocument()
+        NAMESPACES.forEach { (prefix, uri) -> xml.startPrefixMapping(prefix, uri) }
         element(
             "rts:RtsProfile",
             listOf(
-                "xmlns:rts" to RTS_NS, "xmlns:rtsExt" to RTS_EXT_NS, "xmlns:xsi" to XSI_NS,
                 "rts:id" to profile.id, "rts:abstract" to profile.abstract, "rts:creationDate" to profile.creationDate,
                 "rts:updateDate" to profile.updateDate, "rts:version" to profile.version,
             ),
@@ -40,6 +59,8 @@ internal class XmlProfileWriter {
                 element("rts:${kind.xmlName}", emptyList(), ordering.ext) { ordering.targets.forEach { orderedTarget(it) } }
             }
         }
+        NAMESPACES.keys.forEach { xml.endPrefixMapping(it) }
+        xml.endDocument()
         return out.toString()
     }
 
@@ -107,58 +128,40 @@ internal class XmlProfileWriter {
 
     /** Writes one element: [attributes] (null values left out), then [ext], then [children] and [ext]'s elements. */
     private fun element(name: String, attributes: List<Pair<String, String?>>, ext: Extension = Extension(), children: () -> Unit = {}) {
-        indent()
-        out.append('<').append(name)
         val all = attributes.mapNotNull { (k, v) -> v?.let { k to it } } +
             listOfNotNull(ext.comment?.let { "rtsExt:comment" to it }, ext.visible?.let { "rtsExt:visible" to it.toString() }) +
             ext.unknownAttributes.toList()
-        all.forEach { (k, v) -> out.append(' ').append(k).append("=\"").append(escape(v)).append('"') }
-        val mark = out.length
-        out.append(">\n")
-        depth++
+        start(name, all)
         children()
         ext.location?.let {
             element("rtsExt:Location", listOf("rtsExt:x" to "${it.x}", "rtsExt:y" to "${it.y}", "rtsExt:height" to "${it.height}", "rtsExt:width" to "${it.width}", "rtsExt:direction" to it.direction))
         }
         ext.properties.forEach { (k, v) -> element("rtsExt:Properties", listOf("rtsExt:name" to k, "rtsExt:value" to v.ifEmpty { null })) }
         ext.unknownElements.forEach { foreign(it) }
-        depth--
-        if (out.length == mark + 2) {
-            out.setLength(mark)
-            out.append("/>\n")
-        } else {
-            indent()
-            out.append("</").append(name).append(">\n")
-        }
+        end(name)
     }
 
     private fun foreign(e: ForeignElement) {
-        if (e.children.isEmpty() && e.text.isNotEmpty()) {
-            indent()
-            out.append('<').append(e.name)
-            e.attributes.forEach { (k, v) -> out.append(' ').append(k).append("=\"").append(escape(v)).append('"') }
-            out.append('>').append(escape(e.text)).append("</").append(e.name).append(">\n")
-        } else {
-            element(e.name, e.attributes.toList()) { e.children.forEach { foreign(it) } }
-        }
+        start(e.name, e.attributes.toList())
+        if (e.children.isEmpty() && e.text.isNotEmpty()) xml.characters(e.text.toCharArray(), 0, e.text.length)
+        e.children.forEach { foreign(it) }
+        end(e.name)
     }
 
-    private fun indent() {
-        repeat(depth) { out.append("    ") }
+    private fun start(name: String, attributes: List<Pair<String, String>>) {
+        val all = AttributesImpl()
+        attributes.forEach { (qualified, value) -> all.addAttribute(namespaceOf(qualified), localPart(qualified), qualified, "CDATA", value) }
+        xml.startElement(namespaceOf(name), localPart(name), name, all)
     }
 
-    private fun escape(text: String) = buildString {
-        for (c in text) {
-            when (c) {
-                '&' -> append("&amp;")
-                '<' -> append("&lt;")
-                '>' -> append("&gt;")
-                '"' -> append("&quot;")
-                '\n' -> append("&#10;")
-                '\r' -> append("&#13;")
-                '\t' -> append("&#9;")
-                else -> append(c)
-            }
-        }
+    private fun end(name: String) = xml.endElement(namespaceOf(name), localPart(name), name)
+
+    private companion object {
+        /** Declared on the root. A foreign name's prefix is declared where it was read, by an attribute kept with it. */
+        val NAMESPACES = mapOf("rts" to RTS_NS, "rtsExt" to RTS_EXT_NS, "xsi" to XSI_NS)
+
+        fun namespaceOf(qualified: String): String = NAMESPACES[qualified.substringBefore(':', "")].orEmpty()
+
+        fun localPart(qualified: String): String = qualified.substringAfter(':')
     }
 }
