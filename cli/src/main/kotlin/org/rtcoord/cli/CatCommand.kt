@@ -5,10 +5,13 @@ import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.encodeToJsonElement
 import org.rtcoord.ComponentNode
 import org.rtcoord.ManagerNode
 import org.rtcoord.WrongKindException
 import org.rtcoord.ZombieNode
+import org.rtcoord.cli.json.PrettyJson
 
 /** `rtcoord cat`: rtcat for components, ports and managers. */
 class CatCommand : TreeCommand("cat") {
@@ -43,16 +46,17 @@ class CatCommand : TreeCommand("cat") {
         val path = pathOf(text)
         if (path.port != null) {
             val port = PortReport.read(port(text))
-            return Report({ port.lines(long, "") }, { port.toJson() + ("path" to path.toString()) })
+            return Report({ port.lines(long, "") }, { PrettyJson.encodeToJsonElement(port.toJson(path.toString())) })
         }
         return when (val node = node(text)) {
-            is ComponentNode -> ComponentReport.read(tree, node, withConfiguration = long).let { Report({ it.lines(long) }, it::toJson) }
-            is ManagerNode -> ManagerReport.read(node).let { Report({ it.lines(long) }, it::toJson) }
+            is ComponentNode -> ComponentReport.read(tree, node, withConfiguration = long)
+                .let { report -> Report({ report.lines(long) }, { PrettyJson.encodeToJsonElement(report.toJson()) }) }
+            is ManagerNode -> ManagerReport.read(node).let { report -> Report({ report.lines(long) }, { PrettyJson.encodeToJsonElement(report.toJson()) }) }
             is ZombieNode -> throw node.cause
             else -> throw WrongKindException(node.path.toString(), "component, port or manager", node.kind.label)
         }
     }
 
-    /** One PATH's report, as text or JSON. */
-    private class Report(val lines: () -> List<String>, val json: () -> Map<String, Any?>)
+    /** One PATH's report, as text or JSON (a component's, a port's or a manager's). */
+    private class Report(val lines: () -> List<String>, val json: () -> JsonElement)
 }

@@ -10,6 +10,9 @@ import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.FsmStatus
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
+import org.rtcoord.cli.json.ComponentReportJson
+import org.rtcoord.cli.json.ContextJson
+import org.rtcoord.cli.json.FsmJson
 
 /**
  * What `cat` shows of a component: profile with its place in composites, execution contexts, ports
@@ -72,38 +75,18 @@ internal class ComponentReport private constructor(
     }
 
     /** The report for `--json`. */
-    fun toJson(): Map<String, Any?> = buildMap {
-        put("path", path.toString())
-        put("kind", "component")
-        put("instanceName", snapshot.instanceName)
-        put("typeName", snapshot.typeName)
-        put("version", snapshot.version)
-        put("vendor", snapshot.vendor)
-        put("category", snapshot.category)
-        put("description", snapshot.description)
-        put("parent", snapshot.parent)
-        put("type", typeLabel)
-        put("state", snapshot.overallState.name)
-        fsm?.let { put("fsm", fsm.toJson()) }
-        put("properties", snapshot.properties.toSortedMap())
-        put(
-            "contexts",
-            snapshot.contexts.map { context ->
-                mapOf(
-                    "handle" to context.handle,
-                    "owned" to context.owned,
-                    "kind" to context.kind,
-                    "rate" to context.rate,
-                    "running" to context.running,
-                    "state" to context.state.name,
-                    "participants" to context.participants,
-                    "properties" to context.properties.toSortedMap(),
-                )
-            },
-        )
-        put("ports", ports.map { it.toJson() })
-        configuration?.let { put("configuration", it.toJson(it.shownSets(showHidden = false))) }
-    }
+    fun toJson(): ComponentReportJson = ComponentReportJson(
+        path.toString(), snapshot.instanceName, snapshot.typeName, snapshot.version, snapshot.vendor, snapshot.category, snapshot.description,
+        snapshot.parent, typeLabel, snapshot.overallState.name, fsm?.let(FsmJson::of), snapshot.properties.toSortedMap(),
+        snapshot.contexts.map { context ->
+            ContextJson(
+                context.handle, context.owned, context.kind, context.rate, context.running, context.state.name, context.participants,
+                context.properties.toSortedMap(),
+            )
+        },
+        ports.map { it.toJson() },
+        configuration?.let { it.toJson(it.shownSets(showHidden = false)) },
+    )
 
     /** The component's type as rtcat names it: monolithic or composite, and whether it is part of a composite. */
     private val typeLabel: String

@@ -7,6 +7,7 @@ import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.multiple
 import com.github.ajalt.clikt.parameters.options.option
 import org.rtcoord.PreconditionNotMetException
+import org.rtcoord.cli.json.ConnectorJson
 
 /** `rtcoord con`: rtcon, refusing incompatible ports and a second connection of two ports before anything changes. */
 class ConCommand : TreeCommand("con") {
@@ -59,7 +60,7 @@ class ConCommand : TreeCommand("con") {
         }
         val connector = source.connect(listOf(target), if (allowDuplicate) given + (ALLOW_DUPLICATE to "YES") else given, name, id.orEmpty())
         if (session.json) {
-            echoJson(mapOf("id" to connector.id, "name" to connector.name, "properties" to connector.properties.toSortedMap()))
+            echoJson(ConnectorJson(connector.id, connector.name, connector.properties.toSortedMap()))
         } else {
             confirm(connector.id)
         }

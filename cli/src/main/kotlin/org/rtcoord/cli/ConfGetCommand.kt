@@ -4,6 +4,7 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.options.option
 import org.rtcoord.NotFoundException
+import org.rtcoord.cli.json.ParameterJson
 
 /** `rtcoord conf PATH get NAME`: one parameter's value. */
 class ConfGetCommand(private val conf: ConfCommand) : TreeCommand("get") {
@@ -21,6 +22,6 @@ class ConfGetCommand(private val conf: ConfCommand) : TreeCommand("get") {
             ?: throw noSuchSet(component, id, configuration.sets.keys)
         val value = parameters[name]
             ?: throw NotFoundException(component.path.toString(), "no parameter '$name' in configuration set '$id' (parameters: ${parameters.keys.sorted().joinToString()})")
-        if (session.json) echoJson(mapOf("set" to id, "name" to name, "value" to value)) else echo(value)
+        if (session.json) echoJson(ParameterJson(id, name, value)) else echo(value)
     }
 }

@@ -4,6 +4,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.NotFoundException
 import org.rtcoord.PreconditionNotMetException
+import org.rtcoord.cli.json.ConfigurationJson
 
 /** Whether [id] names one of OpenRTM's hidden configuration sets (`__constraints__`, `__widget__`, ...). */
 internal fun isHiddenSet(id: String): Boolean = id.startsWith("__") && id.endsWith("__")
@@ -19,8 +20,8 @@ internal fun ConfigurationSnapshot.lines(sets: Map<String, Map<String, String>>,
     }
 
 /** [sets] for `--json`, with the active set's id (null when none is active). */
-internal fun ConfigurationSnapshot.toJson(sets: Map<String, Map<String, String>>): Map<String, Any?> =
-    mapOf("active" to activeSet, "sets" to sets.mapValues { (_, parameters) -> parameters.toSortedMap() })
+internal fun ConfigurationSnapshot.toJson(sets: Map<String, Map<String, String>>): ConfigurationJson =
+    ConfigurationJson(activeSet, sets.mapValues { (_, parameters) -> parameters.toSortedMap() })
 
 /** The error for a configuration set [id] that [component] does not have among [sets]. */
 internal fun noSuchSet(component: ComponentNode, id: String, sets: Set<String>): NotFoundException =

@@ -20,12 +20,11 @@ import org.rtcoord.NameServerReturned
 import org.rtcoord.NodeAppeared
 import org.rtcoord.NodeVanished
 import org.rtcoord.ParameterChanged
-import org.rtcoord.PortTraffic
 import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
+import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
-import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMethodChanged
@@ -38,13 +37,6 @@ internal fun RtcEvent.line(zone: ZoneId = ZoneId.systemDefault()): String = "${t
 
 /** [millis] since the epoch as `watch` prints times, in local time. */
 internal fun timestamp(millis: Long, zone: ZoneId = ZoneId.systemDefault()): String = TIMESTAMP.format(Instant.ofEpochMilli(millis).atZone(zone))
-
-/** The start of an event's JSON line, or of what `watch` found present when it started. */
-internal fun presentJson(millis: Long, path: RtcPath, event: String): Map<String, Any?> =
-    mapOf("time" to Instant.ofEpochMilli(millis).toString(), "path" to path.toString(), "event" to event)
-
-/** The event for `rtcoord --json watch`: time, path, type and the event's own fields. */
-internal fun RtcEvent.toJson(): Map<String, Any?> = presentJson(noticedAt, path, javaClass.simpleName) + mapOf("sequence" to sequence) + fields()
 
 /** What happened, in a few words. */
 internal fun RtcEvent.what(): String = when (this) {
@@ -86,49 +78,6 @@ internal fun WatchMethod.text(): String = when (this) {
     is WatchMethod.Pushed -> "pushed by its ${flavour.label}, heartbeat every $heartbeat" + (pollPeriod?.let { ", and polled every $it" } ?: "")
     is WatchMethod.Polled -> "polled every $period, as $reason"
     is WatchMethod.Unwatched -> "not at all, as $reason"
-}
-
-/** The event's own fields for JSON. */
-private fun RtcEvent.fields(): Map<String, Any?> = when (this) {
-    is StateChanged -> mapOf("handle" to handle, "old" to old.name, "new" to new.name)
-    is ComponentFinalized -> emptyMap()
-    is FsmStateChanged -> mapOf("old" to old, "new" to new)
-    is PortConnected -> mapOf("port" to port, "connector" to connector.id, "connectorName" to connector.name)
-    is PortDisconnected -> mapOf("port" to port, "connector" to connector.id, "connectorName" to connector.name)
-    is PortTraffic -> mapOf("port" to port, "outgoing" to outgoing)
-    is ParameterChanged -> mapOf("set" to set, "name" to name, "old" to old, "new" to new)
-    is ConfigurationSetActivated -> mapOf("old" to old, "new" to new)
-    is ConfigurationSetAdded -> mapOf("set" to id)
-    is ConfigurationSetRemoved -> mapOf("set" to id)
-    is ContextRateChanged -> mapOf("handle" to handle, "old" to old, "new" to new)
-    is ContextRunningChanged -> mapOf("handle" to handle, "running" to running)
-    is ContextAttachmentChanged -> mapOf("handle" to handle, "attached" to attached)
-    is ManagerComponentChanged -> mapOf("instanceName" to instanceName, "created" to created)
-    is NodeAppeared -> mapOf("child" to child.path.toString()) + snapshot?.stateFields().orEmpty()
-    is NodeVanished -> mapOf("child" to child.toString())
-    is HeartbeatLost -> mapOf("silentMillis" to silentMillis)
-    is BecameZombie -> mapOf("error" to cause.message)
-    is Recovered -> emptyMap()
-    is WatchMethodChanged -> new.fields() + mapOf("was" to old?.let { it.fields()["method"] })
-    is ManagerDied -> mapOf("components" to components.map { it.name }, "error" to cause.message)
-    is ManagerReturned -> emptyMap()
-    is NameServerLost -> mapOf("error" to cause.message)
-    is NameServerReturned -> mapOf("downMillis" to downMillis)
-}
-
-/** A component's state and connections for JSON. */
-internal fun ComponentSnapshot.stateFields(state: LifeCycle = this.state): Map<String, Any?> = mapOf(
-    "state" to state.name,
-    "connections" to ports.filter { it.connectors.isNotEmpty() }.associate { it.name to it.connectors.size },
-)
-
-internal fun WatchMethod.fields(): Map<String, Any?> = when (this) {
-    is WatchMethod.Pushed -> mapOf(
-        "method" to "pushed", "observer" to flavour.repositoryId, "heartbeatMillis" to heartbeat.inWholeMilliseconds,
-        "pollPeriodMillis" to pollPeriod?.inWholeMilliseconds,
-    )
-    is WatchMethod.Polled -> mapOf("method" to "polled", "pollPeriodMillis" to period.inWholeMilliseconds, "reason" to reason)
-    is WatchMethod.Unwatched -> mapOf("method" to "unwatched", "reason" to reason)
 }
 
 internal val TIMESTAMP: DateTimeFormatter = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS")

@@ -15,6 +15,7 @@ import org.rtcoord.Node
 import org.rtcoord.NodeFilters
 import org.rtcoord.NodeFilters.and
 import org.rtcoord.NodeKind
+import org.rtcoord.cli.json.FoundJson
 
 /** `rtcoord find`: rtfind, with its short options, over a tree read concurrently. */
 class FindCommand : TreeCommand("find") {
@@ -75,7 +76,7 @@ class FindCommand : TreeCommand("find") {
         )
         val found = tree.find(start.path, depth, filters.reduceOrNull { all, next -> all and next } ?: { _: Node -> true }).toList()
         if (session.json) {
-            echoJson(found.map { mapOf("path" to it.path.toString(), "kind" to it.kind.name.lowercase()) })
+            echoJson(found.map { FoundJson(it.path.toString(), it.kind.name.lowercase()) })
         } else {
             found.forEach { echo(it.path.toString()) }
         }

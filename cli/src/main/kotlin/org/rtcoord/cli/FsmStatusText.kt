@@ -4,6 +4,3 @@ import org.rtcoord.FsmStatus
 
 /** An FSM's state as `cat` and the live view show it: the state, or why it is not known. */
 internal fun FsmStatus.text(): String = state ?: "unknown ($unknownBecause)"
-
-/** An FSM's state for JSON: the state (null when not known) and why it is not known. */
-internal fun FsmStatus.toJson(): Map<String, Any?> = mapOf("state" to state, "unknownBecause" to unknownBecause)

@@ -7,6 +7,9 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.Node
 import org.rtcoord.PortKind
 import org.rtcoord.ZombieNode
+import org.rtcoord.cli.json.EntryJson
+import org.rtcoord.cli.json.PortCountJson
+import org.rtcoord.cli.json.PortCountsJson
 
 /**
  * One node as a listing shows it. [summary] is what was read of a component. Dead registrations (shown
@@ -35,22 +38,21 @@ internal class Entry(val node: Node, val summary: ComponentSummary?, foundDead: 
         }
 
     /** The entry for `--json`. */
-    fun toJson(): Map<String, Any?> = buildMap {
-        put("path", node.path.toString())
-        put("name", node.name)
-        put("kind", if (dead) "zombie" else node.kind.name.lowercase())
-        (node as? ZombieNode)?.let { put("error", it.cause.message) }
-        summary?.takeUnless { dead }?.let { summary ->
-            put("state", summary.overallState.name)
-            put("ports", portCounts(summary))
-        }
+    fun toJson(): EntryJson {
+        val read = summary?.takeUnless { dead }
+        return EntryJson(
+            node.path.toString(), node.name, if (dead) "zombie" else node.kind.name.lowercase(), (node as? ZombieNode)?.cause?.message,
+            read?.overallState?.name, read?.let(::portCounts),
+        )
     }
 
-    private fun portCounts(summary: ComponentSummary): Map<String, Map<String, Int>> =
-        listOf("all" to null, "in" to PortKind.DATA_IN, "out" to PortKind.DATA_OUT, "service" to PortKind.SERVICE).associate { (label, kind) ->
+    private fun portCounts(summary: ComponentSummary): PortCountsJson {
+        fun count(kind: PortKind?): PortCountJson {
             val ports = summary.ports.filter { kind == null || it.kind == kind }
-            label to mapOf("total" to ports.size, "connected" to ports.count { it.connectors.isNotEmpty() })
+            return PortCountJson(ports.size, ports.count { it.connectors.isNotEmpty() })
         }
+        return PortCountsJson(count(null), count(PortKind.DATA_IN), count(PortKind.DATA_OUT), count(PortKind.SERVICE))
+    }
 }
 
 /** The entry for [node] as its last reading left it. */

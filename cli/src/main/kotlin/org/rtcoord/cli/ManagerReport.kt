@@ -4,6 +4,7 @@ import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
 import org.rtcoord.ManagerNode
 import org.rtcoord.RtcPath
+import org.rtcoord.cli.json.ManagerReportJson
 
 /** What `cat` shows of a manager: its profile, its modules (loaded and loadable) and its factories. */
 internal class ManagerReport private constructor(
@@ -35,15 +36,8 @@ internal class ManagerReport private constructor(
     }
 
     /** The report for `--json`. */
-    fun toJson(): Map<String, Any?> = mapOf(
-        "path" to path.toString(),
-        "kind" to "manager",
-        "master" to master,
-        "profile" to profile.toSortedMap(),
-        "loadedModules" to loaded,
-        "loadableModules" to loadable,
-        "factories" to factories.map { it.toSortedMap() },
-    )
+    fun toJson(): ManagerReportJson =
+        ManagerReportJson(path.toString(), master, profile.toSortedMap(), loaded, loadable, factories.map { it.toSortedMap() })
 
     companion object {
         /** Reads [manager] now, its calls concurrently. */

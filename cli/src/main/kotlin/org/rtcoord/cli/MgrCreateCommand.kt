@@ -3,6 +3,7 @@ package org.rtcoord.cli
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.options.option
+import org.rtcoord.cli.json.CreatedJson
 
 /** `rtcoord mgr PATH create TYPE`: a new component through the manager. */
 class MgrCreateCommand(private val mgr: MgrCommand) : TreeCommand("create") {
@@ -16,6 +17,6 @@ class MgrCreateCommand(private val mgr: MgrCommand) : TreeCommand("create") {
 
     override suspend fun execute() {
         val created = manager(mgr.path).create(type, name)
-        if (session.json) echoJson(mapOf("path" to created.path.toString())) else confirm(created.path.toString())
+        if (session.json) echoJson(CreatedJson(created.path.toString())) else confirm(created.path.toString())
     }
 }

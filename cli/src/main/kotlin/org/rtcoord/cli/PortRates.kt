@@ -8,6 +8,9 @@ import org.rtcoord.Node
 import org.rtcoord.Port
 import org.rtcoord.PortKind
 import org.rtcoord.RtcException
+import org.rtcoord.cli.json.EventDetail
+import org.rtcoord.cli.json.EventJson
+import org.rtcoord.cli.json.OneLineJson
 import org.rtcoord.internal.componentsFound
 import java.time.Instant
 import java.time.ZoneId
@@ -34,7 +37,7 @@ internal class PortRates private constructor(private val counted: List<Pair<Port
             counted.forEachIndexed { index, (port, _) ->
                 val rate = (now[index] - last[index]) / seconds
                 print(
-                    if (json) toJson(mapOf("time" to time.toString(), "path" to port.path.toString(), "event" to "DataRate", "rate" to round(rate)), pretty = false)
+                    if (json) OneLineJson.encodeToString(EventJson.found(time.toEpochMilli(), port.path, EventDetail.DataRate(round(rate))))
                     else "${TIMESTAMP.format(time.atZone(ZoneId.systemDefault()))} ${port.path} data ${round(rate)} Hz",
                 )
             }

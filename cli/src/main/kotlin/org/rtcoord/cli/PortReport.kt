@@ -5,6 +5,10 @@ import org.rtcoord.Port
 import org.rtcoord.PortInterface
 import org.rtcoord.PortKind
 import org.rtcoord.PortSnapshot
+import org.rtcoord.cli.json.ConnectionEndJson
+import org.rtcoord.cli.json.ConnectionJson
+import org.rtcoord.cli.json.InterfaceJson
+import org.rtcoord.cli.json.PortJson
 
 /**
  * What `cat` shows of a port: kind, data type or service interfaces, and its connections with the far
@@ -33,21 +37,20 @@ internal class PortReport(val snapshot: PortSnapshot, val connections: List<Conn
         }
     }
 
-    /** The port for `--json`. */
-    fun toJson(): Map<String, Any?> = mapOf(
-        "name" to snapshot.name,
-        "kind" to kindLabel(snapshot.kind),
-        "dataType" to snapshot.dataType,
-        "interfaces" to snapshot.interfaces.map { mapOf("instanceName" to it.instanceName, "typeName" to it.typeName, "polarity" to it.polarity.name) },
-        "properties" to snapshot.properties.toSortedMap(),
-        "connections" to connections.map { connection ->
-            mapOf(
-                "id" to connection.id,
-                "name" to connection.name,
-                "ports" to connection.ports.map { mapOf("name" to it.fullName, "path" to it.path?.toString()) },
-                "properties" to connection.properties.toSortedMap(),
+    /** The port for `--json`, with its [path] when it is shown alone. */
+    fun toJson(path: String? = null): PortJson = PortJson(
+        snapshot.name,
+        kindLabel(snapshot.kind),
+        snapshot.dataType,
+        snapshot.interfaces.map { InterfaceJson(it.instanceName, it.typeName, it.polarity.name) },
+        snapshot.properties.toSortedMap(),
+        connections.map { connection ->
+            ConnectionJson(
+                connection.id, connection.name, connection.ports.map { ConnectionEndJson(it.fullName, it.path?.toString()) },
+                connection.properties.toSortedMap(),
             )
         },
+        path,
     )
 
     /** The connection's other ports: their tree paths, or OpenRTM's names for ports the tree does not know. */

@@ -2,13 +2,14 @@ package org.rtcoord.cli
 
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
+import com.github.ajalt.clikt.parameters.options.check
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
-import com.github.ajalt.clikt.parameters.options.check
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
+import kotlinx.serialization.json.JsonPrimitive
 import org.rtcoord.PortData
 import org.rtcoord.StructuredData
 import org.rtcoord.TimedDouble
@@ -16,6 +17,9 @@ import org.rtcoord.TimedDoubleSeq
 import org.rtcoord.TimedFloatSeq
 import org.rtcoord.TimedLongSeq
 import org.rtcoord.UnknownData
+import org.rtcoord.cli.json.OneLineJson
+import org.rtcoord.cli.json.SampleJson
+import org.rtcoord.cli.json.dynamicJson
 import org.rtcoord.datatypes.DataTypeName
 
 /** `rtcoord print`: rtprint, working: the tree taps the out-port and prints each sample on a line. */
@@ -51,7 +55,7 @@ class PrintCommand : TreeCommand("print") {
                 val printing = launch {
                     var printed = 0
                     for (sample in samples) {
-                        echo(if (json || session.json) toJson(sample.toJson(), pretty = false) else sample.line())
+                        echo(if (json || session.json) OneLineJson.encodeToString(sample.toJson()) else sample.line())
                         if (++printed == count) break
                     }
                 }
@@ -91,15 +95,15 @@ private fun PortData.valueText(): String = when (this) {
 }
 
 /** A sample as JSON: time stamp, type and value. */
-internal fun PortData.toJson(): Map<String, Any?> = linkedMapOf(
-    "time" to time?.toString(),
-    "type" to typeLabel(),
-    "value" to when (this) {
-        is UnknownData -> bytes.joinToString("") { "%02x".format(it) }
-        is StructuredData -> value
-        is TimedDoubleSeq -> data
-        is TimedFloatSeq -> data
-        is TimedLongSeq -> data
-        else -> valueText()
+internal fun PortData.toJson(): SampleJson = SampleJson(
+    time?.toString(),
+    typeLabel(),
+    when (this) {
+        is UnknownData -> JsonPrimitive(bytes.joinToString("") { "%02x".format(it) })
+        is StructuredData -> dynamicJson(value)
+        is TimedDoubleSeq -> dynamicJson(data)
+        is TimedFloatSeq -> dynamicJson(data)
+        is TimedLongSeq -> dynamicJson(data)
+        else -> JsonPrimitive(valueText())
     },
 )

@@ -5,6 +5,7 @@ import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.choice
 import org.rtcoord.LifeCycle
+import org.rtcoord.cli.json.DifferenceJson
 
 /** `rtcoord profile check`: rtcheck. */
 class ProfileCheckCommand : ProfileFileCommand("check") {
@@ -24,7 +25,7 @@ class ProfileCheckCommand : ProfileFileCommand("check") {
         }
         val differences = refusing { profiles.check(profile, expected) }
         if (session.json) {
-            echoJson(differences.map { mapOf("subject" to it.subject, "expected" to it.expected, "actual" to it.actual) })
+            echoJson(differences.map { DifferenceJson(it.subject, it.expected, it.actual) })
         } else {
             differences.forEach { echo(it.toString()) }
         }

@@ -4,6 +4,8 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import org.rtcoord.cli.json.PlannedStepJson
+import org.rtcoord.cli.json.StepOutcomeJson
 import org.rtcoord.profile.OrderedAction
 import kotlin.time.Duration.Companion.seconds
 
@@ -24,7 +26,7 @@ class ProfileOrderCommand(name: String, private val action: OrderedAction) : Pro
         if (dryRun) {
             val plan = refusing { profiles.plan(profile, action) }
             if (session.json) {
-                echoJson(plan.map { mapOf("sequence" to it.sequence, "component" to it.component, "context" to it.contextId, "condition" to it.condition.toString()) })
+                echoJson(plan.map { PlannedStepJson(it.sequence, it.component, it.contextId, it.condition.toString()) })
             } else {
                 plan.forEach { echo(it.toString()) }
             }
@@ -32,7 +34,7 @@ class ProfileOrderCommand(name: String, private val action: OrderedAction) : Pro
         }
         val outcomes = refusing { profiles.run(profile, action, deadline) }
         if (session.json) {
-            echoJson(outcomes.map { mapOf("step" to it.step.toString(), "done" to it.done, "atMillis" to it.atMillis, "detail" to it.detail) })
+            echoJson(outcomes.map { StepOutcomeJson(it.step.toString(), it.done, it.atMillis, it.detail) })
         } else {
             outcomes.forEach { if (it.done) confirm(it.toString()) else echo(it.toString()) }
         }

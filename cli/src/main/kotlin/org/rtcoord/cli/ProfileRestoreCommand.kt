@@ -3,6 +3,7 @@ package org.rtcoord.cli
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import org.rtcoord.cli.json.RestoreJson
 
 /** `rtcoord profile restore`: rtresurrect, checked before anything changes. */
 class ProfileRestoreCommand : ProfileFileCommand("restore") {
@@ -30,12 +31,7 @@ class ProfileRestoreCommand : ProfileFileCommand("restore") {
         val report = refusing { profiles.restore(profile, createMissing = create, strict = strict) }
         report.warnings.forEach { echo("rtcoord: warning: $it", err = true) }
         if (session.json) {
-            echoJson(
-                mapOf(
-                    "done" to report.done, "kept" to report.kept, "missingOptional" to report.missingOptional, "created" to report.created,
-                    "warnings" to report.warnings,
-                ),
-            )
+            echoJson(RestoreJson(report.done, report.kept, report.missingOptional, report.created, report.warnings))
             return
         }
         report.done.forEach { confirm(it) }

@@ -16,6 +16,7 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.WrongKindException
+import org.rtcoord.cli.json.PrettyJson
 
 /**
  * A subcommand working on the RT system through the [Session]'s tree. It turns every failure into
@@ -75,9 +76,9 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
         e
     }
 
-    /** Prints [value] as JSON. */
-    protected fun echoJson(value: Any?) {
-        echo(toJson(value))
+    /** Prints [value] as JSON, indented. */
+    internal inline fun <reified T> echoJson(value: T) {
+        echo(PrettyJson.encodeToString(value))
     }
 
     /** Prints a confirmation, unless `-q`. */

@@ -14,6 +14,11 @@ import org.rtcoord.PortTraffic
 import org.rtcoord.RtcEvent
 import org.rtcoord.SystemSnapshot
 import org.rtcoord.WatchMode
+import org.rtcoord.cli.json.EventDetail
+import org.rtcoord.cli.json.EventJson
+import org.rtcoord.cli.json.FsmJson
+import org.rtcoord.cli.json.OneLineJson
+import org.rtcoord.cli.json.WatchMethodJson
 
 /** `rtcoord watch`: rtwatch that starts, for every kind of event, pushed where components allow it. */
 class WatchCommand : TreeCommand("watch") {
@@ -57,7 +62,7 @@ class WatchCommand : TreeCommand("watch") {
             val rates = if (data) PortRates.tap(nodes) else null
             coroutineScope {
                 val printing = launch {
-                    for (event in events) if (session.json) echo(toJson(event.toJson(), pretty = false)) else echo(event.line())
+                    for (event in events) if (session.json) echo(OneLineJson.encodeToString(EventJson.of(event))) else echo(event.line())
                 }
                 val reporting = rates?.let { launch { it.report(session.json) { line -> echo(line) } } }
                 signals.await(duration)
@@ -78,7 +83,7 @@ class WatchCommand : TreeCommand("watch") {
         val now = System.currentTimeMillis()
         val servers = snapshot.nameServers.filter { entry -> !entry.reachable && nodes.any { it.path.nameServer == entry.node.address } }.map { entry ->
             if (session.json) {
-                toJson(presentJson(now, entry.node.path, "NameServerLost") + mapOf("error" to entry.cause?.message), pretty = false)
+                OneLineJson.encodeToString(EventJson.found(now, entry.node.path, EventDetail.NameServerLost(entry.cause?.message)))
             } else {
                 "${timestamp(now)} ${entry.node.path} name server unreachable (${entry.cause?.reason})"
             }
@@ -90,9 +95,8 @@ class WatchCommand : TreeCommand("watch") {
             // An FSM's state entered before every event was caught is told here, or it would be told nowhere.
             val fsm = entry.fsm
             if (session.json) {
-                val state = read?.stateFields(entry.state) ?: mapOf("state" to entry.state.name)
-                val machine = fsm?.let { mapOf("fsm" to it.toJson()) }.orEmpty()
-                toJson(presentJson(now, entry.path, "Present") + state + machine + mapOf("alive" to entry.alive) + method?.fields().orEmpty(), pretty = false)
+                val present = EventDetail.Present(entry.state.name, read?.let { EventDetail.connections(it) }, fsm?.let(FsmJson::of), entry.alive)
+                OneLineJson.encodeToString(EventJson.found(now, entry.path, present, method?.let(WatchMethodJson::of)))
             } else {
                 "${timestamp(now)} ${entry.path} $what" + (fsm?.let { ", FSM state ${it.text()}" } ?: "") + (method?.let { "; watched: ${it.text()}" } ?: "")
             }
@@ -103,7 +107,7 @@ class WatchCommand : TreeCommand("watch") {
                 died.source.path.startsWith(node.path) ||
                     died.components.any { hosted -> snapshot.component(hosted)?.isAtOrBelow(node.path) == true }
             }
-        }.map { died -> if (session.json) toJson(died.toJson(), pretty = false) else died.line() }
+        }.map { died -> if (session.json) OneLineJson.encodeToString(EventJson.of(died)) else died.line() }
         return servers + components + managers
     }
 }

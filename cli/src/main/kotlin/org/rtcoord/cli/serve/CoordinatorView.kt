@@ -14,7 +14,7 @@ import org.rtcoord.dsl.Coordinator
  */
 internal class CoordinatorView(private val coordinator: Coordinator) {
     /** The view, and again each time anything it shows changes: the coordinator's own flows, merged. */
-    fun updates(): Flow<Map<String, Any?>> {
+    fun updates(): Flow<CoordinatorJson> {
         val sources: List<Flow<Any?>> = listOf(coordinator.failureCounts) +
             coordinator.rules.map { it.status } +
             coordinator.machines.flatMap { listOf(it.mode, it.history, it.unconsumedCounts) } +
@@ -22,44 +22,35 @@ internal class CoordinatorView(private val coordinator: Coordinator) {
         return sources.merge().conflate().map { toJson() }.distinctUntilChanged()
     }
 
-    /** The view as JSON-ready maps. */
-    fun toJson(): Map<String, Any?> = mapOf(
-        "failures" to coordinator.failures,
-        "rules" to coordinator.rules.map { rule ->
+    /** The view as the page reads it. */
+    fun toJson(): CoordinatorJson = CoordinatorJson(
+        failures = coordinator.failures,
+        rules = coordinator.rules.map { rule ->
             val status = rule.status.value
-            mapOf(
-                "description" to rule.description,
-                "firings" to status.firings,
-                "lastFired" to status.lastFired?.toString(),
-                "lastEvent" to status.lastEvent,
-                "failures" to status.failures,
-                "lastFailure" to status.lastFailure,
-            )
+            RuleJson(rule.description, status.firings, status.lastFired?.toString(), status.lastEvent, status.failures, status.lastFailure)
         },
-        "machines" to coordinator.machines.map { machine ->
-            mapOf(
-                "name" to machine.name,
-                "mode" to machine.mode.value,
+        machines = coordinator.machines.map { machine ->
+            MachineJson(
+                name = machine.name,
+                mode = machine.mode.value,
                 // Every mode, nested by path, so that the page draws the machine and marks the active path in it.
-                "modes" to machine.model.modes.map { mode -> mapOf("path" to mode.path, "name" to mode.name, "parent" to mode.parent?.path) },
-                "unconsumed" to machine.unconsumed,
-                "history" to machine.history.value.takeLast(HISTORY_SHOWN).map { move ->
-                    mapOf("from" to move.from, "to" to move.to, "trigger" to move.trigger, "at" to move.at.toString())
-                },
+                modes = machine.model.modes.map { mode -> ModeJson(mode.path, mode.name, mode.parent?.path) },
+                unconsumed = machine.unconsumed,
+                history = machine.history.value.takeLast(HISTORY_SHOWN).map { move -> ModeMoveJson(move.from, move.to, move.trigger, move.at.toString()) },
             )
         },
-        "supervisors" to coordinator.supervision.map { supervisor ->
+        supervisors = coordinator.supervision.map { supervisor ->
             val status = supervisor.status.value
-            mapOf(
-                "name" to supervisor.name,
-                "strategy" to supervisor.strategy,
-                "children" to status.children,
-                "restarts" to status.restarts,
-                "lastRestart" to status.lastRestart?.toString(),
-                "lastRestarted" to status.lastRestarted,
-                "backoffMillis" to status.backoff?.inWholeMilliseconds,
-                "waitingUntil" to status.waitingUntil?.toString(),
-                "escalation" to status.escalation,
+            SupervisorJson(
+                name = supervisor.name,
+                strategy = supervisor.strategy,
+                children = status.children,
+                restarts = status.restarts,
+                lastRestart = status.lastRestart?.toString(),
+                lastRestarted = status.lastRestarted,
+                backoffMillis = status.backoff?.inWholeMilliseconds,
+                waitingUntil = status.waitingUntil?.toString(),
+                escalation = status.escalation,
             )
         },
     )

@@ -8,7 +8,9 @@ import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
 import kotlinx.coroutines.flow.onSubscription
 import kotlinx.coroutines.launch
-import org.rtcoord.cli.toJson
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.encodeToJsonElement
+import org.rtcoord.cli.json.OneLineJson
 import java.io.BufferedWriter
 import java.io.IOException
 import java.nio.file.Files
@@ -23,10 +25,10 @@ internal class LiveRecorder private constructor(private val writer: BufferedWrit
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.IO + CoroutineName("live-record"))
     private var closed = false
 
-    private fun write(kind: String, json: String) {
+    private fun write(kind: String, data: JsonElement) {
         synchronized(this) {
             if (closed) return
-            writer.write(Recording.line(kind, System.currentTimeMillis(), json))
+            writer.write(Recording.line(kind, System.currentTimeMillis(), data))
             writer.newLine()
             writer.flush()
         }
@@ -53,9 +55,9 @@ internal class LiveRecorder private constructor(private val writer: BufferedWrit
             val started = CompletableDeferred<Unit>()
             recorder.scope.launch {
                 view.updates.onSubscription {
-                    recorder.write("snapshot", toJson(view.snapshot(), pretty = false))
+                    recorder.write("snapshot", OneLineJson.encodeToJsonElement(view.snapshot()))
                     started.complete(Unit)
-                }.collect { recorder.write(it.kind, it.json) }
+                }.collect { recorder.write(it.kind, it.data) }
             }
             started.await()
             return recorder

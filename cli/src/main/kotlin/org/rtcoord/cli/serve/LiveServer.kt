@@ -25,7 +25,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.cli.ComponentReport
-import org.rtcoord.cli.toJson
+import org.rtcoord.cli.json.OneLineJson
 import java.security.MessageDigest
 
 /**
@@ -56,7 +56,7 @@ internal class LiveServer(
                 staticResources("/lib", "META-INF/resources/webjars")
                 get("/api/snapshot") {
                     val snapshot = when (served) {
-                        is Served.Live -> toJson(served.view.snapshot(), pretty = false)
+                        is Served.Live -> OneLineJson.encodeToString(served.view.snapshot())
                         is Served.Replayed -> served.recording.snapshot()
                     }
                     call.respondText(snapshot, ContentType.Application.Json)
@@ -65,7 +65,7 @@ internal class LiveServer(
                     // A page that loses the server (restarted, say) tries again after this long.
                     send(data = "{}", event = "hello", retry = RETRY_MILLIS)
                     when (served) {
-                        is Served.Live -> served.view.updates.onSubscription { send(data = toJson(served.view.snapshot(), pretty = false), event = "snapshot") }
+                        is Served.Live -> served.view.updates.onSubscription { send(data = OneLineJson.encodeToString(served.view.snapshot()), event = "snapshot") }
                             .collect { send(data = it.json, event = it.kind) }
                         // Held open, so that the page does not ask again; it has everything.
                         is Served.Replayed -> {
@@ -84,11 +84,11 @@ internal class LiveServer(
                         call.respondText("no component at ${path ?: "(no path given)"}", status = HttpStatusCode.NotFound)
                     } else {
                         val report = try {
-                            ComponentReport.read(tree, component, withConfiguration = true).toJson()
+                            OneLineJson.encodeToString(ComponentReport.read(tree, component, withConfiguration = true).toJson())
                         } catch (e: RtcException) {
-                            mapOf("path" to path, "error" to (e.message ?: e.reason))
+                            OneLineJson.encodeToString(ComponentErrorJson(path, e.message ?: e.reason))
                         }
-                        call.respondText(toJson(report, pretty = false), ContentType.Application.Json)
+                        call.respondText(report, ContentType.Application.Json)
                     }
                 }
                 post("/api/operate") {

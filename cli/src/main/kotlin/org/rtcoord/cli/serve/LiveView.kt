@@ -12,6 +12,8 @@ import kotlinx.coroutines.flow.MutableSharedFlow
 import kotlinx.coroutines.flow.SharedFlow
 import kotlinx.coroutines.flow.asSharedFlow
 import kotlinx.coroutines.launch
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.encodeToJsonElement
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
@@ -46,7 +48,9 @@ import org.rtcoord.Subscription
 import org.rtcoord.SystemSnapshot
 import org.rtcoord.WatchMethodChanged
 import org.rtcoord.cli.discover
-import org.rtcoord.cli.toJson
+import org.rtcoord.cli.json.EventJson
+import org.rtcoord.cli.json.FsmJson
+import org.rtcoord.cli.json.OneLineJson
 import org.rtcoord.cli.what
 import org.rtcoord.dsl.Coordinator
 import java.time.Instant
@@ -68,17 +72,19 @@ internal class LiveView(
     /** Whether the page may operate components. */
     val operable: Boolean,
 ) : AutoCloseable {
-    /** One message to every connected page: its SSE event name and JSON data. */
-    data class Update(val kind: String, val json: String)
+    /** One message to every connected page: its SSE event name and its [data], which pages receive as [json]. */
+    class Update(val kind: String, val data: JsonElement) {
+        val json: String = OneLineJson.encodeToString(data)
+    }
 
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("live-view"))
     private val broadcast = MutableSharedFlow<Update>(extraBufferCapacity = BUFFERED, onBufferOverflow = BufferOverflow.DROP_OLDEST)
-    private val recent = ArrayDeque<Map<String, Any?>>()
+    private val recent = ArrayDeque<TimelineEntryJson>()
     private val sequence = AtomicLong()
     private val reshaped = Channel<Unit>(Channel.CONFLATED)
     private val subscriptions = CopyOnWriteArrayList<Subscription>()
-    @Volatile private var network: Map<String, Any?> = emptyMap()
-    @Volatile private var coordinatorState: Map<String, Any?>? = null
+    @Volatile private var network: NetworkJson? = null
+    @Volatile private var coordinatorState: CoordinatorJson? = null
 
     /** What happens after a page took its [snapshot]. */
     val updates: SharedFlow<Update> = broadcast.asSharedFlow()
@@ -102,47 +108,42 @@ internal class LiveView(
      * Everything a page starts from: the network with the states the tree's model holds now (the page
      * then skips the state events up to its sequence), the coordinator, the recent events, what it may do.
      */
-    fun snapshot(): Map<String, Any?> = mapOf(
-        "network" to withStates(network, tree.snapshot()),
-        "coordinator" to coordinatorState,
-        "events" to synchronized(recent) { recent.toList() },
-        "operable" to operable,
-        "serverTime" to Instant.now().toString(),
+    fun snapshot(): LiveSnapshotJson = LiveSnapshotJson(
+        network?.let { withStates(it, tree.snapshot()) },
+        coordinatorState,
+        synchronized(recent) { recent.toList() },
+        operable,
+        Instant.now().toString(),
     )
 
     /** Adds a line from the coordinator or the server to the timeline. */
     fun log(source: String, line: String) {
-        record(mapOf("kind" to "log", "source" to source, "text" to line))
+        record { seq, sentAt -> TimelineEntryJson(seq, sentAt, kind = "log", source = source, text = line, time = Instant.now().toString()) }
     }
 
     private suspend fun publish(event: RtcEvent) {
-        record(
-            event.toJson() + mapOf(
-                "kind" to kindOf(event),
-                "source" to event.path.toString(),
-                "text" to event.what(),
-                "noticedAt" to event.noticedAt,
-            ),
-        )
+        val json = EventJson.of(event)
+        record { seq, sentAt -> TimelineEntryJson(seq, sentAt, json, kindOf(event), event.path.toString(), event.what(), event.noticedAt) }
         // The page applies state changes itself; anything else may change what is drawn.
         if (event !is StateChanged && event !is FsmStateChanged) reshaped.trySend(Unit)
     }
 
-    private fun record(entry: Map<String, Any?>) {
-        val numbered = mapOf("seq" to sequence.incrementAndGet(), "sentAt" to System.currentTimeMillis()) + entry +
-            (if ("time" in entry) emptyMap() else mapOf("time" to Instant.now().toString()))
+    /** Adds the entry [numbered] makes from its number and the time it is sent. */
+    private fun record(numbered: (seq: Long, sentAt: Long) -> TimelineEntryJson) {
+        val entry = numbered(sequence.incrementAndGet(), System.currentTimeMillis())
         synchronized(recent) {
-            recent.addLast(numbered)
+            recent.addLast(entry)
             while (recent.size > RECENT_KEPT) recent.removeFirst()
         }
-        broadcast.tryEmit(Update("event", toJson(numbered, pretty = false)))
+        broadcast.tryEmit(Update("event", OneLineJson.encodeToJsonElement(entry)))
     }
 
     /** Reads the network again; components that appeared are read first, so they are drawn with their state. */
     private suspend fun readNetwork() {
         NetworkView(top, tree.snapshot()).unread().forEach { component -> readQuietly(component) }
-        network = NetworkView(top, tree.snapshot()).toJson()
-        broadcast.tryEmit(Update("network", toJson(network, pretty = false)))
+        val read = NetworkView(top, tree.snapshot()).toJson()
+        network = read
+        broadcast.tryEmit(Update("network", OneLineJson.encodeToJsonElement(read)))
     }
 
     private suspend fun readQuietly(component: ComponentNode) {
@@ -156,7 +157,7 @@ internal class LiveView(
     private suspend fun followCoordinator(following: Coordinator) {
         CoordinatorView(following).updates().collect { state ->
             coordinatorState = state
-            broadcast.tryEmit(Update("coordinator", toJson(state, pretty = false)))
+            broadcast.tryEmit(Update("coordinator", OneLineJson.encodeToJsonElement(state)))
         }
     }
 
@@ -168,13 +169,12 @@ internal class LiveView(
 
     private companion object {
         /** [network] with each component's state and FSM state as [model] holds them, and [model]'s sequence. */
-        @Suppress("UNCHECKED_CAST")
-        fun withStates(network: Map<String, Any?>, model: SystemSnapshot): Map<String, Any?> {
+        fun withStates(network: NetworkJson, model: SystemSnapshot): NetworkJson {
             val entries = model.components.flatMap { entry -> entry.paths.map { it.toString() to entry } }.toMap()
-            val components = (network["components"] as? List<Map<String, Any?>>).orEmpty().map { component ->
-                entries[component["id"]]?.let { component + mapOf("state" to it.overallState.name, "fsm" to it.fsm?.toJson()) } ?: component
+            val components = network.components.map { component ->
+                entries[component.id]?.let { component.copy(state = it.overallState.name, fsm = it.fsm?.let(FsmJson::of)) } ?: component
             }
-            return network + mapOf("components" to components, "sequence" to model.sequence)
+            return network.copy(components = components, sequence = model.sequence)
         }
 
         const val BUFFERED = 10_000

@@ -8,7 +8,7 @@ import org.rtcoord.PortKind
 import org.rtcoord.SystemSnapshot
 import org.rtcoord.ZombieNode
 import org.rtcoord.cli.ComponentNetwork
-import org.rtcoord.cli.toJson
+import org.rtcoord.cli.json.FsmJson
 
 /**
  * The system below [top] as the page draws it, from what the tree holds: naming contexts and name
@@ -21,8 +21,8 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
     /** Components below [top] the tree has not read yet: the view leaves them out until they are. */
     fun unread(): List<ComponentNode> = walk(top).filterIsInstance<ComponentNode>().filter { it.snapshots.value == null }
 
-    /** The view as JSON-ready maps. */
-    suspend fun toJson(): Map<String, Any?> {
+    /** The view as the page reads it. */
+    suspend fun toJson(): NetworkJson {
         val network = ComponentNetwork(top)
         val graph = network.graph()
         val nodes = walk(top)
@@ -31,64 +31,64 @@ internal class NetworkView(private val top: Node, private val model: SystemSnaps
         val components = network.components.map { component ->
             val snapshot = component.snapshots.value!!
             val entry = model.component(component)
-            mapOf(
-                "id" to component.path.toString(),
-                "name" to snapshot.instanceName,
-                "type" to snapshot.typeName,
-                "parent" to component.path.parent?.toString(),
+            NetworkComponentJson(
+                id = component.path.toString(),
+                name = snapshot.instanceName,
+                type = snapshot.typeName,
+                parent = component.path.parent?.toString(),
                 // As the tree's events tell it: a read may run ahead of them (a deactivation held).
-                "state" to (entry?.overallState ?: org.rtcoord.LifeCycle.UNKNOWN).name,
-                "hostedBy" to managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
-                "fsm" to entry?.fsm?.toJson(),
-                "ports" to snapshot.ports.map { port ->
-                    mapOf(
-                        "name" to port.name,
-                        "kind" to side(port.kind),
-                        "dataType" to port.dataType,
-                        "interfaces" to port.interfaces.map { "${it.polarity.name.lowercase()} ${it.instanceName}: ${it.typeName}" },
+                state = (entry?.overallState ?: org.rtcoord.LifeCycle.UNKNOWN).name,
+                hostedBy = managers.firstOrNull { manager -> hosts(manager, component) }?.path?.toString(),
+                fsm = entry?.fsm?.let(FsmJson::of),
+                ports = snapshot.ports.map { port ->
+                    NetworkPortJson(
+                        name = port.name,
+                        kind = side(port.kind),
+                        dataType = port.dataType,
+                        interfaces = port.interfaces.map { "${it.polarity.name.lowercase()} ${it.instanceName}: ${it.typeName}" },
                     )
                 },
             )
         }
-        val known = components.map { it["id"] }.toSet()
+        val known = components.map { it.id }.toSet()
         val vertices = graph.vertices.associate { vertex -> vertex.id to wholePath(vertex.id) }
-        return mapOf(
-            "top" to top.path.toString(),
-            "sequence" to model.sequence,
-            "contexts" to directories.map { directory ->
-                mapOf(
-                    "id" to directory.path.toString(),
-                    "name" to if (directory.path.names.isEmpty()) directory.path.toString() else directory.name,
-                    "parent" to directory.path.parent?.takeIf { parent -> directories.any { it.path == parent } }?.toString(),
-                    "reachable" to (directory.listed.value != null),
+        return NetworkJson(
+            top = top.path.toString(),
+            sequence = model.sequence,
+            contexts = directories.map { directory ->
+                NamingContextJson(
+                    id = directory.path.toString(),
+                    name = if (directory.path.names.isEmpty()) directory.path.toString() else directory.name,
+                    parent = directory.path.parent?.takeIf { parent -> directories.any { it.path == parent } }?.toString(),
+                    reachable = directory.listed.value != null,
                 )
             },
-            "components" to components,
-            "external" to graph.vertices.filter { it.state == null }.map { mapOf("id" to vertices.getValue(it.id), "name" to it.label) },
-            "managers" to managers.map { manager ->
-                mapOf(
-                    "id" to manager.path.toString(),
-                    "name" to manager.name,
+            components = components,
+            external = graph.vertices.filter { it.state == null }.map { ExternalJson(vertices.getValue(it.id), it.label) },
+            managers = managers.map { manager ->
+                ManagerBoxJson(
+                    id = manager.path.toString(),
+                    name = manager.name,
                     // A slave is drawn in the naming context of its master.
-                    "parent" to generateSequence(manager.path.parent) { it.parent }.firstOrNull { above -> directories.any { it.path == above } }?.toString(),
+                    parent = generateSequence(manager.path.parent) { it.parent }.firstOrNull { above -> directories.any { it.path == above } }?.toString(),
                     // What it hosts: its components, and the slaves a master lists.
-                    "hosts" to components.filter { it["hostedBy"] == manager.path.toString() }.map { it["id"] } +
+                    hosts = components.filter { it.hostedBy == manager.path.toString() }.map { it.id } +
                         managers.filter { it.path.parent == manager.path }.map { it.path.toString() },
                 )
             },
-            "zombies" to nodes.filterIsInstance<ZombieNode>().map { zombie ->
-                mapOf("id" to zombie.path.toString(), "name" to zombie.name, "parent" to zombie.path.parent?.toString(), "reason" to zombie.cause.reason)
+            zombies = nodes.filterIsInstance<ZombieNode>().map { zombie ->
+                ZombieJson(zombie.path.toString(), zombie.name, zombie.path.parent?.toString(), zombie.cause.reason)
             },
-            "connections" to graph.edges.map { edge ->
-                mapOf(
-                    "source" to vertices.getValue(edge.from),
-                    "target" to vertices.getValue(edge.to),
-                    "sourcePort" to edge.tail,
-                    "targetPort" to edge.head,
-                    "label" to edge.label,
-                    "kind" to if (edge.directed) "data" else "service",
+            connections = graph.edges.map { edge ->
+                ConnectionLineJson(
+                    source = vertices.getValue(edge.from),
+                    target = vertices.getValue(edge.to),
+                    sourcePort = edge.tail,
+                    targetPort = edge.head,
+                    label = edge.label,
+                    kind = if (edge.directed) "data" else "service",
                 )
-            }.filter { it["source"] in known || it["target"] in known },
+            }.filter { it.source in known || it.target in known },
         )
     }
 
