@@ -207,19 +207,19 @@ internal class ComponentMonitor(
             core.at(at) { work.trySend(Work(WatchInput.Fired(timer, at))) }?.let { armed.put(timer, it)?.cancel(false) }
         }
         when {
-            outcome.finalized -> {
+            ComponentLiveness.Change.Finalized in outcome.changes -> {
                 log.info("{}: finalized", subject)
                 timers.stop()
                 link.drop()
             }
-            outcome.unreachable -> {
+            ComponentLiveness.Change.Unreachable in outcome.changes -> {
                 log.info("{}: {}; probing until it answers again", subject, (outcome.events.lastOrNull() as? org.rtcoord.BecameZombie)?.cause?.reason)
                 // Keep probing while unreachable, even when only the observer watched it.
                 if (timers.pollPeriod == null) timers.poll(registrations.push?.options?.heartbeat)
                 // Its manager may have died with it, and with every other component it hosted.
                 core.watcher.outages.componentSilent(node, timers.pollPeriod ?: 1.seconds)
             }
-            outcome.recovered -> {
+            ComponentLiveness.Change.Recovered in outcome.changes -> {
                 log.info("{}: answers again", subject)
                 // The component may have dropped an observer it could not reach, or restarted without it.
                 link.detach()

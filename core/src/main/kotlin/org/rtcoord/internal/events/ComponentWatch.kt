@@ -149,8 +149,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     /** A whole read found [snapshot] at [now]; [late] are the hints that came meanwhile. */
     fun read(snapshot: ComponentSnapshot, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val events = ArrayList<RtcEvent>()
-        val recovered = liveness.answered(now).isNotEmpty()
-        if (recovered) {
+        val changes = liveness.answered(now)
+        if (ComponentLiveness.Change.Recovered in changes) {
             events += Recovered(node)
             // Its observer is attached anew: until then no hint announces what this read finds.
             observed = false
@@ -161,7 +161,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         if (previous != null) events += differences(node, previous, snapshot)
         last = snapshot
         epoch++
-        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, recovered = recovered, marker = reconciled.marker)
+        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, changes, reconciled.marker)
     }
 
     /** A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile. */
@@ -189,14 +189,12 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         epoch++
         val unreachable = cause is UnreachableException
         val changes = liveness.failed(now, gone = unreachable && cause.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable, beatMillis)
-        return when {
-            ComponentLiveness.Change.Finalized in changes -> WatchOutcome(listOf(ComponentFinalized(node)), finalized = true)
-            changes.isEmpty() -> WatchOutcome()
-            else -> WatchOutcome(
-                changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, cause) },
-                unreachable = true,
-            )
+        val events = if (ComponentLiveness.Change.Finalized in changes) {
+            listOf(ComponentFinalized(node))
+        } else {
+            changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, cause) }
         }
+        return WatchOutcome(events, changes = changes)
     }
 
     /**

@@ -36,12 +36,8 @@ internal class WatchOutcome(
     val untaken: List<WatchInput.Hinted> = emptyList(),
     /** Read again at once: a hint that came during the read leads past what it found. */
     val readAgain: Boolean = false,
-    /** It answers again after being lost: its observer is to be attached anew. */
-    val recovered: Boolean = false,
-    /** It became unreachable: it is to be probed until it answers, and its managers asked. */
-    val unreachable: Boolean = false,
-    /** It is gone for good: watching it ends. */
-    val finalized: Boolean = false,
+    /** What it changed of whether the component answers. */
+    val changes: List<ComponentLiveness.Change> = emptyList(),
     /** The marker to send through the observer, if any. */
     val marker: String? = null,
 )

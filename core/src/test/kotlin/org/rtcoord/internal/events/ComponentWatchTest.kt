@@ -22,6 +22,10 @@ import org.rtcoord.LocalisationSystem
 import org.rtcoord.RtcEvent
 import org.rtcoord.StateChanged
 import org.rtcoord.UnreachableException
+import org.rtcoord.internal.events.ComponentLiveness.Change.Finalized
+import org.rtcoord.internal.events.ComponentLiveness.Change.Lost
+import org.rtcoord.internal.events.ComponentLiveness.Change.Recovered
+import org.rtcoord.internal.events.ComponentLiveness.Change.Unreachable
 import org.rtcoord.internal.events.ComponentWatch.Timer
 
 /**
@@ -274,7 +278,7 @@ class ComponentWatchTest {
         val lost = overdue(3200)
         assertEquals(listOf(HeartbeatLost(node, 3200)), lost.events)
         assertEquals(WatchStep.ReadAll, lost.step)
-        assertTrue(watch.read(found(ACTIVE), 3201, emptyList()).recovered, "answering again: its observer is attached anew")
+        assertEquals(listOf(Recovered), watch.read(found(ACTIVE), 3201, emptyList()).changes, "answering again: its observer is attached anew")
     }
 
     @Test
@@ -284,7 +288,7 @@ class ComponentWatchTest {
         killed.decide(listOf(WatchInput.Overdue(heardAt = 0, beatMillis = 1000, limitMillis = 3000)), 1100)
         val outcome = killed.failed(refused, 1101, beatMillis = 1000)
         assertEquals(listOf(HeartbeatLost(node, 1101), BecameZombie(node, refused)), outcome.events)
-        assertTrue(outcome.unreachable)
+        assertEquals(listOf(Lost(1101), Unreachable), outcome.changes)
 
         val suspected = watching(ACTIVE)
         suspected.decide(listOf(lifecycle("ACTIVE:0", 500)), 500)
@@ -298,7 +302,7 @@ class ComponentWatchTest {
         val watch = watching(ACTIVE)
         watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT()), 100, beatMillis = 1000)
         val back = watch.read(found(INACTIVE), 200, emptyList())
-        assertTrue(back.recovered)
+        assertEquals(listOf(Recovered), back.changes)
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(back.events))
     }
 
@@ -308,7 +312,7 @@ class ComponentWatchTest {
         assertEquals(WatchStep.ReadAll, watch.decide(listOf(lifecycle("FINALIZE:0", 10)), 10).step)
         val outcome = watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.COMM_FAILURE()), 11, beatMillis = 1000)
         assertEquals(listOf(ComponentFinalized(node)), outcome.events)
-        assertTrue(outcome.finalized)
+        assertEquals(listOf(Finalized), outcome.changes)
         assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Ticked), 12).step, "nothing is read once it is gone")
     }
 }
