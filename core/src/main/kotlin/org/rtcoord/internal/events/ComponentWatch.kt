@@ -20,15 +20,16 @@ import java.util.EnumMap
  * read to make ([WatchStep]), the events to publish, the [Timer]s to arm (each for the time it fires at, on
  * the same clock), the marker to send ([WatchOutcome]).
  *
- * Its lifecycle states, per execution context, are reconciled by [ContextStates]; whether it answers by
- * [ComponentLiveness]. The phases of the reconciliation, each context's and so the component's:
+ * Its lifecycle states, per execution context, are reconciled by [ContextStates], each context's by a
+ * [StateTracker] standing in a [ContextPhase]; whether it answers by [ComponentLiveness]. The phases, what
+ * takes a context out of each, and the timers they arm:
  *
  * | phase | hints and reads | leaves when | to |
  * |---|---|---|---|
- * | AGREED | the last read found where the hints lead | a lifecycle hint: its context's state is read | LEADING, HELD or AGREED |
- * | LEADING | hints lead to a state the last read did not find (OpenRTM-aist hints before the state shows) | [Timer.RECHECK] after 1, 2, 4... ms up to the grace period: read again | AGREED, HELD, DISAGREEING |
- * | DISAGREEING | a read found what no hint announced, or the hints lead elsewhere | [Timer.GRACE], the grace period after the first read that disagreed: a read decides | AGREED |
- * | HELD | a read confirmed a hinted deactivation, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in | the ERROR hint: a read confirms the abort; the deactivation has [Timer.SETTLED] and the marker sent after that read is back: it is published as the confirming read found it ([settle]), hints come since taken first; [Timer.HOLD_LIMIT]: a read decides | AGREED |
+ * | [Agreed][ContextPhase.Agreed] | the last read found where the hints lead; a lifecycle hint taken since asks for its context's state | a read finds where the hints lead: a hinted deactivation (ACTIVE to INACTIVE) is held, anything else published; a read finds elsewhere | Held or Agreed; Leading (hints taken) or Disagreeing (none) |
+ * | [Leading][ContextPhase.Leading]`(since)` | hints lead to a state the reads since `since` did not find (OpenRTM-aist hints before the state shows) | [Timer.RECHECK] after 1, 2, 4... ms up to the grace period: a read finds where they lead; [Timer.GRACE] at `since` + the grace period: a read decides | Held or Agreed; Agreed |
+ * | [Disagreeing][ContextPhase.Disagreeing]`(since)` | the read at `since` found what no hint announced | a hint, which may announce it; a read finds the state published; [Timer.GRACE]: a read decides | Leading; Agreed; Agreed |
+ * | [Held][ContextPhase.Held]`(since, flushed)` | a read confirmed a deactivation hinted at `since`, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in; `flushed` once the marker sent after that read is back | the ERROR hint: a read confirms the abort (or finds the state not shown yet); [Timer.SETTLED] at `since` + [Timing.settleMillis], flushed: it is published as the confirming read found it ([settle]), hints come since taken first; [Timer.HOLD_LIMIT] at `since` + the hold limit: a read decides | Agreed (or Leading); Agreed; Agreed |
  *
  * An abort's ERROR hint leaves the component before the read that overtook it answered, on the connection
  * its INACTIVE hint came by: when the read is taken, it is already in this host's socket, waiting for the
@@ -66,9 +67,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     /** The wait of the latest [Timer.RECHECK] while hints lead the reads; 0 once they no longer do. */
     private var recheckDelay = 0L
 
-    /** The marker on its way while a deactivation may be held; null when none is. */
-    var marker: String? = null
-        private set
+    /** The marker on its way while a deactivation is held; null when none is. */
+    private var marker: String? = null
 
     /** The last read, with the states the machine confirmed; null before the first. */
     var last: ComponentSnapshot? = null
@@ -92,7 +92,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
     /** Whether what the last read found is what a poll probe should expect: hints and reads agree, nothing held. */
     val settled: Boolean
-        get() = statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && !states.awaitingConfirmation && !states.holding
+        get() = statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && states.agreed
 
     /** Takes a batch of [inputs] at [now]; says what to read. */
     fun decide(inputs: List<WatchInput>, now: Long): WatchDecision {
@@ -116,15 +116,15 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                 is WatchInput.Fired -> if (deadlines.remove(input.timer, input.at)) {
                     when (input.timer) {
                         Timer.RECHECK -> handles += every
-                        Timer.GRACE -> if (states.awaitingConfirmation) readAll = true
-                        Timer.SETTLED -> settle = settle || (states.holding && marker == null)
-                        Timer.HOLD_LIMIT -> if (states.holding) readAll = true
+                        Timer.GRACE -> if (states.disagreedSince != null) readAll = true
+                        Timer.SETTLED -> settle = settle || (states.held.isNotEmpty() && marker == null)
+                        Timer.HOLD_LIMIT -> if (states.held.isNotEmpty()) readAll = true
                     }
                 }
                 is WatchInput.MarkerBack -> if (input.marker == marker) {
                     marker = null
                     states.flushed()
-                    settle = settle || states.settlesIn(now) == 0L
+                    settle = settle || states.held.any { now - it.since >= timing.settleMillis }
                 }
                 is WatchInput.Overdue -> readAll = overdue(input, now, events) || readAll
                 WatchInput.Reconfigured -> reconfigure = true
@@ -245,20 +245,22 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             timers += timer to at
         }
         // A late hint may lead past what the read found: read again now rather than after the grace period.
-        val readAgain = taken && states.awaitingConfirmation
+        val readAgain = taken && states.disagreedSince != null
         // One grace read at a time: disagreements that began later end later, and the read deciding the oldest arms the next.
         states.disagreedSince?.let { arm(Timer.GRACE, it + timing.graceMillis - now) }
         recheckIfHintsLead(::arm)
-        // A marker sent for a deactivation that is over, or never was, is no longer awaited.
-        if (!states.deactivationPending) marker = null
-        if (states.holding) {
-            states.heldUntil()?.let { arm(Timer.HOLD_LIMIT, it - now) }
-            states.settlesIn(now)?.let { arm(Timer.SETTLED, it) }
-        } else {
+        val held = states.held
+        if (held.isEmpty()) {
+            // A marker sent for a hold that is over is no longer awaited, and the hold's timers end with it.
+            marker = null
             deadlines.keys -= HOLD_TIMERS
+        } else {
+            val since = held.minOf { it.since }
+            arm(Timer.HOLD_LIMIT, since + timing.holdLimitMillis - now)
+            arm(Timer.SETTLED, since + timing.settleMillis - now)
         }
         // Each read that leaves a hold waiting for its hints sends a marker of its own: an older one tells nothing of what came since.
-        return WatchOutcome(events, timers, untaken, readAgain, marker = if (states.awaitingHints) newMarker() else null)
+        return WatchOutcome(events, timers, untaken, readAgain, marker = if (held.any { !it.flushed }) newMarker() else null)
     }
 
     /**
