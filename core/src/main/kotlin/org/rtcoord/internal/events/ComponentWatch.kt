@@ -13,12 +13,14 @@ import org.rtcoord.UnreachableException
 import java.util.EnumMap
 
 /**
- * What the tree believes of one watched component and when it says so: a pure state machine with no
- * clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks, timers,
- * markers, watchdog checks; then [read], [statesRead] or [failed] with what the read it asked for found),
- * each with the time `now` in milliseconds of one monotonic clock, and carries out what it returns: the
- * read to make ([WatchStep]), the events to publish, the [Timer]s to arm (each for the time it fires at, on
- * the same clock), the marker to send ([WatchOutcome]).
+ * What the tree believes of one watched component, when it says so and how it watches it: a pure state
+ * machine with no clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks,
+ * timers, markers, watchdog checks, registrations changed; then [read], [statesRead] or [failed] with what
+ * the read it asked for found, [attached] and [detached] with how the observer's went), each with the time
+ * `now` in milliseconds of one monotonic clock, and carries out what it returns, deciding nothing itself:
+ * the read or the observer's attachment to make ([WatchStep]), the events to publish, the [Timer]s to arm
+ * (each for the time it fires at, on the same clock), the marker to send, the timers and the method of its
+ * watching ([WatchOutcome]). How it is watched is its [WatchArrangement]'s.
  *
  * Its lifecycle states, per execution context, are reconciled by [ContextStates], each context's by a
  * [StateTracker] standing in a [ContextPhase]; whether it answers by [ComponentLiveness]. The phases, what
@@ -61,6 +63,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
     private val states = ContextStates(node, timing.holdLimitMillis, timing.settleMillis)
     private val liveness = ComponentLiveness(now)
+    private val arrangement = WatchArrangement()
     /** The time each pending timer was armed for. */
     private val deadlines = EnumMap<Timer, Long>(Timer::class.java)
     private var markers = 0L
@@ -78,21 +81,15 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     var epoch: Long = 0
         private set
 
-    /** Whether an observer announces the component's changes, so that its hints are awaited. */
-    var observed: Boolean = false
-
-    /** Whether every registration wants states alone, so that a tick reads states only. */
-    var statesOnly: Boolean = false
-
-    /** Where the component stands: answering, silent, unreachable or finalized. */
-    val answers: ComponentLiveness.State get() = liveness.state
+    /** What the registrations ask for, as the monitor found them at the start of its batch. */
+    var needs: WatchNeeds by arrangement::needs
 
     /** The states as the published events tell them, by context handle. */
     val published: Map<Int, LifeCycle> get() = states.published
 
     /** Whether what the last read found is what a poll probe should expect: hints and reads agree, nothing held. */
     val settled: Boolean
-        get() = statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && states.agreed
+        get() = needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && states.agreed
 
     /** Takes a batch of [inputs] at [now]; says what to read. */
     fun decide(inputs: List<WatchInput>, now: Long): WatchDecision {
@@ -104,7 +101,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val events = ArrayList<RtcEvent>()
         val every = last?.contexts?.map { it.handle }.orEmpty()
         fun tick() {
-            if (statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && every.isNotEmpty()) handles += every else readAll = true
+            if (needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && every.isNotEmpty()) handles += every else readAll = true
         }
         for (input in inputs) {
             when (input) {
@@ -132,7 +129,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         }
         val step = when {
             liveness.state == ComponentLiveness.State.FINALIZED -> WatchStep.Idle
-            reconfigure -> WatchStep.Reconfigure
+            reconfigure -> arrangement.reconfigured()
             readAll -> WatchStep.ReadAll
             handles.isNotEmpty() -> if (last == null || liveness.state != ComponentLiveness.State.ANSWERING) WatchStep.ReadAll else WatchStep.ReadStates(handles)
             settle -> WatchStep.Settle
@@ -141,27 +138,30 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         return WatchDecision(step, events)
     }
 
-    /** The observer was attached at [now]: its silence counts from then. */
-    fun attached(now: Long) {
-        liveness.hinted(now)
+    /** [WatchStep.Attach] ended in [attachment] at [now]: an observer attached, its silence counts from then. */
+    fun attached(attachment: Attachment, now: Long): WatchOutcome {
+        if (attachment is Attachment.Attached) liveness.hinted(now)
+        return WatchOutcome(arranged = arrangement.attached(attachment, liveness.state))
     }
+
+    /** [WatchStep.Detach] was carried out: the observer, if any, is detached. */
+    fun detached(): WatchOutcome = WatchOutcome(arranged = arrangement.detached(liveness.state, last?.advertised))
 
     /** A whole read found [snapshot] at [now]; [late] are the hints that came meanwhile. */
     fun read(snapshot: ComponentSnapshot, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val events = ArrayList<RtcEvent>()
         val changes = liveness.answered(now)
-        if (ComponentLiveness.Change.Recovered in changes) {
-            events += Recovered(node)
-            // Its observer is attached anew: until then no hint announces what this read finds.
-            observed = false
-        }
+        val recovered = ComponentLiveness.Change.Recovered in changes
+        if (recovered) events += Recovered(node)
+        // Before reconciling: a component back may have dropped its observer, and until one is attached anew no hint announces what this read finds.
+        val arranged = arrangement.answered(recovered, liveness.state, snapshot.advertised)
         val previous = last
         val reconciled = reconcile(previous, snapshot, now, late)
         events += reconciled.events
         if (previous != null) events += differences(node, previous, snapshot)
         last = snapshot
         epoch++
-        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, changes, reconciled.marker)
+        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, changes, reconciled.marker, arranged)
     }
 
     /** A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile. */
@@ -184,17 +184,18 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         return reconcile(snapshot, snapshot, now, late)
     }
 
-    /** A read failed at [now] with [cause]; [beatMillis] is the interval it was expected to speak at, below which its silence is no news. */
-    fun failed(cause: RtcException, now: Long, beatMillis: Long?): WatchOutcome {
+    /** A read failed at [now] with [cause]; a silence shorter than the interval it should speak at is no news. */
+    fun failed(cause: RtcException, now: Long): WatchOutcome {
         epoch++
         val unreachable = cause is UnreachableException
+        val beatMillis = arrangement.expectedInterval?.inWholeMilliseconds
         val changes = liveness.failed(now, gone = unreachable && cause.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable, beatMillis)
         val events = if (ComponentLiveness.Change.Finalized in changes) {
             listOf(ComponentFinalized(node))
         } else {
             changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, cause) }
         }
-        return WatchOutcome(events, changes = changes)
+        return WatchOutcome(events, changes = changes, arranged = arrangement.failed(changes, liveness.state))
     }
 
     /**
@@ -217,9 +218,11 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     private fun overdue(input: WatchInput.Overdue, now: Long, events: MutableList<RtcEvent>): Boolean {
         liveness.hinted(input.heardAt)
         if (liveness.state != ComponentLiveness.State.ANSWERING) return liveness.state == ComponentLiveness.State.UNREACHABLE
-        liveness.checked(now, input.limitMillis)?.let { events += HeartbeatLost(node, it.silentMillis) }
+        val beating = arrangement.beating
+        liveness.checked(now, beating?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })?.let { events += HeartbeatLost(node, it.silentMillis) }
         // A process that died refuses the read at once: that is known a beat after its last, not at the limit.
-        return input.beatMillis != null && now - liveness.lastHeard >= input.beatMillis + input.beatMillis / OVERDUE_FRACTION
+        val beat = beating?.heartbeat?.inWholeMilliseconds ?: return false
+        return now - liveness.lastHeard >= beat + beat / OVERDUE_FRACTION
     }
 
     /** Reconciles each context's state in [snapshot] with the hints, [late] ones first; arms what the phases call for. */
@@ -236,7 +239,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                 untaken += hinted
             }
         }
-        val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = observed)
+        val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = arrangement.observed)
         val timers = ArrayList<Pair<Timer, Long>>()
         fun arm(timer: Timer, after: Long) {
             if (timer in deadlines) return
@@ -280,6 +283,9 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
     /** A new marker, to be sent through the observer now: it comes back once the hints waiting before it are taken. */
     private fun newMarker(): String = "$MARKER_PREFIX${++markers}".also { marker = it }
+
+    /** The services the component offers observers, as it lists them. */
+    private val ComponentSnapshot.advertised: String? get() = properties["sdo.service.consumer.available_services"]
 
     companion object {
         /** What every marker begins with: a hint that does is a marker, and nothing else. */
