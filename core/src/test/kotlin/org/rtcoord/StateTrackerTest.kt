@@ -1,13 +1,14 @@
 package org.rtcoord
 
 import org.junit.jupiter.api.Assertions.assertEquals
-import org.junit.jupiter.api.Assertions.assertFalse
-import org.junit.jupiter.api.Assertions.assertNull
-import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.LifeCycle.ACTIVE
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.LifeCycle.INACTIVE
+import org.rtcoord.internal.events.ContextPhase.Agreed
+import org.rtcoord.internal.events.ContextPhase.Disagreeing
+import org.rtcoord.internal.events.ContextPhase.Held
+import org.rtcoord.internal.events.ContextPhase.Leading
 import org.rtcoord.internal.events.Hint
 import org.rtcoord.internal.events.HintKind
 import org.rtcoord.internal.events.StateTracker
@@ -36,7 +37,7 @@ class StateTrackerTest {
         val tracker = StateTracker(ACTIVE, holdLimitMillis = 25)
         tracker.hint(INACTIVE, 100)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true), "held")
-        assertTrue(tracker.holding)
+        assertEquals(Held(100, flushed = false), tracker.phase)
         tracker.hint(ERROR, 105)
         tracker.hint(INACTIVE, 106)
         assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 110, grace, hintsExpected = true), "an abort reset at once")
@@ -45,9 +46,10 @@ class StateTrackerTest {
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true), "other transitions are not held")
         tracker.hint(INACTIVE, 130)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 131, grace, hintsExpected = true))
-        assertEquals(155L, tracker.heldUntil(), "the limit counts from the hint")
+        assertEquals(Held(130, flushed = false), tracker.phase, "the limit counts from the hint")
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 154, grace, hintsExpected = true))
         assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true), "a deactivation at the limit")
-        assertFalse(tracker.holding)
+        assertEquals(Agreed, tracker.phase)
 
         tracker.hint(ACTIVE, 160)
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 160, grace, hintsExpected = true))
@@ -55,7 +57,7 @@ class StateTrackerTest {
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 161, grace, hintsExpected = true))
         tracker.flushed()
         assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 162, grace, hintsExpected = true), "a deactivation once the earlier hints are in")
-        assertFalse(tracker.holding)
+        assertEquals(Agreed, tracker.phase)
         tracker.flushed()
         tracker.hint(ACTIVE, 163)
         tracker.reconcile(ACTIVE, 163, grace, hintsExpected = true)
@@ -66,25 +68,26 @@ class StateTrackerTest {
     @Test
     fun `a held deactivation ends once it has settled, counted from its hint, and the hints before it are in, whichever comes last`() {
         val tracker = StateTracker(ACTIVE, holdLimitMillis = 500, settleMillis = 3)
-        assertNull(tracker.settlesIn(100), "nothing held")
         tracker.hint(INACTIVE, 100)
-        assertTrue(tracker.deactivationPending)
         tracker.flushed()
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true), "the hints are in, but it has not settled")
-        assertEquals(2L, tracker.settlesIn(101))
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true), "held")
+        assertEquals(Held(100, flushed = false), tracker.phase, "a marker back before the hold began tells nothing of the hints before its read")
+        tracker.flushed()
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 102, grace, hintsExpected = true), "the hints are in, but it has not settled")
+        assertEquals(Held(100, flushed = true), tracker.phase)
         tracker.hint(ERROR, 102)
         tracker.hint(INACTIVE, 102)
         assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 102, grace, hintsExpected = true), "an ERROR hint late behind the marker")
-        assertFalse(tracker.deactivationPending)
+        assertEquals(Agreed, tracker.phase)
 
         tracker.hint(ACTIVE, 120)
         tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true)
         tracker.hint(INACTIVE, 130)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 134, grace, hintsExpected = true), "settled, but the hints before it are not known to be in")
-        assertEquals(0L, tracker.settlesIn(134))
+        assertEquals(Held(130, flushed = false), tracker.phase)
         tracker.flushed()
         assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 135, grace, hintsExpected = true), "a deactivation")
-        assertNull(tracker.settlesIn(135))
+        assertEquals(Agreed, tracker.phase)
     }
 
     @Test
@@ -93,14 +96,13 @@ class StateTrackerTest {
         tracker.hint(INACTIVE, 0)
         // OpenRTM-aist shows the new state only once the transition's hints are sent: a read may come first.
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ACTIVE, 1, grace, hintsExpected = true))
-        assertTrue(tracker.hintsLead)
+        assertEquals(Leading(1), tracker.phase)
         assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 2, grace, hintsExpected = true))
-        assertFalse(tracker.hintsLead)
+        assertEquals(Agreed, tracker.phase)
 
         // A read ahead of the hints waits for them; reading again sooner would not help.
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ACTIVE, 3, grace, hintsExpected = true))
-        assertTrue(tracker.awaitingConfirmation)
-        assertFalse(tracker.hintsLead)
+        assertEquals(Disagreeing(3), tracker.phase)
     }
 
     @Test
@@ -149,7 +151,33 @@ class StateTrackerTest {
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 1000, grace, hintsExpected = true))
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 1000 + grace - 1, grace, hintsExpected = true))
         assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1000 + grace, grace, hintsExpected = true))
-        assertEquals(false, tracker.awaitingConfirmation)
+        assertEquals(Agreed, tracker.phase)
+    }
+
+    @Test
+    fun `a hint turns a disagreement into hints leading, and an ERROR hint a read does not show yet ends a hold`() {
+        val tracker = StateTracker(ACTIVE, holdLimitMillis = 500, settleMillis = 2)
+        tracker.reconcile(INACTIVE, 10, grace, hintsExpected = true)
+        assertEquals(Disagreeing(10), tracker.phase, "a change no hint announced")
+        tracker.hint(INACTIVE, 11)
+        assertEquals(Leading(10), tracker.phase, "its hint came: the grace period still counts from the read that disagreed")
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 12, grace, hintsExpected = true))
+        assertEquals(Held(11, flushed = false), tracker.phase, "a hinted deactivation confirmed: held from its hint")
+        tracker.flushed()
+        tracker.hint(ERROR, 13)
+        assertEquals(Held(11, flushed = true), tracker.phase, "a hint alone changes no hold: the read it asks for does")
+        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 14, grace, hintsExpected = true))
+        assertEquals(Leading(14), tracker.phase, "an abort whose ERROR the read does not show yet")
+        assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 15, grace, hintsExpected = true))
+
+        tracker.hint(INACTIVE, 20)
+        tracker.hint(ACTIVE, 20)
+        tracker.hint(INACTIVE, 21)
+        tracker.reconcile(INACTIVE, 22, grace, hintsExpected = true)
+        tracker.flushed()
+        tracker.hint(ACTIVE, 23)
+        tracker.hint(INACTIVE, 24)
+        assertEquals(Held(21, flushed = false), tracker.phase, "another deactivation hinted in the hold waits for a marker of its own")
     }
 
     @Test

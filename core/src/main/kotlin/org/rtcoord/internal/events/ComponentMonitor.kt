@@ -7,6 +7,7 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
+import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.PortTraffic
@@ -22,15 +23,14 @@ import java.util.concurrent.Future
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.time.Duration
-import kotlin.time.Duration.Companion.seconds
 
 /**
  * Watches one component for every registration interested in it: the shell around its [ComponentWatch],
  * which decides everything. One coroutine takes what happened (hints, ticks, timers, markers, watchdog
- * checks) in batches, in order, asks the machine what to read, makes the CORBA reads and publishes what
- * the machine concludes; so the component's events come out in the order they happened, and delivery to
- * handlers is the sinks' job. Its observer is [ObserverLink]'s, its tick and watchdog [MonitorTimers]',
- * how it is watched [decideWatchMethod]'s.
+ * checks, registrations changed) in batches, in order, asks the machine what to do, and carries out each
+ * step it returns (a CORBA read, attaching or detaching the observer), the events to publish and the
+ * timers to set; so the component's events come out in the order they happened, and delivery to handlers
+ * is the sinks' job. Its observer is [ObserverLink]'s, its tick and watchdog [MonitorTimers]'.
  */
 internal class ComponentMonitor(
     private val core: TreeCore,
@@ -46,14 +46,13 @@ internal class ComponentMonitor(
     private val registrations = MonitorRegistrations()
     private val work = Channel<Work>(Channel.UNLIMITED)
 
-    /** How the component is watched, once decided; set through [Watcher.announce]. */
+    /** How the component is watched, as its machine last decided and the reports were told; set through [WatchReports.announce]. */
     @Volatile var method: WatchMethod? = null
 
     // Owned by the worker coroutine.
     private val watch = ComponentWatch(node, now())
     private val armed = EnumMap<ComponentWatch.Timer, Future<*>>(ComponentWatch.Timer::class.java)
     private val link = ObserverLink(core, host, subject, node.component)
-    private var attachment: Attachment = Attachment.NotTried
     private val stopped = CompletableFuture<Unit>()
     /** Work that arrived during a read and was not taken with it: the next batch's. */
     private val carried = ArrayList<Work>()
@@ -64,8 +63,8 @@ internal class ComponentMonitor(
             if (!work.trySend(Work(input, outcome.done)).isSuccess) outcome.done()
         }
     }
-    private val timers = MonitorTimers(core, probe, core.clock, { done -> if (!work.trySend(Work(WatchInput.Ticked, done)).isSuccess) done() }) {
-        work.trySend(Work(overdue()))
+    private val timers = MonitorTimers(core, probe, core.clock, { done -> if (!work.trySend(Work(WatchInput.Ticked, done)).isSuccess) done() }) { heardAt ->
+        work.trySend(Work(WatchInput.Overdue(heardAt)))
     }
 
     init {
@@ -130,24 +129,42 @@ internal class ComponentMonitor(
     }
 
     private suspend fun handle(batch: List<Work>) {
-        watch.statesOnly = registrations.statesOnly
-        watch.observed = link.observer != null
+        watch.needs = registrations.needs()
         val decision = watch.decide(batch.map { it.input }, now())
         publish(decision.events)
         try {
-            when (val step = decision.step) {
-                WatchStep.Idle -> Unit
-                WatchStep.Reconfigure -> reconfigure()
-                WatchStep.ReadAll -> readAndPublish()
-                is WatchStep.ReadStates -> readStates(step.handles)
-                is WatchStep.TakeStates -> takeStates(step.states, step.stamp)
-                WatchStep.Settle -> carryOut(watch.settle(now(), lateHints()))
-            }
+            perform(decision.step)
         } finally {
             // Before the ticks are done: the probe of the next one expects what this batch found.
             probe?.expect(watch.last?.takeIf { watch.settled }?.let { StateProbe.Expectation.of(it, node.component.contexts, watch.epoch) })
             batch.forEach { it.ready?.complete(Unit); it.done?.invoke() }
         }
+    }
+
+    /** Carries out [step], and what the machine makes of it. */
+    private suspend fun perform(step: WatchStep) {
+        when (step) {
+            WatchStep.Idle -> Unit
+            WatchStep.ReadAll -> readAndPublish()
+            is WatchStep.ReadStates -> readStates(step.handles)
+            is WatchStep.TakeStates -> takeStates(step.states, step.stamp)
+            WatchStep.Settle -> carryOut(watch.settle(now(), lateHints()))
+            is WatchStep.Attach -> attach(step)
+            WatchStep.Detach -> {
+                link.detach()
+                carryOut(watch.detached())
+            }
+            WatchStep.Drop -> link.drop()
+        }
+    }
+
+    /** Attaches an observer as [step] says, passing what it hears to [received]. */
+    private suspend fun attach(step: WatchStep.Attach) {
+        fsm.forget()
+        val attachment = link.attach(step.advertised, step.heartbeat, step.traffic, ::received)
+        // Its heartbeats are awaited from now.
+        if (attachment is Attachment.Attached) timers.heard()
+        carryOut(watch.attached(attachment, now()))
     }
 
     /** Reads only the states of the contexts [handles] and hands them to the machine. */
@@ -161,7 +178,7 @@ internal class ComponentMonitor(
             handles.singleOrNull()?.let { mapOf(it to state(it)) }
                 ?: coroutineScope { handles.associateWith { async { state(it) } }.mapValues { it.value.await() } }
         } catch (e: RtcException) {
-            return carryOut(watch.failed(e, now(), expectedInterval()))
+            return carryOut(watch.failed(e, now()))
         }
         takeStates(states, stamp)
     }
@@ -180,7 +197,7 @@ internal class ComponentMonitor(
             }
             node.component.snapshot.value!!
         } catch (e: RtcException) {
-            return carryOut(watch.failed(e, now(), expectedInterval()))
+            return carryOut(watch.failed(e, now()))
         }
         carryOut(watch.read(snapshot, now(), lateHints()))
     }
@@ -206,64 +223,26 @@ internal class ComponentMonitor(
         for ((timer, at) in outcome.timers) {
             core.at(at) { work.trySend(Work(WatchInput.Fired(timer, at))) }?.let { armed.put(timer, it)?.cancel(false) }
         }
-        when {
-            outcome.finalized -> {
-                log.info("{}: finalized", subject)
-                timers.stop()
-                link.drop()
-            }
-            outcome.unreachable -> {
-                log.info("{}: {}; probing until it answers again", subject, (outcome.events.lastOrNull() as? org.rtcoord.BecameZombie)?.cause?.reason)
-                // Keep probing while unreachable, even when only the observer watched it.
-                if (timers.pollPeriod == null) timers.poll(registrations.push?.options?.heartbeat)
-                // Its manager may have died with it, and with every other component it hosted.
-                core.watcher.outages.componentSilent(node, timers.pollPeriod ?: 1.seconds)
-            }
-            outcome.recovered -> {
-                log.info("{}: answers again", subject)
-                // The component may have dropped an observer it could not reach, or restarted without it.
-                link.detach()
-                if (registrations.push != null) work.trySend(Work(WatchInput.Reconfigured))
+        for (change in outcome.changes) {
+            when (change) {
+                ComponentLiveness.Change.Finalized -> log.info("{}: finalized", subject)
+                ComponentLiveness.Change.Unreachable -> log.info("{}: {}; probing until it answers again", subject, outcome.events.filterIsInstance<BecameZombie>().firstOrNull()?.cause?.reason)
+                ComponentLiveness.Change.Recovered -> log.info("{}: answers again", subject)
+                is ComponentLiveness.Change.Lost -> Unit
             }
         }
+        val arranged = outcome.arranged
+        arranged.schedule?.let {
+            timers.poll(it.pollPeriod)
+            timers.watch(it.heartbeat)
+        }
+        arranged.askManagersEvery?.let { core.watcher.outages.componentSilent(node, it) }
         publish(outcome.events)
-    }
-
-    private suspend fun reconfigure() {
-        if (registrations.isEmpty()) {
-            timers.stop()
-            link.detach()
-            return
-        }
-        readAndPublish()
-        if (watch.answers == ComponentLiveness.State.FINALIZED) return
-        val push = registrations.push
-        // Asking for data hints (or no longer) takes an observer attached with the new interval.
-        if (link.observer != null && link.traffic != registrations.trafficInterval()) link.detach()
-        if (push != null && link.observer == null) {
-            attachment = if (watch.answers == ComponentLiveness.State.UNREACHABLE) {
-                Attachment.Failed("it does not answer")
-            } else {
-                fsm.forget()
-                val advertised = watch.last?.properties?.get("sdo.service.consumer.available_services")
-                link.attach(advertised, push.options.heartbeat, registrations.trafficInterval(), ::received).also {
-                    if (it is Attachment.Attached) {
-                        watch.attached(now())
-                        timers.heard()
-                    }
-                }
-            }
-            // A change between that read and the attachment sent its hint to nobody: read once more.
-            watch.observed = link.observer != null
-            if (watch.observed) readAndPublish()
-        }
-        val method = decideWatchMethod(registrations.map { it.options }, attachment)
-        timers.poll(method?.pollPeriod)
-        if (method != null) {
+        arranged.method?.let { method ->
             if (method != this.method) log.debug("{}: watched by {}", subject, method)
             core.watcher.reports.announce(this, method, registrations.toList())
         }
-        timers.watch(push?.options?.heartbeat)
+        perform(arranged.next)
     }
 
     /**
@@ -281,15 +260,6 @@ internal class ComponentMonitor(
             else -> work.trySend(Work(WatchInput.Hinted(hint, now())))
         }
     }
-
-    /** The watchdog's check, on its timer's thread: what the machine needs to judge the silence. */
-    private fun overdue(): WatchInput.Overdue = registrations.push?.options?.takeIf { link.observer != null }.let { options ->
-        WatchInput.Overdue(timers.heardAt, options?.heartbeat?.inWholeMilliseconds, options?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })
-    }
-
-    /** How often the component should give a sign of life: its heartbeat when observed, else its poll period. */
-    private fun expectedInterval(): Long? =
-        (registrations.push?.options?.heartbeat?.takeIf { link.observer != null } ?: timers.pollPeriod)?.inWholeMilliseconds
 
     /** Publishes [events] through the tree's model, with the states they leave the component in. */
     private fun publish(events: List<RtcEvent>) {

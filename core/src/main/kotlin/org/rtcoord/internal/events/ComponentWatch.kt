@@ -13,22 +13,25 @@ import org.rtcoord.UnreachableException
 import java.util.EnumMap
 
 /**
- * What the tree believes of one watched component and when it says so: a pure state machine with no
- * clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks, timers,
- * markers, watchdog checks; then [read], [statesRead] or [failed] with what the read it asked for found),
- * each with the time `now` in milliseconds of one monotonic clock, and carries out what it returns: the
- * read to make ([WatchStep]), the events to publish, the [Timer]s to arm (each for the time it fires at, on
- * the same clock), the marker to send ([WatchOutcome]).
+ * What the tree believes of one watched component, when it says so and how it watches it: a pure state
+ * machine with no clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks,
+ * timers, markers, watchdog checks, registrations changed; then [read], [statesRead] or [failed] with what
+ * the read it asked for found, [attached] and [detached] with how the observer's went), each with the time
+ * `now` in milliseconds of one monotonic clock, and carries out what it returns, deciding nothing itself:
+ * the read or the observer's attachment to make ([WatchStep]), the events to publish, the [Timer]s to arm
+ * (each for the time it fires at, on the same clock), the marker to send, the timers and the method of its
+ * watching ([WatchOutcome]). How it is watched is its [WatchArrangement]'s.
  *
- * Its lifecycle states, per execution context, are reconciled by [ContextStates]; whether it answers by
- * [ComponentLiveness]. The phases of the reconciliation, each context's and so the component's:
+ * Its lifecycle states, per execution context, are reconciled by [ContextStates], each context's by a
+ * [StateTracker] standing in a [ContextPhase]; whether it answers by [ComponentLiveness]. The phases, what
+ * takes a context out of each, and the timers they arm:
  *
  * | phase | hints and reads | leaves when | to |
  * |---|---|---|---|
- * | AGREED | the last read found where the hints lead | a lifecycle hint: its context's state is read | LEADING, HELD or AGREED |
- * | LEADING | hints lead to a state the last read did not find (OpenRTM-aist hints before the state shows) | [Timer.RECHECK] after 1, 2, 4... ms up to the grace period: read again | AGREED, HELD, DISAGREEING |
- * | DISAGREEING | a read found what no hint announced, or the hints lead elsewhere | [Timer.GRACE], the grace period after the first read that disagreed: a read decides | AGREED |
- * | HELD | a read confirmed a hinted deactivation, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in | the ERROR hint: a read confirms the abort; the deactivation has [Timer.SETTLED] and the marker sent after that read is back: it is published as the confirming read found it ([settle]), hints come since taken first; [Timer.HOLD_LIMIT]: a read decides | AGREED |
+ * | [Agreed][ContextPhase.Agreed] | the last read found where the hints lead; a lifecycle hint taken since asks for its context's state | a read finds where the hints lead: a hinted deactivation (ACTIVE to INACTIVE) is held, anything else published; a read finds elsewhere | Held or Agreed; Leading (hints taken) or Disagreeing (none) |
+ * | [Leading][ContextPhase.Leading]`(since)` | hints lead to a state the reads since `since` did not find (OpenRTM-aist hints before the state shows) | [Timer.RECHECK] after 1, 2, 4... ms up to the grace period: a read finds where they lead; [Timer.GRACE] at `since` + the grace period: a read decides | Held or Agreed; Agreed |
+ * | [Disagreeing][ContextPhase.Disagreeing]`(since)` | the read at `since` found what no hint announced | a hint, which may announce it; a read finds the state published; [Timer.GRACE]: a read decides | Leading; Agreed; Agreed |
+ * | [Held][ContextPhase.Held]`(since, flushed)` | a read confirmed a deactivation hinted at `since`, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in; `flushed` once the marker sent after that read is back | the ERROR hint: a read confirms the abort (or finds the state not shown yet); [Timer.SETTLED] at `since` + [Timing.settleMillis], flushed: it is published as the confirming read found it ([settle]), hints come since taken first; [Timer.HOLD_LIMIT] at `since` + the hold limit: a read decides | Agreed (or Leading); Agreed; Agreed |
  *
  * An abort's ERROR hint leaves the component before the read that overtook it answered, on the connection
  * its INACTIVE hint came by: when the read is taken, it is already in this host's socket, waiting for the
@@ -60,15 +63,15 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
     private val states = ContextStates(node, timing.holdLimitMillis, timing.settleMillis)
     private val liveness = ComponentLiveness(now)
+    private val arrangement = WatchArrangement()
     /** The time each pending timer was armed for. */
     private val deadlines = EnumMap<Timer, Long>(Timer::class.java)
     private var markers = 0L
     /** The wait of the latest [Timer.RECHECK] while hints lead the reads; 0 once they no longer do. */
     private var recheckDelay = 0L
 
-    /** The marker on its way while a deactivation may be held; null when none is. */
-    var marker: String? = null
-        private set
+    /** The marker on its way while a deactivation is held; null when none is. */
+    private var marker: String? = null
 
     /** The last read, with the states the machine confirmed; null before the first. */
     var last: ComponentSnapshot? = null
@@ -78,21 +81,15 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     var epoch: Long = 0
         private set
 
-    /** Whether an observer announces the component's changes, so that its hints are awaited. */
-    var observed: Boolean = false
-
-    /** Whether every registration wants states alone, so that a tick reads states only. */
-    var statesOnly: Boolean = false
-
-    /** Where the component stands: answering, silent, unreachable or finalized. */
-    val answers: ComponentLiveness.State get() = liveness.state
+    /** What the registrations ask for, as the monitor found them at the start of its batch. */
+    var needs: WatchNeeds by arrangement::needs
 
     /** The states as the published events tell them, by context handle. */
     val published: Map<Int, LifeCycle> get() = states.published
 
     /** Whether what the last read found is what a poll probe should expect: hints and reads agree, nothing held. */
     val settled: Boolean
-        get() = statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && !states.awaitingConfirmation && !states.holding
+        get() = needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && states.agreed
 
     /** Takes a batch of [inputs] at [now]; says what to read. */
     fun decide(inputs: List<WatchInput>, now: Long): WatchDecision {
@@ -104,7 +101,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val events = ArrayList<RtcEvent>()
         val every = last?.contexts?.map { it.handle }.orEmpty()
         fun tick() {
-            if (statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && every.isNotEmpty()) handles += every else readAll = true
+            if (needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && every.isNotEmpty()) handles += every else readAll = true
         }
         for (input in inputs) {
             when (input) {
@@ -116,15 +113,15 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                 is WatchInput.Fired -> if (deadlines.remove(input.timer, input.at)) {
                     when (input.timer) {
                         Timer.RECHECK -> handles += every
-                        Timer.GRACE -> if (states.awaitingConfirmation) readAll = true
-                        Timer.SETTLED -> settle = settle || (states.holding && marker == null)
-                        Timer.HOLD_LIMIT -> if (states.holding) readAll = true
+                        Timer.GRACE -> if (states.disagreedSince != null) readAll = true
+                        Timer.SETTLED -> settle = settle || (states.held.isNotEmpty() && marker == null)
+                        Timer.HOLD_LIMIT -> if (states.held.isNotEmpty()) readAll = true
                     }
                 }
                 is WatchInput.MarkerBack -> if (input.marker == marker) {
                     marker = null
                     states.flushed()
-                    settle = settle || states.settlesIn(now) == 0L
+                    settle = settle || states.held.any { now - it.since >= timing.settleMillis }
                 }
                 is WatchInput.Overdue -> readAll = overdue(input, now, events) || readAll
                 WatchInput.Reconfigured -> reconfigure = true
@@ -132,7 +129,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         }
         val step = when {
             liveness.state == ComponentLiveness.State.FINALIZED -> WatchStep.Idle
-            reconfigure -> WatchStep.Reconfigure
+            reconfigure -> arrangement.reconfigured()
             readAll -> WatchStep.ReadAll
             handles.isNotEmpty() -> if (last == null || liveness.state != ComponentLiveness.State.ANSWERING) WatchStep.ReadAll else WatchStep.ReadStates(handles)
             settle -> WatchStep.Settle
@@ -141,27 +138,30 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         return WatchDecision(step, events)
     }
 
-    /** The observer was attached at [now]: its silence counts from then. */
-    fun attached(now: Long) {
-        liveness.hinted(now)
+    /** [WatchStep.Attach] ended in [attachment] at [now]: an observer attached, its silence counts from then. */
+    fun attached(attachment: Attachment, now: Long): WatchOutcome {
+        if (attachment is Attachment.Attached) liveness.hinted(now)
+        return WatchOutcome(arranged = arrangement.attached(attachment, liveness.state))
     }
+
+    /** [WatchStep.Detach] was carried out: the observer, if any, is detached. */
+    fun detached(): WatchOutcome = WatchOutcome(arranged = arrangement.detached(liveness.state, last?.advertised))
 
     /** A whole read found [snapshot] at [now]; [late] are the hints that came meanwhile. */
     fun read(snapshot: ComponentSnapshot, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val events = ArrayList<RtcEvent>()
-        val recovered = liveness.answered(now).isNotEmpty()
-        if (recovered) {
-            events += Recovered(node)
-            // Its observer is attached anew: until then no hint announces what this read finds.
-            observed = false
-        }
+        val changes = liveness.answered(now)
+        val recovered = ComponentLiveness.Change.Recovered in changes
+        if (recovered) events += Recovered(node)
+        // Before reconciling: a component back may have dropped its observer, and until one is attached anew no hint announces what this read finds.
+        val arranged = arrangement.answered(recovered, liveness.state, snapshot.advertised)
         val previous = last
         val reconciled = reconcile(previous, snapshot, now, late)
         events += reconciled.events
         if (previous != null) events += differences(node, previous, snapshot)
         last = snapshot
         epoch++
-        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, recovered = recovered, marker = reconciled.marker)
+        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, changes, reconciled.marker, arranged)
     }
 
     /** A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile. */
@@ -184,19 +184,18 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         return reconcile(snapshot, snapshot, now, late)
     }
 
-    /** A read failed at [now] with [cause]; [beatMillis] is the interval it was expected to speak at, below which its silence is no news. */
-    fun failed(cause: RtcException, now: Long, beatMillis: Long?): WatchOutcome {
+    /** A read failed at [now] with [cause]; a silence shorter than the interval it should speak at is no news. */
+    fun failed(cause: RtcException, now: Long): WatchOutcome {
         epoch++
         val unreachable = cause is UnreachableException
+        val beatMillis = arrangement.expectedInterval?.inWholeMilliseconds
         val changes = liveness.failed(now, gone = unreachable && cause.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable, beatMillis)
-        return when {
-            ComponentLiveness.Change.Finalized in changes -> WatchOutcome(listOf(ComponentFinalized(node)), finalized = true)
-            changes.isEmpty() -> WatchOutcome()
-            else -> WatchOutcome(
-                changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, cause) },
-                unreachable = true,
-            )
+        val events = if (ComponentLiveness.Change.Finalized in changes) {
+            listOf(ComponentFinalized(node))
+        } else {
+            changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, cause) }
         }
+        return WatchOutcome(events, changes = changes, arranged = arrangement.failed(changes, liveness.state))
     }
 
     /**
@@ -219,9 +218,11 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     private fun overdue(input: WatchInput.Overdue, now: Long, events: MutableList<RtcEvent>): Boolean {
         liveness.hinted(input.heardAt)
         if (liveness.state != ComponentLiveness.State.ANSWERING) return liveness.state == ComponentLiveness.State.UNREACHABLE
-        liveness.checked(now, input.limitMillis)?.let { events += HeartbeatLost(node, it.silentMillis) }
+        val beating = arrangement.beating
+        liveness.checked(now, beating?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })?.let { events += HeartbeatLost(node, it.silentMillis) }
         // A process that died refuses the read at once: that is known a beat after its last, not at the limit.
-        return input.beatMillis != null && now - liveness.lastHeard >= input.beatMillis + input.beatMillis / OVERDUE_FRACTION
+        val beat = beating?.heartbeat?.inWholeMilliseconds ?: return false
+        return now - liveness.lastHeard >= beat + beat / OVERDUE_FRACTION
     }
 
     /** Reconciles each context's state in [snapshot] with the hints, [late] ones first; arms what the phases call for. */
@@ -238,7 +239,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                 untaken += hinted
             }
         }
-        val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = observed)
+        val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = arrangement.observed)
         val timers = ArrayList<Pair<Timer, Long>>()
         fun arm(timer: Timer, after: Long) {
             if (timer in deadlines) return
@@ -247,20 +248,22 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             timers += timer to at
         }
         // A late hint may lead past what the read found: read again now rather than after the grace period.
-        val readAgain = taken && states.awaitingConfirmation
+        val readAgain = taken && states.disagreedSince != null
         // One grace read at a time: disagreements that began later end later, and the read deciding the oldest arms the next.
         states.disagreedSince?.let { arm(Timer.GRACE, it + timing.graceMillis - now) }
         recheckIfHintsLead(::arm)
-        // A marker sent for a deactivation that is over, or never was, is no longer awaited.
-        if (!states.deactivationPending) marker = null
-        if (states.holding) {
-            states.heldUntil()?.let { arm(Timer.HOLD_LIMIT, it - now) }
-            states.settlesIn(now)?.let { arm(Timer.SETTLED, it) }
-        } else {
+        val held = states.held
+        if (held.isEmpty()) {
+            // A marker sent for a hold that is over is no longer awaited, and the hold's timers end with it.
+            marker = null
             deadlines.keys -= HOLD_TIMERS
+        } else {
+            val since = held.minOf { it.since }
+            arm(Timer.HOLD_LIMIT, since + timing.holdLimitMillis - now)
+            arm(Timer.SETTLED, since + timing.settleMillis - now)
         }
         // Each read that leaves a hold waiting for its hints sends a marker of its own: an older one tells nothing of what came since.
-        return WatchOutcome(events, timers, untaken, readAgain, marker = if (states.awaitingHints) newMarker() else null)
+        return WatchOutcome(events, timers, untaken, readAgain, marker = if (held.any { !it.flushed }) newMarker() else null)
     }
 
     /**
@@ -280,6 +283,9 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
     /** A new marker, to be sent through the observer now: it comes back once the hints waiting before it are taken. */
     private fun newMarker(): String = "$MARKER_PREFIX${++markers}".also { marker = it }
+
+    /** The services the component offers observers, as it lists them. */
+    private val ComponentSnapshot.advertised: String? get() = properties["sdo.service.consumer.available_services"]
 
     companion object {
         /** What every marker begins with: a hint that does is a marker, and nothing else. */

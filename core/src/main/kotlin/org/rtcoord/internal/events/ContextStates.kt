@@ -15,31 +15,19 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     /** The state in each context as the published events tell it, by handle. */
     val published: Map<Int, LifeCycle> get() = trackers.mapValues { it.value.confirmed }
 
-    /** Whether hints and reads disagree somewhere, and a read after the grace period must decide. */
-    val awaitingConfirmation: Boolean get() = trackers.values.any { it.awaitingConfirmation }
+    /** When the oldest disagreement between hints and reads began; null when they agree in every context. */
+    val disagreedSince: Long? get() = trackers.values.mapNotNull { (it.phase as? ContextPhase.Unconfirmed)?.since }.minOrNull()
 
-    /** When the oldest disagreement between hints and reads began; null when none is awaiting confirmation. */
-    val disagreedSince: Long? get() = trackers.values.mapNotNull { it.disagreedSince }.minOrNull()
+    /** Whether, somewhere, hints lead to a state the reads have not found yet. */
+    val hintsLead: Boolean get() = trackers.values.any { it.phase is ContextPhase.Leading }
 
-    /** Whether, somewhere, hints lead to a state the last read did not find yet. */
-    val hintsLead: Boolean get() = trackers.values.any { it.hintsLead }
+    /** The deactivations held, one per context that holds one. */
+    val held: List<ContextPhase.Held> get() = trackers.values.mapNotNull { it.phase as? ContextPhase.Held }
 
-    /** Whether a hinted deactivation is held somewhere, until it settled and [flushed], or the hold limit. */
-    val holding: Boolean get() = trackers.values.any { it.holding }
+    /** Whether hints and reads agree in every context, and nothing is held. */
+    val agreed: Boolean get() = trackers.values.all { it.phase == ContextPhase.Agreed }
 
-    /** How long after [now] the first held deactivation has settled (0 if it has); null when none is held. */
-    fun settlesIn(now: Long): Long? = trackers.values.mapNotNull { it.settlesIn(now) }.minOrNull()
-
-    /** Whether a possible deactivation was hinted and is not published yet. */
-    val deactivationPending: Boolean get() = trackers.values.any { it.deactivationPending }
-
-    /** When the first held deactivation is published whatever else happens; null when none is held. */
-    fun heldUntil(): Long? = trackers.values.mapNotNull { it.heldUntil() }.minOrNull()
-
-    /** Whether a deactivation is held somewhere and the hints that may turn it into an abort are not known to be in: it wants a marker. */
-    val awaitingHints: Boolean get() = trackers.values.any { it.awaitingHints }
-
-    /** The hints sent before the latest marker have all been taken: possible deactivations end once settled. */
+    /** The hints sent before the latest marker have all been taken: held deactivations end once settled. */
     fun flushed() {
         trackers.values.forEach(StateTracker::flushed)
     }

@@ -1,7 +1,6 @@
 package org.rtcoord.internal.events
 
 import org.rtcoord.EventOptions
-import org.rtcoord.WatchMethod
 
 /**
  * One registration's needs of a [ComponentMonitor]: [configuration] when it wants configuration events,
@@ -16,6 +15,9 @@ internal class MonitorRegistration(
     val statesOnly: Boolean,
     val traffic: Boolean = false,
 ) {
-    /** How the component is watched, as this registration was last told; owned by the monitor's coroutine. */
-    var told: WatchMethod? = null
+    /**
+     * Whether it was told how the component is watched: then it knows the monitor's [ComponentMonitor.method].
+     * Owned by the monitor's coroutine.
+     */
+    var told: Boolean = false
 }

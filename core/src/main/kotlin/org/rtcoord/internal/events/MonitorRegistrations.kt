@@ -3,8 +3,6 @@ package org.rtcoord.internal.events
 import org.rtcoord.RtcEvent
 import org.rtcoord.WatchMode
 import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.hours
 
 /** The registrations one [ComponentMonitor] serves, and what they ask of it together. */
 internal class MonitorRegistrations : Iterable<MonitorRegistration> {
@@ -32,21 +30,13 @@ internal class MonitorRegistrations : Iterable<MonitorRegistration> {
         all.forEach { if (it.traffic) it.sink.offer(event) }
     }
 
-    /** Whether there are some and every one wants states alone. */
-    val statesOnly: Boolean get() = all.isNotEmpty() && all.all { it.statesOnly }
-
     /** Whether any wants the configuration read with the component. */
     val configuration: Boolean get() = all.any { it.configuration }
 
-    /** The push registration with the shortest heartbeat, which the observer serves; null when none pushes. */
-    val push: MonitorRegistration? get() = all.filter { it.options.mode != WatchMode.POLL }.minByOrNull { it.options.heartbeat }
-
-    /** The shortest traffic interval a push registration that wants traffic asks for; an hour (next to none) when none does. */
-    fun trafficInterval(): Duration =
-        all.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval } ?: NO_TRAFFIC
-
-    private companion object {
-        /** The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default. */
-        val NO_TRAFFIC = 1.hours
+    /** What they ask of the watching now; the shortest traffic interval a push registration that wants traffic asks for is the observer's. */
+    fun needs(): WatchNeeds {
+        val now = all.toList()
+        val traffic = now.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval }
+        return WatchNeeds(now.map { it.options }, statesOnly = now.isNotEmpty() && now.all { it.statesOnly }, traffic = traffic ?: WatchNeeds.NO_TRAFFIC)
     }
 }

@@ -5,7 +5,8 @@ import kotlin.time.Duration
 
 /**
  * The timers of one component's monitor: its membership of the tree's poll schedule, and the watchdog
- * of its observer's heartbeats, which only posts work to the monitor ([check], a liveness check). A sign
+ * of its observer's heartbeats, which only posts work to the monitor ([check], a liveness check, with when
+ * the last sign of life came). A sign
  * of life (a heartbeat, a poll read that found nothing new) only records when it came ([heard]), on the
  * ORB's thread, and wakes the monitor only once a beat is overdue.
  */
@@ -14,7 +15,7 @@ internal class MonitorTimers(
     private val probe: StateProbe?,
     private val clock: MillisClock,
     private val tick: (done: () -> Unit) -> Unit,
-    private val check: () -> Unit,
+    private val check: (heardAt: Long) -> Unit,
 ) {
     /** Its place in the poll schedule: a tick is sent as a [probe] when it can go without the monitor. */
     private val member = object : PollSchedule.Member {
@@ -28,14 +29,12 @@ internal class MonitorTimers(
     }
 
     /** The period it is polled at, or null. */
-    var pollPeriod: Duration? = null
-        private set
+    private var pollPeriod: Duration? = null
 
     private var watchdog: Pair<Duration, () -> Unit>? = null
 
     /** When the last sign of life came, in the [clock]'s milliseconds. */
-    @Volatile var heardAt: Long = clock.now()
-        private set
+    @Volatile private var heardAt: Long = clock.now()
 
     /** A sign of life came just now. */
     fun heard() {
@@ -58,7 +57,7 @@ internal class MonitorTimers(
         watchdog?.let { (period, overdue) -> core.watcher.watchdogs.remove(period, overdue) }
         watchdog = heartbeat?.let {
             val beat = it.inWholeMilliseconds
-            val overdue = { if (clock.now() - heardAt >= beat) check() }
+            val overdue = { if (clock.now() - heardAt >= beat) check(heardAt) }
             core.watcher.watchdogs.add(it / CHECKS_PER_BEAT, overdue)
             it / CHECKS_PER_BEAT to overdue
         }

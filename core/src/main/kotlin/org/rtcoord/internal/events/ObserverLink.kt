@@ -26,10 +26,6 @@ internal class ObserverLink(
     var observer: ObserverHost.Observer? = null
         private set
 
-    /** The traffic interval the attached observer was asked for; null when none is attached. */
-    var traffic: Duration? = null
-        private set
-
     /**
      * Attaches an observer of a flavour listed in [advertised] (the component's
      * `sdo.service.consumer.available_services`; either flavour when it lists none) that passes its hints
@@ -71,7 +67,6 @@ internal class ObserverLink(
             }
             if (accepted) {
                 observer = candidate
-                this.traffic = traffic
                 return Attachment.Attached(flavour)
             }
             candidate.close()
@@ -83,7 +78,6 @@ internal class ObserverLink(
     suspend fun detach() {
         val attached = observer ?: return
         observer = null
-        traffic = null
         try {
             val configuration = core.remote.call(subject, "get_configuration") { component.ref.get_configuration() }
             core.remote.call(subject, "remove_service_profile") { configuration.remove_service_profile(attached.profileId) }
@@ -106,6 +100,5 @@ internal class ObserverLink(
     fun drop() {
         observer?.close()
         observer = null
-        traffic = null
     }
 }

@@ -1,6 +1,10 @@
 package org.rtcoord.internal.events
 
 import org.rtcoord.LifeCycle
+import org.rtcoord.internal.events.ContextPhase.Agreed
+import org.rtcoord.internal.events.ContextPhase.Disagreeing
+import org.rtcoord.internal.events.ContextPhase.Held
+import org.rtcoord.internal.events.ContextPhase.Leading
 
 /**
  * The lifecycle of one component in one execution context, reconciled from two sources: the states
@@ -18,58 +22,41 @@ import org.rtcoord.LifeCycle
  * overtook the ERROR hint finds INACTIVE too. The ERROR hint arriving meanwhile turns the pair into the
  * abort it was. The ERROR hint was sent before the read answered, so it is in this host's socket when
  * the read's answer is; the marker is sent once the ORB has taken it, and comes back after it.
+ *
+ * Where it stands is its [phase]: see [ContextPhase], and the table in [ComponentWatch]'s KDoc.
  */
 internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Long = 0, private val settleMillis: Long = 0) {
+    /** A hinted state, and when its hint came: a held deactivation counts from its INACTIVE hint's arrival. */
+    private class Hinted(val state: LifeCycle, val at: Long)
+
     /** The last published state. */
     var confirmed: LifeCycle = initial
         private set
 
-    private val hinted = ArrayList<LifeCycle>()
+    /** Where the hints lead from [confirmed], in order. */
+    private val hinted = ArrayList<Hinted>()
 
-    /** When the read that found hints and reads disagreeing was made; null while they agree. */
-    var disagreedSince: Long? = null
+    /** Where the reconciliation stands. */
+    var phase: ContextPhase = Agreed
         private set
 
-    /** When the INACTIVE hint of a possible deactivation came; null when none is pending. */
-    private var deactivationHintedAt: Long? = null
-    private var heldSince: Long? = null
-    private var flushed = false
-
-    /** Whether hints and reads disagree, and a later read must decide. */
-    val awaitingConfirmation: Boolean get() = disagreedSince != null
-
-    /** Whether hints lead to a state the last read did not find yet. */
-    val hintsLead: Boolean get() = hinted.isNotEmpty() && disagreedSince != null
-
-    /** Whether a possible deactivation was hinted and is not published yet. */
-    val deactivationPending: Boolean get() = deactivationHintedAt != null
-
-    /** Whether a hinted deactivation is held, until it settled and [flushed], or the hold limit. */
-    val holding: Boolean get() = heldSince != null
-
-    /** How long after [now] the held deactivation has settled (0 if it has); null when none is held. */
-    fun settlesIn(now: Long): Long? = heldSince?.let { (it + settleMillis - now).coerceAtLeast(0) }
-
-    /** When the held deactivation is published whatever else happens; null when none is held. */
-    fun heldUntil(): Long? = heldSince?.let { it + holdLimitMillis }
-
-    /** Every hint sent before the latest possible deactivation's marker has been taken: once settled, it need not wait. */
+    /** Every hint sent before the latest marker has been taken: a held deactivation, once settled, need not wait. */
     fun flushed() {
-        if (deactivationHintedAt != null) flushed = true
+        (phase as? Held)?.let { phase = it.copy(flushed = true) }
     }
-
-    /** Whether a deactivation is held and not [flushed] yet. */
-    val awaitingHints: Boolean get() = holding && !flushed
 
     /** Takes a state hinted by a hint that came at [at]; duplicates and impossible transitions are ignored (the next read decides). */
     fun hint(state: LifeCycle, at: Long) {
-        val last = hinted.lastOrNull() ?: confirmed
+        val last = hinted.lastOrNull()?.state ?: confirmed
         if (state == last || !possible(last, state)) return
-        if (state == LifeCycle.INACTIVE && last == LifeCycle.ACTIVE) {
-            deactivationHintedAt = at
-            flushed = false
+        hinted += Hinted(state, at)
+        phase = when (val current = phase) {
+            // What the read found unannounced may be what this hint announces: the hints lead now.
+            is Disagreeing -> Leading(current.since)
+            // Another deactivation: the marker that flushed the first says nothing of the hints sent after it.
+            is Held -> if (last == LifeCycle.ACTIVE && state == LifeCycle.INACTIVE) current.copy(flushed = false) else current
+            else -> current
         }
-        hinted += state
     }
 
     /**
@@ -78,23 +65,23 @@ internal class StateTracker(initial: LifeCycle, private val holdLimitMillis: Lon
      */
     fun reconcile(real: LifeCycle, now: Long, graceMillis: Long, hintsExpected: Boolean): List<Pair<LifeCycle, LifeCycle>> {
         if (real == LifeCycle.UNKNOWN) return emptyList()
-        val agreed = if (hinted.isEmpty()) real == confirmed || !hintsExpected else hinted.last() == real
+        val leads = hinted.lastOrNull()
+        val agreed = if (leads == null) real == confirmed || !hintsExpected else leads.state == real
         if (!agreed) {
-            val since = disagreedSince ?: now.also { disagreedSince = it }
+            val since = (phase as? ContextPhase.Unconfirmed)?.since ?: now
+            phase = if (leads == null) Disagreeing(since) else Leading(since)
             if (now - since < graceMillis) return emptyList()
         }
-        val hintedPath = hinted.lastOrNull() == real
-        val path = if (hintedPath) listOf(confirmed) + hinted else listOf(confirmed, real)
+        val hintedPath = leads?.state == real
+        val path = if (hintedPath) listOf(confirmed) + hinted.map { it.state } else listOf(confirmed, real)
         if (hintedPath && hintsExpected && path.takeLast(2) == listOf(LifeCycle.ACTIVE, LifeCycle.INACTIVE)) {
-            val since = heldSince ?: (deactivationHintedAt ?: now).also { heldSince = it }
-            val settled = flushed && now - since >= settleMillis
-            if (!settled && now - since < holdLimitMillis) return emptyList()
+            val held = phase as? Held ?: Held(leads.at, flushed = false)
+            phase = held
+            val settled = held.flushed && now - held.since >= settleMillis
+            if (!settled && now - held.since < holdLimitMillis) return emptyList()
         }
-        heldSince = null
-        deactivationHintedAt = null
-        flushed = false
+        phase = Agreed
         hinted.clear()
-        disagreedSince = null
         confirmed = real
         return collapseAborts(path).zipWithNext().filter { (from, to) -> from != to }
     }

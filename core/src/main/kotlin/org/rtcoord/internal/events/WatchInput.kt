@@ -25,9 +25,9 @@ internal sealed interface WatchInput {
     /** A marker came back through the observer. */
     class MarkerBack(val marker: String) : WatchInput
 
-    /** The heartbeat watchdog found a beat overdue: the last sign of life came at [heardAt]; [beatMillis] and [limitMillis] are the heartbeat and how long silence may last, null without an observer. */
-    class Overdue(val heardAt: Long, val beatMillis: Long?, val limitMillis: Long?) : WatchInput
+    /** The heartbeat watchdog found a beat overdue: the last sign of life came at [heardAt]. */
+    class Overdue(val heardAt: Long) : WatchInput
 
-    /** The registrations changed. */
+    /** The registrations changed: how the component is watched is arranged anew. */
     object Reconfigured : WatchInput
 }

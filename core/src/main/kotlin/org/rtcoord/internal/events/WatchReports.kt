@@ -38,21 +38,24 @@ internal class WatchReports(private val core: TreeCore) {
     }
 
     /**
-     * Records that [monitor] watches its component by [method], telling the reports if that is news and
-     * each of its [registrations] not yet told; called from the monitor's coroutine, which owns `told`.
+     * Records that [monitor] watches its component by [method], telling the reports if that is news, and
+     * each of its [registrations] if it is news to them: one told before knows the monitor's last method, one
+     * not told yet knows none. Called from the monitor's coroutine, which owns `told`.
      */
     fun announce(monitor: ComponentMonitor, method: WatchMethod, registrations: List<MonitorRegistration>) {
-        synchronized(sinks) {
-            val old = monitor.method
-            if (old != method) {
-                monitor.method = method
-                core.model.publish(listOf(WatchMethodChanged(monitor.node, old, method))) { event -> sinks.forEach { it.offer(event) } }
+        val old = synchronized(sinks) {
+            monitor.method.also { previous ->
+                if (previous != method) {
+                    monitor.method = method
+                    core.model.publish(listOf(WatchMethodChanged(monitor.node, previous, method))) { event -> sinks.forEach { it.offer(event) } }
+                }
             }
         }
         for (registration in registrations) {
-            if (registration.told == method) continue
-            core.model.publish(listOf(WatchMethodChanged(monitor.node, registration.told, method))) { registration.sink.offer(it) }
-            registration.told = method
+            val known = if (registration.told) old else null
+            if (known == method) continue
+            core.model.publish(listOf(WatchMethodChanged(monitor.node, known, method))) { registration.sink.offer(it) }
+            registration.told = true
         }
     }
 

@@ -13,16 +13,25 @@ import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
+import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
 import org.rtcoord.LifeCycle.ACTIVE
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.LifeCycle.INACTIVE
 import org.rtcoord.LocalisationSystem
+import org.rtcoord.ObserverFlavour
 import org.rtcoord.RtcEvent
 import org.rtcoord.StateChanged
 import org.rtcoord.UnreachableException
+import org.rtcoord.WatchMethod
+import org.rtcoord.WatchMode
+import org.rtcoord.internal.events.ComponentLiveness.Change.Finalized
+import org.rtcoord.internal.events.ComponentLiveness.Change.Lost
+import org.rtcoord.internal.events.ComponentLiveness.Change.Recovered
+import org.rtcoord.internal.events.ComponentLiveness.Change.Unreachable
 import org.rtcoord.internal.events.ComponentWatch.Timer
+import kotlin.time.Duration.Companion.seconds
 
 /**
  * The component monitor's machine, step by step on a clock the test turns (milliseconds): the timing
@@ -48,11 +57,20 @@ class ComponentWatchTest {
 
     private fun stateEvents(events: List<RtcEvent>) = events.filterIsInstance<StateChanged>()
 
-    /** A machine that read the component [state] at 0 ms, observed (hints expected), watched for states. */
+    /** Pushed, with a heartbeat every second and three beats missed at most. */
+    private val pushed = EventOptions(WatchMode.PUSH, heartbeat = 1.seconds, missedBeats = 3)
+
+    private fun asking(options: EventOptions, statesOnly: Boolean = true) = WatchNeeds(listOf(options), statesOnly, WatchNeeds.NO_TRAFFIC)
+
+    /** A machine that read the component [state] at 0 ms, observed (hints expected) or polled, watched for states. */
     private fun watching(state: LifeCycle, observed: Boolean = true): ComponentWatch = ComponentWatch(node, 0).apply {
-        this.observed = observed
-        statesOnly = true
+        needs = asking(if (observed) pushed else EventOptions(WatchMode.POLL))
+        decide(listOf(WatchInput.Reconfigured), 0)
         read(found(state), 0, emptyList())
+        if (observed) {
+            attached(Attachment.Attached(ObserverFlavour.OPENRTM), 0)
+            read(found(state), 0, emptyList())
+        }
     }
 
     @Test
@@ -259,14 +277,14 @@ class ComponentWatchTest {
         assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(stale), 200).step)
         val current = WatchInput.Probed(mapOf(0 to ACTIVE), watch.epoch, 8)
         assertEquals(mapOf(0 to ACTIVE), (watch.decide(listOf(current), 300).step as WatchStep.TakeStates).states)
-        watch.statesOnly = false
+        watch.needs = asking(pushed, statesOnly = false)
         assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Ticked), 400).step)
     }
 
     @Test
     fun `a beat overdue by a tenth is probed by a read, and silence past the limit is lost once`() {
         val watch = watching(ACTIVE)
-        fun overdue(now: Long) = watch.decide(listOf(WatchInput.Overdue(heardAt = 0, beatMillis = 1000, limitMillis = 3000)), now)
+        fun overdue(now: Long) = watch.decide(listOf(WatchInput.Overdue(heardAt = 0)), now)
         assertEquals(WatchStep.Idle, overdue(1099).step, "a heartbeat a little late is no news")
         assertEquals(WatchStep.ReadAll, overdue(1100).step)
         // It answers: the observer alone is quiet. Reads are no heartbeats.
@@ -274,31 +292,32 @@ class ComponentWatchTest {
         val lost = overdue(3200)
         assertEquals(listOf(HeartbeatLost(node, 3200)), lost.events)
         assertEquals(WatchStep.ReadAll, lost.step)
-        assertTrue(watch.read(found(ACTIVE), 3201, emptyList()).recovered, "answering again: its observer is attached anew")
+        assertEquals(listOf(Recovered), watch.read(found(ACTIVE), 3201, emptyList()).changes, "answering again: its observer is attached anew")
     }
 
     @Test
     fun `a refused call tells the silence only when a beat was missed, never a silence of a millisecond`() {
         val refused = UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT("connection refused"))
         val killed = watching(ACTIVE)
-        killed.decide(listOf(WatchInput.Overdue(heardAt = 0, beatMillis = 1000, limitMillis = 3000)), 1100)
-        val outcome = killed.failed(refused, 1101, beatMillis = 1000)
+        killed.decide(listOf(WatchInput.Overdue(heardAt = 0)), 1100)
+        val outcome = killed.failed(refused, 1101)
         assertEquals(listOf(HeartbeatLost(node, 1101), BecameZombie(node, refused)), outcome.events)
-        assertTrue(outcome.unreachable)
+        assertEquals(listOf(Lost(1101), Unreachable), outcome.changes)
 
         val suspected = watching(ACTIVE)
         suspected.decide(listOf(lifecycle("ACTIVE:0", 500)), 500)
-        assertEquals(listOf(BecameZombie(node, refused)), suspected.failed(refused, 501, beatMillis = 1000).events)
-        assertEquals(emptyList<RtcEvent>(), suspected.failed(refused, 700, beatMillis = 1000).events, "probes that fail are no news")
+        assertEquals(listOf(BecameZombie(node, refused)), suspected.failed(refused, 501).events)
+        assertEquals(emptyList<RtcEvent>(), suspected.failed(refused, 700).events, "probes that fail are no news")
         assertEquals(WatchStep.ReadAll, suspected.decide(listOf(lifecycle("ACTIVE:0", 800)), 800).step, "a hint does not bring it back: a whole read does")
     }
 
     @Test
     fun `the read that brings it back publishes what it finds at once, as no hint announced it`() {
         val watch = watching(ACTIVE)
-        watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT()), 100, beatMillis = 1000)
+        watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT()), 100)
         val back = watch.read(found(INACTIVE), 200, emptyList())
-        assertTrue(back.recovered)
+        assertEquals(listOf(Recovered), back.changes)
+        assertEquals(WatchStep.Detach, back.arranged.next, "a component back may have dropped its observer: it is attached anew")
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(back.events))
     }
 
@@ -306,9 +325,24 @@ class ComponentWatchTest {
     fun `a component that announced FINALIZE and then cannot be reached is finalized`() {
         val watch = watching(INACTIVE)
         assertEquals(WatchStep.ReadAll, watch.decide(listOf(lifecycle("FINALIZE:0", 10)), 10).step)
-        val outcome = watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.COMM_FAILURE()), 11, beatMillis = 1000)
+        val outcome = watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.COMM_FAILURE()), 11)
         assertEquals(listOf(ComponentFinalized(node)), outcome.events)
-        assertTrue(outcome.finalized)
+        assertEquals(listOf(Finalized), outcome.changes)
+        assertEquals(Arranged(WatchStep.Drop, WatchSchedule.OFF), outcome.arranged)
         assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Ticked), 12).step, "nothing is read once it is gone")
+    }
+
+    @Test
+    fun `when the registrations change it reads, attaches an observer, reads again, and then says how it is watched`() {
+        val watch = ComponentWatch(node, 0)
+        watch.needs = asking(pushed)
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Ticked, WatchInput.Reconfigured), 0).step)
+        val attach = watch.read(found(INACTIVE), 1, emptyList()).arranged.next as WatchStep.Attach
+        assertEquals(base.properties["sdo.service.consumer.available_services"], attach.advertised)
+        assertEquals(WatchStep.ReadAll, watch.attached(Attachment.Attached(ObserverFlavour.OPENRTM), 2).arranged.next)
+        val settled = watch.read(found(INACTIVE), 3, emptyList())
+        assertEquals(WatchMethod.Pushed(ObserverFlavour.OPENRTM, 1.seconds, null), settled.arranged.method)
+        assertEquals(WatchSchedule(null, 1.seconds), settled.arranged.schedule)
+        assertEquals(WatchStep.Idle, settled.arranged.next)
     }
 }
