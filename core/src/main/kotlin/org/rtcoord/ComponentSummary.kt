@@ -3,10 +3,9 @@ package org.rtcoord
 import org.rtcoord.internal.ValueFields
 
 /**
- * What a listing shows of a component (`rtls -l`): its state in each of its execution contexts and its
- * ports with their connectors. [ComponentNode.refreshSummary] reads it in fewer calls than a whole
- * [ComponentSnapshot] (nothing about the execution contexts themselves: two calls fewer for each);
- * every full read brings it up to date as well.
+ * What a listing shows of a component (`rtls -l`): its state in each of its execution contexts and its ports with their
+ * connectors. [ComponentNode.refreshSummary] reads it in fewer calls than a whole [ComponentSnapshot] (nothing about
+ * the execution contexts themselves: two calls fewer for each); every full read brings it up to date as well.
  */
 public class ComponentSummary(
     /** The component's state in each execution context, by its handle for the context (owned ones first). */
@@ -16,13 +15,14 @@ public class ComponentSummary(
     override fun fields(): ValueFields = ValueFields("states" to states, "ports" to ports)
 
     /**
-     * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over
-     * ACTIVE over INACTIVE, else CREATED; UNKNOWN only without any context.
+     * The component's state over all its execution contexts, as rtctree merges it for rtls: ERROR over ACTIVE over
+     * INACTIVE, else CREATED; UNKNOWN only without any context.
      */
     public val overallState: LifeCycle
         get() {
             if (states.isEmpty()) return LifeCycle.UNKNOWN
-            return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states.values } ?: LifeCycle.CREATED
+            return listOf(LifeCycle.ERROR, LifeCycle.ACTIVE, LifeCycle.INACTIVE).firstOrNull { it in states.values }
+                ?: LifeCycle.CREATED
         }
 }
 

@@ -3,8 +3,8 @@ package org.rtcoord
 import org.rtcoord.internal.ValueFields
 
 /**
- * Picks one of a component's execution contexts. Operations take the component's first owned context,
- * `Handle(0)`, unless given one.
+ * Picks one of a component's execution contexts. Operations take the component's first owned context, `Handle(0)`,
+ * unless given one.
  */
 public sealed class ContextSelector : ValueObject() {
     /** The context the component knows by [handle] (owned: 0.., participating: 1000..). */

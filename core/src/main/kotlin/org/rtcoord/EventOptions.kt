@@ -32,39 +32,39 @@ public enum class Overlap {
  * How a registration watches.
  *
  * @property mode push, poll, or push where possible.
- * @property pollPeriod how often polled components are re-read; a component watched at several periods
- *   is read at the shortest, once per tick however many registrations share it.
+ * @property pollPeriod how often polled components are re-read; a component watched at several periods is read at the
+ *   shortest, once per tick however many registrations share it.
  * @property overlap the callback's policy for events arriving while it runs.
  * @property heartbeat the ComponentObserver heartbeat interval asked for.
  * @property missedBeats how many heartbeats may be missed before the component is presumed dead.
- * @property trafficInterval the least time between two [PortTraffic] events of one port, as the observer
- *   asks the component (`port_profile.send_event.min_interval`, `receive_event.min_interval`).
+ * @property trafficInterval the least time between two [PortTraffic] events of one port, as the observer asks the
+ *   component (`port_profile.send_event.min_interval`, `receive_event.min_interval`).
  *
- * Java callers write `new EventOptions()` for the defaults, or use a [Builder]:
- * `new EventOptions.Builder().mode(WatchMode.POLL).build()`.
+ * Java callers write `new EventOptions()` for the defaults, or use a [Builder]: `new
+ * EventOptions.Builder().mode(WatchMode.POLL).build()`.
  */
 public class EventOptions(
     public val mode: WatchMode = WatchMode.AUTO,
-    @get:JvmSynthetic
-    public val pollPeriod: Duration = 1.seconds,
+    @get:JvmSynthetic public val pollPeriod: Duration = 1.seconds,
     public val overlap: Overlap = Overlap.QUEUE,
-    @get:JvmSynthetic
-    public val heartbeat: Duration = 1.seconds,
+    @get:JvmSynthetic public val heartbeat: Duration = 1.seconds,
     public val missedBeats: Int = 3,
-    @get:JvmSynthetic
-    public val trafficInterval: Duration = 1.seconds,
+    @get:JvmSynthetic public val trafficInterval: Duration = 1.seconds,
 ) {
     /** The defaults: push where possible, else polling every second; events queued; a one-second heartbeat. */
     public constructor() : this(WatchMode.AUTO)
 
     /** [pollPeriod] in milliseconds, for Java callers. */
-    public val pollPeriodMillis: Long get() = pollPeriod.inWholeMilliseconds
+    public val pollPeriodMillis: Long
+        get() = pollPeriod.inWholeMilliseconds
 
     /** [heartbeat] in milliseconds, for Java callers. */
-    public val heartbeatMillis: Long get() = heartbeat.inWholeMilliseconds
+    public val heartbeatMillis: Long
+        get() = heartbeat.inWholeMilliseconds
 
     /** [trafficInterval] in milliseconds, for Java callers. */
-    public val trafficIntervalMillis: Long get() = trafficInterval.inWholeMilliseconds
+    public val trafficIntervalMillis: Long
+        get() = trafficInterval.inWholeMilliseconds
 
     init {
         require(pollPeriod.isPositive()) { "pollPeriod must be positive, was $pollPeriod" }
@@ -73,7 +73,10 @@ public class EventOptions(
         require(!trafficInterval.isNegative()) { "trafficInterval must not be negative, was $trafficInterval" }
     }
 
-    /** A [Builder] holding these options, to change some and keep the rest: `options.newBuilder().overlap(Overlap.QUEUE).build()`. */
+    /**
+     * A [Builder] holding these options, to change some and keep the rest:
+     * `options.newBuilder().overlap(Overlap.QUEUE).build()`.
+     */
     public fun newBuilder(): Builder = Builder(this)
 
     /**
@@ -104,10 +107,13 @@ public class EventOptions(
         public fun missedBeats(beats: Int): Builder = apply { missedBeats = beats }
 
         /** Sets [EventOptions.trafficInterval]. */
-        public fun trafficInterval(interval: java.time.Duration): Builder = apply { trafficInterval = interval.toKotlinDuration() }
+        public fun trafficInterval(interval: java.time.Duration): Builder = apply {
+            trafficInterval = interval.toKotlinDuration()
+        }
 
         /** The options; fails as the constructor does on a bad value. */
-        public fun build(): EventOptions = EventOptions(mode, pollPeriod, overlap, heartbeat, missedBeats, trafficInterval)
+        public fun build(): EventOptions =
+            EventOptions(mode, pollPeriod, overlap, heartbeat, missedBeats, trafficInterval)
     }
 }
 

@@ -3,8 +3,8 @@ package org.rtcoord
 import org.rtcoord.internal.ContextCalls
 
 /**
- * One execution context of a component, as that component knows it (by [handle]):
- * [ComponentNode.executionContext] gives it. The class is sealed for the reason [Node] gives.
+ * One execution context of a component, as that component knows it (by [handle]): [ComponentNode.executionContext]
+ * gives it. The class is sealed for the reason [Node] gives.
  */
 public sealed class ExecutionContextView(
     /** The component through which the context was reached. */
@@ -14,8 +14,7 @@ public sealed class ExecutionContextView(
     private val calls: ContextCalls,
 ) {
     /** The rate in Hz. */
-    @JvmSynthetic
-    public suspend fun rate(): Double = calls.rate()
+    @JvmSynthetic public suspend fun rate(): Double = calls.rate()
 
     /** Sets the rate to [hz]. */
     @JvmSynthetic
@@ -25,8 +24,7 @@ public sealed class ExecutionContextView(
     }
 
     /** Whether the context is running. */
-    @JvmSynthetic
-    public suspend fun isRunning(): Boolean = calls.isRunning()
+    @JvmSynthetic public suspend fun isRunning(): Boolean = calls.isRunning()
 
     /** Makes [participant] take part in this context. */
     @JvmSynthetic
@@ -46,4 +44,5 @@ public sealed class ExecutionContextView(
 }
 
 /** The [ExecutionContextView]s a component gives. */
-internal class ExecutionContextViewImpl(component: ComponentNode, handle: Int, calls: ContextCalls) : ExecutionContextView(component, handle, calls)
+internal class ExecutionContextViewImpl(component: ComponentNode, handle: Int, calls: ContextCalls) :
+    ExecutionContextView(component, handle, calls)

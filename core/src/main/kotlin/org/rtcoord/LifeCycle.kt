@@ -2,7 +2,10 @@ package org.rtcoord
 
 /** A component's lifecycle state in one execution context. */
 public enum class LifeCycle {
-    CREATED, INACTIVE, ACTIVE, ERROR,
+    CREATED,
+    INACTIVE,
+    ACTIVE,
+    ERROR,
 
     /** The state could not be read. */
     UNKNOWN,

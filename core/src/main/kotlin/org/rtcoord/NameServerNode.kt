@@ -8,15 +8,20 @@ import org.rtcoord.internal.TreeCore
 
 /** A name server: its root naming context, at `corbaloc:iiop:host:port/NameService`. */
 public sealed class NameServerNode(path: RtcPath, core: TreeCore) : NamingDirectory(path, core) {
-    override val kind: NodeKind get() = NodeKind.NAME_SERVER
+    override val kind: NodeKind
+        get() = NodeKind.NAME_SERVER
 
     /** `host:port`. */
-    public val address: String get() = path.nameServer!!
+    public val address: String
+        get() = path.nameServer!!
 
     /** The root context's `corbaloc:` address. */
-    public val corbaloc: String get() = "corbaloc:iiop:$address/NameService"
+    public val corbaloc: String
+        get() = "corbaloc:iiop:$address/NameService"
 
-    private val root: NamingContext by lazy { NamingContextHelper.unchecked_narrow(core.orb.orb.string_to_object(corbaloc)) }
+    private val root: NamingContext by lazy {
+        NamingContextHelper.unchecked_narrow(core.orb.orb.string_to_object(corbaloc))
+    }
 
     @get:JvmSynthetic override val fullName: Array<NameComponent> = emptyArray()
 
@@ -25,11 +30,13 @@ public sealed class NameServerNode(path: RtcPath, core: TreeCore) : NamingDirect
     @JvmSynthetic override suspend fun context(): NamingContext = root
 
     /** A listing that fails because something other than a name server answers says what answers. */
-    @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> = try {
-        super.readChildren(previous)
-    } catch (e: RtcException) {
-        throw NameServerProbe(core, path, address).explain(e)
-    }
+    @JvmSynthetic
+    override suspend fun readChildren(previous: List<Node>): List<Node> =
+        try {
+            super.readChildren(previous)
+        } catch (e: RtcException) {
+            throw NameServerProbe(core, path, address).explain(e)
+        }
 }
 
 /** The [NameServerNode]s the tree makes ([Node] says why that class is sealed). */

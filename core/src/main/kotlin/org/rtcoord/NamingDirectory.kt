@@ -35,13 +35,16 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
     }
 
     /** Whether [name] (`id.kind`) is bound in this context to [component], alive or not. */
-    @JvmSynthetic internal suspend fun binds(name: String, component: ComponentObject): Boolean =
+    @JvmSynthetic
+    internal suspend fun binds(name: String, component: ComponentObject): Boolean =
         calls().resolve(name)?._is_equivalent(component.ref) ?: false
 
-    @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> {
+    @JvmSynthetic
+    override suspend fun readChildren(previous: List<Node>): List<Node> {
         val calls = calls()
         val bindings = calls.bindings()
-        return coroutineScope { bindings.map { binding -> async { childFor(calls, binding, previous) } }.awaitAll() }.filterNotNull()
+        return coroutineScope { bindings.map { binding -> async { childFor(calls, binding, previous) } }.awaitAll() }
+            .filterNotNull()
     }
 
     /** The node for [binding], or null if it was unbound since the listing. */
@@ -56,9 +59,12 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
         return when (childPath.kind) {
             "rtc" -> {
                 val component = core.components.objectFor(DataFlowComponentHelper.unchecked_narrow(target))
-                (old as? ComponentNode)?.takeIf { it.component === component } ?: ComponentNodeImpl(childPath, core, component, this)
+                (old as? ComponentNode)?.takeIf { it.component === component }
+                    ?: ComponentNodeImpl(childPath, core, component, this)
             }
-            "mgr" -> (old as? ManagerNode)?.takeIf { it.ref._is_equivalent(target) } ?: ManagerNodeImpl(childPath, core, ManagerHelper.unchecked_narrow(target), this)
+            "mgr" ->
+                (old as? ManagerNode)?.takeIf { it.ref._is_equivalent(target) }
+                    ?: ManagerNodeImpl(childPath, core, ManagerHelper.unchecked_narrow(target), this)
             else -> UnknownNodeImpl(childPath, core, target)
         }
     }
@@ -71,17 +77,19 @@ public sealed class ContextNode(
     private val parent: NamingDirectory,
     binding: Array<NameComponent>,
 ) : NamingDirectory(path, core) {
-    override val kind: NodeKind get() = NodeKind.CONTEXT
+    override val kind: NodeKind
+        get() = NodeKind.CONTEXT
 
     @get:JvmSynthetic override val fullName: Array<NameComponent> = parent.fullName + binding
 
     @JvmSynthetic override fun root(): NamingContext = parent.root()
 
     /**
-     * Resolved on every use: a restarted name server may serve the context under a new reference. One
-     * call from the root with the whole name, not one per level.
+     * Resolved on every use: a restarted name server may serve the context under a new reference. One call from the
+     * root with the whole name, not one per level.
      */
-    @JvmSynthetic override suspend fun context(): NamingContext {
+    @JvmSynthetic
+    override suspend fun context(): NamingContext {
         return NamingCalls.contextAt(core, path, parent.root(), fullName)
     }
 }

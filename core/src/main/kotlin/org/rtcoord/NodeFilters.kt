@@ -7,12 +7,17 @@ public object NodeFilters {
 
     /** Nodes whose name matches the glob [pattern] (`*` any run of characters, `?` one character). */
     public fun name(pattern: String): suspend (Node) -> Boolean {
-        val regex = Regex(pattern.split('*').joinToString(".*") { part -> part.split('?').joinToString(".") { Regex.escape(it) } })
+        val regex =
+            Regex(
+                pattern.split('*').joinToString(".*") { part -> part.split('?').joinToString(".") { Regex.escape(it) } }
+            )
         return { regex.matches(it.name) }
     }
 
     /** Components in [state] in their default context. */
-    public fun state(state: LifeCycle): suspend (Node) -> Boolean = { it is ComponentNode && it.snapshot().state == state }
+    public fun state(state: LifeCycle): suspend (Node) -> Boolean = {
+        it is ComponentNode && it.snapshot().state == state
+    }
 
     /** Components with a port named [port], of data type [dataType] when given (full id or short name). */
     public fun hasPort(port: String, dataType: String? = null): suspend (Node) -> Boolean = { node ->
@@ -24,6 +29,7 @@ public object NodeFilters {
     public fun under(prefix: RtcPath): suspend (Node) -> Boolean = { it.path.startsWith(prefix) }
 
     /** Both predicates. */
-    public infix fun (suspend (Node) -> Boolean).and(other: suspend (Node) -> Boolean): suspend (Node) -> Boolean =
-        { this(it) && other(it) }
+    public infix fun (suspend (Node) -> Boolean).and(other: suspend (Node) -> Boolean): suspend (Node) -> Boolean = {
+        this(it) && other(it)
+    }
 }

@@ -4,7 +4,13 @@ package org.rtcoord
 internal class NameServerAddress(val normalised: String, val written: String)
 
 /** What [PathParser] reads of a path's text: the fields of an [RtcPath], which only that class makes. */
-internal class PathParts(val address: NameServerAddress?, val names: List<String>, val port: String?, val objectReference: String?, val isDirectory: Boolean) {
+internal class PathParts(
+    val address: NameServerAddress?,
+    val names: List<String>,
+    val port: String?,
+    val objectReference: String?,
+    val isDirectory: Boolean,
+) {
     companion object {
         val ROOT = PathParts(null, emptyList(), null, null, true)
     }
@@ -18,7 +24,9 @@ internal object PathParser {
     private val IIOP_VERSION = Regex("""^\d+\.\d+@""")
 
     fun parse(text: String, workingDirectory: RtcPath?): PathParts {
-        require(workingDirectory == null || (workingDirectory.objectReference == null && workingDirectory.port == null)) {
+        require(
+            workingDirectory == null || (workingDirectory.objectReference == null && workingDirectory.port == null)
+        ) {
             "working directory $workingDirectory is not a node of the tree"
         }
         if (text.isEmpty()) throw BadPathException(text, 0, "empty path")
@@ -34,16 +42,19 @@ internal object PathParser {
     }
 
     /**
-     * The name server at [address] (`host`, `host:port` or `corbaloc:iiop:host:port[/NameService]`) as the
-     * text of its path, `/host[:port]` as written.
+     * The name server at [address] (`host`, `host:port` or `corbaloc:iiop:host:port[/NameService]`) as the text of its
+     * path, `/host[:port]` as written.
      */
     fun nameServer(address: String): String {
-        val server = when {
-            address.startsWith(CORBALOC, ignoreCase = true) ->
-                parseCorbaloc(address, if ('/' in address) address else "$address/$NAME_SERVICE").takeIf { it.names.isEmpty() }?.address
-            '/' in address -> null
-            else -> address(address, 0, address)
-        }
+        val server =
+            when {
+                address.startsWith(CORBALOC, ignoreCase = true) ->
+                    parseCorbaloc(address, if ('/' in address) address else "$address/$NAME_SERVICE")
+                        .takeIf { it.names.isEmpty() }
+                        ?.address
+                '/' in address -> null
+                else -> address(address, 0, address)
+            }
         return "/" + (server ?: throw BadPathException(address, 0, "not a name server address")).written
     }
 
@@ -57,22 +68,24 @@ internal object PathParser {
     }
 
     fun checkName(subject: String, position: Int, name: String) {
-        val problem = when {
-            name.isEmpty() -> "empty name"
-            name == "." || name == ".." -> "'$name' is not a name"
-            '/' in name -> "'/' in a name"
-            ':' in name -> "':' in a name"
-            else -> return
-        }
+        val problem =
+            when {
+                name.isEmpty() -> "empty name"
+                name == "." || name == ".." -> "'$name' is not a name"
+                '/' in name -> "'/' in a name"
+                ':' in name -> "':' in a name"
+                else -> return
+            }
         throw BadPathException(subject, position, problem)
     }
 
     fun checkPort(subject: String, position: Int, port: String) {
-        val problem = when {
-            port.isEmpty() -> "empty port name"
-            '/' in port || ':' in port -> "bad port name '$port'"
-            else -> return
-        }
+        val problem =
+            when {
+                port.isEmpty() -> "empty port name"
+                '/' in port || ':' in port -> "bad port name '$port'"
+                else -> return
+            }
         throw BadPathException(subject, position, problem)
     }
 
@@ -89,27 +102,30 @@ internal object PathParser {
         val server = if (key == NAME_SERVICE) iiopAddress(subject, addresses) else null
         val continuation = corbaloc.substringAfter('#', "").takeIf { '#' in corbaloc }
         return when {
-            server != null && continuation != null -> walk(subject, PathParts(server, emptyList(), null, null, false), continuation, 1)
+            server != null && continuation != null ->
+                walk(subject, PathParts(server, emptyList(), null, null, false), continuation, 1)
             server != null -> PathParts(server, emptyList(), null, null, false)
-            continuation != null -> throw BadPathException(subject, 0, "'#' follows only a corbaloc:iiop:host:port/NameService")
+            continuation != null ->
+                throw BadPathException(subject, 0, "'#' follows only a corbaloc:iiop:host:port/NameService")
             else -> PathParts(null, emptyList(), null, reference, false)
         }
     }
 
     /** The one IIOP address of a corbaloc address list, or null for other protocols or several addresses. */
     private fun iiopAddress(subject: String, addresses: String): NameServerAddress? {
-        val protocol = when {
-            ',' in addresses -> return null
-            addresses.startsWith("iiop:", ignoreCase = true) -> "iiop:".length
-            addresses.startsWith(":") -> 1
-            else -> return null
-        }
+        val protocol =
+            when {
+                ',' in addresses -> return null
+                addresses.startsWith("iiop:", ignoreCase = true) -> "iiop:".length
+                addresses.startsWith(":") -> 1
+                else -> return null
+            }
         return address(subject, 0, addresses.substring(protocol).replaceFirst(IIOP_VERSION, ""))
     }
 
     /**
-     * Applies the `/`-separated segments of [body], numbered from [first] in messages, to [base]. The
-     * first segment below the root is a name server address.
+     * Applies the `/`-separated segments of [body], numbered from [first] in messages, to [base]. The first segment
+     * below the root is a name server address.
      */
     private fun walk(subject: String, base: PathParts, body: String, first: Int): PathParts {
         val directory = body.endsWith('/')
@@ -122,14 +138,16 @@ internal object PathParser {
             when {
                 segment.isEmpty() -> throw BadPathException(subject, position, "empty segment")
                 segment == "." -> Unit
-                segment == ".." -> when {
-                    names.isNotEmpty() -> names.removeAt(names.lastIndex)
-                    server != null -> server = null
-                    else -> throw BadPathException(subject, position, "'..' above the root")
-                }
+                segment == ".." ->
+                    when {
+                        names.isNotEmpty() -> names.removeAt(names.lastIndex)
+                        server != null -> server = null
+                        else -> throw BadPathException(subject, position, "'..' above the root")
+                    }
                 server == null -> server = address(subject, position, segment)
                 ':' !in segment -> names += segment.also { checkName(subject, position, it) }
-                i != segments.lastIndex -> throw BadPathException(subject, position, "port suffix only on the last segment")
+                i != segments.lastIndex ->
+                    throw BadPathException(subject, position, "port suffix only on the last segment")
                 directory -> throw BadPathException(subject, position, "port suffix on a directory")
                 else -> {
                     names += segment.substringBefore(':').also { checkName(subject, position, it) }

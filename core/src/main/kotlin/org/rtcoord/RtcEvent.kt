@@ -3,14 +3,14 @@ package org.rtcoord
 import org.rtcoord.internal.ValueFields
 
 /**
- * Something that happened in the live system, as the paper's external callbacks report it: the
- * [source] node, and for changes the old and new values plus what else identifies the change.
+ * Something that happened in the live system, as the paper's external callbacks report it: the [source] node, and for
+ * changes the old and new values plus what else identifies the change.
  *
- * Events of one source arrive in the order they happened. The same events come from a component's
- * ComponentObserver (push) or from re-reading it (poll); see [EventOptions.mode].
+ * Events of one source arrive in the order they happened. The same events come from a component's ComponentObserver
+ * (push) or from re-reading it (poll); see [EventOptions.mode].
  *
- * Events are plain classes, so that they can gain fields without breaking compiled callers (no
- * `componentN`, no `copy`); equal when they are of one type and their constructors took equal values.
+ * Events are plain classes, so that they can gain fields without breaking compiled callers (no `componentN`, no
+ * `copy`); equal when they are of one type and their constructors took equal values.
  */
 public sealed class RtcEvent : ValueObject() {
     /** The node the event is about. */
@@ -20,19 +20,25 @@ public sealed class RtcEvent : ValueObject() {
     public val noticedAt: Long = System.currentTimeMillis()
 
     /**
-     * Where the event stands in the tree's history: every event the tree publishes gets the next number,
-     * and a [SystemSnapshot] with [SystemSnapshot.sequence] N holds every event up to N. 0 for an event the
-     * tree made but has not published.
+     * Where the event stands in the tree's history: every event the tree publishes gets the next number, and a
+     * [SystemSnapshot] with [SystemSnapshot.sequence] N holds every event up to N. 0 for an event the tree made but has
+     * not published.
      */
     public var sequence: Long = 0L
         @JvmSynthetic internal set
 
     /** The source's path. */
-    public val path: RtcPath get() = source.path
+    public val path: RtcPath
+        get() = source.path
 }
 
 /** A component's lifecycle state in execution context [handle] went from [old] to [new]. */
-public class StateChanged(override val source: ComponentNode, public val handle: Int, public val old: LifeCycle, public val new: LifeCycle) : RtcEvent() {
+public class StateChanged(
+    override val source: ComponentNode,
+    public val handle: Int,
+    public val old: LifeCycle,
+    public val new: LifeCycle,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "old" to old, "new" to new)
 }
 
@@ -42,42 +48,66 @@ public class ComponentFinalized(override val source: ComponentNode) : RtcEvent()
 }
 
 /**
- * An FSM component's state machine entered state [new], as its FSM4RTC observer told it (StaticFSM's
- * `<state> POST_ONENTRY`); [old] is the state it entered before, null when none was told since the tree
- * began watching. A transition into a nested state enters each state on the way down, in order
- * (`Operational`, then `Idle`), with one event each; leaving a state is no event.
+ * An FSM component's state machine entered state [new], as its FSM4RTC observer told it (StaticFSM's `<state>
+ * POST_ONENTRY`); [old] is the state it entered before, null when none was told since the tree began watching. A
+ * transition into a nested state enters each state on the way down, in order (`Operational`, then `Idle`), with one
+ * event each; leaving a state is no event.
  */
-public class FsmStateChanged(override val source: ComponentNode, public val old: String?, public val new: String) : RtcEvent() {
+public class FsmStateChanged(override val source: ComponentNode, public val old: String?, public val new: String) :
+    RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "old" to old, "new" to new)
 }
 
 /** Port [port] of the component got connection [connector]. */
-public class PortConnected(override val source: ComponentNode, public val port: String, public val connector: ConnectorSnapshot) : RtcEvent() {
+public class PortConnected(
+    override val source: ComponentNode,
+    public val port: String,
+    public val connector: ConnectorSnapshot,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "port" to port, "connector" to connector)
 }
 
 /** Port [port] of the component lost connection [connector]. */
-public class PortDisconnected(override val source: ComponentNode, public val port: String, public val connector: ConnectorSnapshot) : RtcEvent() {
+public class PortDisconnected(
+    override val source: ComponentNode,
+    public val port: String,
+    public val connector: ConnectorSnapshot,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "port" to port, "connector" to connector)
 }
 
 /**
- * Port [port] of the component sent ([outgoing]) or received data: OpenRTM-aist's `SEND:` and `RECEIVE:`
- * observer hints, which a component sends at most once per [EventOptions.trafficInterval] per port.
- * Only a component's observer tells this (a read cannot), so polled components send none. Data hints are
- * many: only registrations that name this type (not a supertype such as [RtcEvent]) receive them.
+ * Port [port] of the component sent ([outgoing]) or received data: OpenRTM-aist's `SEND:` and `RECEIVE:` observer
+ * hints, which a component sends at most once per [EventOptions.trafficInterval] per port. Only a component's observer
+ * tells this (a read cannot), so polled components send none. Data hints are many: only registrations that name this
+ * type (not a supertype such as [RtcEvent]) receive them.
  */
-public class PortTraffic(override val source: ComponentNode, public val port: String, public val outgoing: Boolean) : RtcEvent() {
+public class PortTraffic(override val source: ComponentNode, public val port: String, public val outgoing: Boolean) :
+    RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "port" to port, "outgoing" to outgoing)
 }
 
 /** Parameter [name] of configuration set [set] changed from [old] to [new] (null: absent). */
-public class ParameterChanged(override val source: ComponentNode, public val set: String, public val name: String, public val old: String?, public val new: String?) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("source" to source, "set" to set, "name" to name, "old" to old, "new" to new)
+public class ParameterChanged(
+    override val source: ComponentNode,
+    public val set: String,
+    public val name: String,
+    public val old: String?,
+    public val new: String?,
+) : RtcEvent() {
+    override fun fields(): ValueFields =
+        ValueFields("source" to source, "set" to set, "name" to name, "old" to old, "new" to new)
 }
 
-/** The active configuration set changed from [old] to [new]; null is none active (after a set was written, added or removed). */
-public class ConfigurationSetActivated(override val source: ComponentNode, public val old: String?, public val new: String?) : RtcEvent() {
+/**
+ * The active configuration set changed from [old] to [new]; null is none active (after a set was written, added or
+ * removed).
+ */
+public class ConfigurationSetActivated(
+    override val source: ComponentNode,
+    public val old: String?,
+    public val new: String?,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "old" to old, "new" to new)
 }
 
@@ -92,30 +122,52 @@ public class ConfigurationSetRemoved(override val source: ComponentNode, public 
 }
 
 /** The rate of execution context [handle] changed from [old] to [new] Hz. */
-public class ContextRateChanged(override val source: ComponentNode, public val handle: Int, public val old: Double, public val new: Double) : RtcEvent() {
+public class ContextRateChanged(
+    override val source: ComponentNode,
+    public val handle: Int,
+    public val old: Double,
+    public val new: Double,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "old" to old, "new" to new)
 }
 
 /** Execution context [handle] started ([running] true) or stopped. */
-public class ContextRunningChanged(override val source: ComponentNode, public val handle: Int, @get:JvmName("isRunning") public val running: Boolean) : RtcEvent() {
+public class ContextRunningChanged(
+    override val source: ComponentNode,
+    public val handle: Int,
+    @get:JvmName("isRunning") public val running: Boolean,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "running" to running)
 }
 
 /** The component joined ([attached] true) or left execution context [handle]. */
-public class ContextAttachmentChanged(override val source: ComponentNode, public val handle: Int, @get:JvmName("isAttached") public val attached: Boolean) : RtcEvent() {
+public class ContextAttachmentChanged(
+    override val source: ComponentNode,
+    public val handle: Int,
+    @get:JvmName("isAttached") public val attached: Boolean,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "handle" to handle, "attached" to attached)
 }
 
 /** Manager [source] created ([created] true) or deleted component [instanceName]. */
-public class ManagerComponentChanged(override val source: ManagerNode, public val instanceName: String, public val created: Boolean) : RtcEvent() {
-    override fun fields(): ValueFields = ValueFields("source" to source, "instanceName" to instanceName, "created" to created)
+public class ManagerComponentChanged(
+    override val source: ManagerNode,
+    public val instanceName: String,
+    public val created: Boolean,
+) : RtcEvent() {
+    override fun fields(): ValueFields =
+        ValueFields("source" to source, "instanceName" to instanceName, "created" to created)
 }
 
 /**
- * A binding [child] appeared under [source]. For a component, [snapshot] is what the tree read of it when
- * it appeared: what happened to it between its creation and its discovery (its state, its connections).
+ * A binding [child] appeared under [source]. For a component, [snapshot] is what the tree read of it when it appeared:
+ * what happened to it between its creation and its discovery (its state, its connections).
  */
-public class NodeAppeared(override val source: DirectoryNode, public val child: Node, public val snapshot: ComponentSnapshot? = null) : RtcEvent() {
+public class NodeAppeared(
+    override val source: DirectoryNode,
+    public val child: Node,
+    public val snapshot: ComponentSnapshot? = null,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "child" to child, "snapshot" to snapshot)
 }
 
@@ -140,15 +192,23 @@ public class Recovered(override val source: ComponentNode) : RtcEvent() {
 }
 
 /** The tree watches the component by [new] from now on; [old] is null when it has just started watching it. */
-public class WatchMethodChanged(override val source: ComponentNode, public val old: WatchMethod?, public val new: WatchMethod) : RtcEvent() {
+public class WatchMethodChanged(
+    override val source: ComponentNode,
+    public val old: WatchMethod?,
+    public val new: WatchMethod,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "old" to old, "new" to new)
 }
 
 /**
- * Manager [source] stopped answering: its process died or hangs. [components] are those its last listing
- * showed; they went silent with it, and each reports its own [HeartbeatLost] and [BecameZombie].
+ * Manager [source] stopped answering: its process died or hangs. [components] are those its last listing showed; they
+ * went silent with it, and each reports its own [HeartbeatLost] and [BecameZombie].
  */
-public class ManagerDied(override val source: ManagerNode, public val components: List<ComponentNode>, public val cause: RtcException) : RtcEvent() {
+public class ManagerDied(
+    override val source: ManagerNode,
+    public val components: List<ComponentNode>,
+    public val cause: RtcException,
+) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "components" to components, "cause" to cause)
 }
 
@@ -158,8 +218,8 @@ public class ManagerReturned(override val source: ManagerNode) : RtcEvent() {
 }
 
 /**
- * Name server [source] stopped answering: [cause]. Until [NameServerReturned], nothing is known of what is
- * registered on it; the components themselves may still run.
+ * Name server [source] stopped answering: [cause]. Until [NameServerReturned], nothing is known of what is registered
+ * on it; the components themselves may still run.
  */
 public class NameServerLost(override val source: NameServerNode, public val cause: RtcException) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "cause" to cause)

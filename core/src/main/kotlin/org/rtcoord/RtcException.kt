@@ -1,9 +1,8 @@
 package org.rtcoord
 
 /**
- * Every failure the library reports: a one-line message naming the object ([subject], usually its
- * path) and the reason. Nothing is ignored: each `ReturnCode_t` other than `RTC_OK` and each CORBA or
- * SDO exception becomes one of these.
+ * Every failure the library reports: a one-line message naming the object ([subject], usually its path) and the reason.
+ * Nothing is ignored: each `ReturnCode_t` other than `RTC_OK` and each CORBA or SDO exception becomes one of these.
  */
 public sealed class RtcException(
     /** The object concerned: a path, an address or a name. */
@@ -13,11 +12,12 @@ public sealed class RtcException(
     cause: Throwable? = null,
 ) : Exception("$subject: $reason", cause) {
     /**
-     * Whether the object this failed on is taken for dead: unreachable or hung. A directory shows such
-     * a child as a [ZombieNode]; a tool reading one component can mark it dead the same way. Java: `isDead()`.
+     * Whether the object this failed on is taken for dead: unreachable or hung. A directory shows such a child as a
+     * [ZombieNode]; a tool reading one component can mark it dead the same way. Java: `isDead()`.
      */
     @get:JvmName("isDead")
-    public val meansDead: Boolean get() = this is UnreachableException || this is TimedOutException
+    public val meansDead: Boolean
+        get() = this is UnreachableException || this is TimedOutException
 }
 
 /** A path that does not follow the grammar; [position] is the index of the offending segment. */
@@ -59,17 +59,25 @@ public class OperationUnsupportedException(subject: String, public val operation
     RtcException(subject, "$operation is not supported")
 
 /**
- * The object answered with a failure code ([returnCode], e.g. `RTC_ERROR`, `OUT_OF_RESOURCES`) or an
- * SDO `InternalError`/`NotAvailable`, or the end state after the operation was not the expected one.
+ * The object answered with a failure code ([returnCode], e.g. `RTC_ERROR`, `OUT_OF_RESOURCES`) or an SDO
+ * `InternalError`/`NotAvailable`, or the end state after the operation was not the expected one.
  */
-public class OperationFailedException(subject: String, public val operation: String, public val returnCode: String, detail: String? = null) :
-    RtcException(subject, "$operation failed: $returnCode" + (detail?.let { " ($it)" } ?: ""))
+public class OperationFailedException(
+    subject: String,
+    public val operation: String,
+    public val returnCode: String,
+    detail: String? = null,
+) : RtcException(subject, "$operation failed: $returnCode" + (detail?.let { " ($it)" } ?: ""))
 
-private fun Throwable.corbaName(): String = when (this) {
-    // JacORB's words for a connection that could not be made (it makes one try: OrbRecipe).
-    is org.omg.CORBA.TRANSIENT -> message?.let { NO_CONNECTION.find(it) }?.let { "cannot connect to ${it.groupValues[1]}" } ?: "TRANSIENT" + (message?.takeIf { it.isNotBlank() }?.let { ": $it" } ?: "")
-    is org.omg.CORBA.SystemException -> javaClass.simpleName + (message?.takeIf { it.isNotBlank() }?.let { ": $it" } ?: "")
-    else -> toString()
-}
+private fun Throwable.corbaName(): String =
+    when (this) {
+        // JacORB's words for a connection that could not be made (it makes one try: OrbRecipe).
+        is org.omg.CORBA.TRANSIENT ->
+            message?.let { NO_CONNECTION.find(it) }?.let { "cannot connect to ${it.groupValues[1]}" }
+                ?: "TRANSIENT" + (message?.takeIf { it.isNotBlank() }?.let { ": $it" } ?: "")
+        is org.omg.CORBA.SystemException ->
+            javaClass.simpleName + (message?.takeIf { it.isNotBlank() }?.let { ": $it" } ?: "")
+        else -> toString()
+    }
 
 private val NO_CONNECTION = Regex("couldn't reconnect to (\\S+)")

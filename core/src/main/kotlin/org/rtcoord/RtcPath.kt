@@ -3,27 +3,28 @@
 package org.rtcoord
 
 /**
- * The absolute path of a node of the RTC tree, optionally with a port of its last object, or a direct
- * object reference: `RtcPath("/host/ctx/laser0.rtc:laser")`, `RtcPath("/")` for the root.
+ * The absolute path of a node of the RTC tree, optionally with a port of its last object, or a direct object reference:
+ * `RtcPath("/host/ctx/laser0.rtc:laser")`, `RtcPath("/")` for the root.
  *
- * The tree is the root `/`, then name servers, then naming contexts (nested), then the objects bound
- * in them: components (`name.rtc`), managers (`name.mgr`) and others; below a manager come its slave
- * managers and the components it manages. The text forms its constructor reads:
+ * The tree is the root `/`, then name servers, then naming contexts (nested), then the objects bound in them:
+ * components (`name.rtc`), managers (`name.mgr`) and others; below a manager come its slave managers and the components
+ * it manages. The text forms its constructor reads:
  *
- * - `/host[:port]/ctx/.../name.kind[:port]`: the first segment is the name server address (port 2809
- *   when absent), the others are names `id.kind` (the kind may be empty) made of any characters but
- *   `/` and `:`. Only the last segment may carry a `:port` suffix, naming a port of that object; the
- *   port name may contain dots. `/host:port` is the name server itself, `/` the root.
+ * - `/host[:port]/ctx/.../name.kind[:port]`: the first segment is the name server address (port 2809 when absent), the
+ *   others are names `id.kind` (the kind may be empty) made of any characters but `/` and `:`. Only the last segment
+ *   may carry a `:port` suffix, naming a port of that object; the port name may contain dots. `/host:port` is the name
+ *   server itself, `/` the root.
  * - A trailing slash marks a directory (see [isDirectory]) and names the same node.
  * - `.` and `..` are resolved; paths not starting with `/` are relative to a working directory.
  * - `corbaloc:iiop:host:port/NameService` is the name server `/host:port`, and
- *   `corbaloc:iiop:host:port/NameService#ctx/name.rtc:port` continues into it. Any other `corbaloc:`
- *   address is a direct object reference ([objectReference]) outside the tree.
+ *   `corbaloc:iiop:host:port/NameService#ctx/name.rtc:port` continues into it. Any other `corbaloc:` address is a
+ *   direct object reference ([objectReference]) outside the tree.
  *
- * Instances are immutable. Equality, hashing and ordering follow the canonical text ([toString]); how
- * the name server address was written and [isDirectory] do not take part.
+ * Instances are immutable. Equality, hashing and ordering follow the canonical text ([toString]); how the name server
+ * address was written and [isDirectory] do not take part.
  */
-public class RtcPath private constructor(
+public class RtcPath
+private constructor(
     @get:JvmSynthetic internal val address: NameServerAddress?,
     names: List<String>,
     port: String?,
@@ -31,17 +32,19 @@ public class RtcPath private constructor(
     isDirectory: Boolean,
 ) : Comparable<RtcPath> {
     /**
-     * Reads [text] in one of the forms described above; a relative one resolves against
-     * [workingDirectory], a node of the tree without a port.
+     * Reads [text] in one of the forms described above; a relative one resolves against [workingDirectory], a node of
+     * the tree without a port.
      *
-     * @throws BadPathException naming the offending segment when [text] does not follow the grammar
-     *   or is relative without a working directory.
+     * @throws BadPathException naming the offending segment when [text] does not follow the grammar or is relative
+     *   without a working directory.
      */
     @JvmOverloads
     @Throws(BadPathException::class)
     public constructor(text: String, workingDirectory: RtcPath? = null) : this(PathParser.parse(text, workingDirectory))
 
-    private constructor(parts: PathParts) : this(parts.address, parts.names, parts.port, parts.objectReference, parts.isDirectory)
+    private constructor(
+        parts: PathParts
+    ) : this(parts.address, parts.names, parts.port, parts.objectReference, parts.isDirectory)
 
     /** The normalised `host:port` of the name server; null for the root and for object references. */
     public val nameServer: String? = address?.normalised
@@ -59,47 +62,56 @@ public class RtcPath private constructor(
     public val isDirectory: Boolean = isDirectory
 
     /** Whether this is the root `/`. */
-    public val isRoot: Boolean get() = address == null && objectReference == null
-
-    /** Whether the path reaches a component through a manager (`.mgr`) or an object reference: an alias, not where it is bound in naming. */
-    @get:JvmSynthetic internal val isAlias: Boolean get() = objectReference != null || names.any { it.endsWith(".mgr") }
+    public val isRoot: Boolean
+        get() = address == null && objectReference == null
 
     /**
-     * The last name without its port; `/` for the root, the address as written for a name server
-     * (`localhost`, not `localhost:2809`) and the whole `corbaloc:` text for an object reference.
+     * Whether the path reaches a component through a manager (`.mgr`) or an object reference: an alias, not where it is
+     * bound in naming.
+     */
+    @get:JvmSynthetic
+    internal val isAlias: Boolean
+        get() = objectReference != null || names.any { it.endsWith(".mgr") }
+
+    /**
+     * The last name without its port; `/` for the root, the address as written for a name server (`localhost`, not
+     * `localhost:2809`) and the whole `corbaloc:` text for an object reference.
      */
     public val name: String
         get() = names.lastOrNull() ?: address?.written ?: objectReference ?: "/"
 
     /** The kind of the last name: what follows its last dot (`rtc` for `a.b.rtc`), else empty. */
-    public val kind: String get() = names.lastOrNull()?.substringAfterLast('.', "") ?: ""
+    public val kind: String
+        get() = names.lastOrNull()?.substringAfterLast('.', "") ?: ""
 
     /**
-     * The enclosing node: the component for a port path, the root for a name server; null for the
-     * root and for object references.
+     * The enclosing node: the component for a port path, the root for a name server; null for the root and for object
+     * references.
      */
     public val parent: RtcPath?
-        get() = when {
-            isRoot || objectReference != null -> null
-            port != null -> RtcPath(address, names, null, null, false)
-            names.isEmpty() -> RtcPath(PathParts.ROOT)
-            else -> RtcPath(address, names.dropLast(1), null, null, false)
-        }
+        get() =
+            when {
+                isRoot || objectReference != null -> null
+                port != null -> RtcPath(address, names, null, null, false)
+                names.isEmpty() -> RtcPath(PathParts.ROOT)
+                else -> RtcPath(address, names.dropLast(1), null, null, false)
+            }
 
-    private val text: String = objectReference ?: buildString {
-        append('/')
-        address?.let { append(it.normalised) }
-        names.forEach { append('/').append(it) }
-        port?.let { append(':').append(it) }
-    }
+    private val text: String =
+        objectReference
+            ?: buildString {
+                append('/')
+                address?.let { append(it.normalised) }
+                names.forEach { append('/').append(it) }
+                port?.let { append(':').append(it) }
+            }
 
     /**
-     * The node [name] below this one: a name server address (`host[:port]`) below the root, else a
-     * name of a context or object.
+     * The node [name] below this one: a name server address (`host[:port]`) below the root, else a name of a context or
+     * object.
      *
-     * @throws BadPathException if [name] is empty, `.` or `..`, contains `/`, or contains `:` below a
-     *   name server (below the root, `:` starts the port of the address); or if this is a port path or
-     *   an object reference.
+     * @throws BadPathException if [name] is empty, `.` or `..`, contains `/`, or contains `:` below a name server
+     *   (below the root, `:` starts the port of the address); or if this is a port path or an object reference.
      */
     @Throws(BadPathException::class)
     public fun child(name: String): RtcPath {
@@ -109,7 +121,8 @@ public class RtcPath private constructor(
             objectReference != null -> throw BadPathException(subject, position, "nothing below an object reference")
             port != null -> throw BadPathException(subject, position, "nothing below a port")
             address != null -> PathParser.checkName(subject, position, name)
-            '/' in name || name == "." || name == ".." -> throw BadPathException(subject, position, "not a name server address")
+            '/' in name || name == "." || name == ".." ->
+                throw BadPathException(subject, position, "not a name server address")
             else -> return RtcPath(PathParser.address(subject, position, name), emptyList(), null, null, false)
         }
         return RtcPath(address, names + name, null, null, false)
@@ -118,8 +131,8 @@ public class RtcPath private constructor(
     /**
      * This object's port [port], or with null the object itself.
      *
-     * @throws BadPathException if [port] is empty or contains `/` or `:`, or if this is not a named
-     *   object (the root, a name server, an object reference).
+     * @throws BadPathException if [port] is empty or contains `/` or `:`, or if this is not a named object (the root, a
+     *   name server, an object reference).
      */
     @Throws(BadPathException::class)
     public fun withPort(port: String?): RtcPath {
@@ -131,20 +144,23 @@ public class RtcPath private constructor(
     }
 
     /**
-     * Whether [prefix] is this path or one of its ancestors. A component's port paths start with the
-     * component path; every tree path starts with the root; an object reference only with itself.
+     * Whether [prefix] is this path or one of its ancestors. A component's port paths start with the component path;
+     * every tree path starts with the root; an object reference only with itself.
      */
-    public fun startsWith(prefix: RtcPath): Boolean = when {
-        objectReference != null || prefix.objectReference != null -> this == prefix
-        prefix.port != null -> this == prefix
-        prefix.isRoot -> true
-        else -> nameServer == prefix.nameServer && names.size >= prefix.names.size &&
-            names.subList(0, prefix.names.size) == prefix.names
-    }
+    public fun startsWith(prefix: RtcPath): Boolean =
+        when {
+            objectReference != null || prefix.objectReference != null -> this == prefix
+            prefix.port != null -> this == prefix
+            prefix.isRoot -> true
+            else ->
+                nameServer == prefix.nameServer &&
+                    names.size >= prefix.names.size &&
+                    names.subList(0, prefix.names.size) == prefix.names
+        }
 
     /**
-     * Tree order: the root, then each name server followed by everything below it (names compared
-     * one by one, a node before its ports); object references last, by their text.
+     * Tree order: the root, then each name server followed by everything below it (names compared one by one, a node
+     * before its ports); object references last, by their text.
      */
     override fun compareTo(other: RtcPath): Int {
         if (objectReference != null || other.objectReference != null) {
@@ -171,8 +187,8 @@ public class RtcPath private constructor(
 }
 
 /**
- * The path of the name server at [address]: `host`, `host:port` or `corbaloc:iiop:host:port[/NameService]`,
- * as [TreeConfig.nameServers] takes it. Java: `RtcPaths.nameServerPath(address)`.
+ * The path of the name server at [address]: `host`, `host:port` or `corbaloc:iiop:host:port[/NameService]`, as
+ * [TreeConfig.nameServers] takes it. Java: `RtcPaths.nameServerPath(address)`.
  *
  * @throws BadPathException naming [address] if it is none of these.
  */

@@ -10,28 +10,26 @@ import kotlin.time.toKotlinDuration
  * @property nameServers name servers added at creation: `host`, `host:port` or `corbaloc:` addresses.
  * @property callTimeout the deadline of every remote call unless the call gives its own.
  * @property concurrency how many remote calls discovery keeps in flight at once.
- * @property orb an `org.omg.CORBA.ORB` owned by the host application; the tree then neither configures nor
- *   destroys it. By default the tree creates and owns a JacORB ORB. Typed `Any` so that the API names no
- *   CORBA type: in the OSGi bundle, CORBA's packages are private, and the host's own would not be the same.
- *   On a host's ORB the tree cannot count what its sockets hold, so an abort whose component is reset at
- *   once may, under load, be published as a deactivation (its ERROR hint read too late).
- * @property listenAddress the one address the tree's own ORB listens on for callbacks (observers), and the
- *   only one its object references carry. By default (null) the address this host uses to reach the first
- *   name server the tree has when it makes its first remote call: loopback for a name server on this
- *   host or when there is none. Name servers added later must be able to reach that address (their
- *   components call observers back there); give an address explicitly when they cannot. `0.0.0.0`
- *   listens on every interface, and only when given.
- * @property listenerFailures where what event listeners and handlers throw goes, with the listener and the
- *   event ([ListenerFailure]); by default it is logged ([ListenerFailureHandler.Log]). Never dropped.
+ * @property orb an `org.omg.CORBA.ORB` owned by the host application; the tree then neither configures nor destroys it.
+ *   By default the tree creates and owns a JacORB ORB. Typed `Any` so that the API names no CORBA type: in the OSGi
+ *   bundle, CORBA's packages are private, and the host's own would not be the same. On a host's ORB the tree cannot
+ *   count what its sockets hold, so an abort whose component is reset at once may, under load, be published as a
+ *   deactivation (its ERROR hint read too late).
+ * @property listenAddress the one address the tree's own ORB listens on for callbacks (observers), and the only one its
+ *   object references carry. By default (null) the address this host uses to reach the first name server the tree has
+ *   when it makes its first remote call: loopback for a name server on this host or when there is none. Name servers
+ *   added later must be able to reach that address (their components call observers back there); give an address
+ *   explicitly when they cannot. `0.0.0.0` listens on every interface, and only when given.
+ * @property listenerFailures where what event listeners and handlers throw goes, with the listener and the event
+ *   ([ListenerFailure]); by default it is logged ([ListenerFailureHandler.Log]). Never dropped.
  *
- * Java callers write `new TreeConfig(List.of("127.0.0.1:2809"))`, or use a [Builder]:
- * `new TreeConfig.Builder().nameServer("127.0.0.1").build()`. [listenAddressProblem] checks a listen
- * address before it is given.
+ * Java callers write `new TreeConfig(List.of("127.0.0.1:2809"))`, or use a [Builder]: `new
+ * TreeConfig.Builder().nameServer("127.0.0.1").build()`. [listenAddressProblem] checks a listen address before it is
+ * given.
  */
 public class TreeConfig(
     public val nameServers: List<String> = emptyList(),
-    @get:JvmSynthetic
-    public val callTimeout: Duration = 3.seconds,
+    @get:JvmSynthetic public val callTimeout: Duration = 3.seconds,
     public val concurrency: Int = 32,
     public val orb: Any? = null,
     public val listenAddress: String? = null,
@@ -41,17 +39,22 @@ public class TreeConfig(
     public constructor(nameServers: List<String>) : this(nameServers, 3.seconds)
 
     /** [callTimeout] in milliseconds, for Java callers. */
-    public val callTimeoutMillis: Long get() = callTimeout.inWholeMilliseconds
+    public val callTimeoutMillis: Long
+        get() = callTimeout.inWholeMilliseconds
 
     init {
         require(callTimeout.isPositive()) { "callTimeout must be positive, was $callTimeout" }
         require(concurrency > 0) { "concurrency must be positive, was $concurrency" }
-        require(orb == null || orb is org.omg.CORBA.ORB) { "orb: a ${orb!!.javaClass.name} is not an org.omg.CORBA.ORB" }
+        require(orb == null || orb is org.omg.CORBA.ORB) {
+            "orb: a ${orb!!.javaClass.name} is not an org.omg.CORBA.ORB"
+        }
         val problem = listenAddress?.let(::listenAddressProblem)
         require(problem == null) { "listen address: $problem" }
     }
 
-    /** Builds a [TreeConfig] step by step, for Java callers: `new TreeConfig.Builder().nameServer("127.0.0.1").build()`. */
+    /**
+     * Builds a [TreeConfig] step by step, for Java callers: `new TreeConfig.Builder().nameServer("127.0.0.1").build()`.
+     */
     public class Builder {
         private val nameServers = mutableListOf<String>()
         private var callTimeout: Duration = 3.seconds
@@ -64,7 +67,9 @@ public class TreeConfig(
         public fun nameServer(address: String): Builder = apply { nameServers += address }
 
         /** Sets [TreeConfig.callTimeout]. */
-        public fun callTimeout(timeout: java.time.Duration): Builder = apply { callTimeout = timeout.toKotlinDuration() }
+        public fun callTimeout(timeout: java.time.Duration): Builder = apply {
+            callTimeout = timeout.toKotlinDuration()
+        }
 
         /** Sets [TreeConfig.concurrency]. */
         public fun concurrency(calls: Int): Builder = apply { concurrency = calls }
@@ -79,6 +84,7 @@ public class TreeConfig(
         public fun listenerFailures(handler: ListenerFailureHandler): Builder = apply { listenerFailures = handler }
 
         /** The configuration; fails as the constructor does on a bad value. */
-        public fun build(): TreeConfig = TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress, listenerFailures)
+        public fun build(): TreeConfig =
+            TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress, listenerFailures)
     }
 }

@@ -9,14 +9,16 @@ public sealed class UnknownNode(
     /** The reference bound at [path]. */
     public val reference: org.omg.CORBA.Object,
 ) : Node(path, core) {
-    override val kind: NodeKind get() = NodeKind.UNKNOWN
+    override val kind: NodeKind
+        get() = NodeKind.UNKNOWN
 
     /** The kind part of the binding name (`rtc`, `mgr`, anything else). */
-    public val bindingKind: String get() = path.kind
+    public val bindingKind: String
+        get() = path.kind
 
-    @JvmSynthetic
-    override suspend fun refresh(depth: Int): Unit = Unit
+    @JvmSynthetic override suspend fun refresh(depth: Int): Unit = Unit
 }
 
 /** The [UnknownNode]s the tree makes ([Node] says why that class is sealed). */
-internal class UnknownNodeImpl(path: RtcPath, core: TreeCore, reference: org.omg.CORBA.Object) : UnknownNode(path, core, reference)
+internal class UnknownNodeImpl(path: RtcPath, core: TreeCore, reference: org.omg.CORBA.Object) :
+    UnknownNode(path, core, reference)

@@ -1,26 +1,33 @@
 package org.rtcoord
 
-import org.rtcoord.internal.ValueFields
 import kotlin.time.Duration
+import org.rtcoord.internal.ValueFields
 
 /**
- * How the tree learns what a component does: pushed by its ComponentObserver, read again at a period,
- * or neither. Decided when the tree starts watching the component, and again when that changes (an
- * observer the component no longer takes falls back to polling); see [WatchMethodChanged].
+ * How the tree learns what a component does: pushed by its ComponentObserver, read again at a period, or neither.
+ * Decided when the tree starts watching the component, and again when that changes (an observer the component no longer
+ * takes falls back to polling); see [WatchMethodChanged].
  */
 public sealed class WatchMethod : ValueObject() {
     /**
-     * The component's observer of [flavour] pushes its changes, with a heartbeat every [heartbeat];
-     * [pollPeriod] is set when a registration asked for polling too.
+     * The component's observer of [flavour] pushes its changes, with a heartbeat every [heartbeat]; [pollPeriod] is set
+     * when a registration asked for polling too.
      */
-    public class Pushed(public val flavour: ObserverFlavour, @get:JvmSynthetic public val heartbeat: Duration, @get:JvmSynthetic public val pollPeriod: Duration?) : WatchMethod() {
-        override fun fields(): ValueFields = ValueFields("flavour" to flavour, "heartbeat" to heartbeat, "pollPeriod" to pollPeriod)
+    public class Pushed(
+        public val flavour: ObserverFlavour,
+        @get:JvmSynthetic public val heartbeat: Duration,
+        @get:JvmSynthetic public val pollPeriod: Duration?,
+    ) : WatchMethod() {
+        override fun fields(): ValueFields =
+            ValueFields("flavour" to flavour, "heartbeat" to heartbeat, "pollPeriod" to pollPeriod)
 
         /** [heartbeat] in milliseconds, for Java callers. */
-        public val heartbeatMillis: Long get() = heartbeat.inWholeMilliseconds
+        public val heartbeatMillis: Long
+            get() = heartbeat.inWholeMilliseconds
 
         /** [pollPeriod] in milliseconds (null when not polled), for Java callers. */
-        public val pollPeriodMillis: Long? get() = pollPeriod?.inWholeMilliseconds
+        public val pollPeriodMillis: Long?
+            get() = pollPeriod?.inWholeMilliseconds
     }
 
     /** The component is read again every [period], because [reason]. */
@@ -28,7 +35,8 @@ public sealed class WatchMethod : ValueObject() {
         override fun fields(): ValueFields = ValueFields("period" to period, "reason" to reason)
 
         /** [period] in milliseconds, for Java callers. */
-        public val periodMillis: Long get() = period.inWholeMilliseconds
+        public val periodMillis: Long
+            get() = period.inWholeMilliseconds
     }
 
     /** Nothing tells the tree of changes: only pushed events were asked for, and [reason]. */

@@ -1,18 +1,19 @@
 package org.rtcoord
 
-import org.junit.jupiter.api.Assertions.assertEquals
-import org.junit.jupiter.api.Assertions.assertTrue
-import org.junit.jupiter.api.Test
 import java.io.File
 import java.util.jar.JarFile
 import java.util.jar.Manifest
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
 
 /** The core and idl jars are OSGi bundles exporting only their public packages. */
 class BundleManifestTest {
     /** The manifest of the jar or class directory [type] was loaded from. */
     private fun manifestOf(type: Class<*>): Manifest {
         val location = File(type.protectionDomain.codeSource.location.toURI())
-        return if (location.isFile) JarFile(location).use { it.manifest } else File(location, "META-INF/MANIFEST.MF").inputStream().use(::Manifest)
+        return if (location.isFile) JarFile(location).use { it.manifest }
+        else File(location, "META-INF/MANIFEST.MF").inputStream().use(::Manifest)
     }
 
     /** Package names in Export-Package, whose clauses are split by commas outside quoted values. */
@@ -21,7 +22,10 @@ class BundleManifestTest {
         var quoted = false
         for (char in manifest.mainAttributes.getValue("Export-Package").orEmpty()) {
             when {
-                char == '"' -> { quoted = !quoted; clauses.last().append(char) }
+                char == '"' -> {
+                    quoted = !quoted
+                    clauses.last().append(char)
+                }
                 char == ',' && !quoted -> clauses += StringBuilder()
                 else -> clauses.last().append(char)
             }

@@ -1,5 +1,9 @@
 package org.rtcoord
 
+import java.util.Collections
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
@@ -9,20 +13,16 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.await
 import org.rtcoord.runtime.Scenarios
-import java.util.Collections
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /** What a handler may rely on: re-entrancy, isolation, overlap policies, order, liveness. */
 class CallbackContractTest {
     private val localisation = LocalisationSystem()
     private val tree = localisation.tree
     private val push = EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds)
+
     private fun path(name: String) = localisation.path(name)
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     private suspend fun relay(name: String): ComponentNode {
         localisation.system.runtime.create(Scenarios.relay, name).activate()
@@ -30,7 +30,11 @@ class CallbackContractTest {
     }
 
     /** Deactivates and activates [node] [times] times: 2 x [times] transitions, each awaited. */
-    private suspend fun toggle(node: ComponentNode, times: Int) = repeat(times) { node.deactivate(); node.activate() }
+    private suspend fun toggle(node: ComponentNode, times: Int) =
+        repeat(times) {
+            node.deactivate()
+            node.activate()
+        }
 
     @Test
     fun `a handler may operate on the component that triggered it`(): Unit = runBlocking {
@@ -68,7 +72,10 @@ class CallbackContractTest {
     fun `queue delivers everything in order to a slow handler`(): Unit = runBlocking {
         val node = relay("queued0")
         val seen = Collections.synchronizedList(mutableListOf<LifeCycle>())
-        tree.on<StateChanged>(node, StateChanged::class.java, push) { delay(30); seen += it.new }
+        tree.on<StateChanged>(node, StateChanged::class.java, push) {
+            delay(30)
+            seen += it.new
+        }
         toggle(node, 5)
         await("10 transitions") { seen.size >= 10 }
         assertEquals(List(5) { listOf(LifeCycle.INACTIVE, LifeCycle.ACTIVE) }.flatten(), seen.toList())
@@ -79,10 +86,18 @@ class CallbackContractTest {
         val node = relay("busy0")
         val skipped = Collections.synchronizedList(mutableListOf<StateChanged>())
         val latest = Collections.synchronizedList(mutableListOf<StateChanged>())
-        tree.on<StateChanged>(node, StateChanged::class.java, EventOptions(WatchMode.PUSH, overlap = Overlap.SKIP)) { skipped += it; delay(400) }
-        tree.on<StateChanged>(node, StateChanged::class.java, EventOptions(WatchMode.PUSH, overlap = Overlap.LATEST)) { latest += it; delay(400) }
+        tree.on<StateChanged>(node, StateChanged::class.java, EventOptions(WatchMode.PUSH, overlap = Overlap.SKIP)) {
+            skipped += it
+            delay(400)
+        }
+        tree.on<StateChanged>(node, StateChanged::class.java, EventOptions(WatchMode.PUSH, overlap = Overlap.LATEST)) {
+            latest += it
+            delay(400)
+        }
         toggle(node, 5)
-        await("the latest transition to reach the LATEST handler") { latest.lastOrNull()?.let { it.old == LifeCycle.INACTIVE && latest.size >= 2 } == true }
+        await("the latest transition to reach the LATEST handler") {
+            latest.lastOrNull()?.let { it.old == LifeCycle.INACTIVE && latest.size >= 2 } == true
+        }
         assertEquals(LifeCycle.INACTIVE, skipped.first().new, "the first transition is always delivered")
         assertTrue(skipped.size < 10, "SKIP delivered ${skipped.size} of 10")
         assertTrue(latest.size < 10, "LATEST delivered ${latest.size} of 10")
@@ -95,7 +110,10 @@ class CallbackContractTest {
         val afterFailure = EventRecorder()
         var first = true
         tree.on<StateChanged>(node, StateChanged::class.java, push) { event ->
-            if (first) { first = false; throw IllegalStateException("handler bug") }
+            if (first) {
+                first = false
+                throw IllegalStateException("handler bug")
+            }
             afterFailure.handler(event)
         }
         tree.on<StateChanged>(node, StateChanged::class.java, push) { delay(60_000) }
@@ -112,9 +130,15 @@ class CallbackContractTest {
 
     @Test
     fun `a killed component process is lost within missed beats times interval plus a second`(): Unit = runBlocking {
-        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:victim0").use { process ->
+        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:victim0").use { process
+            ->
             val recorder = EventRecorder()
-            tree.on(path("victim0.rtc"), RtcEvent::class.java, EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds, missedBeats = 3), recorder.handler)
+            tree.on(
+                path("victim0.rtc"),
+                RtcEvent::class.java,
+                EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds, missedBeats = 3),
+                recorder.handler,
+            )
             val killed = TimeSource.Monotonic.markNow()
             process.kill()
             recorder.next<HeartbeatLost>(timeout = 1600.milliseconds)
@@ -129,12 +153,20 @@ class CallbackContractTest {
         val naming = EventRecorder()
         val managed = EventRecorder()
         tree.on(localisation.host, RtcEvent::class.java, EventOptions(pollPeriod = 100.milliseconds), naming.handler)
-        tree.on(path("manager.mgr/manager_slave"), ManagerComponentChanged::class.java, EventOptions(pollPeriod = 100.milliseconds), managed.handler)
+        tree.on(
+            path("manager.mgr/manager_slave"),
+            ManagerComponentChanged::class.java,
+            EventOptions(pollPeriod = 100.milliseconds),
+            managed.handler,
+        )
 
         val master = tree.manager(path("manager.mgr"))
         master.create("odo_localise")
         assertEquals("odo_localise0.rtc", naming.next<NodeAppeared>().child.name)
-        assertEquals("odo_localise0", managed.next<ManagerComponentChanged>().also { assertTrue(it.created) }.instanceName)
+        assertEquals(
+            "odo_localise0",
+            managed.next<ManagerComponentChanged>().also { assertTrue(it.created) }.instanceName,
+        )
 
         master.delete("odo_localise0")
         assertEquals(path("odo_localise0.rtc"), naming.next<NodeVanished>().child.toString())

@@ -52,9 +52,16 @@ class ComponentLivenessTest {
     @Test
     fun `a failed call makes it unreachable once, with its silence told if it missed a beat and was not told already`() {
         val answering = ComponentLiveness(0)
-        assertEquals(listOf(Lost(1_200), Unreachable), answering.failed(1_200, gone = false, unreachable = true, beatMillis = 1_000))
+        assertEquals(
+            listOf(Lost(1_200), Unreachable),
+            answering.failed(1_200, gone = false, unreachable = true, beatMillis = 1_000),
+        )
         assertEquals(UNREACHABLE, answering.state)
-        assertEquals(emptyList<ComponentLiveness.Change>(), answering.failed(2_000, gone = false, unreachable = true, beatMillis = 1_000), "probes that fail are no news")
+        assertEquals(
+            emptyList<ComponentLiveness.Change>(),
+            answering.failed(2_000, gone = false, unreachable = true, beatMillis = 1_000),
+            "probes that fail are no news",
+        )
         assertNull(answering.checked(9_000, limit), "an unreachable component is probed, not watched for silence")
 
         val silent = ComponentLiveness(0)
@@ -63,8 +70,16 @@ class ComponentLivenessTest {
 
         val heard = ComponentLiveness(0)
         heard.hinted(5_000)
-        assertEquals(listOf(Unreachable), heard.failed(5_001, gone = false, unreachable = true, beatMillis = 1_000), "no silence of a millisecond")
-        assertEquals(listOf(Unreachable), ComponentLiveness(0).failed(60_000, gone = false, unreachable = true, beatMillis = null), "nothing was to be heard")
+        assertEquals(
+            listOf(Unreachable),
+            heard.failed(5_001, gone = false, unreachable = true, beatMillis = 1_000),
+            "no silence of a millisecond",
+        )
+        assertEquals(
+            listOf(Unreachable),
+            ComponentLiveness(0).failed(60_000, gone = false, unreachable = true, beatMillis = null),
+            "nothing was to be heard",
+        )
     }
 
     @Test
@@ -78,12 +93,20 @@ class ComponentLivenessTest {
 
     @Test
     fun `an object that no longer exists is finalized, from any state, and stays so`() {
-        for (before in listOf<(ComponentLiveness) -> Unit>({}, { it.checked(4_000, limit) }, { it.failed(4_000, gone = false, unreachable = true, beatMillis = null) })) {
+        for (before in
+            listOf<(ComponentLiveness) -> Unit>(
+                {},
+                { it.checked(4_000, limit) },
+                { it.failed(4_000, gone = false, unreachable = true, beatMillis = null) },
+            )) {
             val liveness = ComponentLiveness(0).also(before)
             assertEquals(listOf(Finalized), liveness.failed(5_000, gone = true, unreachable = true, beatMillis = null))
             assertEquals(FINALIZED, liveness.state)
             assertEquals(emptyList<ComponentLiveness.Change>(), liveness.answered(6_000))
-            assertEquals(emptyList<ComponentLiveness.Change>(), liveness.failed(7_000, gone = true, unreachable = true, beatMillis = null))
+            assertEquals(
+                emptyList<ComponentLiveness.Change>(),
+                liveness.failed(7_000, gone = true, unreachable = true, beatMillis = null),
+            )
         }
     }
 
@@ -91,7 +114,11 @@ class ComponentLivenessTest {
     fun `once it announced FINALIZE, being unreachable is its end, while answering too late is not`() {
         val liveness = ComponentLiveness(0)
         liveness.hinted(100, finalize = true)
-        assertEquals(listOf(Unreachable), liveness.failed(200, gone = false, unreachable = false, beatMillis = 1_000), "a timeout is not an end")
+        assertEquals(
+            listOf(Unreachable),
+            liveness.failed(200, gone = false, unreachable = false, beatMillis = 1_000),
+            "a timeout is not an end",
+        )
         assertEquals(listOf(Finalized), liveness.failed(300, gone = false, unreachable = true, beatMillis = 1_000))
     }
 }

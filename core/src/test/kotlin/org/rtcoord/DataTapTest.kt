@@ -1,5 +1,10 @@
 package org.rtcoord
 
+import java.time.Duration as JavaDuration
+import java.time.Instant
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.flow.take
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.runBlocking
@@ -12,24 +17,23 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.runPeer
-import java.time.Duration as JavaDuration
-import java.time.Instant
-import java.util.concurrent.LinkedBlockingQueue
-import java.util.concurrent.TimeUnit
-import kotlin.time.Duration.Companion.seconds
 
 /** Data taps and traffic events against the fixtures' real corba_cdr data flow. */
 class DataTapTest {
     private val localisation = LocalisationSystem()
-    private val tree get() = localisation.tree
+    private val tree
+        get() = localisation.tree
 
-    @AfterEach
-    fun close() = localisation.close()
+    @AfterEach fun close() = localisation.close()
 
     /** The connector ids `rtcat -ll component.rtc:port` shows for taps. */
     private fun tapConnectors(component: String, port: String): List<String> =
-        runPeer("rtcat", "-ll", localisation.path("$component.rtc") + ":$port").ok().output
-            .lines().map { it.trim() }.filter { it.startsWith("ID") && it.contains("rtcoord-tap-") }
+        runPeer("rtcat", "-ll", localisation.path("$component.rtc") + ":$port")
+            .ok()
+            .output
+            .lines()
+            .map { it.trim() }
+            .filter { it.startsWith("ID") && it.contains("rtcoord-tap-") }
 
     private fun samples(port: Port): Pair<Subscription, LinkedBlockingQueue<PortData>> = runBlocking {
         val queue = LinkedBlockingQueue<PortData>()
@@ -37,105 +41,142 @@ class DataTapTest {
     }
 
     @Test
-    fun `a tap decodes the laser's scans with their time stamps, and rtcat shows its connector only while it exists`(): Unit = runBlocking {
+    fun `a tap decodes the laser's scans with their time stamps, and rtcat shows its connector only while it exists`():
+        Unit = runBlocking {
         val port = tree.port(localisation.path("laser0.rtc:laser"))
         val before = Instant.now().minusSeconds(1)
         val (subscription, queue) = samples(port)
         val scan = queue.poll(5, TimeUnit.SECONDS) as TimedDoubleSeq
         assertEquals(8, scan.data.size)
         assertTrue(scan.data.all { it in 4.0..6.0 }, "the laser writes 4 + (tick + i) % 3: ${scan.data}")
-        assertTrue(scan.time.isAfter(before) && scan.time.isBefore(Instant.now().plusSeconds(1)), "stamped now: ${scan.time}")
+        assertTrue(
+            scan.time.isAfter(before) && scan.time.isBefore(Instant.now().plusSeconds(1)),
+            "stamped now: ${scan.time}",
+        )
 
         val shown = tapConnectors("laser0", "laser")
         assertEquals(1, shown.size, "rtcat -ll shows one tap connector: $shown")
         val listed = runPeer("rtcat", "-l", localisation.path("laser0.rtc:laser")).ok().output
-        assertEquals(2, Regex("Connected to").findAll(listed).count(), "rtcat -l lists the localiser's connection and the tap's:\n$listed")
-        assertTrue(port.connections().any { it.id.startsWith("rtcoord-tap-") && it.name.startsWith("rtcoord-tap-laser0.laser") })
-        assertTrue(localisation.system.component("laser_localise0").latest("laser") != null, "the real connection still flows")
+        assertEquals(
+            2,
+            Regex("Connected to").findAll(listed).count(),
+            "rtcat -l lists the localiser's connection and the tap's:\n$listed",
+        )
+        assertTrue(
+            port.connections().any {
+                it.id.startsWith("rtcoord-tap-") && it.name.startsWith("rtcoord-tap-laser0.laser")
+            }
+        )
+        assertTrue(
+            localisation.system.component("laser_localise0").latest("laser") != null,
+            "the real connection still flows",
+        )
 
         subscription.cancel()
-        await("the tap connector removed", 10.seconds) { port.runCatchingConnections().none { it.id.startsWith("rtcoord-tap-") } }
-        assertEquals(emptyList<String>(), tapConnectors("laser0", "laser"), "rtcat -ll no longer shows it")
-        assertEquals(1, Regex("Connected to").findAll(runPeer("rtcat", "-l", localisation.path("laser0.rtc:laser")).ok().output).count())
-    }
-
-    @Test
-    fun `listeners of one port share one tap, which goes with the last of them and with the tree`(): Unit = runBlocking {
-        val port = tree.port(localisation.path("odometry0.rtc:odo"))
-        val (first, firstQueue) = samples(port)
-        val (second, secondQueue) = samples(port)
-        assertTrue(firstQueue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
-        assertTrue(secondQueue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
-        assertEquals(1, port.connections().count { it.id.startsWith("rtcoord-tap-") }, "one tap for both listeners")
-
-        first.cancel()
-        secondQueue.clear()
-        assertTrue(secondQueue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq, "the other listener still receives")
-        assertEquals(1, port.connections().count { it.id.startsWith("rtcoord-tap-") })
-        second.cancel()
-        await("the tap removed with its last listener") { port.runCatchingConnections().none { it.id.startsWith("rtcoord-tap-") } }
-
-        val flowed = withTimeout(5.seconds) { port.data().take(3).toList() }
-        assertEquals(3, flowed.size)
-        await("the flow's tap removed once the flow ends") { port.runCatchingConnections().none { it.id.startsWith("rtcoord-tap-") } }
-
-        samples(port)
-        tree.close()
-        assertEquals(emptyList<String>(), tapConnectors("odometry0", "odo"), "closing the tree removed its tap")
-    }
-
-    @Test
-    fun `a restarted tree removes the tap connector its crashed predecessor left, and no live tree's`(): Unit = runBlocking {
-        val path = localisation.path("gyro0.rtc:gyro")
-        val crashed = RtcTree(TreeConfig(listOf(localisation.naming.address)))
-        try {
-            samples(crashed.port(path))
-            val (other, otherQueue) = samples(tree.port(path))
-            crashed.core.orb.orb.shutdown(false)
-            crashed.core.orb.orb.destroy()
-            assertEquals(2, tapConnectors("gyro0", "gyro").size, "the crashed tree's tap stays behind")
-
-            RtcTree(TreeConfig(listOf(localisation.naming.address))).use { restarted ->
-                val queue = LinkedBlockingQueue<PortData>()
-                restarted.port(path).tap { queue += it }
-                assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDouble)
-                assertEquals(2, tapConnectors("gyro0", "gyro").size, "the stale tap removed, the live one kept, the new one added")
-                otherQueue.clear()
-                assertTrue(otherQueue.poll(5, TimeUnit.SECONDS) is TimedDouble, "the live tree's tap still receives")
-            }
-            other.cancel()
-        } finally {
-            runCatching { crashed.close() }
+        await("the tap connector removed", 10.seconds) {
+            port.runCatchingConnections().none { it.id.startsWith("rtcoord-tap-") }
         }
+        assertEquals(emptyList<String>(), tapConnectors("laser0", "laser"), "rtcat -ll no longer shows it")
+        assertEquals(
+            1,
+            Regex("Connected to")
+                .findAll(runPeer("rtcat", "-l", localisation.path("laser0.rtc:laser")).ok().output)
+                .count(),
+        )
     }
+
+    @Test
+    fun `listeners of one port share one tap, which goes with the last of them and with the tree`(): Unit =
+        runBlocking {
+            val port = tree.port(localisation.path("odometry0.rtc:odo"))
+            val (first, firstQueue) = samples(port)
+            val (second, secondQueue) = samples(port)
+            assertTrue(firstQueue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
+            assertTrue(secondQueue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
+            assertEquals(1, port.connections().count { it.id.startsWith("rtcoord-tap-") }, "one tap for both listeners")
+
+            first.cancel()
+            secondQueue.clear()
+            assertTrue(secondQueue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq, "the other listener still receives")
+            assertEquals(1, port.connections().count { it.id.startsWith("rtcoord-tap-") })
+            second.cancel()
+            await("the tap removed with its last listener") {
+                port.runCatchingConnections().none { it.id.startsWith("rtcoord-tap-") }
+            }
+
+            val flowed = withTimeout(5.seconds) { port.data().take(3).toList() }
+            assertEquals(3, flowed.size)
+            await("the flow's tap removed once the flow ends") {
+                port.runCatchingConnections().none { it.id.startsWith("rtcoord-tap-") }
+            }
+
+            samples(port)
+            tree.close()
+            assertEquals(emptyList<String>(), tapConnectors("odometry0", "odo"), "closing the tree removed its tap")
+        }
+
+    @Test
+    fun `a restarted tree removes the tap connector its crashed predecessor left, and no live tree's`(): Unit =
+        runBlocking {
+            val path = localisation.path("gyro0.rtc:gyro")
+            val crashed = RtcTree(TreeConfig(listOf(localisation.naming.address)))
+            try {
+                samples(crashed.port(path))
+                val (other, otherQueue) = samples(tree.port(path))
+                crashed.core.orb.orb.shutdown(false)
+                crashed.core.orb.orb.destroy()
+                assertEquals(2, tapConnectors("gyro0", "gyro").size, "the crashed tree's tap stays behind")
+
+                RtcTree(TreeConfig(listOf(localisation.naming.address))).use { restarted ->
+                    val queue = LinkedBlockingQueue<PortData>()
+                    restarted.port(path).tap { queue += it }
+                    assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDouble)
+                    assertEquals(
+                        2,
+                        tapConnectors("gyro0", "gyro").size,
+                        "the stale tap removed, the live one kept, the new one added",
+                    )
+                    otherQueue.clear()
+                    assertTrue(
+                        otherQueue.poll(5, TimeUnit.SECONDS) is TimedDouble,
+                        "the live tree's tap still receives",
+                    )
+                }
+                other.cancel()
+            } finally {
+                runCatching { crashed.close() }
+            }
+        }
 
     @Test
     fun `only a data out-port can be tapped`(): Unit = runBlocking {
         val inPort = tree.port(localisation.path("laser_localise0.rtc:laser"))
-        val refused = assertThrows(BadParameterException::class.java) { runBlocking { inPort.tap { } } }
+        val refused = assertThrows(BadParameterException::class.java) { runBlocking { inPort.tap {} } }
         assertTrue(refused.message!!.contains("only an out-port's data can be tapped"), refused.message)
         assertFalse(inPort.connections().any { it.id.startsWith("rtcoord-tap-") })
     }
 
     @Test
-    fun `a frozen component stays ACTIVE while its tap hears nothing, and publishes again once repaired`(): Unit = runBlocking {
-        val laser = localisation.system.component("laser0")
-        val port = tree.port(localisation.path("laser0.rtc:laser"))
-        val (subscription, queue) = samples(port)
-        assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
-        laser.freezeOutput()
-        // A sample already on its way may still come; after it, nothing.
-        queue.poll(300, TimeUnit.MILLISECONDS)
-        queue.clear()
-        assertEquals(null, queue.poll(500, TimeUnit.MILLISECONDS), "nothing published while frozen")
-        assertEquals(LifeCycle.ACTIVE, tree.component(localisation.path("laser0.rtc")).state())
-        laser.thawOutput()
-        assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
-        subscription.cancel()
-    }
+    fun `a frozen component stays ACTIVE while its tap hears nothing, and publishes again once repaired`(): Unit =
+        runBlocking {
+            val laser = localisation.system.component("laser0")
+            val port = tree.port(localisation.path("laser0.rtc:laser"))
+            val (subscription, queue) = samples(port)
+            assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
+            laser.freezeOutput()
+            // A sample already on its way may still come; after it, nothing.
+            queue.poll(300, TimeUnit.MILLISECONDS)
+            queue.clear()
+            assertEquals(null, queue.poll(500, TimeUnit.MILLISECONDS), "nothing published while frozen")
+            assertEquals(LifeCycle.ACTIVE, tree.component(localisation.path("laser0.rtc")).state())
+            laser.thawOutput()
+            assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
+            subscription.cancel()
+        }
 
     @Test
-    fun `port traffic events come from the observer's SEND and RECEIVE hints, at most one per interval per port`(): Unit = runBlocking {
+    fun `port traffic events come from the observer's SEND and RECEIVE hints, at most one per interval per port`():
+        Unit = runBlocking {
         val recorder = EventRecorder()
         val options = EventOptions.Builder().mode(WatchMode.PUSH).trafficInterval(JavaDuration.ofMillis(200)).build()
         val laser = tree.on(localisation.path("laser0.rtc"), PortTraffic::class.java, options, recorder.handler)
@@ -148,11 +189,14 @@ class DataTapTest {
 
             recorder.events.clear()
             Thread.sleep(1000) // counting what one second brings
-            val second = recorder.drained<PortTraffic>().filter { it.port == "laser" && it.source.name == "laser_localise0.rtc" }
+            val second =
+                recorder.drained<PortTraffic>().filter { it.port == "laser" && it.source.name == "laser_localise0.rtc" }
             assertTrue(second.size in 2..7, "about five RECEIVE hints a second at a 200 ms interval: ${second.size}")
         }
     }
 
     /** The port's connections read now, none if the read fails; for conditions awaited outside coroutines. */
-    private fun Port.runCatchingConnections(): List<Connection> = runBlocking { runCatching { connections() }.getOrDefault(emptyList()) }
+    private fun Port.runCatchingConnections(): List<Connection> = runBlocking {
+        runCatching { connections() }.getOrDefault(emptyList())
+    }
 }

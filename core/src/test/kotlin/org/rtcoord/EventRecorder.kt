@@ -17,13 +17,18 @@ class EventRecorder {
         val skipped = mutableListOf<RtcEvent>()
         while (true) {
             val remaining = deadline - System.nanoTime()
-            val event = events.poll(remaining.coerceAtLeast(0), TimeUnit.NANOSECONDS)
-                ?: throw AssertionError("no ${E::class.simpleName} within $timeout; skipped $skipped")
+            val event =
+                events.poll(remaining.coerceAtLeast(0), TimeUnit.NANOSECONDS)
+                    ?: throw AssertionError("no ${E::class.simpleName} within $timeout; skipped $skipped")
             if (event is E && where(event)) return event
             skipped += event
         }
     }
 
     /** The events of type [E] received so far (and still unread). */
-    inline fun <reified E : RtcEvent> drained(): List<E> = generateSequence { events.poll() }.filterIsInstance<E>().toList()
+    inline fun <reified E : RtcEvent> drained(): List<E> = generateSequence {
+        events.poll()
+    }
+        .filterIsInstance<E>()
+        .toList()
 }

@@ -1,6 +1,11 @@
 package org.rtcoord
 
 import RTC.ReturnCode_t
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -13,15 +18,10 @@ import org.rtcoord.runtime.Behaviour
 import org.rtcoord.runtime.ComponentContext
 import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.Scenarios
-import java.util.concurrent.CountDownLatch
-import java.util.concurrent.LinkedBlockingQueue
-import java.util.concurrent.TimeUnit
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * Every event type fires with the right values, whether the component pushes (observer), is polled,
- * or accepts no observer at all so the automatic choice falls back to polling.
+ * Every event type fires with the right values, whether the component pushes (observer), is polled, or accepts no
+ * observer at all so the automatic choice falls back to polling.
  */
 class EventsTest {
     enum class Source(val options: EventOptions, val observerAccepted: Boolean) {
@@ -32,10 +32,10 @@ class EventsTest {
 
     private val localisation = LocalisationSystem()
     private val tree = localisation.tree
+
     private fun path(name: String) = localisation.path(name)
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     /** A relay component that accepts an observer or not, watched through [source]. */
     private suspend fun watched(source: Source, recorder: EventRecorder): ComponentNode {
@@ -69,19 +69,20 @@ class EventsTest {
         // (on_aborting). The reset waits only for the abort to end, so a read made after the first hint may
         // already find the component INACTIVE again.
         val failing = LinkedBlockingQueue<CountDownLatch>()
-        val aborting = ComponentType(
-            "aborting",
-            rate = 1000.0,
-            behaviour = {
-                object : Behaviour {
-                    override fun onExecute(rtc: ComponentContext): Boolean {
-                        val failure = failing.poll() ?: return true
-                        failure.countDown()
-                        return false
+        val aborting =
+            ComponentType(
+                "aborting",
+                rate = 1000.0,
+                behaviour = {
+                    object : Behaviour {
+                        override fun onExecute(rtc: ComponentContext): Boolean {
+                            val failure = failing.poll() ?: return true
+                            failure.countDown()
+                            return false
+                        }
                     }
-                }
-            },
-        )
+                },
+            )
         val component = localisation.system.runtime.create(aborting, "aborting0")
         val node = tree.component(path("aborting0.rtc"))
         val recorder = EventRecorder()
@@ -93,31 +94,51 @@ class EventsTest {
             assertTrue(failed.await(5, TimeUnit.SECONDS), "the execution failed")
             // Taken as soon as the context's thread lets go, once the abort is done.
             assertEquals(ReturnCode_t.RTC_OK, component.reset())
-            assertEquals(LifeCycle.ACTIVE to LifeCycle.ERROR, recorder.next<StateChanged>().let { it.old to it.new }, "round ${it + 1}")
-            assertEquals(LifeCycle.ERROR to LifeCycle.INACTIVE, recorder.next<StateChanged>().let { it.old to it.new }, "round ${it + 1}")
+            assertEquals(
+                LifeCycle.ACTIVE to LifeCycle.ERROR,
+                recorder.next<StateChanged>().let { it.old to it.new },
+                "round ${it + 1}",
+            )
+            assertEquals(
+                LifeCycle.ERROR to LifeCycle.INACTIVE,
+                recorder.next<StateChanged>().let { it.old to it.new },
+                "round ${it + 1}",
+            )
         }
     }
 
     @Test
-    fun `a change no hint announced is published once hints and reads have disagreed for the grace period`(): Unit = runBlocking {
-        // OpenRTM-aist announces a deactivation only when on_deactivated succeeds; it ends INACTIVE all the same.
-        val sulky = ComponentType("sulky", behaviour = { object : Behaviour { override fun onDeactivated(rtc: ComponentContext) = false } })
-        val component = localisation.system.runtime.create(sulky, "sulky0")
-        assertEquals(ReturnCode_t.RTC_OK, component.activate())
-        val node = tree.component(path("sulky0.rtc"))
-        val recorder = EventRecorder()
-        tree.on(node, RtcEvent::class.java, Source.PUSH.options, recorder.handler)
-        assertEquals(ReturnCode_t.RTC_OK, component.deactivate())
+    fun `a change no hint announced is published once hints and reads have disagreed for the grace period`(): Unit =
+        runBlocking {
+            // OpenRTM-aist announces a deactivation only when on_deactivated succeeds; it ends INACTIVE all the same.
+            val sulky =
+                ComponentType(
+                    "sulky",
+                    behaviour = {
+                        object : Behaviour {
+                            override fun onDeactivated(rtc: ComponentContext) = false
+                        }
+                    },
+                )
+            val component = localisation.system.runtime.create(sulky, "sulky0")
+            assertEquals(ReturnCode_t.RTC_OK, component.activate())
+            val node = tree.component(path("sulky0.rtc"))
+            val recorder = EventRecorder()
+            tree.on(node, RtcEvent::class.java, Source.PUSH.options, recorder.handler)
+            assertEquals(ReturnCode_t.RTC_OK, component.deactivate())
 
-        // A context hint has the component read: the read finds INACTIVE, which no hint announced.
-        node.executionContext().setRate(5.0)
-        recorder.next<ContextRateChanged>()
-        val found = System.nanoTime()
-        val deactivated = recorder.next<StateChanged>()
-        assertEquals(LifeCycle.ACTIVE to LifeCycle.INACTIVE, deactivated.old to deactivated.new)
-        // Only the read made once the grace period is over decides; until then the hint might be on its way.
-        assertTrue(System.nanoTime() - found >= 300.milliseconds.inWholeNanoseconds, "published before the grace period was over")
-    }
+            // A context hint has the component read: the read finds INACTIVE, which no hint announced.
+            node.executionContext().setRate(5.0)
+            recorder.next<ContextRateChanged>()
+            val found = System.nanoTime()
+            val deactivated = recorder.next<StateChanged>()
+            assertEquals(LifeCycle.ACTIVE to LifeCycle.INACTIVE, deactivated.old to deactivated.new)
+            // Only the read made once the grace period is over decides; until then the hint might be on its way.
+            assertTrue(
+                System.nanoTime() - found >= 300.milliseconds.inWholeNanoseconds,
+                "published before the grace period was over",
+            )
+        }
 
     @ParameterizedTest
     @EnumSource(Source::class)
@@ -198,7 +219,10 @@ class EventsTest {
     }
 
     private companion object {
-        /** Enough rounds that, without the fix, a read lands between the two hints of an abort (it did in 1 of 4 soak runs of 4000 transitions). */
+        /**
+         * Enough rounds that, without the fix, a read lands between the two hints of an abort (it did in 1 of 4 soak
+         * runs of 4000 transitions).
+         */
         const val ABORTS = 30
     }
 }

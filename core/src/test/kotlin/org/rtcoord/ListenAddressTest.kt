@@ -1,5 +1,7 @@
 package org.rtcoord
 
+import java.net.Inet4Address
+import java.net.NetworkInterface
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertThrows
@@ -8,23 +10,22 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.iiopAddresses
 import org.rtcoord.fixtures.listeningSockets
 import org.rtcoord.internal.ListenAddress
-import java.net.Inet4Address
-import java.net.NetworkInterface
 
 /**
- * The tree's ORB listens on one address and hands out references carrying only that one: by default the
- * address that reaches its first name server (loopback for a local one), or the one configured.
+ * The tree's ORB listens on one address and hands out references carrying only that one: by default the address that
+ * reaches its first name server (loopback for a local one), or the one configured.
  */
 class ListenAddressTest {
     /** The addresses in the reference of the observer [tree] attached to laser0, and where its ORB listens. */
-    private fun observed(localisation: LocalisationSystem, tree: RtcTree): Pair<List<String>, List<String>> = runBlocking {
-        tree.on(localisation.path("laser0.rtc"), RtcEvent::class.java, EventOptions(WatchMode.PUSH)) { }
-        val laser = localisation.system.component("laser0")
-        val observer = laser.observerReferences.single()
-        val carried = iiopAddresses(localisation.system.runtime.orb.orb, observer)
-        val port = carried.first().substringAfterLast(':').toInt()
-        carried to listeningSockets().filter { it.port == port }.map { "${it.address.hostAddress}:${it.port}" }
-    }
+    private fun observed(localisation: LocalisationSystem, tree: RtcTree): Pair<List<String>, List<String>> =
+        runBlocking {
+            tree.on(localisation.path("laser0.rtc"), RtcEvent::class.java, EventOptions(WatchMode.PUSH)) {}
+            val laser = localisation.system.component("laser0")
+            val observer = laser.observerReferences.single()
+            val carried = iiopAddresses(localisation.system.runtime.orb.orb, observer)
+            val port = carried.first().substringAfterLast(':').toInt()
+            carried to listeningSockets().filter { it.port == port }.map { "${it.address.hostAddress}:${it.port}" }
+        }
 
     @Test
     fun `with a name server on this host the tree listens on loopback alone`() {
@@ -51,7 +52,8 @@ class ListenAddressTest {
     fun `an address that is not this host's is refused when the tree is configured`() {
         val foreign = assertThrows(IllegalArgumentException::class.java) { TreeConfig(listenAddress = "203.0.113.7") }
         assertEquals("listen address: 203.0.113.7 is not an address of this host", foreign.message)
-        val unknown = assertThrows(IllegalArgumentException::class.java) { TreeConfig(listenAddress = "no-such-host.invalid") }
+        val unknown =
+            assertThrows(IllegalArgumentException::class.java) { TreeConfig(listenAddress = "no-such-host.invalid") }
         assertEquals("listen address: cannot resolve 'no-such-host.invalid'", unknown.message)
     }
 
@@ -59,11 +61,19 @@ class ListenAddressTest {
     fun `the default is the source address of the route to the name server`() {
         assertEquals("127.0.0.1", ListenAddress.toward(null))
         assertEquals("127.0.0.1", ListenAddress.toward("localhost"))
-        assertEquals("127.0.0.1", ListenAddress.toward("127.0.0.5"), "any loopback name server is reached from loopback")
+        assertEquals(
+            "127.0.0.1",
+            ListenAddress.toward("127.0.0.5"),
+            "any loopback name server is reached from loopback",
+        )
         assertEquals("127.0.0.1", ListenAddress.toward("no-such-host.invalid"))
         // A name server on one of this host's own non-loopback addresses is reached from that address.
-        val own = NetworkInterface.networkInterfaces().toList().filter { it.isUp && !it.isLoopback }
-            .flatMap { it.inetAddresses.toList() }.firstOrNull { it is Inet4Address }
+        val own =
+            NetworkInterface.networkInterfaces()
+                .toList()
+                .filter { it.isUp && !it.isLoopback }
+                .flatMap { it.inetAddresses.toList() }
+                .firstOrNull { it is Inet4Address }
         assumeTrue(own != null, "this host has no IPv4 address but loopback")
         assertEquals(own!!.hostAddress, ListenAddress.toward(own.hostAddress))
     }

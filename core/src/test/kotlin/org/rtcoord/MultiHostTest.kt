@@ -1,22 +1,22 @@
 package org.rtcoord
 
-import org.junit.jupiter.api.Assertions.assertEquals
-import org.junit.jupiter.api.Assertions.assertTrue
-import org.junit.jupiter.api.Assumptions.assumeTrue
-import org.junit.jupiter.api.Test
-import org.rtcoord.fixtures.FixtureProcess
-import org.rtcoord.fixtures.listeningSockets
 import java.nio.file.Paths
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.TimeUnit
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Assumptions.assumeTrue
+import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.FixtureProcess
+import org.rtcoord.fixtures.listeningSockets
 
 /**
- * Three hosts in network namespaces: `a` runs the naming service and two relays, `b` the localisation
- * system with its managers, registered on `a`'s naming service, `c` the coordinator. `b`'s cable is
- * pulled and plugged back in while the coordinator watches everything.
+ * Three hosts in network namespaces: `a` runs the naming service and two relays, `b` the localisation system with its
+ * managers, registered on `a`'s naming service, `c` the coordinator. `b`'s cable is pulled and plugged back in while
+ * the coordinator watches everything.
  */
 class MultiHostTest {
     private val hostB = listOf("laser0", "gyro0", "odometry0", "laser_localise0")
@@ -29,33 +29,49 @@ class MultiHostTest {
             assumeTrue(false, "multi-host test skipped: network namespaces are not permitted here ($problem)")
         }
         VirtualNetwork(listOf("a", "b", "c")).use { network ->
-            FixtureProcess.start("--host", network.address("a"), "--scenario", "scale:2", launcher = network.on("a")).use { a ->
-                val naming = a.naming.substringAfter("iiop:").substringBefore('/')
-                FixtureProcess.start("--host", network.address("b"), "--naming", naming, launcher = network.on("b")).use { b ->
-                    CoordinatorProcess(network.on("c"), naming).use { coordinator ->
-                        exercise(network, a, b, coordinator)
-                    }
+            FixtureProcess.start("--host", network.address("a"), "--scenario", "scale:2", launcher = network.on("a"))
+                .use { a ->
+                    val naming = a.naming.substringAfter("iiop:").substringBefore('/')
+                    FixtureProcess.start("--host", network.address("b"), "--naming", naming, launcher = network.on("b"))
+                        .use { b ->
+                            CoordinatorProcess(network.on("c"), naming).use { coordinator ->
+                                exercise(network, a, b, coordinator)
+                            }
+                        }
                 }
-            }
         }
     }
 
-    private fun exercise(network: VirtualNetwork, a: FixtureProcess, b: FixtureProcess, coordinator: CoordinatorProcess) {
+    private fun exercise(
+        network: VirtualNetwork,
+        a: FixtureProcess,
+        b: FixtureProcess,
+        coordinator: CoordinatorProcess,
+    ) {
         val listening = listeningSockets(coordinator.pid)
-        assertTrue(listening.isNotEmpty() && listening.all { it.address.hostAddress == network.address("c") }, "the coordinator listens on $listening")
+        assertTrue(
+            listening.isNotEmpty() && listening.all { it.address.hostAddress == network.address("c") },
+            "the coordinator listens on $listening",
+        )
 
         val before = coordinator.list()
-        (hostB + listOf("relay0", "relay1")).forEach { name -> assertTrue(before.any { it.contains("/$name.rtc ") }, "$name in $before") }
+        (hostB + listOf("relay0", "relay1")).forEach { name ->
+            assertTrue(before.any { it.contains("/$name.rtc ") }, "$name in $before")
+        }
         assertTrue(before.none { it.startsWith("zombie") }, "$before")
 
         val cut = TimeSource.Monotonic.markNow()
         network.cut("b")
         for (name in hostB) {
-            coordinator.await("HeartbeatLost for $name", 20.seconds) { it.startsWith("event HeartbeatLost ") && it.endsWith("/$name.rtc") }
+            coordinator.await("HeartbeatLost for $name", 20.seconds) {
+                it.startsWith("event HeartbeatLost ") && it.endsWith("/$name.rtc")
+            }
         }
         val lost = cut.elapsedNow()
         for (name in hostB) {
-            coordinator.await("BecameZombie for $name", 20.seconds) { it.startsWith("event BecameZombie ") && it.endsWith("/$name.rtc") }
+            coordinator.await("BecameZombie for $name", 20.seconds) {
+                it.startsWith("event BecameZombie ") && it.endsWith("/$name.rtc")
+            }
         }
         val zombie = cut.elapsedNow()
 
@@ -70,12 +86,17 @@ class MultiHostTest {
         val healedAt = coordinator.lines.size
         network.heal("b")
         for (name in hostB) {
-            coordinator.await("Recovered for $name", 30.seconds) { it.startsWith("event Recovered ") && it.endsWith("/$name.rtc") }
+            coordinator.await("Recovered for $name", 30.seconds) {
+                it.startsWith("event Recovered ") && it.endsWith("/$name.rtc")
+            }
         }
         val recovered = healed.elapsedNow()
         val early = coordinator.lines.take(healedAt).filter { it.startsWith("event Recovered ") }
         assertEquals(emptyList<String>(), early, "nothing recovers while the cable is out")
-        val falseAlarms = coordinator.lines.filter { (it.startsWith("event HeartbeatLost") || it.startsWith("event BecameZombie")) && "/relay" in it }
+        val falseAlarms =
+            coordinator.lines.filter {
+                (it.startsWith("event HeartbeatLost") || it.startsWith("event BecameZombie")) && "/relay" in it
+            }
         assertEquals(emptyList<String>(), falseAlarms, "host a was never lost")
 
         b.send("fail laser0")
@@ -83,13 +104,16 @@ class MultiHostTest {
             it.startsWith("event StateChanged ") && it.endsWith("/laser0.rtc ACTIVE ERROR")
         }
 
-        val expected = before.map {
-            when {
-                it.contains("/relay0.rtc ") -> it.replace(" INACTIVE", " ACTIVE")
-                it.contains("/laser0.rtc ") -> it.replace(" ACTIVE", " ERROR")
-                else -> it
-            }
-        }.sorted()
+        val expected =
+            before
+                .map {
+                    when {
+                        it.contains("/relay0.rtc ") -> it.replace(" INACTIVE", " ACTIVE")
+                        it.contains("/laser0.rtc ") -> it.replace(" ACTIVE", " ERROR")
+                        else -> it
+                    }
+                }
+                .sorted()
         val deadline = TimeSource.Monotonic.markNow() + 15.seconds
         var after = coordinator.list()
         while (after.sorted() != expected && deadline.hasNotPassedNow()) {
@@ -97,23 +121,39 @@ class MultiHostTest {
             after = coordinator.list()
         }
         assertEquals(expected, after.sorted(), "the coordinator's tree after the cut healed")
-        println("multi-host: ${after.size} nodes; HeartbeatLost ${lost.inWholeMilliseconds} ms and BecameZombie ${zombie.inWholeMilliseconds} ms after the cut; " +
-            "host a's event in ${flowing.inWholeMilliseconds} ms during it; Recovered ${recovered.inWholeMilliseconds} ms after healing")
+        println(
+            "multi-host: ${after.size} nodes; HeartbeatLost ${lost.inWholeMilliseconds} ms and BecameZombie ${zombie.inWholeMilliseconds} ms after the cut; " +
+                "host a's event in ${flowing.inWholeMilliseconds} ms during it; Recovered ${recovered.inWholeMilliseconds} ms after healing"
+        )
     }
 
     /** `MultiHostCoordinator` in a JVM of its own, started with [launcher], watching the name server [naming]. */
     private class CoordinatorProcess(launcher: List<String>, naming: String) : AutoCloseable {
         private val java = Paths.get(System.getProperty("java.home"), "bin", "java").toString()
-        private val process = ProcessBuilder(launcher + listOf(java, "-cp", System.getProperty("java.class.path"), "org.rtcoord.MultiHostCoordinator", naming))
-            .redirectError(ProcessBuilder.Redirect.INHERIT).start()
+        private val process =
+            ProcessBuilder(
+                    launcher +
+                        listOf(
+                            java,
+                            "-cp",
+                            System.getProperty("java.class.path"),
+                            "org.rtcoord.MultiHostCoordinator",
+                            naming,
+                        )
+                )
+                .redirectError(ProcessBuilder.Redirect.INHERIT)
+                .start()
 
         /** Every line it printed so far. */
         val lines: MutableList<String> = CopyOnWriteArrayList()
 
-        val pid: Long get() = process.pid()
+        val pid: Long
+            get() = process.pid()
 
         init {
-            Thread({ process.inputStream.bufferedReader().forEachLine { lines += it } }, "coordinator-output").apply { isDaemon = true }.start()
+            Thread({ process.inputStream.bufferedReader().forEachLine { lines += it } }, "coordinator-output")
+                .apply { isDaemon = true }
+                .start()
             try {
                 await("the coordinator to watch", 60.seconds) { it == "ready" }
             } catch (e: Throwable) {
@@ -126,9 +166,14 @@ class MultiHostTest {
         fun await(what: String, timeout: Duration, from: Int = 0, matches: (String) -> Boolean): String {
             val deadline = TimeSource.Monotonic.markNow() + timeout
             while (true) {
-                lines.drop(from).firstOrNull(matches)?.let { return it }
+                lines.drop(from).firstOrNull(matches)?.let {
+                    return it
+                }
                 check(process.isAlive) { "the coordinator exited while waiting for $what" }
-                if (deadline.hasPassedNow()) throw AssertionError("no $what within $timeout; the coordinator printed:\n${lines.joinToString("\n")}")
+                if (deadline.hasPassedNow())
+                    throw AssertionError(
+                        "no $what within $timeout; the coordinator printed:\n${lines.joinToString("\n")}"
+                    )
                 Thread.sleep(20)
             }
         }
@@ -140,7 +185,9 @@ class MultiHostTest {
             process.outputStream.flush()
             await("the listing", 10.seconds, from) { it == "listed" }
             val printed = lines.drop(from)
-            return printed.take(printed.indexOf("listed")).filter { it.startsWith("component ") || it.startsWith("zombie ") }
+            return printed.take(printed.indexOf("listed")).filter {
+                it.startsWith("component ") || it.startsWith("zombie ")
+            }
         }
 
         override fun close() {

@@ -1,5 +1,10 @@
 package org.rtcoord
 
+import java.net.InetAddress
+import java.net.InetSocketAddress
+import java.net.Socket
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.measureTime
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -12,11 +17,6 @@ import org.rtcoord.runtime.RuntimeManager
 import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.naming.NamingService
-import java.net.InetAddress
-import java.net.InetSocketAddress
-import java.net.Socket
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.measureTime
 
 class NameServersTest {
     @Test
@@ -32,11 +32,18 @@ class NameServersTest {
                                 assertTrue(elapsed < 3.seconds, "refresh took $elapsed")
 
                                 val servers = tree.root.children()
-                                assertEquals(listOf(NodeKind.NAME_SERVER, NodeKind.ZOMBIE, NodeKind.NAME_SERVER), servers.map { it.kind })
+                                assertEquals(
+                                    listOf(NodeKind.NAME_SERVER, NodeKind.ZOMBIE, NodeKind.NAME_SERVER),
+                                    servers.map { it.kind },
+                                )
                                 assertTrue((servers[1] as ZombieNode).cause is UnreachableException)
                                 val components = tree.find { it is ComponentNode }.toList()
                                 assertEquals(5, components.count { it.path.nameServer == omni.address })
-                                assertEquals(4, components.count { it.path.nameServer == embedded.address }, "4 in naming, each once: the manager lists aliases")
+                                assertEquals(
+                                    4,
+                                    components.count { it.path.nameServer == embedded.address },
+                                    "4 in naming, each once: the manager lists aliases",
+                                )
                             }
                         }
                     }
@@ -81,31 +88,36 @@ class NameServersTest {
     }
 
     @Test
-    fun `a name server restarted empty is read again, and components that register again are found`(): Unit = runBlocking {
-        var naming = NamingService.start()
-        try {
-            Scenarios.localisation(naming.corbaloc).use { system ->
-                RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
-                    tree.refresh()
-                    assertEquals(4, tree.find { it is ComponentNode }.toList().size, "each once, at its naming path")
+    fun `a name server restarted empty is read again, and components that register again are found`(): Unit =
+        runBlocking {
+            var naming = NamingService.start()
+            try {
+                Scenarios.localisation(naming.corbaloc).use { system ->
+                    RtcTree(TreeConfig(listOf(naming.address))).use { tree ->
+                        tree.refresh()
+                        assertEquals(
+                            4,
+                            tree.find { it is ComponentNode }.toList().size,
+                            "each once, at its naming path",
+                        )
 
-                    val port = naming.port
-                    naming.close()
-                    naming = NamingService.start(port)
-                    tree.refresh()
-                    assertEquals(emptyList<Node>(), tree.find { it is ComponentNode }.toList())
+                        val port = naming.port
+                        naming.close()
+                        naming = NamingService.start(port)
+                        tree.refresh()
+                        assertEquals(emptyList<Node>(), tree.find { it is ComponentNode }.toList())
 
-                    system.runtime.rebindAll()
-                    tree.refresh()
-                    val found = tree.find { it is ComponentNode }.toList().map { it.name }.toSet()
-                    assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"), found)
-                    assertEquals(LifeCycle.ACTIVE, tree.componentNamed("laser0").state())
+                        system.runtime.rebindAll()
+                        tree.refresh()
+                        val found = tree.find { it is ComponentNode }.toList().map { it.name }.toSet()
+                        assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"), found)
+                        assertEquals(LifeCycle.ACTIVE, tree.componentNamed("laser0").state())
+                    }
                 }
+            } finally {
+                naming.close()
             }
-        } finally {
-            naming.close()
         }
-    }
 
     @Test
     fun `an address where a manager answers is a node saying so, not an unreachable name server`(): Unit = runBlocking {
@@ -119,7 +131,8 @@ class NameServersTest {
                     assertEquals(listOf(NodeKind.ZOMBIE, NodeKind.NAME_SERVER), servers.map { it.kind })
                     val cause = (servers[0] as ZombieNode).cause
                     assertEquals("/$managerPort: is a manager (IDL:RTM/Manager:1.0), not a name server", cause.message)
-                    val listing = assertThrows<WrongKindException> { (tree.node("/$managerPort") as DirectoryNode).children() }
+                    val listing =
+                        assertThrows<WrongKindException> { (tree.node("/$managerPort") as DirectoryNode).children() }
                     assertEquals(cause.message, listing.message)
                 }
             }
@@ -140,6 +153,9 @@ class NameServersTest {
         }
     }
 
-    /** A socket bound to a port of its own and never listening: connections to it are refused, and no server can take the port while it is held. */
+    /**
+     * A socket bound to a port of its own and never listening: connections to it are refused, and no server can take
+     * the port while it is held.
+     */
     private fun refusedPort(): Socket = Socket().apply { bind(InetSocketAddress(InetAddress.getLoopbackAddress(), 0)) }
 }

@@ -1,15 +1,14 @@
 package org.rtcoord
 
 import _SDOPackage.ServiceProfile
+import kotlin.random.Random
 import org.omg.CORBA.portable.ObjectImpl
 import org.rtcoord.runtime.RuntimeComponent
 import org.rtcoord.runtime.RuntimeOrb
-import kotlin.random.Random
 
 /**
- * A CORBA client with an ORB of its own that reaches a tree's observer the way anyone holding its
- * reference could: it finds the reference in the component's service profiles and sends hints of its
- * own, genuine or to a forged object id.
+ * A CORBA client with an ORB of its own that reaches a tree's observer the way anyone holding its reference could: it
+ * finds the reference in the component's service profiles and sends hints of its own, genuine or to a forged object id.
  */
 class ObserverClient : AutoCloseable {
     private val client = RuntimeOrb.start()
@@ -18,7 +17,11 @@ class ObserverClient : AutoCloseable {
     fun profile(component: RuntimeComponent): ServiceProfile {
         val profiles = rtObject(component).get_service_profiles().filter { it.id.startsWith("rtcoord-observer-") }
         check(profiles.size == 1) { "${component.instanceName} has ${profiles.size} rtcoord observers" }
-        return profiles.single().also { check(it.interface_type == "IDL:OpenRTM/ComponentObserver:1.0") { "not the OpenRTM flavour: ${it.interface_type}" } }
+        return profiles.single().also {
+            check(it.interface_type == "IDL:OpenRTM/ComponentObserver:1.0") {
+                "not the OpenRTM flavour: ${it.interface_type}"
+            }
+        }
     }
 
     /** Detaches observer [id] from [component] as any client may, so the component no longer tells it anything. */
@@ -40,7 +43,9 @@ class ObserverClient : AutoCloseable {
         target._releaseReply(target._invoke(request))
     }
 
-    /** Returns once [observer] has handled everything sent to it before: its calls are handled one at a time, in order. */
+    /**
+     * Returns once [observer] has handled everything sent to it before: its calls are handled one at a time, in order.
+     */
     fun sync(observer: org.omg.CORBA.Object) {
         check(exists(observer)) { "the observer is gone" }
     }
@@ -49,13 +54,14 @@ class ObserverClient : AutoCloseable {
     fun exists(observer: org.omg.CORBA.Object): Boolean = !reachable(observer)._non_existent()
 
     /**
-     * [observer]'s reference with the object id replaced by [id] (16 random bytes by default): same
-     * host, port and POA, another object. JacORB ends an object key with the POA-escaped object id.
+     * [observer]'s reference with the object id replaced by [id] (16 random bytes by default): same host, port and POA,
+     * another object. JacORB ends an object key with the POA-escaped object id.
      */
     fun forged(observer: org.omg.CORBA.Object, id: ByteArray = randomId()): org.omg.CORBA.Object {
         val ior = client.orb.object_to_string(observer)
         val parsed = org.jacorb.orb.ParsedIOR(client.orb as org.jacorb.orb.ORB, ior)
-        val address = (parsed.effectiveProfile as org.jacorb.orb.iiop.IIOPProfile).address as org.jacorb.orb.iiop.IIOPAddress
+        val address =
+            (parsed.effectiveProfile as org.jacorb.orb.iiop.IIOPProfile).address as org.jacorb.orb.iiop.IIOPAddress
         val key = parsed.get_object_key()
         val separator = key.lastIndexOf('/'.code.toByte())
         val forgedKey = key.copyOfRange(0, separator + 1) + id
@@ -65,7 +71,8 @@ class ObserverClient : AutoCloseable {
 
     override fun close() = client.close()
 
-    private fun rtObject(component: RuntimeComponent): RTC.RTObject = RTC.RTObjectHelper.narrow(reachable(component.ref))
+    private fun rtObject(component: RuntimeComponent): RTC.RTObject =
+        RTC.RTObjectHelper.narrow(reachable(component.ref))
 
     /** [target] as a reference of this client's ORB, whichever ORB handed it out. */
     private fun reachable(target: org.omg.CORBA.Object): org.omg.CORBA.Object =

@@ -1,5 +1,7 @@
 package org.rtcoord
 
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.measureTime
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -8,8 +10,6 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.naming.NamingService
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.measureTime
 
 class ScaleDiscoveryTest {
     @Test
@@ -21,8 +21,17 @@ class ScaleDiscoveryTest {
                     println("discovered 1000 components with full profiles in $elapsed")
                     val components = tree.find { it is ComponentNode }.toList().map { it as ComponentNode }
                     assertEquals(1000, components.size)
-                    assertEquals((0 until 1000).map { "relay$it" }.toSet(), components.map { it.snapshots.value!!.instanceName }.toSet())
-                    assertTrue(components.all { node -> node.snapshots.value!!.let { it.ports.size == 3 && it.contexts.single().state == LifeCycle.INACTIVE } })
+                    assertEquals(
+                        (0 until 1000).map { "relay$it" }.toSet(),
+                        components.map { it.snapshots.value!!.instanceName }.toSet(),
+                    )
+                    assertTrue(
+                        components.all { node ->
+                            node.snapshots.value!!.let {
+                                it.ports.size == 3 && it.contexts.single().state == LifeCycle.INACTIVE
+                            }
+                        }
+                    )
                 }
             }
         }

@@ -1,5 +1,8 @@
 package org.rtcoord
 
+import java.util.concurrent.TimeUnit
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -11,37 +14,34 @@ import org.junit.jupiter.api.assertThrows
 import org.rtcoord.java.JavaTree
 import org.rtcoord.profile.OrderedAction
 import org.rtcoord.profile.SystemProfiles
-import java.util.concurrent.TimeUnit
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * A component whose `on_activated`/`on_deactivated` outlasts its context's transition timeout: the
- * context answers `RTC_ERROR`, and the state arrives later. Within the operation's deadline that is a
- * slow success, for the node's operations and the ordered start and stop built on them.
+ * A component whose `on_activated`/`on_deactivated` outlasts its context's transition timeout: the context answers
+ * `RTC_ERROR`, and the state arrives later. Within the operation's deadline that is a slow success, for the node's
+ * operations and the ordered start and stop built on them.
  */
 class SlowTransitionTest {
     private val system = LocalisationSystem()
     private val fixture = system.system.component("laser_localise0")
 
-    @AfterEach
-    fun close() = system.close()
+    @AfterEach fun close() = system.close()
 
     @Test
-    fun `a transition that outlasts the context's timeout succeeds, said to be slow, when the state arrives before the deadline`() = runBlocking {
-        val localiser = system.tree.component(system.path("laser_localise0.rtc"))
-        fixture.slowTransitions(900.milliseconds)
-        for (state in listOf(LifeCycle.INACTIVE, LifeCycle.ACTIVE)) {
-            val outcome = if (state == LifeCycle.INACTIVE) localiser.deactivate() else localiser.activate()
-            assertEquals(state, outcome.state)
-            assertEquals("RTC_ERROR", outcome.lateAnswer)
-            assertTrue(outcome.slow && outcome.elapsedMillis >= 850, outcome.toString())
-            assertEquals(state, localiser.state())
+    fun `a transition that outlasts the context's timeout succeeds, said to be slow, when the state arrives before the deadline`() =
+        runBlocking {
+            val localiser = system.tree.component(system.path("laser_localise0.rtc"))
+            fixture.slowTransitions(900.milliseconds)
+            for (state in listOf(LifeCycle.INACTIVE, LifeCycle.ACTIVE)) {
+                val outcome = if (state == LifeCycle.INACTIVE) localiser.deactivate() else localiser.activate()
+                assertEquals(state, outcome.state)
+                assertEquals("RTC_ERROR", outcome.lateAnswer)
+                assertTrue(outcome.slow && outcome.elapsedMillis >= 850, outcome.toString())
+                assertEquals(state, localiser.state())
+            }
+            fixture.slowTransitions(0.milliseconds)
+            val prompt = localiser.deactivate()
+            assertNull(prompt.lateAnswer, prompt.toString())
         }
-        fixture.slowTransitions(0.milliseconds)
-        val prompt = localiser.deactivate()
-        assertNull(prompt.lateAnswer, prompt.toString())
-    }
 
     @Test
     fun `Java's transitions, blocking and as futures, return the outcome, slow when it was`() {
@@ -60,12 +60,17 @@ class SlowTransitionTest {
     }
 
     @Test
-    fun `a state that has not arrived by the deadline fails naming the context's answer and the state found`() = runBlocking {
-        val localiser = system.tree.component(system.path("laser_localise0.rtc"))
-        fixture.slowTransitions(2.seconds)
-        val failed = assertThrows<OperationFailedException> { runBlocking { localiser.deactivate(deadline = 1.seconds) } }
-        assertEquals("${localiser.path}: deactivate failed: RTC_ERROR (in context 0; still ACTIVE at its 1000 ms deadline)", failed.message)
-    }
+    fun `a state that has not arrived by the deadline fails naming the context's answer and the state found`() =
+        runBlocking {
+            val localiser = system.tree.component(system.path("laser_localise0.rtc"))
+            fixture.slowTransitions(2.seconds)
+            val failed =
+                assertThrows<OperationFailedException> { runBlocking { localiser.deactivate(deadline = 1.seconds) } }
+            assertEquals(
+                "${localiser.path}: deactivate failed: RTC_ERROR (in context 0; still ACTIVE at its 1000 ms deadline)",
+                failed.message,
+            )
+        }
 
     @Test
     fun `profile stop and start count a slow step as done and say it was slow`() = runBlocking {

@@ -2,6 +2,13 @@ package org.rtcoord
 
 import RTC.ExecutionContext
 import RTC.ReturnCode_t
+import java.util.concurrent.ConcurrentHashMap
+import java.util.concurrent.ConcurrentLinkedQueue
+import kotlin.random.Random
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.minutes
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -14,21 +21,13 @@ import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.StateTransition
 import org.rtcoord.runtime.naming.NamingService
-import java.util.concurrent.ConcurrentHashMap
-import java.util.concurrent.ConcurrentLinkedQueue
-import kotlin.random.Random
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.minutes
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 /**
- * Components change state (activate, deactivate, fail, reset) and connections at random, with a fixed
- * seed, while a tree watches them all in push mode; the fixtures log what really happened. Every
- * transition must arrive as exactly one event, in order: none lost, none phantom, and no component
- * reported lost. The default build runs a smoke of it (50 components for 5 s); the soak itself, 200
- * components for a minute or more, runs on request: `scripts/soak --minutes N`
- * (`-Drtcoord.soak.minutes=N`).
+ * Components change state (activate, deactivate, fail, reset) and connections at random, with a fixed seed, while a
+ * tree watches them all in push mode; the fixtures log what really happened. Every transition must arrive as exactly
+ * one event, in order: none lost, none phantom, and no component reported lost. The default build runs a smoke of it
+ * (50 components for 5 s); the soak itself, 200 components for a minute or more, runs on request: `scripts/soak
+ * --minutes N` (`-Drtcoord.soak.minutes=N`).
  */
 class SoakTest {
     /** A relay executing at 10 Hz, so an injected failure turns into ERROR within a tenth of a second. */
@@ -47,10 +46,19 @@ class SoakTest {
                     val seen = ConcurrentHashMap<String, ConcurrentLinkedQueue<Seen>>()
                     val alarms = ConcurrentLinkedQueue<RtcEvent>()
                     val attaching = TimeSource.Monotonic.markNow()
-                    tree.on("/${naming.address}/${RuntimeProcess.hostContext}", RtcEvent::class.java, EventOptions(WatchMode.PUSH)) { event ->
+                    tree.on(
+                        "/${naming.address}/${RuntimeProcess.hostContext}",
+                        RtcEvent::class.java,
+                        EventOptions(WatchMode.PUSH),
+                    ) { event ->
                         when (event) {
-                            is StateChanged -> seen.getOrPut(event.source.name.removeSuffix(".rtc")) { ConcurrentLinkedQueue() } += Seen(event.old to event.new, System.nanoTime())
-                            is HeartbeatLost, is BecameZombie, is Recovered, is ComponentFinalized -> alarms += event
+                            is StateChanged ->
+                                seen.getOrPut(event.source.name.removeSuffix(".rtc")) { ConcurrentLinkedQueue() } +=
+                                    Seen(event.old to event.new, System.nanoTime())
+                            is HeartbeatLost,
+                            is BecameZombie,
+                            is Recovered,
+                            is ComponentFinalized -> alarms += event
                             else -> Unit
                         }
                     }
@@ -60,10 +68,13 @@ class SoakTest {
                     val begun = System.nanoTime()
                     val driven = Churn(system.components, system::connect, Random(SEED)).run(length)
                     delay(SETTLING) // failures injected last take effect at the next execution
-                    val truth = system.components.associate { it.instanceName to it.transitions.map { t -> t.pair() to t } }
+                    val truth =
+                        system.components.associate { it.instanceName to it.transitions.map { t -> t.pair() to t } }
                     // Lost events never come: the comparison below reports them.
                     runCatching {
-                        await("the events of every transition", 30.seconds) { truth.all { (name, transitions) -> (seen[name]?.size ?: 0) >= transitions.size } }
+                        await("the events of every transition", 30.seconds) {
+                            truth.all { (name, transitions) -> (seen[name]?.size ?: 0) >= transitions.size }
+                        }
                     }
                     delay(SETTLING) // time for a phantom to show up after the last real event
 
@@ -80,16 +91,21 @@ class SoakTest {
                             println("soak: $name happened ${transitions.map { (pair, t) -> pair.text(t.at) }}")
                             println("soak: $name reported ${events.map { it.transition.text(it.at) }}")
                         }
-                        matched.forEach { (t, e) -> maxLatency = maxOf(maxLatency, events[e].at - transitions[t].second.at) }
+                        matched.forEach { (t, e) ->
+                            maxLatency = maxOf(maxLatency, events[e].at - transitions[t].second.at)
+                        }
                     }
                     val total = truth.values.sumOf { it.size }
                     println(
                         "soak: ${length.inWholeSeconds} s, $size components, ${driven.operations} operations " +
                             "(${driven.connections} connects, ${driven.disconnections} disconnects): $total transitions, " +
                             "${seen.values.sumOf { it.size }} events, $lost lost, $phantom phantom, ${alarms.size} liveness alarms, " +
-                            "max latency ${maxLatency / 1_000_000} ms",
+                            "max latency ${maxLatency / 1_000_000} ms"
                     )
-                    val observers = system.components.filter { it.observerIds.size != 1 }.associate { it.instanceName to it.observerIds }
+                    val observers =
+                        system.components
+                            .filter { it.observerIds.size != 1 }
+                            .associate { it.instanceName to it.observerIds }
                     assertEquals(0, lost, "lost transitions")
                     assertEquals(0, phantom, "phantom transitions")
                     assertEquals(emptyList<RtcEvent>(), alarms.toList(), "no component died")
@@ -115,7 +131,8 @@ class SoakTest {
         suspend fun run(length: kotlin.time.Duration): Churn {
             val end = TimeSource.Monotonic.markNow() + length
             while (end.hasNotPassedNow()) {
-                if (random.nextInt(10) < 8) changeState(components[random.nextInt(components.size)]) else changeConnection()
+                if (random.nextInt(10) < 8) changeState(components[random.nextInt(components.size)])
+                else changeConnection()
                 operations++
                 delay(PAUSE)
             }
@@ -124,13 +141,18 @@ class SoakTest {
 
         private fun changeState(component: RuntimeComponent) {
             val context = contexts.getOrPut(component) { component.ref.get_owned_contexts()[0] }
-            val code = when (component.state) {
-                RTC.LifeCycleState.INACTIVE_STATE -> context.activate_component(component.ref)
-                RTC.LifeCycleState.ERROR_STATE -> context.reset_component(component.ref)
-                else -> if (random.nextBoolean()) context.deactivate_component(component.ref) else ReturnCode_t.RTC_OK.also { component.fail() }
-            }
+            val code =
+                when (component.state) {
+                    RTC.LifeCycleState.INACTIVE_STATE -> context.activate_component(component.ref)
+                    RTC.LifeCycleState.ERROR_STATE -> context.reset_component(component.ref)
+                    else ->
+                        if (random.nextBoolean()) context.deactivate_component(component.ref)
+                        else ReturnCode_t.RTC_OK.also { component.fail() }
+                }
             // An injected failure may win the race with the operation chosen: that is fine, it is logged too.
-            check(code == ReturnCode_t.RTC_OK || code == ReturnCode_t.PRECONDITION_NOT_MET) { "${component.instanceName}: ${code.value()}" }
+            check(code == ReturnCode_t.RTC_OK || code == ReturnCode_t.PRECONDITION_NOT_MET) {
+                "${component.instanceName}: ${code.value()}"
+            }
         }
 
         private fun changeConnection() {
@@ -161,14 +183,16 @@ class SoakTest {
         fun StateTransition.pair(): Pair<LifeCycle, LifeCycle> = from.toLifeCycle() to to.toLifeCycle()
 
         /**
-         * The longest common subsequence of [truth] and [events], as index pairs: what was seen of what
-         * happened. The rest of [truth] was lost; the rest of [events] never happened.
+         * The longest common subsequence of [truth] and [events], as index pairs: what was seen of what happened. The
+         * rest of [truth] was lost; the rest of [events] never happened.
          */
         fun <T> alignment(truth: List<T>, events: List<T>): List<Pair<Int, Int>> {
             val lengths = Array(truth.size + 1) { IntArray(events.size + 1) }
             for (i in truth.indices.reversed()) {
                 for (j in events.indices.reversed()) {
-                    lengths[i][j] = if (truth[i] == events[j]) lengths[i + 1][j + 1] + 1 else maxOf(lengths[i + 1][j], lengths[i][j + 1])
+                    lengths[i][j] =
+                        if (truth[i] == events[j]) lengths[i + 1][j + 1] + 1
+                        else maxOf(lengths[i + 1][j], lengths[i][j + 1])
                 }
             }
             val pairs = mutableListOf<Pair<Int, Int>>()
@@ -176,7 +200,11 @@ class SoakTest {
             var j = 0
             while (i < truth.size && j < events.size) {
                 when {
-                    truth[i] == events[j] -> { pairs += i to j; i++; j++ }
+                    truth[i] == events[j] -> {
+                        pairs += i to j
+                        i++
+                        j++
+                    }
                     lengths[i + 1][j] >= lengths[i][j + 1] -> i++
                     else -> j++
                 }

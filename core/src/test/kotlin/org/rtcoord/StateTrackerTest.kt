@@ -21,7 +21,10 @@ class StateTrackerTest {
     fun `hinted transitions confirmed by a read are all published`() {
         val tracker = StateTracker(ACTIVE)
         listOf(INACTIVE, ACTIVE, INACTIVE).forEach { tracker.hint(it, 0) }
-        assertEquals(listOf(ACTIVE to INACTIVE, INACTIVE to ACTIVE, ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1, grace, hintsExpected = true))
+        assertEquals(
+            listOf(ACTIVE to INACTIVE, INACTIVE to ACTIVE, ACTIVE to INACTIVE),
+            tracker.reconcile(INACTIVE, 1, grace, hintsExpected = true),
+        )
     }
 
     @Test
@@ -36,33 +39,66 @@ class StateTrackerTest {
     fun `a hinted deactivation waits for an abort's ERROR hint, until the hints before it are in or the limit after its hint`() {
         val tracker = StateTracker(ACTIVE, holdLimitMillis = 25)
         tracker.hint(INACTIVE, 100)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true), "held")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true),
+            "held",
+        )
         assertEquals(Held(100, flushed = false), tracker.phase)
         tracker.hint(ERROR, 105)
         tracker.hint(INACTIVE, 106)
-        assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 110, grace, hintsExpected = true), "an abort reset at once")
+        assertEquals(
+            listOf(ACTIVE to ERROR, ERROR to INACTIVE),
+            tracker.reconcile(INACTIVE, 110, grace, hintsExpected = true),
+            "an abort reset at once",
+        )
 
         tracker.hint(ACTIVE, 120)
-        assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true), "other transitions are not held")
+        assertEquals(
+            listOf(INACTIVE to ACTIVE),
+            tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true),
+            "other transitions are not held",
+        )
         tracker.hint(INACTIVE, 130)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 131, grace, hintsExpected = true))
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 131, grace, hintsExpected = true),
+        )
         assertEquals(Held(130, flushed = false), tracker.phase, "the limit counts from the hint")
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 154, grace, hintsExpected = true))
-        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true), "a deactivation at the limit")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 154, grace, hintsExpected = true),
+        )
+        assertEquals(
+            listOf(ACTIVE to INACTIVE),
+            tracker.reconcile(INACTIVE, 155, grace, hintsExpected = true),
+            "a deactivation at the limit",
+        )
         assertEquals(Agreed, tracker.phase)
 
         tracker.hint(ACTIVE, 160)
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 160, grace, hintsExpected = true))
         tracker.hint(INACTIVE, 161)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 161, grace, hintsExpected = true))
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 161, grace, hintsExpected = true),
+        )
         tracker.flushed()
-        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 162, grace, hintsExpected = true), "a deactivation once the earlier hints are in")
+        assertEquals(
+            listOf(ACTIVE to INACTIVE),
+            tracker.reconcile(INACTIVE, 162, grace, hintsExpected = true),
+            "a deactivation once the earlier hints are in",
+        )
         assertEquals(Agreed, tracker.phase)
         tracker.flushed()
         tracker.hint(ACTIVE, 163)
         tracker.reconcile(ACTIVE, 163, grace, hintsExpected = true)
         tracker.hint(INACTIVE, 164)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 164, grace, hintsExpected = true), "a flush before the hint does not end its hold")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 164, grace, hintsExpected = true),
+            "a flush before the hint does not end its hold",
+        )
     }
 
     @Test
@@ -70,23 +106,47 @@ class StateTrackerTest {
         val tracker = StateTracker(ACTIVE, holdLimitMillis = 500, settleMillis = 3)
         tracker.hint(INACTIVE, 100)
         tracker.flushed()
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true), "held")
-        assertEquals(Held(100, flushed = false), tracker.phase, "a marker back before the hold began tells nothing of the hints before its read")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 101, grace, hintsExpected = true),
+            "held",
+        )
+        assertEquals(
+            Held(100, flushed = false),
+            tracker.phase,
+            "a marker back before the hold began tells nothing of the hints before its read",
+        )
         tracker.flushed()
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 102, grace, hintsExpected = true), "the hints are in, but it has not settled")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 102, grace, hintsExpected = true),
+            "the hints are in, but it has not settled",
+        )
         assertEquals(Held(100, flushed = true), tracker.phase)
         tracker.hint(ERROR, 102)
         tracker.hint(INACTIVE, 102)
-        assertEquals(listOf(ACTIVE to ERROR, ERROR to INACTIVE), tracker.reconcile(INACTIVE, 102, grace, hintsExpected = true), "an ERROR hint late behind the marker")
+        assertEquals(
+            listOf(ACTIVE to ERROR, ERROR to INACTIVE),
+            tracker.reconcile(INACTIVE, 102, grace, hintsExpected = true),
+            "an ERROR hint late behind the marker",
+        )
         assertEquals(Agreed, tracker.phase)
 
         tracker.hint(ACTIVE, 120)
         tracker.reconcile(ACTIVE, 120, grace, hintsExpected = true)
         tracker.hint(INACTIVE, 130)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 134, grace, hintsExpected = true), "settled, but the hints before it are not known to be in")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 134, grace, hintsExpected = true),
+            "settled, but the hints before it are not known to be in",
+        )
         assertEquals(Held(130, flushed = false), tracker.phase)
         tracker.flushed()
-        assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 135, grace, hintsExpected = true), "a deactivation")
+        assertEquals(
+            listOf(ACTIVE to INACTIVE),
+            tracker.reconcile(INACTIVE, 135, grace, hintsExpected = true),
+            "a deactivation",
+        )
         assertEquals(Agreed, tracker.phase)
     }
 
@@ -109,8 +169,16 @@ class StateTrackerTest {
     fun `a hint no read confirms is dropped after the grace period`() {
         val tracker = StateTracker(INACTIVE)
         tracker.hint(ACTIVE, 0)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10, grace, hintsExpected = true), "waits for later hints")
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 10 + grace, grace, hintsExpected = true), "a spoofed ACTIVE leaves no phantom")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 10, grace, hintsExpected = true),
+            "waits for later hints",
+        )
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 10 + grace, grace, hintsExpected = true),
+            "a spoofed ACTIVE leaves no phantom",
+        )
         assertEquals(INACTIVE, tracker.confirmed)
     }
 
@@ -123,8 +191,16 @@ class StateTrackerTest {
         assertEquals(listOf(INACTIVE to ACTIVE), tracker.reconcile(ACTIVE, 1, grace, hintsExpected = true))
         val erroneous = StateTracker(ERROR)
         erroneous.hint(ACTIVE, 0)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), erroneous.reconcile(INACTIVE, 1, grace, hintsExpected = true), "waits for the hint of the change read")
-        assertEquals(listOf(ERROR to INACTIVE), erroneous.reconcile(INACTIVE, 1 + grace, grace, hintsExpected = true), "ERROR to ACTIVE is impossible: the read decides")
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            erroneous.reconcile(INACTIVE, 1, grace, hintsExpected = true),
+            "waits for the hint of the change read",
+        )
+        assertEquals(
+            listOf(ERROR to INACTIVE),
+            erroneous.reconcile(INACTIVE, 1 + grace, grace, hintsExpected = true),
+            "ERROR to ACTIVE is impossible: the read decides",
+        )
     }
 
     @Test
@@ -138,18 +214,28 @@ class StateTrackerTest {
     fun `a change a read finds before its hints waits for them, so late hints announce it once`() {
         val tracker = StateTracker(ACTIVE)
         assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 0, grace, hintsExpected = true))
-        // The abort's hints arrive after the read: one transition, not ACTIVE to ERROR and then ERROR to INACTIVE to ERROR.
+        // The abort's hints arrive after the read: one transition, not ACTIVE to ERROR and then ERROR to INACTIVE to
+        // ERROR.
         tracker.hint(INACTIVE, 0)
         tracker.hint(ERROR, 0)
         assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 100, grace, hintsExpected = true))
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(ERROR, 200, grace, hintsExpected = true))
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(ERROR, 200, grace, hintsExpected = true),
+        )
     }
 
     @Test
     fun `a change no hint announces is published once the grace period after the first read that found it is over`() {
         val tracker = StateTracker(ACTIVE)
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 1000, grace, hintsExpected = true))
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 1000 + grace - 1, grace, hintsExpected = true))
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 1000, grace, hintsExpected = true),
+        )
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 1000 + grace - 1, grace, hintsExpected = true),
+        )
         assertEquals(listOf(ACTIVE to INACTIVE), tracker.reconcile(INACTIVE, 1000 + grace, grace, hintsExpected = true))
         assertEquals(Agreed, tracker.phase)
     }
@@ -160,13 +246,23 @@ class StateTrackerTest {
         tracker.reconcile(INACTIVE, 10, grace, hintsExpected = true)
         assertEquals(Disagreeing(10), tracker.phase, "a change no hint announced")
         tracker.hint(INACTIVE, 11)
-        assertEquals(Leading(10), tracker.phase, "its hint came: the grace period still counts from the read that disagreed")
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 12, grace, hintsExpected = true))
+        assertEquals(
+            Leading(10),
+            tracker.phase,
+            "its hint came: the grace period still counts from the read that disagreed",
+        )
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 12, grace, hintsExpected = true),
+        )
         assertEquals(Held(11, flushed = false), tracker.phase, "a hinted deactivation confirmed: held from its hint")
         tracker.flushed()
         tracker.hint(ERROR, 13)
         assertEquals(Held(11, flushed = true), tracker.phase, "a hint alone changes no hold: the read it asks for does")
-        assertEquals(emptyList<Pair<LifeCycle, LifeCycle>>(), tracker.reconcile(INACTIVE, 14, grace, hintsExpected = true))
+        assertEquals(
+            emptyList<Pair<LifeCycle, LifeCycle>>(),
+            tracker.reconcile(INACTIVE, 14, grace, hintsExpected = true),
+        )
         assertEquals(Leading(14), tracker.phase, "an abort whose ERROR the read does not show yet")
         assertEquals(listOf(ACTIVE to ERROR), tracker.reconcile(ERROR, 15, grace, hintsExpected = true))
 
@@ -177,14 +273,20 @@ class StateTrackerTest {
         tracker.flushed()
         tracker.hint(ACTIVE, 23)
         tracker.hint(INACTIVE, 24)
-        assertEquals(Held(21, flushed = false), tracker.phase, "another deactivation hinted in the hold waits for a marker of its own")
+        assertEquals(
+            Held(21, flushed = false),
+            tracker.phase,
+            "another deactivation hinted in the hold waits for a marker of its own",
+        )
     }
 
     @Test
     fun `hints are parsed leniently and malformed ones name nothing`() {
         assertEquals(ACTIVE to 0, Hint(HintKind.RTC_STATUS, " active : 0 ").lifeCycle())
         assertEquals(ERROR to 1000, Hint(HintKind.RTC_STATUS, "ERROR:1000").lifeCycle())
-        listOf("", "ACTIVE", "ACTIVE:x", "RUNNING:0", "ACTIVE:0:1").forEach { assertEquals(null, Hint(HintKind.RTC_STATUS, it).lifeCycle(), it) }
+        listOf("", "ACTIVE", "ACTIVE:x", "RUNNING:0", "ACTIVE:0:1").forEach {
+            assertEquals(null, Hint(HintKind.RTC_STATUS, it).lifeCycle(), it)
+        }
         assertEquals(true, Hint(HintKind.RTC_STATUS, "FINALIZE:0").isFinalize)
     }
 }

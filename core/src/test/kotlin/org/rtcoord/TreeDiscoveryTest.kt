@@ -1,5 +1,7 @@
 package org.rtcoord
 
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.measureTime
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
@@ -10,56 +12,72 @@ import org.rtcoord.fixtures.runPeer
 import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.rtSystem
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.measureTime
 
 class TreeDiscoveryTest {
     private val localisation = LocalisationSystem()
     private val tree = localisation.tree
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     @Test
     fun `the tree holds what rtls -R lists`(): Unit = runBlocking {
         tree.refresh()
         // What the listings hold, a manager's aliases included, as rtls shows them (find names each component once).
-        fun listed(node: Node): List<Node> = listOf(node) + (node as? DirectoryNode)?.listed?.value.orEmpty().flatMap(::listed)
-        val ours = listed(tree.root).filter { it !is RootNode && it !is NameServerNode }
-            .map { node -> node.path.names.joinToString("/") + if (node is DirectoryNode) "/" else "" }.toSet()
+        fun listed(node: Node): List<Node> =
+            listOf(node) + (node as? DirectoryNode)?.listed?.value.orEmpty().flatMap(::listed)
+        val ours =
+            listed(tree.root)
+                .filter { it !is RootNode && it !is NameServerNode }
+                .map { node -> node.path.names.joinToString("/") + if (node is DirectoryNode) "/" else "" }
+                .toSet()
 
         val listing = runPeer("rtls", "-R", "/${localisation.naming.address}/").ok().output
         assertEquals(withoutMastersCopies(rtlsPaths(listing)), ours)
     }
 
     /**
-     * [paths] without a master's copies of its slaves' components: a master's `get_components` includes
-     * its slaves', which rtls lists below both, the tree below the slave only.
+     * [paths] without a master's copies of its slaves' components: a master's `get_components` includes its slaves',
+     * which rtls lists below both, the tree below the slave only.
      */
-    private fun withoutMastersCopies(paths: Set<String>): Set<String> = paths.filterNot { path ->
-        path.endsWith(".rtc") && path.substringBeforeLast('/').endsWith(".mgr") &&
-            paths.any { it.startsWith(path.substringBeforeLast('/') + "/") && it.endsWith("/" + path.substringAfterLast('/')) && it != path }
-    }.toSet()
+    private fun withoutMastersCopies(paths: Set<String>): Set<String> =
+        paths
+            .filterNot { path ->
+                path.endsWith(".rtc") &&
+                    path.substringBeforeLast('/').endsWith(".mgr") &&
+                    paths.any {
+                        it.startsWith(path.substringBeforeLast('/') + "/") &&
+                            it.endsWith("/" + path.substringAfterLast('/')) &&
+                            it != path
+                    }
+            }
+            .toSet()
 
     @Test
-    fun `snapshots carry service interfaces, contexts' properties and the parent, and the composition is read on demand`(): Unit = runBlocking {
-        rtSystem(localisation.naming.corbaloc) { component(Scenarios.mapServer) }.use {
-            val node = tree.component(localisation.path("map_server0.rtc"))
-            val snapshot = node.snapshot()
-            assertEquals(
-                listOf(
-                    PortInterface("map", "MapServer::Map", PortInterface.Polarity.PROVIDED),
-                    PortInterface("pose", "Localisation::PoseSource", PortInterface.Polarity.REQUIRED),
-                ),
-                snapshot.port("map")!!.interfaces,
-            )
-            assertEquals(
-                mapOf("sync_transition" to "YES", "transition_timeout" to "0.5", "type" to "PeriodicExecutionContext", "rate" to "100.0"),
-                snapshot.context(0)!!.properties,
-            )
-            assertEquals(null, snapshot.parent)
-            assertEquals(Composition(isComposite = false, isMember = false), node.composition())
-        }
+    fun `snapshots carry service interfaces, contexts' properties and the parent, and the composition is read on demand`():
+        Unit = runBlocking {
+        rtSystem(localisation.naming.corbaloc) { component(Scenarios.mapServer) }
+            .use {
+                val node = tree.component(localisation.path("map_server0.rtc"))
+                val snapshot = node.snapshot()
+                assertEquals(
+                    listOf(
+                        PortInterface("map", "MapServer::Map", PortInterface.Polarity.PROVIDED),
+                        PortInterface("pose", "Localisation::PoseSource", PortInterface.Polarity.REQUIRED),
+                    ),
+                    snapshot.port("map")!!.interfaces,
+                )
+                assertEquals(
+                    mapOf(
+                        "sync_transition" to "YES",
+                        "transition_timeout" to "0.5",
+                        "type" to "PeriodicExecutionContext",
+                        "rate" to "100.0",
+                    ),
+                    snapshot.context(0)!!.properties,
+                )
+                assertEquals(null, snapshot.parent)
+                assertEquals(Composition(isComposite = false, isMember = false), node.composition())
+            }
     }
 
     @Test
@@ -125,18 +143,36 @@ class TreeDiscoveryTest {
     @Test
     fun `find filters nodes across the tree`(): Unit = runBlocking {
         tree.refresh()
-        val active = tree.find { it is ComponentNode && it.snapshot().state == LifeCycle.ACTIVE }.toList()
-            .filter { it.path.names.size == 2 }.map { it.name }.toSet()
+        val active =
+            tree
+                .find { it is ComponentNode && it.snapshot().state == LifeCycle.ACTIVE }
+                .toList()
+                .filter { it.path.names.size == 2 }
+                .map { it.name }
+                .toSet()
         assertEquals(setOf("laser0.rtc", "gyro0.rtc", "odometry0.rtc", "laser_localise0.rtc"), active)
-        val withPose = tree.find { it is ComponentNode && it.snapshot().port("pose") != null }.toList().map { it.name }.toSet()
+        val withPose =
+            tree.find { it is ComponentNode && it.snapshot().port("pose") != null }.toList().map { it.name }.toSet()
         assertEquals(setOf("laser_localise0.rtc"), withPose)
 
         with(NodeFilters) {
-            val named = tree.find(predicate = name("g?ro*.rtc") and under(RtcPath(localisation.host))).toList().map { it.path.toString() }
-            assertEquals(listOf(localisation.path("gyro0.rtc")), named, "once, at its naming path, not again below its manager")
-            val laserFed = tree.find(predicate = hasPort("laser", "TimedDoubleSeq") and kind(NodeKind.COMPONENT)).toList()
+            val named =
+                tree.find(predicate = name("g?ro*.rtc") and under(RtcPath(localisation.host))).toList().map {
+                    it.path.toString()
+                }
+            assertEquals(
+                listOf(localisation.path("gyro0.rtc")),
+                named,
+                "once, at its naming path, not again below its manager",
+            )
+            val laserFed =
+                tree.find(predicate = hasPort("laser", "TimedDoubleSeq") and kind(NodeKind.COMPONENT)).toList()
             assertEquals(setOf("laser0.rtc", "laser_localise0.rtc"), laserFed.map { it.name }.toSet())
-            assertEquals(4, tree.find(predicate = state(LifeCycle.ACTIVE)).toList().size, "each once, at its naming path")
+            assertEquals(
+                4,
+                tree.find(predicate = state(LifeCycle.ACTIVE)).toList().size,
+                "each once, at its naming path",
+            )
         }
     }
 
@@ -190,7 +226,9 @@ class TreeDiscoveryTest {
     @Test
     fun `nested contexts are listed from their name server's root, each by its whole name`(): Unit = runBlocking {
         Scenarios.scale(localisation.naming.corbaloc, 3).use {
-            val sub = tree.node("/${localisation.naming.address}/${RuntimeProcess.hostContext}/group0.grp_cxt/sub0.sub_cxt") as ContextNode
+            val sub =
+                tree.node("/${localisation.naming.address}/${RuntimeProcess.hostContext}/group0.grp_cxt/sub0.sub_cxt")
+                    as ContextNode
             assertEquals(listOf("relay0.rtc", "relay1.rtc", "relay2.rtc"), sub.children().map { it.name })
         }
     }
@@ -204,7 +242,9 @@ class TreeDiscoveryTest {
                 directory = line.removeSuffix(":").removePrefix(".").removePrefix("/")
                 continue
             }
-            line.split(Regex("\\s+")).forEach { entry -> paths += if (directory.isEmpty()) entry else "$directory/$entry" }
+            line.split(Regex("\\s+")).forEach { entry ->
+                paths += if (directory.isEmpty()) entry else "$directory/$entry"
+            }
         }
         return paths
     }

@@ -1,5 +1,6 @@
 package org.rtcoord
 
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -11,7 +12,6 @@ import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import org.rtcoord.fixtures.runPeer
-import kotlin.time.Duration.Companion.seconds
 
 /** Every operation, checked by reading the result back through rtshell or a second tree. */
 class TreeOperationsTest {
@@ -29,7 +29,8 @@ class TreeOperationsTest {
 
     private fun rtcatState(name: String) = runPeer("rtcat", path(name)).ok().output.lines().first()
 
-    private suspend fun seen(name: String): ComponentSnapshot = witness.component(path(name)).also { it.refresh() }.snapshot()
+    private suspend fun seen(name: String): ComponentSnapshot =
+        witness.component(path(name)).also { it.refresh() }.snapshot()
 
     private suspend fun seenConfiguration(name: String): ConfigurationSnapshot =
         witness.component(path(name)).also { it.refresh() }.configuration()
@@ -53,7 +54,10 @@ class TreeOperationsTest {
     fun `a refused transition says which state the component is in`(): Unit = runBlocking {
         val gyro = tree.component(path("gyro0.rtc"))
         val refused = assertThrows(PreconditionNotMetException::class.java) { runBlocking { gyro.activate() } }
-        assertEquals("${path("gyro0.rtc")}: activate refused: the component is ACTIVE in context 0, not INACTIVE", refused.message)
+        assertEquals(
+            "${path("gyro0.rtc")}: activate refused: the component is ACTIVE in context 0, not INACTIVE",
+            refused.message,
+        )
         assertThrows(NotFoundException::class.java) { runBlocking { gyro.activate(ContextSelector.Handle(7)) } }
         assertThrows(NotFoundException::class.java) { runBlocking { gyro.activate(ContextSelector.Index(3)) } }
     }
@@ -61,7 +65,11 @@ class TreeOperationsTest {
     @Test
     fun `exit removes the component from the system`(): Unit = runBlocking {
         tree.component(path("odometry0.rtc")).exit()
-        await("odometry0 to leave naming") { runBlocking { witness.refresh() }; runBlocking { (witness.node(localisation.host) as ContextNode).children() }.none { it.name == "odometry0.rtc" } }
+        await("odometry0 to leave naming") {
+            runBlocking { witness.refresh() }
+            runBlocking { (witness.node(localisation.host) as ContextNode).children() }
+                .none { it.name == "odometry0.rtc" }
+        }
         assertFalse(runPeer("rtls", localisation.host + "/").ok().output.contains("odometry0.rtc"))
     }
 
@@ -80,11 +88,18 @@ class TreeOperationsTest {
         awaitValue("odometry flowing into odo_localise0") { fixture.latest("odo") }
 
         val connections = tree.port(path("odo_localise0.rtc:odo")).connections()
-        assertEquals(listOf(path("odometry0.rtc:odo"), path("odo_localise0.rtc:odo")), connections.single().ports.map { it.path.toString() })
+        assertEquals(
+            listOf(path("odometry0.rtc:odo"), path("odo_localise0.rtc:odo")),
+            connections.single().ports.map { it.path.toString() },
+        )
 
         tree.port(path("odo_localise0.rtc:odo")).disconnect(odo.id)
         assertEquals(0, seen("odo_localise0.rtc").port("odo")!!.connectors.size)
-        assertEquals(1, seen("odometry0.rtc").port("odo")!!.connectors.size - 0, "odometry0 still feeds laser_localise0")
+        assertEquals(
+            1,
+            seen("odometry0.rtc").port("odo")!!.connectors.size - 0,
+            "odometry0 still feeds laser_localise0",
+        )
 
         tree.component(path("odo_localise0.rtc")).disconnectAll()
         assertTrue(seen("odo_localise0.rtc").ports.all { it.connectors.isEmpty() })
@@ -92,12 +107,19 @@ class TreeOperationsTest {
 
     @Test
     fun `incompatible ports are refused before anything changes`(): Unit = runBlocking {
-        val refused = assertThrows(BadParameterException::class.java) {
-            runBlocking { tree.connect(path("gyro0.rtc:gyro"), path("laser_localise0.rtc:laser")) }
-        }
+        val refused =
+            assertThrows(BadParameterException::class.java) {
+                runBlocking { tree.connect(path("gyro0.rtc:gyro"), path("laser_localise0.rtc:laser")) }
+            }
         assertTrue(refused.message!!.contains("incompatible data types"), refused.message)
         assertThrows(BadParameterException::class.java) {
-            runBlocking { tree.connect(path("laser0.rtc:laser"), path("laser_localise0.rtc:laser"), mapOf("dataport.dataflow_type" to "pull")) }
+            runBlocking {
+                tree.connect(
+                    path("laser0.rtc:laser"),
+                    path("laser_localise0.rtc:laser"),
+                    mapOf("dataport.dataflow_type" to "pull"),
+                )
+            }
         }
         val missing = assertThrows(NotFoundException::class.java) { runBlocking { tree.port(path("gyro0.rtc:nope")) } }
         assertEquals("${path("gyro0.rtc")}:nope: no such port (ports: gyro)", missing.message)
@@ -113,7 +135,9 @@ class TreeOperationsTest {
         assertEquals("2.5", runPeer("rtconf", path("laser_localise0.rtc"), "get", "gain").ok().output.trim())
         assertEquals("+default*\n+precise", rtconfList())
         await("the component to use gain 2.5") { fixture.parameter("gain") == "2.5" }
-        assertThrows(BadParameterException::class.java) { runBlocking { localiser.setParameter("gain", "fast", strict = true) } }
+        assertThrows(BadParameterException::class.java) {
+            runBlocking { localiser.setParameter("gain", "fast", strict = true) }
+        }
         assertThrows(NotFoundException::class.java) { runBlocking { localiser.setParameter("speed", "1") } }
 
         localiser.activateConfigurationSet("precise")
@@ -125,8 +149,14 @@ class TreeOperationsTest {
         localiser.removeConfigurationSet("night")
         assertFalse("night" in seenConfiguration("laser_localise0.rtc").sets)
         assertEquals("precise", fixture.activeConfigurationSet, "removing a set keeps the active one")
-        val missing = assertThrows(NotFoundException::class.java) { runBlocking { localiser.activateConfigurationSet("missing") } }
-        assertEquals("${path("laser_localise0.rtc")}: no configuration set 'missing' (sets: __constraints__, default, precise)", missing.message)
+        val missing =
+            assertThrows(NotFoundException::class.java) {
+                runBlocking { localiser.activateConfigurationSet("missing") }
+            }
+        assertEquals(
+            "${path("laser_localise0.rtc")}: no configuration set 'missing' (sets: __constraints__, default, precise)",
+            missing.message,
+        )
     }
 
     @Test
@@ -140,7 +170,10 @@ class TreeOperationsTest {
         assertEquals(null, none.value("gain"))
         assertEquals("0.25", none.sets.getValue("precise")["gain"])
 
-        val unnamed = assertThrows(PreconditionNotMetException::class.java) { runBlocking { localiser.setParameter("gain", "3.0") } }
+        val unnamed =
+            assertThrows(PreconditionNotMetException::class.java) {
+                runBlocking { localiser.setParameter("gain", "3.0") }
+            }
         assertEquals(
             "${path("laser_localise0.rtc")}: set gain refused: no configuration set is active: name the set to change (sets: __constraints__, default, precise)",
             unnamed.message,
@@ -202,7 +235,10 @@ class TreeOperationsTest {
         slave.loadModule("odo_localise.so")
         assertTrue(slave.factories().any { it["implementation_id"] == "odo_localise" })
         assertThrows(BadParameterException::class.java) { runBlocking { slave.loadModule("missing.so") } }
-        assertEquals(setOf("sensors.so", "localisers.so", "odo_localise.so"), slave.loadableModules().map { it["module_file_name"] }.toSet())
+        assertEquals(
+            setOf("sensors.so", "localisers.so", "odo_localise.so"),
+            slave.loadableModules().map { it["module_file_name"] }.toSet(),
+        )
     }
 
     @Test
@@ -217,7 +253,8 @@ class TreeOperationsTest {
     fun `a manager that refuses is named, with its factories and loadable modules`(): Unit = runBlocking {
         localisation.system.slave!!.set_configuration("manager.modules.search_auto", "NO")
         val slave = tree.manager(path("manager.mgr/manager_slave"))
-        val refused = assertThrows(OperationFailedException::class.java) { runBlocking { slave.create("odo_localise") } }
+        val refused =
+            assertThrows(OperationFailedException::class.java) { runBlocking { slave.create("odo_localise") } }
         assertEquals(
             "${path("manager.mgr/manager_slave")}: create 'odo_localise' failed: nil (the manager created none; " +
                 "factories: PeriodicECSharedComposite, gyro, laser, laser_localise, odometry; " +
@@ -236,7 +273,9 @@ class TreeOperationsTest {
         // No zombie left behind: naming no longer has the name when delete returns.
         val names = (witness.node(localisation.host) as ContextNode).children().map { it.name }
         assertFalse("gyro0.rtc" in names, names.toString())
-        assertFalse(master.children().filterIsInstance<ManagerNode>().single().children().any { it.name == "gyro0.rtc" })
+        assertFalse(
+            master.children().filterIsInstance<ManagerNode>().single().children().any { it.name == "gyro0.rtc" }
+        )
         assertThrows(UnreachableException::class.java) { runBlocking { gyro.refresh() } }
     }
 
@@ -250,49 +289,73 @@ class TreeOperationsTest {
     }
 
     @Test
-    fun `a component re-created under its name right after it exited waits for the manager's clean-up`(): Unit = runBlocking {
-        val master = tree.manager(path("manager.mgr"))
-        localisation.system.runtime.cleanupDelay = 1.seconds
-        val old = localisation.system.component("gyro0")
-        // Straight to the component, as a crash or another tool would: the name lingers in the manager.
-        assertEquals(RTC.ReturnCode_t.RTC_OK, old.exit())
-        val again = master.create("gyro", "gyro0")
-        assertEquals("gyro0", again.snapshot().instanceName)
-        assertFalse(localisation.system.component("gyro0") === old)
-        assertThrows(BadParameterException::class.java) { runBlocking { master.create("gyro", "gyro0") } }
-    }
+    fun `a component re-created under its name right after it exited waits for the manager's clean-up`(): Unit =
+        runBlocking {
+            val master = tree.manager(path("manager.mgr"))
+            localisation.system.runtime.cleanupDelay = 1.seconds
+            val old = localisation.system.component("gyro0")
+            // Straight to the component, as a crash or another tool would: the name lingers in the manager.
+            assertEquals(RTC.ReturnCode_t.RTC_OK, old.exit())
+            val again = master.create("gyro", "gyro0")
+            assertEquals("gyro0", again.snapshot().instanceName)
+            assertFalse(localisation.system.component("gyro0") === old)
+            assertThrows(BadParameterException::class.java) { runBlocking { master.create("gyro", "gyro0") } }
+        }
 
     @Test
     fun `exit says so when the name stays bound past the deadline`(): Unit = runBlocking {
         localisation.system.runtime.cleanupDelay = kotlin.time.Duration.INFINITE
-        val stuck = assertThrows(TimedOutException::class.java) { runBlocking { tree.component(path("odometry0.rtc")).exit() } }
+        val stuck =
+            assertThrows(TimedOutException::class.java) { runBlocking { tree.component(path("odometry0.rtc")).exit() } }
         assertTrue(stuck.message!!.contains("finalised, but is still bound in naming"), stuck.message)
     }
 
     @Test
-    fun `a slave whose process died is left out of its master's listing, and the master creates through the others`(): Unit = runBlocking {
+    fun `a slave whose process died is left out of its master's listing, and the master creates through the others`():
+        Unit = runBlocking {
         val masterAddress = localisation.system.master!!.runtime.orb.corbaloc("manager")
-        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--type", "laser_localise", "--master", masterAddress).use { process ->
-            val master = tree.manager(path("manager.mgr"))
-            val remote = master.children().filterIsInstance<ManagerNode>().single { it.name != "manager_slave" }
-            assertEquals(listOf("hosted0.rtc"), remote.children().map { it.name })
+        FixtureProcess.start(
+                "--naming",
+                localisation.naming.address,
+                "--scenario",
+                "component:hosted0",
+                "--type",
+                "laser_localise",
+                "--master",
+                masterAddress,
+            )
+            .use { process ->
+                val master = tree.manager(path("manager.mgr"))
+                val remote = master.children().filterIsInstance<ManagerNode>().single { it.name != "manager_slave" }
+                assertEquals(listOf("hosted0.rtc"), remote.children().map { it.name })
 
-            process.kill()
-            master.refresh()
-            assertEquals(listOf("manager_slave"), master.children().filterIsInstance<ManagerNode>().map { it.name })
-            assertEquals("hosted0", master.create("laser_localise", "hosted0").snapshot().instanceName)
-        }
+                process.kill()
+                master.refresh()
+                assertEquals(listOf("manager_slave"), master.children().filterIsInstance<ManagerNode>().map { it.name })
+                assertEquals("hosted0", master.create("laser_localise", "hosted0").snapshot().instanceName)
+            }
     }
 
     @Test
     fun `after a slave died, creating through the master places the component elsewhere`(): Unit = runBlocking {
         val masterAddress = localisation.system.master!!.runtime.orb.corbaloc("manager")
         val master = tree.manager(path("manager.mgr"))
-        val dead = FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--type", "gyro", "--master", masterAddress).use { process ->
-            val remote = master.children().filterIsInstance<ManagerNode>().single { it.name != "manager_slave" }
-            process.kill()
-            remote
-        }
+        val dead =
+            FixtureProcess.start(
+                    "--naming",
+                    localisation.naming.address,
+                    "--scenario",
+                    "component:hosted0",
+                    "--type",
+                    "gyro",
+                    "--master",
+                    masterAddress,
+                )
+                .use { process ->
+                    val remote = master.children().filterIsInstance<ManagerNode>().single { it.name != "manager_slave" }
+                    process.kill()
+                    remote
+                }
         // The slave is gone with its process; its master has the live slave load odo_localise.so.
         assertThrows(UnreachableException::class.java) { runBlocking { dead.create("odo_localise") } }
         assertEquals(path("odo_localise0.rtc"), master.create("odo_localise").path.toString())
@@ -300,14 +363,20 @@ class TreeOperationsTest {
         // No slave can create it now: the master starts one with its manager_cmd.
         localisation.system.slave!!.set_configuration("manager.modules.search_auto", "NO")
         assertThrows(OperationFailedException::class.java) { runBlocking { master.create("relay") } }
-        localisation.system.startSlavesOnDemand(listOf(org.rtcoord.runtime.RuntimeModule("relays.so", listOf(org.rtcoord.runtime.Scenarios.relay))))
+        localisation.system.startSlavesOnDemand(
+            listOf(org.rtcoord.runtime.RuntimeModule("relays.so", listOf(org.rtcoord.runtime.Scenarios.relay)))
+        )
         assertEquals(path("relay0.rtc"), master.create("relay").path.toString())
-        assertEquals(listOf("relay0"), localisation.system.startedSlaves.single().runtime.components.map { it.instanceName })
+        assertEquals(
+            listOf("relay0"),
+            localisation.system.startedSlaves.single().runtime.components.map { it.instanceName },
+        )
     }
 
     @Test
     fun `a dead registration becomes a zombie that can be unbound`(): Unit = runBlocking {
-        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:doomed0").use { process ->
+        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:doomed0").use { process
+            ->
             assertEquals("doomed0", tree.component(path("doomed0.rtc")).snapshot().instanceName)
             process.kill()
         }

@@ -1,11 +1,11 @@
 package org.rtcoord
 
+import java.time.Instant
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertNotEquals
 import org.junit.jupiter.api.Test
 import org.rtcoord.profile.Condition
 import org.rtcoord.profile.Extension
-import java.time.Instant
 
 /** Values are equal, hashed and printed by their fields, as the data classes they replace were. */
 class ValueObjectTest {
@@ -28,6 +28,9 @@ class ValueObjectTest {
     @Test
     fun `unknown data compares its bytes by content and prints their count`() {
         assertEquals(UnknownData("T", byteArrayOf(1, 2), true), UnknownData("T", byteArrayOf(1, 2), true))
-        assertEquals("UnknownData(typeName=T, bytes=2 bytes, littleEndian=true)", UnknownData("T", byteArrayOf(1, 2), true).toString())
+        assertEquals(
+            "UnknownData(typeName=T, bytes=2 bytes, littleEndian=true)",
+            UnknownData("T", byteArrayOf(1, 2), true).toString(),
+        )
     }
 }

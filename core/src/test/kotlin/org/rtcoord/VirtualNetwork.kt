@@ -3,10 +3,10 @@ package org.rtcoord
 import java.util.concurrent.TimeUnit
 
 /**
- * Simulated hosts on one LAN: a network namespace per host, each with an `eth0` at `10.77.0.N/24`
- * plugged into a bridge in a namespace of its own, the switch. Namespace names carry this JVM's pid,
- * so runs never share them, and namespaces left by runs that died are removed on the way in. Needs
- * root (or CAP_SYS_ADMIN and CAP_NET_ADMIN); [close] removes every namespace, which takes its links with it.
+ * Simulated hosts on one LAN: a network namespace per host, each with an `eth0` at `10.77.0.N/24` plugged into a bridge
+ * in a namespace of its own, the switch. Namespace names carry this JVM's pid, so runs never share them, and namespaces
+ * left by runs that died are removed on the way in. Needs root (or CAP_SYS_ADMIN and CAP_NET_ADMIN); [close] removes
+ * every namespace, which takes its links with it.
  */
 class VirtualNetwork(hosts: List<String>) : AutoCloseable {
     private val prefix = "rtco${ProcessHandle.current().pid()}-"
@@ -64,10 +64,12 @@ class VirtualNetwork(hosts: List<String>) : AutoCloseable {
     /** Namespaces of earlier runs whose JVM is gone (killed before it could close them). */
     private fun removeAbandoned() {
         val names = run("ip", "netns", "list").lines().map { it.substringBefore(' ') }
-        names.filter { name ->
-            val pid = Regex("""^rtco(\d+)-""").find(name)?.groupValues?.get(1)?.toLongOrNull()
-            pid != null && ProcessHandle.of(pid).map { !it.isAlive }.orElse(true)
-        }.forEach { runCatching { ip("netns", "del", it) } }
+        names
+            .filter { name ->
+                val pid = Regex("""^rtco(\d+)-""").find(name)?.groupValues?.get(1)?.toLongOrNull()
+                pid != null && ProcessHandle.of(pid).map { !it.isAlive }.orElse(true)
+            }
+            .forEach { runCatching { ip("netns", "del", it) } }
     }
 
     companion object {
@@ -89,11 +91,12 @@ class VirtualNetwork(hosts: List<String>) : AutoCloseable {
 
         /** Runs [command]; returns its output, or throws with its error output when it fails. */
         private fun run(vararg command: String): String {
-            val process = try {
-                ProcessBuilder(*command).redirectErrorStream(true).start()
-            } catch (e: java.io.IOException) {
-                throw IllegalStateException("${command.first()}: ${e.message}")
-            }
+            val process =
+                try {
+                    ProcessBuilder(*command).redirectErrorStream(true).start()
+                } catch (e: java.io.IOException) {
+                    throw IllegalStateException("${command.first()}: ${e.message}")
+                }
             val output = process.inputStream.bufferedReader().readText()
             check(process.waitFor(30, TimeUnit.SECONDS)) { "${command.joinToString(" ")} did not end" }
             check(process.exitValue() == 0) { "${command.joinToString(" ")}: ${output.trim()}" }

@@ -1,5 +1,7 @@
 package org.rtcoord
 
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
@@ -9,20 +11,16 @@ import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.runtime.ObserverFlavour as FixtureFlavour
 import org.rtcoord.runtime.Scenarios
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * What the tree says about its own watching, over IIOP: how each component is watched (which observer,
- * or polled and why), once, and again when that changes; and a manager that dies, once, with the
- * components that went with it.
+ * What the tree says about its own watching, over IIOP: how each component is watched (which observer, or polled and
+ * why), once, and again when that changes; and a manager that dies, once, with the components that went with it.
  */
 class WatchReportTest {
     private val localisation = LocalisationSystem()
     private val tree = localisation.tree
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     private suspend fun relay(name: String, vararg flavours: FixtureFlavour): ComponentNode {
         localisation.system.runtime.create(Scenarios.relay.acceptingObservers(*flavours), name)
@@ -30,41 +28,60 @@ class WatchReportTest {
     }
 
     @Test
-    fun `each component is said to be pushed by the observer flavour it took, or polled and why, once`(): Unit = runBlocking {
-        val openRtm = relay("legacy0", FixtureFlavour.OPENRTM)
-        val omg = relay("fsm0", FixtureFlavour.OMG)
-        val mute = relay("mute0")
-        val reported = EventRecorder()
-        tree.onWatching(reported.handler)
-        val auto = EventOptions(pollPeriod = 200.milliseconds, heartbeat = 500.milliseconds)
-        val told = listOf(openRtm, omg, mute).associateWith { node ->
-            EventRecorder().also { tree.on(node, RtcEvent::class.java, auto, it.handler) }
+    fun `each component is said to be pushed by the observer flavour it took, or polled and why, once`(): Unit =
+        runBlocking {
+            val openRtm = relay("legacy0", FixtureFlavour.OPENRTM)
+            val omg = relay("fsm0", FixtureFlavour.OMG)
+            val mute = relay("mute0")
+            val reported = EventRecorder()
+            tree.onWatching(reported.handler)
+            val auto = EventOptions(pollPeriod = 200.milliseconds, heartbeat = 500.milliseconds)
+            val told =
+                listOf(openRtm, omg, mute).associateWith { node ->
+                    EventRecorder().also { tree.on(node, RtcEvent::class.java, auto, it.handler) }
+                }
+
+            assertEquals(
+                WatchMethodChanged(openRtm, null, WatchMethod.Pushed(ObserverFlavour.OPENRTM, 500.milliseconds, null)),
+                told.getValue(openRtm).next<WatchMethodChanged>(),
+            )
+            assertEquals(
+                WatchMethodChanged(omg, null, WatchMethod.Pushed(ObserverFlavour.OMG, 500.milliseconds, null)),
+                told.getValue(omg).next<WatchMethodChanged>(),
+            )
+            val polled =
+                WatchMethod.Polled(
+                    200.milliseconds,
+                    "it offers no ComponentObserver (sdo.service.consumer.available_services: none)",
+                )
+            assertEquals(WatchMethodChanged(mute, null, polled), told.getValue(mute).next<WatchMethodChanged>())
+            assertEquals(1, localisation.system.component("legacy0").observerIds.size)
+            assertEquals(1, localisation.system.component("fsm0").observerIds.size)
+
+            // A second registration on a component changes nothing and hears how it is watched, once.
+            val late = EventRecorder()
+            tree.on(mute, WatchMethodChanged::class.java, auto, late.handler)
+            assertEquals(WatchMethodChanged(mute, null, polled), late.next<WatchMethodChanged>())
+
+            // Polling asked for on a pushed component: still pushed, and polled too, said to every registration.
+            tree.on(omg, RtcEvent::class.java, EventOptions(WatchMode.POLL, pollPeriod = 100.milliseconds)) {}
+            val both = WatchMethod.Pushed(ObserverFlavour.OMG, 500.milliseconds, 100.milliseconds)
+            assertEquals(
+                WatchMethodChanged(omg, WatchMethod.Pushed(ObserverFlavour.OMG, 500.milliseconds, null), both),
+                told.getValue(omg).next<WatchMethodChanged>(),
+            )
+
+            delay(1.seconds)
+            val reports = reported.drained<WatchMethodChanged>()
+            assertEquals(
+                listOf(openRtm, omg, mute, omg).map { it.name },
+                reports.map { it.source.name },
+                "once per component and change: $reports",
+            )
+            assertEquals(both, reports.last().new)
+            told.values.forEach { assertEquals(emptyList<WatchMethodChanged>(), it.drained<WatchMethodChanged>()) }
+            assertEquals(emptyList<WatchMethodChanged>(), late.drained<WatchMethodChanged>())
         }
-
-        assertEquals(WatchMethodChanged(openRtm, null, WatchMethod.Pushed(ObserverFlavour.OPENRTM, 500.milliseconds, null)), told.getValue(openRtm).next<WatchMethodChanged>())
-        assertEquals(WatchMethodChanged(omg, null, WatchMethod.Pushed(ObserverFlavour.OMG, 500.milliseconds, null)), told.getValue(omg).next<WatchMethodChanged>())
-        val polled = WatchMethod.Polled(200.milliseconds, "it offers no ComponentObserver (sdo.service.consumer.available_services: none)")
-        assertEquals(WatchMethodChanged(mute, null, polled), told.getValue(mute).next<WatchMethodChanged>())
-        assertEquals(1, localisation.system.component("legacy0").observerIds.size)
-        assertEquals(1, localisation.system.component("fsm0").observerIds.size)
-
-        // A second registration on a component changes nothing and hears how it is watched, once.
-        val late = EventRecorder()
-        tree.on(mute, WatchMethodChanged::class.java, auto, late.handler)
-        assertEquals(WatchMethodChanged(mute, null, polled), late.next<WatchMethodChanged>())
-
-        // Polling asked for on a pushed component: still pushed, and polled too, said to every registration.
-        tree.on(omg, RtcEvent::class.java, EventOptions(WatchMode.POLL, pollPeriod = 100.milliseconds)) { }
-        val both = WatchMethod.Pushed(ObserverFlavour.OMG, 500.milliseconds, 100.milliseconds)
-        assertEquals(WatchMethodChanged(omg, WatchMethod.Pushed(ObserverFlavour.OMG, 500.milliseconds, null), both), told.getValue(omg).next<WatchMethodChanged>())
-
-        delay(1.seconds)
-        val reports = reported.drained<WatchMethodChanged>()
-        assertEquals(listOf(openRtm, omg, mute, omg).map { it.name }, reports.map { it.source.name }, "once per component and change: $reports")
-        assertEquals(both, reports.last().new)
-        told.values.forEach { assertEquals(emptyList<WatchMethodChanged>(), it.drained<WatchMethodChanged>()) }
-        assertEquals(emptyList<WatchMethodChanged>(), late.drained<WatchMethodChanged>())
-    }
 
     @Test
     fun `push alone on a component that takes no observer watches nothing, and says so`(): Unit = runBlocking {
@@ -76,70 +93,129 @@ class WatchReportTest {
     }
 
     @Test
-    fun `a slave manager killed with its components is one manager death naming them, after which each goes silent`(): Unit = runBlocking {
+    fun `a slave manager killed with its components is one manager death naming them, after which each goes silent`():
+        Unit = runBlocking {
         val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
-        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "scale:2", "--master", master).use { process ->
-            val events = EventRecorder()
-            val reported = EventRecorder()
-            tree.onWatching(reported.handler)
-            tree.on(localisation.host, RtcEvent::class.java, EventOptions(heartbeat = 200.milliseconds), events.handler)
-            val relays = setOf("relay0.rtc", "relay1.rtc")
-            assertEquals(relays, List(2) { events.next<WatchMethodChanged> { it.source.name in relays }.source.name }.toSet())
+        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "scale:2", "--master", master)
+            .use { process ->
+                val events = EventRecorder()
+                val reported = EventRecorder()
+                tree.onWatching(reported.handler)
+                tree.on(
+                    localisation.host,
+                    RtcEvent::class.java,
+                    EventOptions(heartbeat = 200.milliseconds),
+                    events.handler,
+                )
+                val relays = setOf("relay0.rtc", "relay1.rtc")
+                assertEquals(
+                    relays,
+                    List(2) { events.next<WatchMethodChanged> { it.source.name in relays }.source.name }.toSet(),
+                )
 
-            process.kill()
-            val seen = events.until { seen -> seen.any { it is ManagerDied } && seen.filterIsInstance<BecameZombie>().map { it.source.name }.containsAll(relays) }
-            val died = seen.filterIsInstance<ManagerDied>().single()
-            assertEquals("manager_${process.pid}", died.source.name)
-            assertEquals(relays, died.components.map { it.name }.toSet())
-            assertTrue(died.cause is UnreachableException, "${died.cause}")
-            assertTrue(died in tree.snapshot().managerOutages, "the model holds the death for views that start later")
+                process.kill()
+                val seen = events.until { seen ->
+                    seen.any { it is ManagerDied } &&
+                        seen.filterIsInstance<BecameZombie>().map { it.source.name }.containsAll(relays)
+                }
+                val died = seen.filterIsInstance<ManagerDied>().single()
+                assertEquals("manager_${process.pid}", died.source.name)
+                assertEquals(relays, died.components.map { it.name }.toSet())
+                assertTrue(died.cause is UnreachableException, "${died.cause}")
+                assertTrue(
+                    died in tree.snapshot().managerOutages,
+                    "the model holds the death for views that start later",
+                )
 
-            delay(2.seconds) // several probes of the dead manager and its components
-            assertEquals(emptyList<ManagerDied>(), events.drained<ManagerDied>(), "one death only")
-            assertEquals(listOf(died), reported.drained<ManagerDied>(), "one death only for the tree's reporters too")
-        }
+                delay(2.seconds) // several probes of the dead manager and its components
+                assertEquals(emptyList<ManagerDied>(), events.drained<ManagerDied>(), "one death only")
+                assertEquals(
+                    listOf(died),
+                    reported.drained<ManagerDied>(),
+                    "one death only for the tree's reporters too",
+                )
+            }
     }
 
     @Test
-    fun `a slave killed before its own listing was read is still one death naming what its master placed in it`(): Unit = runBlocking {
+    fun `a slave killed before its own listing was read is still one death naming what its master placed in it`():
+        Unit = runBlocking {
         val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
-        FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hosted0", "--master", master).use { process ->
-            // The master's listing alone: it names the slave and what the slave runs; the slave is never listed.
-            tree.manager("${localisation.host}/manager.mgr").children()
-            val events = EventRecorder()
-            tree.on("${localisation.host}/hosted0.rtc", RtcEvent::class.java, EventOptions(heartbeat = 200.milliseconds), events.handler)
-            events.next<WatchMethodChanged>()
+        FixtureProcess.start(
+                "--naming",
+                localisation.naming.address,
+                "--scenario",
+                "component:hosted0",
+                "--master",
+                master,
+            )
+            .use { process ->
+                // The master's listing alone: it names the slave and what the slave runs; the slave is never listed.
+                tree.manager("${localisation.host}/manager.mgr").children()
+                val events = EventRecorder()
+                tree.on(
+                    "${localisation.host}/hosted0.rtc",
+                    RtcEvent::class.java,
+                    EventOptions(heartbeat = 200.milliseconds),
+                    events.handler,
+                )
+                events.next<WatchMethodChanged>()
 
-            process.kill()
-            val died = events.next<ManagerDied>(10.seconds)
-            assertEquals("manager_${process.pid}", died.source.name)
-            assertEquals(listOf("hosted0.rtc"), died.components.map { it.name })
-        }
+                process.kill()
+                val died = events.next<ManagerDied>(10.seconds)
+                assertEquals("manager_${process.pid}", died.source.name)
+                assertEquals(listOf("hosted0.rtc"), died.components.map { it.name })
+            }
     }
 
     @Test
     fun `a manager that stops answering and answers again is one death and one return`(): Unit = runBlocking {
         val master = localisation.system.master!!.runtime.orb.corbaloc("manager")
         RtcTree(TreeConfig(listOf(localisation.naming.address), callTimeout = 1.seconds)).use { tree ->
-            FixtureProcess.start("--naming", localisation.naming.address, "--scenario", "component:hung0", "--master", master).use { process ->
-                val events = EventRecorder()
-                tree.on(localisation.host, RtcEvent::class.java, EventOptions(heartbeat = 300.milliseconds), events.handler)
-                events.next<WatchMethodChanged> { it.source.name == "hung0.rtc" }
+            FixtureProcess.start(
+                    "--naming",
+                    localisation.naming.address,
+                    "--scenario",
+                    "component:hung0",
+                    "--master",
+                    master,
+                )
+                .use { process ->
+                    val events = EventRecorder()
+                    tree.on(
+                        localisation.host,
+                        RtcEvent::class.java,
+                        EventOptions(heartbeat = 300.milliseconds),
+                        events.handler,
+                    )
+                    events.next<WatchMethodChanged> { it.source.name == "hung0.rtc" }
 
-                signal("STOP", process.pid)
-                try {
-                    val died = events.next<ManagerDied>(15.seconds)
-                    assertEquals("manager_${process.pid}", died.source.name)
-                    assertEquals(listOf("hung0.rtc"), died.components.map { it.name })
-                    assertTrue(died.cause is TimedOutException, "${died.cause}")
-                } finally {
-                    signal("CONT", process.pid)
+                    signal("STOP", process.pid)
+                    try {
+                        val died = events.next<ManagerDied>(15.seconds)
+                        assertEquals("manager_${process.pid}", died.source.name)
+                        assertEquals(listOf("hung0.rtc"), died.components.map { it.name })
+                        assertTrue(died.cause is TimedOutException, "${died.cause}")
+                    } finally {
+                        signal("CONT", process.pid)
+                    }
+                    val seen = events.until { seen ->
+                        seen.any { it is ManagerReturned } &&
+                            seen.any { it is Recovered && it.source.name == "hung0.rtc" }
+                    }
+                    assertEquals(
+                        listOf("manager_${process.pid}"),
+                        seen.filterIsInstance<ManagerReturned>().map { it.source.name },
+                    )
+                    assertEquals(
+                        emptyList<ManagerDied>(),
+                        seen.filterIsInstance<ManagerDied>() + events.drained<ManagerDied>(),
+                    )
+                    assertTrue(
+                        tree.snapshot().managerOutages.none { it.source.name == "manager_${process.pid}" },
+                        "returned: no longer dead in the model",
+                    )
                 }
-                val seen = events.until { seen -> seen.any { it is ManagerReturned } && seen.any { it is Recovered && it.source.name == "hung0.rtc" } }
-                assertEquals(listOf("manager_${process.pid}"), seen.filterIsInstance<ManagerReturned>().map { it.source.name })
-                assertEquals(emptyList<ManagerDied>(), seen.filterIsInstance<ManagerDied>() + events.drained<ManagerDied>())
-                assertTrue(tree.snapshot().managerOutages.none { it.source.name == "manager_${process.pid}" }, "returned: no longer dead in the model")
-            }
         }
     }
 
@@ -148,7 +224,9 @@ class WatchReportTest {
         val seen = mutableListOf<RtcEvent>()
         val deadline = System.nanoTime() + 15.seconds.inWholeNanoseconds
         while (!done(seen)) {
-            seen += events.poll(deadline - System.nanoTime(), java.util.concurrent.TimeUnit.NANOSECONDS) ?: throw AssertionError("not within 15 s; saw $seen")
+            seen +=
+                events.poll(deadline - System.nanoTime(), java.util.concurrent.TimeUnit.NANOSECONDS)
+                    ?: throw AssertionError("not within 15 s; saw $seen")
         }
         return seen
     }

@@ -3,8 +3,8 @@ package org.rtcoord.bench
 import java.lang.management.ManagementFactory
 
 /**
- * A run of the chosen benchmarks, one after another (never two at once: each would be the other's
- * load), into one [Report]. A benchmark that fails is reported as failed and the run goes on.
+ * A run of the chosen benchmarks, one after another (never two at once: each would be the other's load), into one
+ * [Report]. A benchmark that fails is reported as failed and the run goes on.
  */
 internal class Bench(private val options: BenchOptions, private val installation: Installation) {
     private val os = ManagementFactory.getOperatingSystemMXBean()
@@ -40,10 +40,13 @@ internal class Bench(private val options: BenchOptions, private val installation
         report.note(
             "${options.profile} run in ${figure(minutes)} min, seed ${options.seed}; ${os.availableProcessors} cores, load average " +
                 "${figure(loadBefore)} before and ${figure(os.systemLoadAverage)} after; Java ${System.getProperty("java.version")}. " +
-                "A loaded machine makes every figure slower and noisier, rtcoord's and the peers' alike.",
+                "A loaded machine makes every figure slower and noisier, rtcoord's and the peers' alike."
         )
         val jvmOptions = ManagementFactory.getRuntimeMXBean().inputArguments.filter { it.startsWith("-XX:") }
-        report.note(if (jvmOptions.isEmpty()) "JVM: the JDK's default options." else "JVM options: ${jvmOptions.joinToString(" ")}.")
+        report.note(
+            if (jvmOptions.isEmpty()) "JVM: the JDK's default options."
+            else "JVM options: ${jvmOptions.joinToString(" ")}."
+        )
         report.note("ratios compare medians measured in this run; nothing is asserted, nothing is stored.")
         return report
     }

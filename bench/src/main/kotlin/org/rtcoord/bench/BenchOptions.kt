@@ -21,9 +21,9 @@ internal enum class Benchmark(val label: String) {
 }
 
 /**
- * How big and how long: the full run measures what issue 9 asks for; [quick] the same things smaller and
- * shorter; [smoke] tiny, only to show the harness works (the unit test runs it). Repetitions and
- * warm-ups are per measured quantity; [seed] fixes every random pause.
+ * How big and how long: the full run measures what issue 9 asks for; [quick] the same things smaller and shorter;
+ * [smoke] tiny, only to show the harness works (the unit test runs it). Repetitions and warm-ups are per measured
+ * quantity; [seed] fixes every random pause.
  */
 internal data class BenchOptions(
     val profile: String,
@@ -75,7 +75,8 @@ internal data class BenchOptions(
     val exploreRuns: Int = 20,
 ) {
     companion object {
-        const val USAGE = """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S] [--launcher-jvm]
+        const val USAGE =
+            """usage: scripts/bench [--quick] [--only NAME,...] [--seconds S] [--launcher-jvm]
 
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
@@ -86,89 +87,94 @@ in the same run). Results are printed, never stored.
                 not the JDK's defaults (C1 then C2, as a host application embedding the library runs)"""
 
         /** What issue 9 asks for: N up to 1000 (10,000 for memory), 60 s monitoring windows. */
-        fun full(benchmarks: List<Benchmark>): BenchOptions = BenchOptions(
-            profile = "full",
-            benchmarks = benchmarks,
-            discoverySizes = listOf(10, 100, 1000),
-            processWarmups = 1,
-            processRepetitions = { n -> if (n >= 1000) 5 else 10 },
-            libraryWarmups = 3,
-            libraryRepetitions = 10,
-            reactionChanges = 1000,
-            reactionWarmUpLimit = 20_000,
-            monitoredComponents = 1000,
-            monitoringWindow = 60.seconds,
-            monitoringWarmup = 10.seconds,
-            roundTripRepetitions = 10,
-            memorySizes = listOf(10_000, 5000, 2000),
-            memoryRepetitions = 3,
-            floorCalls = 2000 to 20_000,
-            startupRepetitions = 10,
-            profileSize = 200,
-            profileRepetitions = 10,
-            microIterations = 5 to 5,
-            microIteration = 2.seconds,
-            scripts = true,
-        )
+        fun full(benchmarks: List<Benchmark>): BenchOptions =
+            BenchOptions(
+                profile = "full",
+                benchmarks = benchmarks,
+                discoverySizes = listOf(10, 100, 1000),
+                processWarmups = 1,
+                processRepetitions = { n -> if (n >= 1000) 5 else 10 },
+                libraryWarmups = 3,
+                libraryRepetitions = 10,
+                reactionChanges = 1000,
+                reactionWarmUpLimit = 20_000,
+                monitoredComponents = 1000,
+                monitoringWindow = 60.seconds,
+                monitoringWarmup = 10.seconds,
+                roundTripRepetitions = 10,
+                memorySizes = listOf(10_000, 5000, 2000),
+                memoryRepetitions = 3,
+                floorCalls = 2000 to 20_000,
+                startupRepetitions = 10,
+                profileSize = 200,
+                profileRepetitions = 10,
+                microIterations = 5 to 5,
+                microIteration = 2.seconds,
+                scripts = true,
+            )
 
         /** What the full run measures, smaller and shorter. */
-        fun quick(benchmarks: List<Benchmark>): BenchOptions = full(benchmarks).copy(
-            profile = "quick",
-            discoverySizes = listOf(10, 100),
-            processRepetitions = { 3 },
-            libraryWarmups = 2,
-            libraryRepetitions = 5,
-            reactionChanges = 200,
-            reactionWarmUpLimit = 4000,
-            monitoringWindow = 10.seconds,
-            monitoringWarmup = 3.seconds,
-            roundTripRepetitions = 3,
-            memorySizes = listOf(2000),
-            memoryRepetitions = 2,
-            floorCalls = 1000 to 10_000,
-            startupRepetitions = 3,
-            profileRepetitions = 3,
-            microIterations = 4 to 3,
-            microIteration = 1.seconds,
-            dataWindow = 5.seconds,
-            silenceRepetitions = 3,
-            testRepetitions = 5,
-            suiteRepetitions = 1,
-            simulationRepetitions = 3,
-            exploreRuns = 6,
-        )
+        fun quick(benchmarks: List<Benchmark>): BenchOptions =
+            full(benchmarks)
+                .copy(
+                    profile = "quick",
+                    discoverySizes = listOf(10, 100),
+                    processRepetitions = { 3 },
+                    libraryWarmups = 2,
+                    libraryRepetitions = 5,
+                    reactionChanges = 200,
+                    reactionWarmUpLimit = 4000,
+                    monitoringWindow = 10.seconds,
+                    monitoringWarmup = 3.seconds,
+                    roundTripRepetitions = 3,
+                    memorySizes = listOf(2000),
+                    memoryRepetitions = 2,
+                    floorCalls = 1000 to 10_000,
+                    startupRepetitions = 3,
+                    profileRepetitions = 3,
+                    microIterations = 4 to 3,
+                    microIteration = 1.seconds,
+                    dataWindow = 5.seconds,
+                    silenceRepetitions = 3,
+                    testRepetitions = 5,
+                    suiteRepetitions = 1,
+                    simulationRepetitions = 3,
+                    exploreRuns = 6,
+                )
 
         /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
-        fun smoke(): BenchOptions = quick(Benchmark.values().toList()).copy(
-            profile = "smoke",
-            discoverySizes = listOf(10),
-            processWarmups = 0,
-            processRepetitions = { 1 },
-            libraryWarmups = 1,
-            libraryRepetitions = 2,
-            reactionChanges = 20,
-            reactionWarmUpLimit = 20,
-            monitoredComponents = 10,
-            monitoringWindow = 1.seconds,
-            monitoringWarmup = 500.milliseconds,
-            roundTripRepetitions = 1,
-            memorySizes = listOf(100),
-            memoryRepetitions = 1,
-            floorCalls = 50 to 200,
-            startupRepetitions = 1,
-            profileSize = 10,
-            profileRepetitions = 1,
-            microIterations = 1 to 1,
-            microIteration = 200.milliseconds,
-            scripts = false,
-            dataWindow = 1.seconds,
-            silenceRepetitions = 1,
-            testRepetitions = 1,
-            suiteRepetitions = 1,
-            simulationSize = 10,
-            simulationRepetitions = 1,
-            exploreRuns = 1,
-        )
+        fun smoke(): BenchOptions =
+            quick(Benchmark.values().toList())
+                .copy(
+                    profile = "smoke",
+                    discoverySizes = listOf(10),
+                    processWarmups = 0,
+                    processRepetitions = { 1 },
+                    libraryWarmups = 1,
+                    libraryRepetitions = 2,
+                    reactionChanges = 20,
+                    reactionWarmUpLimit = 20,
+                    monitoredComponents = 10,
+                    monitoringWindow = 1.seconds,
+                    monitoringWarmup = 500.milliseconds,
+                    roundTripRepetitions = 1,
+                    memorySizes = listOf(100),
+                    memoryRepetitions = 1,
+                    floorCalls = 50 to 200,
+                    startupRepetitions = 1,
+                    profileSize = 10,
+                    profileRepetitions = 1,
+                    microIterations = 1 to 1,
+                    microIteration = 200.milliseconds,
+                    scripts = false,
+                    dataWindow = 1.seconds,
+                    silenceRepetitions = 1,
+                    testRepetitions = 1,
+                    suiteRepetitions = 1,
+                    simulationSize = 10,
+                    simulationRepetitions = 1,
+                    exploreRuns = 1,
+                )
 
         /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */
         fun parse(args: List<String>): BenchOptions {
@@ -180,15 +186,23 @@ in the same run). Results are printed, never stored.
                 when (val arg = rest.next()) {
                     "--quick" -> quick = true
                     "--only" -> {
-                        val names = (if (rest.hasNext()) rest.next() else throw IllegalArgumentException("--only needs a list of benchmarks"))
-                            .split(',').map { it.trim() }.filter { it.isNotEmpty() }
+                        val names =
+                            (if (rest.hasNext()) rest.next()
+                                else throw IllegalArgumentException("--only needs a list of benchmarks"))
+                                .split(',')
+                                .map { it.trim() }
+                                .filter { it.isNotEmpty() }
                         only = names.map { name ->
                             Benchmark.values().firstOrNull { it.label == name }
-                                ?: throw IllegalArgumentException("--only: no benchmark '$name' (there are ${Benchmark.values().joinToString { it.label }})")
+                                ?: throw IllegalArgumentException(
+                                    "--only: no benchmark '$name' (there are ${Benchmark.values().joinToString { it.label }})"
+                                )
                         }
                     }
-                    "--seconds" -> seconds = (if (rest.hasNext()) rest.next() else null)?.toDoubleOrNull()?.takeIf { it > 0 }
-                        ?: throw IllegalArgumentException("--seconds needs a positive number")
+                    "--seconds" ->
+                        seconds =
+                            (if (rest.hasNext()) rest.next() else null)?.toDoubleOrNull()?.takeIf { it > 0 }
+                                ?: throw IllegalArgumentException("--seconds needs a positive number")
                     else -> throw IllegalArgumentException("unknown argument '$arg'")
                 }
             }

@@ -2,6 +2,7 @@ package org.rtcoord.bench
 
 import RTC.RTObject
 import RTC.RTObjectHelper
+import java.util.concurrent.atomic.AtomicInteger
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.flow.toList
@@ -12,20 +13,25 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.runtime.RuntimeOrb
-import java.util.concurrent.atomic.AtomicInteger
 
 /**
- * The physical limit of discovery on this machine: the loopback round trip of one profile read
- * ([roundTrip], in microseconds, from plain JacORB stubs with nothing of rtcoord in the way) and how many
- * such reads overlap when [threads] callers issue them at once ([concurrency] = throughput x round trip).
- * Discovering N components cannot take less than N profile reads at that rate.
+ * The physical limit of discovery on this machine: the loopback round trip of one profile read ([roundTrip], in
+ * microseconds, from plain JacORB stubs with nothing of rtcoord in the way) and how many such reads overlap when
+ * [threads] callers issue them at once ([concurrency] = throughput x round trip). Discovering N components cannot take
+ * less than N profile reads at that rate.
  */
-internal class DiscoveryFloor(val roundTrip: Samples, val threads: Int, val callsPerSecond: Double, val byCallers: Map<Int, Double>) {
-    val concurrency: Double get() = callsPerSecond * roundTrip.median / 1e6
+internal class DiscoveryFloor(
+    val roundTrip: Samples,
+    val threads: Int,
+    val callsPerSecond: Double,
+    val byCallers: Map<Int, Double>,
+) {
+    val concurrency: Double
+        get() = callsPerSecond * roundTrip.median / 1e6
 
     /**
-     * The floor for [n] components, in seconds: N x round trip / concurrency. Concurrency below one
-     * counts as one: reading one component at a time would then be the faster way.
+     * The floor for [n] components, in seconds: N x round trip / concurrency. Concurrency below one counts as one:
+     * reading one component at a time would then be the faster way.
      */
     fun estimate(n: Int): Double = n * (roundTrip.median / 1e6) / concurrency.coerceAtLeast(1.0)
 
@@ -36,18 +42,22 @@ internal class DiscoveryFloor(val roundTrip: Samples, val threads: Int, val call
             val components = componentNames(address)
             val threads = TreeConfig().concurrency
             RuntimeOrb.start().use { client ->
-                val naming = NamingContextExtHelper.narrow(client.orb.string_to_object("corbaloc:iiop:$address/NameService"))
+                val naming =
+                    NamingContextExtHelper.narrow(client.orb.string_to_object("corbaloc:iiop:$address/NameService"))
                 val refs = components.take(threads * 2).map { RTObjectHelper.narrow(naming.resolve_str(it)) }
                 repeat(sequential / 5) { refs[it % refs.size].get_component_profile() }
-                val roundTrips = List(sequential) {
-                    val start = System.nanoTime()
-                    refs[0].get_component_profile()
-                    (System.nanoTime() - start) / 1e3
-                }
+                val roundTrips =
+                    List(sequential) {
+                        val start = System.nanoTime()
+                        refs[0].get_component_profile()
+                        (System.nanoTime() - start) / 1e3
+                    }
                 concurrently(refs, threads, parallel / 10)
                 val elapsed = concurrently(refs, threads, parallel)
                 // Throughput by callers in flight: where adding callers stops paying (a per-endpoint limit).
-                val byCallers = CALLERS.associateWith { callers -> parallel / 2 / (concurrently(refs, callers, parallel / 2) / 1e9) }
+                val byCallers = CALLERS.associateWith { callers ->
+                    parallel / 2 / (concurrently(refs, callers, parallel / 2) / 1e9)
+                }
                 return DiscoveryFloor(Samples(roundTrips, "us"), threads, parallel / (elapsed / 1e9), byCallers)
             }
         }

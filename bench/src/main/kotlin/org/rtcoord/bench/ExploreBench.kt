@@ -5,13 +5,16 @@ import org.rtcoord.sim.explore.ExploreOptions
 import org.rtcoord.sim.explore.FaultExplorer
 
 /**
- * Exploring faults (`rtcoord test --explore`) on `examples/localisation.test.kts`, in this JVM: schedules
- * per minute one at a time and one per processor, and the speed-up over the robot's clock (the runs' own
- * time summed, over the wall time), after one untimed exploration. Each exploration's wall time includes
- * its baseline (each explored scenario run once without faults). Shrinking and the written tests are
- * left out: exploring alone.
+ * Exploring faults (`rtcoord test --explore`) on `examples/localisation.test.kts`, in this JVM: schedules per minute
+ * one at a time and one per processor, and the speed-up over the robot's clock (the runs' own time summed, over the
+ * wall time), after one untimed exploration. Each exploration's wall time includes its baseline (each explored scenario
+ * run once without faults). Shrinking and the written tests are left out: exploring alone.
  */
-internal class ExploreBench(private val options: BenchOptions, private val installation: Installation, private val report: Report) {
+internal class ExploreBench(
+    private val options: BenchOptions,
+    private val installation: Installation,
+    private val report: Report,
+) {
     suspend fun run() {
         report.section("exploring faults: rtcoord test --explore on the paper's coordinator")
         if (!options.scripts) {
@@ -21,13 +24,28 @@ internal class ExploreBench(private val options: BenchOptions, private val insta
         val test = installation.root.resolve("examples/localisation.test.kts")
         val scripts = ScriptHost(installation.root.resolve("bench/target/script-cache"))
         val processors = Runtime.getRuntime().availableProcessors()
-        // The first exploration compiles the test and the coordinator (or takes them from the cache) and warms the JVM up.
-        FaultExplorer(scripts).explore(test, ExploreOptions(seed = options.seed, runs = 1, shrinkRuns = 0, writeTests = false))
+        // The first exploration compiles the test and the coordinator (or takes them from the cache) and warms the JVM
+        // up.
+        FaultExplorer(scripts)
+            .explore(test, ExploreOptions(seed = options.seed, runs = 1, shrinkRuns = 0, writeTests = false))
         for (parallelism in listOf(1, processors).distinct()) {
-            val explored = FaultExplorer(scripts).explore(test, ExploreOptions(seed = options.seed, runs = options.exploreRuns * parallelism, parallelism = parallelism, shrinkRuns = 0, writeTests = false))
+            val explored =
+                FaultExplorer(scripts)
+                    .explore(
+                        test,
+                        ExploreOptions(
+                            seed = options.seed,
+                            runs = options.exploreRuns * parallelism,
+                            parallelism = parallelism,
+                            shrinkRuns = 0,
+                            writeTests = false,
+                        ),
+                    )
             val minutes = explored.elapsed.inWholeMilliseconds / 60_000.0
             report.value(
-                "$ROW, $parallelism at a time", explored.runs / minutes, "/min",
+                "$ROW, $parallelism at a time",
+                explored.runs / minutes,
+                "/min",
                 "${explored.runs} runs, ${explored.failed} failed, ${explored.skipped} skipped; " +
                     "${figure(explored.robotTime.inWholeMilliseconds / 1000.0 / explored.runs)} s of the robot's time a run; " +
                     "${figure(explored.robotTime.inWholeMilliseconds.toDouble() / explored.elapsed.inWholeMilliseconds)}x the robot's clock (real time, not scaled)",

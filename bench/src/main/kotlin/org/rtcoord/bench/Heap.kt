@@ -1,7 +1,7 @@
 package org.rtcoord.bench
 
-import kotlinx.coroutines.yield
 import java.lang.management.ManagementFactory
+import kotlinx.coroutines.yield
 
 /** The heap this JVM uses, as a benchmark reads it. */
 internal object Heap {
@@ -11,9 +11,9 @@ internal object Heap {
     fun used(): Long = memory.heapMemoryUsage.used
 
     /**
-     * Heap in use by reachable objects: after full collections, once the figure stops falling. It first
-     * yields, because `runBlocking`'s event loop keeps the last continuation it ran in a slot of its
-     * thread's stack, and with it whatever that continuation reached: a tree closed a moment ago, all of it.
+     * Heap in use by reachable objects: after full collections, once the figure stops falling. It first yields, because
+     * `runBlocking`'s event loop keeps the last continuation it ran in a slot of its thread's stack, and with it
+     * whatever that continuation reached: a tree closed a moment ago, all of it.
      */
     suspend fun live(): Long {
         yield()

@@ -3,9 +3,9 @@ package org.rtcoord.bench
 import java.lang.management.ManagementFactory
 
 /**
- * The time this JVM's JIT compilers have spent compiling, summed over their threads. On two cores a C2
- * compilation takes one for tens to hundreds of milliseconds, and a woken ORB thread waits for the other:
- * a latency measured while it runs measures the JIT's warm-up, not the library.
+ * The time this JVM's JIT compilers have spent compiling, summed over their threads. On two cores a C2 compilation
+ * takes one for tens to hundreds of milliseconds, and a woken ORB thread waits for the other: a latency measured while
+ * it runs measures the JIT's warm-up, not the library.
  */
 internal object JitCompilation {
     private val bean = ManagementFactory.getCompilationMXBean()
@@ -22,6 +22,9 @@ internal object JitCompilation {
         return Stretch(value, elapsed, compiledBefore?.let { before -> millis()?.minus(before) })
     }
 
-    /** A stretch of work: its [value], its [millis], and the [compiledMillis] the JIT spent in it (null when not counted). */
+    /**
+     * A stretch of work: its [value], its [millis], and the [compiledMillis] the JIT spent in it (null when not
+     * counted).
+     */
     class Stretch<T>(val value: T, val millis: Long, val compiledMillis: Long?)
 }

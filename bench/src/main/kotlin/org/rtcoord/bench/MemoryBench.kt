@@ -1,35 +1,41 @@
 package org.rtcoord.bench
 
+import java.lang.ref.Reference
+import kotlin.time.Duration.Companion.minutes
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.fixtures.FixtureProcess
-import java.lang.ref.Reference
-import kotlin.time.Duration.Companion.minutes
 
 /**
- * Heap per component node: the live heap a tree holds once it has read a system of N components (full
- * snapshots: profiles, ports, contexts, states), less what it held with only the name server listed,
- * divided by N. The system is served by a fixture JVM of its own; the largest size the machine can
- * serve, of those tried, is the one reported.
+ * Heap per component node: the live heap a tree holds once it has read a system of N components (full snapshots:
+ * profiles, ports, contexts, states), less what it held with only the name server listed, divided by N. The system is
+ * served by a fixture JVM of its own; the largest size the machine can serve, of those tried, is the one reported.
  */
 internal class MemoryBench(private val options: BenchOptions, private val report: Report) {
     suspend fun run() {
         val problems = mutableListOf<String>()
         for (n in options.memorySizes) {
-            val fixtures = try {
-                FixtureProcess.start("--scenario", "scale:$n", timeout = 15.minutes)
-            } catch (e: Exception) {
-                problems += "N=$n: ${e.message}"
-                continue
-            }
+            val fixtures =
+                try {
+                    FixtureProcess.start("--scenario", "scale:$n", timeout = 15.minutes)
+                } catch (e: Exception) {
+                    problems += "N=$n: ${e.message}"
+                    continue
+                }
             fixtures.use {
                 val tried = if (problems.isEmpty()) "" else "; larger sizes failed: ${problems.joinToString()}"
-                report.section("memory: heap per component node, tree of N=$n components (fixtures in a separate JVM$tried)")
+                report.section(
+                    "memory: heap per component node, tree of N=$n components (fixtures in a separate JVM$tried)"
+                )
                 val perNode = List(options.memoryRepetitions) { measure(n, fixtures.address) }
-                report.row("live heap per component", Samples(perNode.map { it.first }, "bytes"), perNode.first().second)
+                report.row(
+                    "live heap per component",
+                    Samples(perNode.map { it.first }, "bytes"),
+                    perNode.first().second,
+                )
             }
             return
         }
@@ -51,7 +57,8 @@ internal class MemoryBench(private val options: BenchOptions, private val report
             check(components == n) { "the tree holds $components components, not $n" }
             val directories = nodes.count { it is DirectoryNode }
             Reference.reachabilityFence(tree)
-            return (after - before).toDouble() / n to "${figure((after - before) / Heap.MB)} MB for $n components and $directories directories, counted with the components"
+            return (after - before).toDouble() / n to
+                "${figure((after - before) / Heap.MB)} MB for $n components and $directories directories, counted with the components"
         } finally {
             tree.close()
         }

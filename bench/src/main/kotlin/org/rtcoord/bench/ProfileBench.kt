@@ -1,5 +1,7 @@
 package org.rtcoord.bench
 
+import java.nio.file.Files
+import kotlin.time.Duration.Companion.minutes
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.fixtures.FixtureProcess
@@ -7,17 +9,19 @@ import org.rtcoord.profile.ProfileFormat
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
 import org.rtcoord.profile.SystemProfiles
-import java.nio.file.Files
-import kotlin.time.Duration.Companion.minutes
 
 /**
- * Restoring a whole system from its RTSProfile: N relays chained into one data flow (N - 1 connections,
- * in nested naming contexts) served by a fixture JVM of their own, saved once. Before each timed run
- * every connection is removed; `rtcoord profile restore` and rtshell's `rtresurrect` then make them again
- * from the same file as whole processes, interleaved, each checked to have restored the whole system.
- * The library's restore in the warm bench JVM is timed the same way for reference.
+ * Restoring a whole system from its RTSProfile: N relays chained into one data flow (N - 1 connections, in nested
+ * naming contexts) served by a fixture JVM of their own, saved once. Before each timed run every connection is removed;
+ * `rtcoord profile restore` and rtshell's `rtresurrect` then make them again from the same file as whole processes,
+ * interleaved, each checked to have restored the whole system. The library's restore in the warm bench JVM is timed the
+ * same way for reference.
  */
-internal class ProfileBench(private val options: BenchOptions, private val installation: Installation, private val report: Report) {
+internal class ProfileBench(
+    private val options: BenchOptions,
+    private val installation: Installation,
+    private val report: Report,
+) {
     suspend fun run() {
         val n = options.profileSize
         FixtureProcess.start("--scenario", "pipeline:$n", timeout = 10.minutes).use { fixtures ->
@@ -44,7 +48,13 @@ internal class ProfileBench(private val options: BenchOptions, private val insta
         val rtresurrect = installation.peer("rtresurrect")
         val commands = buildList {
             installation.cliMissing?.let { report.skipped(RTCOORD_RESTORE, it) }
-                ?: add(TimedCommand(RTCOORD_RESTORE, listOf(installation.launcher.toString(), "profile", "restore", file), installation.root))
+                ?: add(
+                    TimedCommand(
+                        RTCOORD_RESTORE,
+                        listOf(installation.launcher.toString(), "profile", "restore", file),
+                        installation.root,
+                    )
+                )
             rtresurrect?.let { add(TimedCommand(RTRESURRECT, listOf(it.toString(), file), installation.root)) }
                 ?: report.skipped(RTRESURRECT, installation.peerMissing("rtresurrect"))
         }
@@ -61,26 +71,37 @@ internal class ProfileBench(private val options: BenchOptions, private val insta
         repeat(options.profileRepetitions) { commands.forEach { times.getValue(it) += once(it) } }
         val samples = times.mapKeys { it.key.label }.mapValues { Samples.seconds(it.value) }
         fun notes(label: String, vararg more: String?) =
-            (more.toList() + incomplete[label]?.let { "left differences from the profile in $it runs" }).filterNotNull().joinToString("; ")
+            (more.toList() + incomplete[label]?.let { "left differences from the profile in $it runs" })
+                .filterNotNull()
+                .joinToString("; ")
         val theirs = samples[RTRESURRECT]
-        samples[RTCOORD_RESTORE]?.let { ours -> report.row(RTCOORD_RESTORE, ours, notes(RTCOORD_RESTORE, theirs?.let { speedup(ours, it, "rtresurrect") })) }
+        samples[RTCOORD_RESTORE]?.let { ours ->
+            report.row(RTCOORD_RESTORE, ours, notes(RTCOORD_RESTORE, theirs?.let { speedup(ours, it, "rtresurrect") }))
+        }
         theirs?.let { report.row(RTRESURRECT, it, notes(RTRESURRECT, "the same file, the same system")) }
     }
 
     private suspend fun library(profiles: SystemProfiles, saved: RtsProfile) {
-        val runs = List(options.profileRepetitions) {
-            disturb(profiles, saved)
-            val start = System.nanoTime()
-            profiles.restore(saved)
-            System.nanoTime() - start
-        }
-        report.row("rtcoord SystemProfiles.restore in a warm JVM", Samples.seconds(runs), "the same restore without starting a process")
+        val runs =
+            List(options.profileRepetitions) {
+                disturb(profiles, saved)
+                val start = System.nanoTime()
+                profiles.restore(saved)
+                System.nanoTime() - start
+            }
+        report.row(
+            "rtcoord SystemProfiles.restore in a warm JVM",
+            Samples.seconds(runs),
+            "the same restore without starting a process",
+        )
     }
 
     /** Removes every connection the profile names, so that a restore has them all to make. */
     private suspend fun disturb(profiles: SystemProfiles, saved: RtsProfile) {
         val removed = profiles.teardown(saved).size
-        check(removed == saved.dataPortConnectors.size) { "removed $removed connections, not ${saved.dataPortConnectors.size}" }
+        check(removed == saved.dataPortConnectors.size) {
+            "removed $removed connections, not ${saved.dataPortConnectors.size}"
+        }
     }
 
     private companion object {

@@ -3,13 +3,15 @@ package org.rtcoord.bench
 import java.io.PrintStream
 
 /**
- * The one table a run prints: sections (one per benchmark and size), each with rows of measurements
- * (count, min, median, max, unit) or single values, and a comparison or note per row; notes that apply
- * to the whole run follow the table. Benchmarks add to it as they finish.
+ * The one table a run prints: sections (one per benchmark and size), each with rows of measurements (count, min,
+ * median, max, unit) or single values, and a comparison or note per row; notes that apply to the whole run follow the
+ * table. Benchmarks add to it as they finish.
  */
 internal class Report {
     private sealed interface Line
+
     private class Section(val title: String) : Line
+
     private class Row(val measure: String, val cells: List<String>, val notes: String) : Line
 
     private val lines = mutableListOf<Line>()
@@ -23,7 +25,18 @@ internal class Report {
 
     /** A measured row: [samples]' count, min, median and max. */
     fun row(measure: String, samples: Samples, notes: String = "") {
-        lines += Row(measure, listOf(samples.count.toString(), figure(samples.min), figure(samples.median), figure(samples.max), samples.unit), notes)
+        lines +=
+            Row(
+                measure,
+                listOf(
+                    samples.count.toString(),
+                    figure(samples.min),
+                    figure(samples.median),
+                    figure(samples.max),
+                    samples.unit,
+                ),
+                notes,
+            )
         progress("  $measure: median ${figure(samples.median)} ${samples.unit} $notes")
     }
 
@@ -48,13 +61,18 @@ internal class Report {
         val header = listOf("n", "min", "median", "max", "unit")
         val rows = lines.filterIsInstance<Row>()
         val measureWidth = (rows.map { it.measure.length + 2 } + 24).max()
-        val widths = header.indices.map { column -> (rows.map { it.cells[column].length } + header[column].length).max() }
-        fun cells(values: List<String>) = values.mapIndexed { column, value -> value.padStart(widths[column]) }.joinToString("  ")
+        val widths =
+            header.indices.map { column -> (rows.map { it.cells[column].length } + header[column].length).max() }
+        fun cells(values: List<String>) =
+            values.mapIndexed { column, value -> value.padStart(widths[column]) }.joinToString("  ")
         out.println("${"benchmark".padEnd(measureWidth)}  ${cells(header)}  notes")
         for (line in lines) {
             when (line) {
                 is Section -> out.println(line.title)
-                is Row -> out.println("${("  " + line.measure).padEnd(measureWidth)}  ${cells(line.cells)}  ${line.notes}".trimEnd())
+                is Row ->
+                    out.println(
+                        "${("  " + line.measure).padEnd(measureWidth)}  ${cells(line.cells)}  ${line.notes}".trimEnd()
+                    )
             }
         }
         if (footnotes.isNotEmpty()) out.println()

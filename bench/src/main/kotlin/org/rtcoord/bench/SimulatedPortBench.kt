@@ -1,5 +1,12 @@
 package org.rtcoord.bench
 
+import java.nio.file.Files
+import java.time.Duration as JavaDuration
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.Duration
+import kotlin.time.DurationUnit
 import kotlinx.coroutines.delay
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
@@ -12,24 +19,23 @@ import org.rtcoord.runtime.PortSpec
 import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.naming.NamingService
 import org.rtcoord.runtime.rtSystem
-import java.nio.file.Files
-import java.time.Duration as JavaDuration
-import java.util.concurrent.LinkedBlockingQueue
-import java.util.concurrent.TimeUnit
-import java.util.concurrent.atomic.AtomicLong
-import kotlin.time.Duration
-import kotlin.time.DurationUnit
 
 /**
- * What `rtcoord sim` spends on one simulated out-port of `RangeData` (1081 ranges) at 100 Hz: the saved
- * system of that one component runs in `./rtcoord sim`, its own process, as a user runs it; this JVM's
- * tree taps the port, so the reader's receipt and decoding are not the simulation's cost. The cost is the
- * process's CPU while the component writes, less the same process with the component inactive (its
- * execution context still ticking), after a warm-up long enough for the JIT to compile the write path.
+ * What `rtcoord sim` spends on one simulated out-port of `RangeData` (1081 ranges) at 100 Hz: the saved system of that
+ * one component runs in `./rtcoord sim`, its own process, as a user runs it; this JVM's tree taps the port, so the
+ * reader's receipt and decoding are not the simulation's cost. The cost is the process's CPU while the component
+ * writes, less the same process with the component inactive (its execution context still ticking), after a warm-up long
+ * enough for the JIT to compile the write path.
  */
-internal class SimulatedPortBench(private val options: BenchOptions, private val installation: Installation, private val report: Report) {
+internal class SimulatedPortBench(
+    private val options: BenchOptions,
+    private val installation: Installation,
+    private val report: Report,
+) {
     suspend fun run() {
-        installation.cliMissing?.let { return report.skipped(LABEL, it) }
+        installation.cliMissing?.let {
+            return report.skipped(LABEL, it)
+        }
         val file = Files.createTempFile("bench-ranger", ".xml")
         try {
             Files.writeString(file, RtsProfiles.write(saved(), ProfileFormat.XML))
@@ -39,11 +45,13 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
         }
     }
 
-    private suspend fun saved() = NamingService.start().use { naming ->
-        rtSystem(naming.corbaloc) { component(ranger, "ranger0") }.use {
-            RtcTree(TreeConfig(listOf(naming.address))).use { SystemProfiles(it).save() }
+    private suspend fun saved() =
+        NamingService.start().use { naming ->
+            rtSystem(naming.corbaloc) { component(ranger, "ranger0") }
+                .use {
+                    RtcTree(TreeConfig(listOf(naming.address))).use { SystemProfiles(it).save() }
+                }
         }
-    }
 
     private suspend fun measure(simulation: Simulation) {
         RtcTree(TreeConfig(listOf(simulation.naming))).use { tree ->
@@ -60,7 +68,9 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
                 val idle = simulation.cpuPerSecond(options.dataWindow)
                 if (rate == 0.0) return report.skipped(LABEL, "no sample reached the tap")
                 report.value(
-                    LABEL, (writing - idle) * 100, "% of a core",
+                    LABEL,
+                    (writing - idle) * 100,
+                    "% of a core",
                     "made up and encoded in `rtcoord sim`, pushed to a tap in another process (${figure(rate)} samples/s reached it); " +
                         "the process ${figure(writing * 100)} % writing, ${figure(idle * 100)} % inactive; target under 1 %",
                 )
@@ -72,9 +82,12 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
 
     /** `./rtcoord sim FILE` with its console open (an empty stdin would end it), until closed. */
     private inner class Simulation(file: String) : AutoCloseable {
-        private val process = ProcessBuilder(installation.launcher.toString(), "sim", file)
-            .directory(installation.root.toFile()).redirectErrorStream(true)
-            .apply { environment().keys.removeAll(TimedCommand.IGNORED_VARIABLES) }.start()
+        private val process =
+            ProcessBuilder(installation.launcher.toString(), "sim", file)
+                .directory(installation.root.toFile())
+                .redirectErrorStream(true)
+                .apply { environment().keys.removeAll(TimedCommand.IGNORED_VARIABLES) }
+                .start()
         private val lines = LinkedBlockingQueue<String>()
 
         /** The `host:port` of the simulation's naming service. */
@@ -85,12 +98,13 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
                 isDaemon = true
                 start()
             }
-            naming = try {
-                awaitReady()
-            } catch (e: Exception) {
-                process.destroyForcibly()
-                throw e
-            }
+            naming =
+                try {
+                    awaitReady()
+                } catch (e: Exception) {
+                    process.destroyForcibly()
+                    throw e
+                }
         }
 
         /** The naming address the simulation prints before its `ready` line. */
@@ -99,7 +113,8 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
             while (true) {
                 val line = lines.poll(60, TimeUnit.SECONDS) ?: error("rtcoord sim printed nothing for 60 s")
                 if (line.startsWith("naming ")) address = line.removePrefix("naming ")
-                if (line.startsWith("ready ")) return checkNotNull(address) { "rtcoord sim said ready without its naming address" }
+                if (line.startsWith("ready "))
+                    return checkNotNull(address) { "rtcoord sim said ready without its naming address" }
             }
         }
 
@@ -112,10 +127,12 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
         }
 
         /** The CPU time of the launcher and the JVM it starts (as a child when it makes its class archive). */
-        private fun cpu(): Long = (sequenceOf(process.toHandle()) + process.toHandle().descendants().iterator().asSequence())
-            .sumOf { handle ->
-                handle.info().totalCpuDuration().map(JavaDuration::toNanos)
-                    .orElseThrow { IllegalStateException("the CPU time of rtcoord sim (pid ${handle.pid()}) cannot be read") }
+        private fun cpu(): Long =
+            (sequenceOf(process.toHandle()) + process.toHandle().descendants().iterator().asSequence()).sumOf { handle
+                ->
+                handle.info().totalCpuDuration().map(JavaDuration::toNanos).orElseThrow {
+                    IllegalStateException("the CPU time of rtcoord sim (pid ${handle.pid()}) cannot be read")
+                }
             }
 
         override fun close() {
@@ -126,8 +143,11 @@ internal class SimulatedPortBench(private val options: BenchOptions, private val
 
     private companion object {
         const val LABEL = "simulated RangeData(1081) out-port at 100 Hz, rtcoord sim"
-        val ranger = ComponentType(
-            "ranger", listOf(PortSpec.DataOut("range", DataType.of("IDL:RTC/RangeData:1.0")!!)), rate = 100.0,
-        )
+        val ranger =
+            ComponentType(
+                "ranger",
+                listOf(PortSpec.DataOut("range", DataType.of("IDL:RTC/RangeData:1.0")!!)),
+                rate = 100.0,
+            )
     }
 }

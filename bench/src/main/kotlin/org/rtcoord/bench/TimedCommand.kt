@@ -7,9 +7,9 @@ import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
 
 /**
- * A command run as a whole process, as a user runs it from a shell, timed from just before it is
- * started to its exit. Output goes to files, so reading it costs the command nothing; name server
- * variables are removed from its environment so only its arguments say what it talks to.
+ * A command run as a whole process, as a user runs it from a shell, timed from just before it is started to its exit.
+ * Output goes to files, so reading it costs the command nothing; name server variables are removed from its environment
+ * so only its arguments say what it talks to.
  */
 internal class TimedCommand(
     val label: String,
@@ -26,8 +26,12 @@ internal class TimedCommand(
         val output = Files.createTempFile("bench-out", ".txt")
         val errors = Files.createTempFile("bench-err", ".txt")
         try {
-            val builder = ProcessBuilder(command).directory(directory.toFile())
-                .redirectOutput(output.toFile()).redirectError(errors.toFile()).redirectInput(ProcessBuilder.Redirect.from(java.io.File("/dev/null")))
+            val builder =
+                ProcessBuilder(command)
+                    .directory(directory.toFile())
+                    .redirectOutput(output.toFile())
+                    .redirectError(errors.toFile())
+                    .redirectInput(ProcessBuilder.Redirect.from(java.io.File("/dev/null")))
             IGNORED_VARIABLES.forEach { builder.environment().remove(it) }
             builder.environment().putAll(environment)
             val start = System.nanoTime()
@@ -38,7 +42,9 @@ internal class TimedCommand(
             }
             val nanos = System.nanoTime() - start
             val run = Run(nanos, Files.readAllLines(output), Files.readString(errors))
-            check(process.exitValue() == 0) { "$label exited ${process.exitValue()}: ${run.errors.lineSequence().firstOrNull { it.isNotBlank() } ?: "(no message)"}" }
+            check(process.exitValue() == 0) {
+                "$label exited ${process.exitValue()}: ${run.errors.lineSequence().firstOrNull { it.isNotBlank() } ?: "(no message)"}"
+            }
             return run
         } finally {
             Files.deleteIfExists(output)
@@ -53,9 +59,8 @@ internal class TimedCommand(
 }
 
 /**
- * Runs each of [commands] [warmups] times untimed, then [repetitions] times interleaved, so load that
- * comes and goes weighs on all of them alike; [inspect] sees each timed run. Returns each command's wall
- * times in seconds.
+ * Runs each of [commands] [warmups] times untimed, then [repetitions] times interleaved, so load that comes and goes
+ * weighs on all of them alike; [inspect] sees each timed run. Returns each command's wall times in seconds.
  */
 internal fun timeInterleaved(
     commands: List<TimedCommand>,

@@ -19,15 +19,18 @@ class CatCommand : TreeCommand("cat") {
         "Show a component (profile, execution contexts, ports and their connections), one of its ports (PATH:PORT), " +
             "or a manager (profile, modules, factories)."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord cat /localhost/host.host_cxt/laser0.rtc" to "the laser's state, contexts and ports",
-        "rtcoord cat -l /localhost/host.host_cxt/laser0.rtc:laser" to "one port with its connectors' properties",
-        "rtcoord cat /localhost/host.host_cxt/manager.mgr" to "what the manager has loaded and can create",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord cat /localhost/host.host_cxt/laser0.rtc" to "the laser's state, contexts and ports",
+            "rtcoord cat -l /localhost/host.host_cxt/laser0.rtc:laser" to "one port with its connectors' properties",
+            "rtcoord cat /localhost/host.host_cxt/manager.mgr" to "what the manager has loaded and can create",
+        )
 
     private val long by option("-l", help = "Also properties, connector details and configuration sets.").flag()
 
-    private val paths by argument("PATH", help = "Components (name.rtc), ports (name.rtc:port) or managers (name.mgr).").multiple(required = true)
+    private val paths by
+        argument("PATH", help = "Components (name.rtc), ports (name.rtc:port) or managers (name.mgr).")
+            .multiple(required = true)
 
     override suspend fun execute() {
         // Everything is read before anything is printed: an error leaves no half-printed report.
@@ -49,9 +52,14 @@ class CatCommand : TreeCommand("cat") {
             return Report({ port.lines(long, "") }, { PrettyJson.encodeToJsonElement(port.toJson(path.toString())) })
         }
         return when (val node = node(text)) {
-            is ComponentNode -> ComponentReport.read(tree, node, withConfiguration = long)
-                .let { report -> Report({ report.lines(long) }, { PrettyJson.encodeToJsonElement(report.toJson()) }) }
-            is ManagerNode -> ManagerReport.read(node).let { report -> Report({ report.lines(long) }, { PrettyJson.encodeToJsonElement(report.toJson()) }) }
+            is ComponentNode ->
+                ComponentReport.read(tree, node, withConfiguration = long).let { report ->
+                    Report({ report.lines(long) }, { PrettyJson.encodeToJsonElement(report.toJson()) })
+                }
+            is ManagerNode ->
+                ManagerReport.read(node).let { report ->
+                    Report({ report.lines(long) }, { PrettyJson.encodeToJsonElement(report.toJson()) })
+                }
             is ZombieNode -> throw node.cause
             else -> throw WrongKindException(node.path.toString(), "component, port or manager", node.kind.label)
         }

@@ -1,5 +1,6 @@
 package org.rtcoord.cli
 
+import java.util.concurrent.ConcurrentHashMap
 import org.jacorb.config.Configuration
 import org.jacorb.config.LoggingInitializer
 import org.slf4j.ILoggerFactory
@@ -13,20 +14,21 @@ import org.slf4j.helpers.MessageFormatter
 import org.slf4j.helpers.NOPMDCAdapter
 import org.slf4j.spi.MDCAdapter
 import org.slf4j.spi.SLF4JServiceProvider
-import java.util.concurrent.ConcurrentHashMap
 
 /**
- * The command's logging, an SLF4J provider of its own: warnings only, one line each on stderr, nothing
- * from JacORB; `-v` lowers both to INFO. Not a logging framework: starting one cost a twentieth of a
- * second on every command, for a command that logs next to nothing. [Main][main] names this provider
- * to SLF4J, which then does not search the class path for one.
+ * The command's logging, an SLF4J provider of its own: warnings only, one line each on stderr, nothing from JacORB;
+ * `-v` lowers both to INFO. Not a logging framework: starting one cost a twentieth of a second on every command, for a
+ * command that logs next to nothing. [Main][main] names this provider to SLF4J, which then does not search the class
+ * path for one.
  */
 class CliLogging : SLF4JServiceProvider {
     private val loggers = ConcurrentHashMap<String, Logger>()
     private val markers = BasicMarkerFactory()
     private val mdc = NOPMDCAdapter()
 
-    override fun getLoggerFactory(): ILoggerFactory = ILoggerFactory { name -> loggers.computeIfAbsent(name, ::StderrLogger) }
+    override fun getLoggerFactory(): ILoggerFactory = ILoggerFactory { name ->
+        loggers.computeIfAbsent(name, ::StderrLogger)
+    }
 
     override fun getMarkerFactory(): IMarkerFactory = markers
 
@@ -37,10 +39,9 @@ class CliLogging : SLF4JServiceProvider {
     override fun initialize() = Unit
 
     /**
-     * JacORB's own logging setup, which the command skips: JacORB logs through SLF4J, so through
-     * [CliLogging]. The default setup only probes for an SLF4J 1 binding (a class lookup that misses,
-     * and so opens every jar of the class path, the Kotlin compiler's among them) and starts
-     * java.util.logging, at every ORB start.
+     * JacORB's own logging setup, which the command skips: JacORB logs through SLF4J, so through [CliLogging]. The
+     * default setup only probes for an SLF4J 1 binding (a class lookup that misses, and so opens every jar of the class
+     * path, the Kotlin compiler's among them) and starts java.util.logging, at every ORB start.
      */
     class JacorbSetup : LoggingInitializer() {
         override fun init(config: Configuration) = Unit
@@ -78,14 +79,24 @@ private class StderrLogger(name: String) : LegacyAbstractLogger() {
     }
 
     override fun isTraceEnabled(): Boolean = CliLogging.enabled(jacorb, Level.TRACE)
+
     override fun isDebugEnabled(): Boolean = CliLogging.enabled(jacorb, Level.DEBUG)
+
     override fun isInfoEnabled(): Boolean = CliLogging.enabled(jacorb, Level.INFO)
+
     override fun isWarnEnabled(): Boolean = CliLogging.enabled(jacorb, Level.WARN)
+
     override fun isErrorEnabled(): Boolean = CliLogging.enabled(jacorb, Level.ERROR)
 
     override fun getFullyQualifiedCallerName(): String? = null
 
-    override fun handleNormalizedLoggingCall(level: Level, marker: Marker?, pattern: String?, arguments: Array<out Any?>?, throwable: Throwable?) {
+    override fun handleNormalizedLoggingCall(
+        level: Level,
+        marker: Marker?,
+        pattern: String?,
+        arguments: Array<out Any?>?,
+        throwable: Throwable?,
+    ) {
         val message = MessageFormatter.basicArrayFormat(pattern, arguments)
         val failure = throwable?.let { ": ${it.javaClass.name}: ${it.message}" }.orEmpty()
         System.err.println("rtcoord: $level $name: $message$failure")

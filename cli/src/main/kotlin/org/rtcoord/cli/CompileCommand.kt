@@ -4,28 +4,37 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.path
+import java.nio.file.Path
 import org.rtcoord.dsl.script.CompiledCoordinator
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
-import java.nio.file.Path
 
 /**
- * Compiles a coordinator script ahead of time into a jar that runs without the Kotlin compiler: from
- * Java and inside an Eclipse plug-in (`JavaCoordinator.load(tree, jar)` through the OSGi bundle), or with
- * `rtcoord run NAME.jar`. Only the rtcoord version that compiled it loads it. Touches no system.
+ * Compiles a coordinator script ahead of time into a jar that runs without the Kotlin compiler: from Java and inside an
+ * Eclipse plug-in (`JavaCoordinator.load(tree, jar)` through the OSGi bundle), or with `rtcoord run NAME.jar`. Only the
+ * rtcoord version that compiled it loads it. Touches no system.
  */
 class CompileCommand : TreeCommand("compile") {
     override fun help(context: Context): String =
         "Compile a coordinator (SCRIPT.coord.kts) into a jar that runs without the Kotlin compiler: with rtcoord run, " +
             "from Java, or in an Eclipse plug-in through the OSGi bundle. Only this rtcoord version (${CompiledCoordinator.version}) loads it."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord compile examples/localisation.coord.kts -o localisation.jar" to "the paper's coordinator, compiled",
-        "rtcoord -n localhost run localisation.jar" to "run it, as the script would run",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord compile examples/localisation.coord.kts -o localisation.jar" to
+                "the paper's coordinator, compiled",
+            "rtcoord -n localhost run localisation.jar" to "run it, as the script would run",
+        )
 
     private val script by argument("SCRIPT", help = "The coordinator script.").path()
-    private val output by option("-o", "--output", metavar = "JAR", help = "The jar to write (default: the script's name, .jar instead of .coord.kts).").path()
+    private val output by
+        option(
+                "-o",
+                "--output",
+                metavar = "JAR",
+                help = "The jar to write (default: the script's name, .jar instead of .coord.kts).",
+            )
+            .path()
 
     override suspend fun execute() {
         val jar = output ?: defaultJar(script)
@@ -39,5 +48,6 @@ class CompileCommand : TreeCommand("compile") {
         confirm("$script: compiled into $jar")
     }
 
-    private fun defaultJar(script: Path): Path = script.resolveSibling(script.fileName.toString().removeSuffix(".kts").removeSuffix(".coord") + ".jar")
+    private fun defaultJar(script: Path): Path =
+        script.resolveSibling(script.fileName.toString().removeSuffix(".kts").removeSuffix(".coord") + ".jar")
 }

@@ -12,10 +12,11 @@ class CompletionCommand : CliktCommand("completion") {
         "Print a completion script for SHELL. The distribution archive installs them in share/bash-completion " +
             "and share/zsh; from a checkout, load one into the running shell as the examples show."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "source <(rtcoord completion bash)" to "complete rtcoord's commands and options in this bash",
-        "rtcoord completion zsh > ~/.zfunc/_rtcoord" to "for zsh, in a folder on fpath",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "source <(rtcoord completion bash)" to "complete rtcoord's commands and options in this bash",
+            "rtcoord completion zsh > ~/.zfunc/_rtcoord" to "for zsh, in a folder on fpath",
+        )
 
     private val shell by argument("SHELL", help = "bash, zsh or fish.").choice(*SHELLS)
 

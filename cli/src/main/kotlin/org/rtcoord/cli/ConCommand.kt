@@ -17,31 +17,42 @@ class ConCommand : TreeCommand("con") {
             "properties do not match are refused, and so are ports connected already, as OpenRTM-aist refuses them " +
             "(--allow-duplicate connects them again)."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord con /localhost/host.host_cxt/laser0.rtc:laser /localhost/host.host_cxt/laser_localise0.rtc:laser" to "a data connection",
-        "rtcoord con A.rtc:out B.rtc:in -p dataport.subscription_type=new --name fast" to "with a property and a name",
-        "rtcoord con A.rtc:out B.rtc:in --allow-duplicate" to "a second connection of two connected ports",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord con /localhost/host.host_cxt/laser0.rtc:laser /localhost/host.host_cxt/laser_localise0.rtc:laser" to
+                "a data connection",
+            "rtcoord con A.rtc:out B.rtc:in -p dataport.subscription_type=new --name fast" to
+                "with a property and a name",
+            "rtcoord con A.rtc:out B.rtc:in --allow-duplicate" to "a second connection of two connected ports",
+        )
 
     private val from by argument("PATH:PORT", help = "One port.")
 
     private val to by argument("PATH:PORT", help = "The other port.")
 
-    private val name by option("--name", metavar = "N", help = "The connector's name (default: both ports' names joined).")
+    private val name by
+        option("--name", metavar = "N", help = "The connector's name (default: both ports' names joined).")
 
     private val id by option("--id", metavar = "ID", help = "The connector's id (default: chosen by the component).")
 
-    private val properties by option("--property", "-p", metavar = "KEY=VALUE", help = "A connector property (repeatable).")
-        .convert { text ->
-            val (key, value) = text.split('=', limit = 2).takeIf { it.size == 2 && it[0].isNotBlank() } ?: fail("'$text' is not KEY=VALUE")
-            key.trim() to value.trim()
-        }.multiple()
+    private val properties by
+        option("--property", "-p", metavar = "KEY=VALUE", help = "A connector property (repeatable).")
+            .convert { text ->
+                val (key, value) =
+                    text.split('=', limit = 2).takeIf { it.size == 2 && it[0].isNotBlank() }
+                        ?: fail("'$text' is not KEY=VALUE")
+                key.trim() to value.trim()
+            }
+            .multiple()
 
-    private val allowDuplicate by option(
-        "--allow-duplicate",
-        help = "Connect ports that are connected already: OpenRTM-aist refuses that unless the connector carries " +
-            "$ALLOW_DUPLICATE=YES, which this sets.",
-    ).flag()
+    private val allowDuplicate by
+        option(
+                "--allow-duplicate",
+                help =
+                    "Connect ports that are connected already: OpenRTM-aist refuses that unless the connector carries " +
+                        "$ALLOW_DUPLICATE=YES, which this sets.",
+            )
+            .flag()
 
     override suspend fun execute() {
         val source = port(from)
@@ -53,12 +64,19 @@ class ConCommand : TreeCommand("con") {
             val existing = source.connectorsTo(target)
             if (existing.isNotEmpty()) {
                 throw PreconditionNotMetException(
-                    source.path.toString(), "connect",
+                    source.path.toString(),
+                    "connect",
                     "already connected to ${target.path} (connector ${existing.joinToString { it.id }}); --allow-duplicate connects them again",
                 )
             }
         }
-        val connector = source.connect(listOf(target), if (allowDuplicate) given + (ALLOW_DUPLICATE to "YES") else given, name, id.orEmpty())
+        val connector =
+            source.connect(
+                listOf(target),
+                if (allowDuplicate) given + (ALLOW_DUPLICATE to "YES") else given,
+                name,
+                id.orEmpty(),
+            )
         if (session.json) {
             echoJson(ConnectorJson(connector.id, connector.name, connector.properties.toSortedMap()))
         } else {

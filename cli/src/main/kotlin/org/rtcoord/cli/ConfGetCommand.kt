@@ -18,10 +18,13 @@ class ConfGetCommand(private val conf: ConfCommand) : TreeCommand("get") {
         val component = component(conf.path)
         val configuration = component.configuration()
         val id = set ?: configuration.activeSet ?: throw noActiveSet(component, "get $name", configuration)
-        val parameters = configuration.sets[id]
-            ?: throw noSuchSet(component, id, configuration.sets.keys)
-        val value = parameters[name]
-            ?: throw NotFoundException(component.path.toString(), "no parameter '$name' in configuration set '$id' (parameters: ${parameters.keys.sorted().joinToString()})")
+        val parameters = configuration.sets[id] ?: throw noSuchSet(component, id, configuration.sets.keys)
+        val value =
+            parameters[name]
+                ?: throw NotFoundException(
+                    component.path.toString(),
+                    "no parameter '$name' in configuration set '$id' (parameters: ${parameters.keys.sorted().joinToString()})",
+                )
         if (session.json) echoJson(ParameterJson(id, name, value)) else echo(value)
     }
 }

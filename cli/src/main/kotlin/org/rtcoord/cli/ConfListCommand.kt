@@ -33,7 +33,10 @@ class ConfListCommand(private val conf: ConfCommand) : TreeCommand("list") {
         }
         configuration.lines(shown, "").forEach { echo(it) }
         if (configuration.activeSet == null && configuration.sets.isNotEmpty()) {
-            echo("rtcoord: ${component.path}: no configuration set is active; 'rtcoord conf ${conf.path} act SET' activates one", err = true)
+            echo(
+                "rtcoord: ${component.path}: no configuration set is active; 'rtcoord conf ${conf.path} act SET' activates one",
+                err = true,
+            )
         }
     }
 }

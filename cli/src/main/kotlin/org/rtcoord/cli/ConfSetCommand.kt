@@ -18,10 +18,14 @@ class ConfSetCommand(private val conf: ConfCommand) : TreeCommand("set") {
 
     private val set by option("--set", metavar = "SET", help = "Change it in this set instead.")
 
-    private val strict by option("--strict", help = "Refuse a value outside the constraint the component declares in __constraints__.").flag()
+    private val strict by
+        option("--strict", help = "Refuse a value outside the constraint the component declares in __constraints__.")
+            .flag()
 
     override suspend fun execute() {
         val node = component(conf.path)
-        node.setParameter(name, value, set, strict).forEach { echo("rtcoord: warning: ${node.path}: $it (written: OpenRTM-aist does not check constraints)", err = true) }
+        node.setParameter(name, value, set, strict).forEach {
+            echo("rtcoord: warning: ${node.path}: $it (written: OpenRTM-aist does not check constraints)", err = true)
+        }
     }
 }

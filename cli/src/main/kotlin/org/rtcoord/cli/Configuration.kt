@@ -10,7 +10,10 @@ import org.rtcoord.cli.json.ConfigurationJson
 internal fun isHiddenSet(id: String): Boolean = id.startsWith("__") && id.endsWith("__")
 
 /** The sets to show, by id: only set [only] when given, else all but the hidden ones unless [showHidden]. */
-internal fun ConfigurationSnapshot.shownSets(showHidden: Boolean, only: String? = null): Map<String, Map<String, String>> =
+internal fun ConfigurationSnapshot.shownSets(
+    showHidden: Boolean,
+    only: String? = null,
+): Map<String, Map<String, String>> =
     sets.toSortedMap().filterKeys { id -> if (only != null) id == only else showHidden || !isHiddenSet(id) }
 
 /** [sets] as text: each set's id (the active one marked `*`), its parameters below it. */
@@ -28,8 +31,13 @@ internal fun noSuchSet(component: ComponentNode, id: String, sets: Set<String>):
     NotFoundException(component.path.toString(), "no configuration set '$id' (sets: ${sets.sorted().joinToString()})")
 
 /** The error for [operation] on the active set of [component], which has none. */
-internal fun noActiveSet(component: ComponentNode, operation: String, configuration: ConfigurationSnapshot): PreconditionNotMetException =
+internal fun noActiveSet(
+    component: ComponentNode,
+    operation: String,
+    configuration: ConfigurationSnapshot,
+): PreconditionNotMetException =
     PreconditionNotMetException(
-        component.path.toString(), operation,
+        component.path.toString(),
+        operation,
         "no configuration set is active: name one with --set, or activate one (sets: ${configuration.sets.keys.sorted().joinToString()})",
     )

@@ -5,8 +5,8 @@ import java.nio.file.Path
 import java.nio.file.Paths
 
 /**
- * Writes the files the distribution archive carries besides the jars (the man page and the shell
- * completion scripts) below the folder given as the only argument. Run by the build, before packaging.
+ * Writes the files the distribution archive carries besides the jars (the man page and the shell completion scripts)
+ * below the folder given as the only argument. Run by the build, before packaging.
  */
 internal object DistributionFiles {
     @JvmStatic

@@ -10,11 +10,12 @@ class ExitCommand : TreeCommand("exit") {
         "Ask components to exit: each finalises and leaves its execution contexts; the command returns once its " +
             "manager has unbound it from naming. Every PATH is checked first (a live component): if one is not, no component is asked."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord exit /localhost/host.host_cxt/laser_localise0.rtc" to "stop the laser localiser for good",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples("rtcoord exit /localhost/host.host_cxt/laser_localise0.rtc" to "stop the laser localiser for good")
 
-    private val paths by argument("PATH", help = "Components (name.rtc); anything else, a port path included, is refused.").multiple(required = true)
+    private val paths by
+        argument("PATH", help = "Components (name.rtc); anything else, a port path included, is refused.")
+            .multiple(required = true)
 
     override suspend fun execute() {
         val components = paths.map { text -> component(text).also { it.refresh() } }

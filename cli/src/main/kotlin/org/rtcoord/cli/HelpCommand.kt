@@ -12,10 +12,11 @@ import com.github.ajalt.clikt.parameters.arguments.multiple
 class HelpCommand : CliktCommand("help") {
     override fun help(context: Context): String = "Show the help of COMMAND (and its subcommand), or of rtcoord itself."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord help conf" to "what conf does, its options and examples",
-        "rtcoord help mgr create" to "the same for a subcommand",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord help conf" to "what conf does, its options and examples",
+            "rtcoord help mgr create" to "the same for a subcommand",
+        )
 
     private val command by argument("COMMAND", help = "A command, as `rtcoord --help` lists them.").multiple()
 
@@ -25,13 +26,15 @@ class HelpCommand : CliktCommand("help") {
 }
 
 /**
- * What `rtcoord COMMAND... --help` shows, as the message Clikt prints it from. A word that names no
- * command is a usage error (Clikt would show the help of the last command it knew instead).
+ * What `rtcoord COMMAND... --help` shows, as the message Clikt prints it from. A word that names no command is a usage
+ * error (Clikt would show the help of the last command it knew instead).
  */
 internal fun helpOf(command: List<String>): PrintHelpMessage {
     command.fold<String, BaseCliktCommand<*>>(rtcoord()) { parent, word ->
         parent.registeredSubcommands().firstOrNull { it.commandName == word }
-            ?: throw UsageError("no such command: $word (${parent.commandName} has ${parent.registeredSubcommandNames().joinToString(", ")})")
+            ?: throw UsageError(
+                "no such command: $word (${parent.commandName} has ${parent.registeredSubcommandNames().joinToString(", ")})"
+            )
     }
     try {
         rtcoord().execute(command + "--help")

@@ -7,8 +7,8 @@ import com.github.ajalt.mordant.rendering.Widget
 import com.github.ajalt.mordant.widgets.Text
 
 /**
- * Clikt's help layout, except that the epilog is printed as written: it holds the examples, whose
- * lines and indentation the default layout would reflow into one paragraph.
+ * Clikt's help layout, except that the epilog is printed as written: it holds the examples, whose lines and indentation
+ * the default layout would reflow into one paragraph.
  */
 internal class HelpFormatter(context: Context) : MordantHelpFormatter(context, showDefaultValues = true) {
     override fun renderEpilog(epilog: String): Widget = Text(epilog, whitespace = Whitespace.PRE)

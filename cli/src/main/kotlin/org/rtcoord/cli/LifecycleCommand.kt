@@ -19,12 +19,11 @@ import org.rtcoord.RtcException
 import org.rtcoord.TransitionOutcome
 
 /**
- * A lifecycle transition of several components (`act`, `deact`, `reset`), all or nothing as far as
- * checking goes: every path must be a live component, with the chosen execution context, in the state
- * the transition starts from (or already in the one it leads to), before any component is changed.
- * Each transition then waits until the state is reached; if one fails, the error says which components
- * were changed before it and which were not attempted. The commands differ only in what they are
- * given here.
+ * A lifecycle transition of several components (`act`, `deact`, `reset`), all or nothing as far as checking goes: every
+ * path must be a live component, with the chosen execution context, in the state the transition starts from (or already
+ * in the one it leads to), before any component is changed. Each transition then waits until the state is reached; if
+ * one fails, the error says which components were changed before it and which were not attempted. The commands differ
+ * only in what they are given here.
  */
 abstract class LifecycleCommand(
     name: String,
@@ -48,14 +47,30 @@ abstract class LifecycleCommand(
 
     override fun helpEpilog(context: Context): String = examples(*usage.toTypedArray())
 
-    private val paths by argument("PATH", help = "Components (name.rtc); anything else, a port path included, is refused.").multiple(required = true)
+    private val paths by
+        argument("PATH", help = "Components (name.rtc); anything else, a port path included, is refused.")
+            .multiple(required = true)
 
-    private val context by mutuallyExclusiveOptions(
-        option("--context", metavar = "HANDLE", help = "The execution context with this handle (owned: 0.., participating: 1000..).")
-            .int().convert { ContextSelector.Handle(it) },
-        option("--index", "-e", metavar = "N", help = "The Nth execution context, owned ones first (rtshell's -e).")
-            .int().convert { ContextSelector.Index(it) },
-    ).single().default(ContextSelector.Handle(0))
+    private val context by
+        mutuallyExclusiveOptions(
+                option(
+                        "--context",
+                        metavar = "HANDLE",
+                        help = "The execution context with this handle (owned: 0.., participating: 1000..).",
+                    )
+                    .int()
+                    .convert { ContextSelector.Handle(it) },
+                option(
+                        "--index",
+                        "-e",
+                        metavar = "N",
+                        help = "The Nth execution context, owned ones first (rtshell's -e).",
+                    )
+                    .int()
+                    .convert { ContextSelector.Index(it) },
+            )
+            .single()
+            .default(ContextSelector.Handle(0))
 
     override suspend fun execute() {
         val pending = paths.map { checked(it) }.filter { (_, state) -> state != to }.map { (component, _) -> component }
@@ -63,7 +78,9 @@ abstract class LifecycleCommand(
             val outcome = component.transition(context)
             // rtact is silent on success; a transition that outlasted the context's timeout is worth a line.
             if (outcome.slow) {
-                confirm("${component.path}: $done slowly: its context answered ${outcome.lateAnswer} once its transition timeout passed, ${outcome.state} after ${outcome.elapsedMillis} ms")
+                confirm(
+                    "${component.path}: $done slowly: its context answered ${outcome.lateAnswer} once its transition timeout passed, ${outcome.state} after ${outcome.elapsedMillis} ms"
+                )
             }
         }
     }
@@ -74,19 +91,24 @@ abstract class LifecycleCommand(
         val handle = component.executionContext(context).handle
         val state = component.state(context)
         if (state != from && state != to) {
-            throw PreconditionNotMetException(component.path.toString(), operation, "the component is $state in context $handle, not $from")
+            throw PreconditionNotMetException(
+                component.path.toString(),
+                operation,
+                "the component is $state in context $handle, not $from",
+            )
         }
         return component to state
     }
 
     /** Failures carry the ReturnCode_t they stand for, as the component gave it. */
     override fun explain(e: RtcException): String {
-        val code = when (e) {
-            is PreconditionNotMetException -> "PRECONDITION_NOT_MET"
-            is BadParameterException -> "BAD_PARAMETER"
-            is OperationUnsupportedException -> "UNSUPPORTED"
-            else -> null
-        }
+        val code =
+            when (e) {
+                is PreconditionNotMetException -> "PRECONDITION_NOT_MET"
+                is BadParameterException -> "BAD_PARAMETER"
+                is OperationUnsupportedException -> "UNSUPPORTED"
+                else -> null
+            }
         return super.explain(e) + (code?.let { " ($it)" } ?: "")
     }
 }

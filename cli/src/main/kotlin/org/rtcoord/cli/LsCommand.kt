@@ -26,17 +26,22 @@ class LsCommand : TreeCommand("ls") {
             "the status is 1; what can be reached is listed. " +
             "A slave manager's components are listed below it, not a second time below its master as rtls does."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord -n localhost ls -l" to "the name server's root context in the long form, as rtls -l /localhost/",
-        "rtcoord ls -l /localhost/host.host_cxt" to "state and ports of every component in a context",
-        "rtcoord -n localhost ls -l -R" to "state and ports of everything the name server knows, directory by directory",
-        "rtcoord -n localhost ls host.host_cxt" to "a relative path starts at the first name server given",
-        "rtcoord --json ls /localhost/host.host_cxt" to "the same entries as JSON",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord -n localhost ls -l" to "the name server's root context in the long form, as rtls -l /localhost/",
+            "rtcoord ls -l /localhost/host.host_cxt" to "state and ports of every component in a context",
+            "rtcoord -n localhost ls -l -R" to
+                "state and ports of everything the name server knows, directory by directory",
+            "rtcoord -n localhost ls host.host_cxt" to "a relative path starts at the first name server given",
+            "rtcoord --json ls /localhost/host.host_cxt" to "the same entries as JSON",
+        )
 
-    private val long by option("-l", help = "Long format: state, then all/in/out/service ports as total/connected, then the name.").flag()
+    private val long by
+        option("-l", help = "Long format: state, then all/in/out/service ports as total/connected, then the name.")
+            .flag()
 
-    private val recursive by option("-R", "--recursive", help = "List every directory below, each under a 'path:' header.").flag()
+    private val recursive by
+        option("-R", "--recursive", help = "List every directory below, each under a 'path:' header.").flag()
 
     private val paths by argument("PATH", help = "What to list; '/' is every name server the run knows.").multiple()
 
@@ -55,21 +60,26 @@ class LsCommand : TreeCommand("ls") {
             }
         }
         // As rtls fails on a name server it cannot list, rather than list it as a dead registration.
-        val unlisted = read.flatMap { block -> block.entries.map { it.node }.filterIsInstance<ZombieNode>().filter { it.path.isNameServer } }
+        val unlisted = read.flatMap { block ->
+            block.entries.map { it.node }.filterIsInstance<ZombieNode>().filter { it.path.isNameServer }
+        }
         val blocks = read.map { block -> Block(block.header, block.entries.filter { it.node !in unlisted }) }
         show(blocks)
-        val errors = failures.map { explain(it) } + unlisted.distinctBy { it.path }.map { "${it.path}: ${it.cause.reason}" }
+        val errors =
+            failures.map { explain(it) } + unlisted.distinctBy { it.path }.map { "${it.path}: ${it.cause.reason}" }
         if (errors.isEmpty()) return
         errors.forEach { echo(CommandFailed(it).message, err = true) }
         throw ProgramResult(1)
     }
 
     /**
-     * What `ls` without a PATH lists: the working directory the environment set, else each name server's
-     * root context (rtls lists its working directory, which rtshell users point at a name server).
+     * What `ls` without a PATH lists: the working directory the environment set, else each name server's root context
+     * (rtls lists its working directory, which rtshell users point at a name server).
      */
     private fun workingDirectories(): List<String> {
-        session.workingDirectory?.let { return listOf(it.toString()) }
+        session.workingDirectory?.let {
+            return listOf(it.toString())
+        }
         if (session.nameServers.isEmpty()) fail(NO_NAME_SERVER)
         return session.nameServers.map { "${nameServerPath(it)}/" }
     }
@@ -102,10 +112,11 @@ class LsCommand : TreeCommand("ls") {
         }
         discover(node, progressLine(), summaries = true)
         return directoriesBelow(node).map { directory ->
-            val header = when {
-                directory === node -> if (headed) text else "."
-                else -> (if (headed) text.trimEnd('/') else ".") + relativePath(node, directory)
-            }
+            val header =
+                when {
+                    directory === node -> if (headed) text else "."
+                    else -> (if (headed) text.trimEnd('/') else ".") + relativePath(node, directory)
+                }
             Block(header, directory.listed.value.orEmpty().map(::entryOf))
         }
     }
@@ -131,10 +142,12 @@ class LsCommand : TreeCommand("ls") {
 
     /** [directory] and every directory below it, depth first, each before its children, as rtls -R lists them. */
     private fun directoriesBelow(directory: DirectoryNode): List<DirectoryNode> =
-        listOf(directory) + directory.listed.value.orEmpty().filterIsInstance<DirectoryNode>().flatMap(::directoriesBelow)
+        listOf(directory) +
+            directory.listed.value.orEmpty().filterIsInstance<DirectoryNode>().flatMap(::directoriesBelow)
 
     /** Whether the path is a name server's root context, `/host:port`. */
-    private val RtcPath.isNameServer: Boolean get() = nameServer != null && names.isEmpty() && objectReference == null
+    private val RtcPath.isNameServer: Boolean
+        get() = nameServer != null && names.isEmpty() && objectReference == null
 
     /** A listing under an optional `header:` line. */
     private class Block(val header: String?, val entries: List<Entry>)

@@ -7,7 +7,8 @@ import org.rtcoord.RtcPath
 import org.rtcoord.cli.json.ManagerReportJson
 
 /** What `cat` shows of a manager: its profile, its modules (loaded and loadable) and its factories. */
-internal class ManagerReport private constructor(
+internal class ManagerReport
+private constructor(
     private val path: RtcPath,
     private val master: Boolean,
     private val profile: Map<String, String>,
@@ -37,7 +38,14 @@ internal class ManagerReport private constructor(
 
     /** The report for `--json`. */
     fun toJson(): ManagerReportJson =
-        ManagerReportJson(path.toString(), master, profile.toSortedMap(), loaded, loadable, factories.map { it.toSortedMap() })
+        ManagerReportJson(
+            path.toString(),
+            master,
+            profile.toSortedMap(),
+            loaded,
+            loadable,
+            factories.map { it.toSortedMap() },
+        )
 
     companion object {
         /** Reads [manager] now, its calls concurrently. */
@@ -47,14 +55,24 @@ internal class ManagerReport private constructor(
             val loaded = async { manager.loadedModules().map(::moduleName) }
             val loadable = async { manager.loadableModules().map(::moduleName) }
             val factories = async { manager.factories() }
-            ManagerReport(manager.path, master.await(), profile.await(), loaded.await(), loadable.await(), factories.await())
+            ManagerReport(
+                manager.path,
+                master.await(),
+                profile.await(),
+                loaded.await(),
+                loadable.await(),
+                factories.await(),
+            )
         }
 
-        /** A module by the name OpenRTM gives it: loaded modules carry `file_path`, loadable ones `module_file_path`. */
+        /**
+         * A module by the name OpenRTM gives it: loaded modules carry `file_path`, loadable ones `module_file_path`.
+         */
         fun moduleName(profile: Map<String, String>): String =
             profile["file_path"] ?: profile["module_file_path"] ?: profile["module_file_name"] ?: profile.toString()
 
         /** A factory by the component type it creates. */
-        fun factoryName(profile: Map<String, String>): String = profile["implementation_id"] ?: profile["type_name"] ?: "?"
+        fun factoryName(profile: Map<String, String>): String =
+            profile["implementation_id"] ?: profile["type_name"] ?: "?"
     }
 }

@@ -1,9 +1,9 @@
 package org.rtcoord.cli
 
 /**
- * A decoded sample's members on one line, as `print` shows them: `{position: {x: 1.0, y: 2.0}, heading:
- * 0.5}`; a sequence longer than [SHOWN] elements by its first ones and its length, so a laser scan or a
- * camera image stays one readable line.
+ * A decoded sample's members on one line, as `print` shows them: `{position: {x: 1.0, y: 2.0}, heading: 0.5}`; a
+ * sequence longer than [SHOWN] elements by its first ones and its length, so a laser scan or a camera image stays one
+ * readable line.
  */
 internal object MemberText {
     private const val SHOWN = 8

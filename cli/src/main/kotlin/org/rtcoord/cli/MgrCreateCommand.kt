@@ -13,7 +13,8 @@ class MgrCreateCommand(private val mgr: MgrCommand) : TreeCommand("create") {
 
     private val type by argument("TYPE", help = "The component type.")
 
-    private val name by option("--name", metavar = "N", help = "The instance name (default: the manager's, TYPE plus a number).")
+    private val name by
+        option("--name", metavar = "N", help = "The instance name (default: the manager's, TYPE plus a number).")
 
     override suspend fun execute() {
         val created = manager(mgr.path).create(type, name)

@@ -12,17 +12,20 @@ class MgrListCommand(private val mgr: MgrCommand) : TreeCommand("list") {
     override fun help(context: Context): String =
         "List the components the manager and its slaves host (the default), the modules it can load, those it has loaded, or its factories."
 
-    private val what by argument("WHAT", help = "components, modules (loadable), loaded or factories.")
-        .choice("components", "modules", "loaded", "factories").default("components")
+    private val what by
+        argument("WHAT", help = "components, modules (loadable), loaded or factories.")
+            .choice("components", "modules", "loaded", "factories")
+            .default("components")
 
     override suspend fun execute() {
         val manager = manager(mgr.path)
-        val items = when (what) {
-            "modules" -> manager.loadableModules().map(ManagerReport::moduleName)
-            "loaded" -> manager.loadedModules().map(ManagerReport::moduleName)
-            "factories" -> manager.factories().map(ManagerReport::factoryName)
-            else -> hosted(manager).map { it.path.toString() }
-        }
+        val items =
+            when (what) {
+                "modules" -> manager.loadableModules().map(ManagerReport::moduleName)
+                "loaded" -> manager.loadedModules().map(ManagerReport::moduleName)
+                "factories" -> manager.factories().map(ManagerReport::factoryName)
+                else -> hosted(manager).map { it.path.toString() }
+            }
         if (session.json) echoJson(items) else items.forEach { echo(it) }
     }
 
@@ -30,6 +33,7 @@ class MgrListCommand(private val mgr: MgrCommand) : TreeCommand("list") {
     private suspend fun hosted(manager: ManagerNode): List<ComponentNode> {
         manager.refresh()
         val children = manager.children()
-        return children.filterIsInstance<ComponentNode>() + children.filterIsInstance<ManagerNode>().flatMap { hosted(it) }
+        return children.filterIsInstance<ComponentNode>() +
+            children.filterIsInstance<ManagerNode>().flatMap { hosted(it) }
     }
 }

@@ -9,10 +9,10 @@ import javax.rmi.CORBA.StubDelegate
 import org.omg.CORBA.ORB
 
 /**
- * How the command's untyped object references (JacORB makes them `javax.rmi.CORBA.Stub`s) hash, compare
- * and print: as the plain CORBA objects they are, through their ORB delegates. The RMI-IIOP default
- * starts java.util.logging when the first reference is made, and that start searches every jar of the
- * class path (the Kotlin compiler's among them): tens of milliseconds on every command's first call.
+ * How the command's untyped object references (JacORB makes them `javax.rmi.CORBA.Stub`s) hash, compare and print: as
+ * the plain CORBA objects they are, through their ORB delegates. The RMI-IIOP default starts java.util.logging when the
+ * first reference is made, and that start searches every jar of the class path (the Kotlin compiler's among them): tens
+ * of milliseconds on every command's first call.
  */
 class PlainStubs : StubDelegate {
     override fun hashCode(self: Stub): Int = self._get_delegate().hashCode(self)
@@ -23,7 +23,9 @@ class PlainStubs : StubDelegate {
 
     override fun connect(self: Stub, orb: ORB): Unit = throw RemoteException("rtcoord does not export RMI objects")
 
-    override fun readObject(self: Stub, stream: ObjectInputStream): Unit = throw NotSerializableException(self.javaClass.name)
+    override fun readObject(self: Stub, stream: ObjectInputStream): Unit =
+        throw NotSerializableException(self.javaClass.name)
 
-    override fun writeObject(self: Stub, stream: ObjectOutputStream): Unit = throw NotSerializableException(self.javaClass.name)
+    override fun writeObject(self: Stub, stream: ObjectOutputStream): Unit =
+        throw NotSerializableException(self.javaClass.name)
 }

@@ -7,14 +7,19 @@ import com.github.ajalt.mordant.terminal.TerminalInfo
 import com.github.ajalt.mordant.terminal.TerminalInterface
 
 /**
- * The terminal Clikt prints through, without Mordant's detection, which costs about 70 ms on every
- * start (native calls through JNA, a child process, JMX): plain text, interactive when the JVM has a
- * console, as wide as COLUMNS says. Every print is flushed, so `watch` reaches a pipe line by line.
+ * The terminal Clikt prints through, without Mordant's detection, which costs about 70 ms on every start (native calls
+ * through JNA, a child process, JMX): plain text, interactive when the JVM has a console, as wide as COLUMNS says.
+ * Every print is flushed, so `watch` reaches a pipe line by line.
  */
 internal object PlainTerminal : TerminalInterface {
     private val console = System.console() != null
 
-    override fun info(ansiLevel: AnsiLevel?, hyperlinks: Boolean?, outputInteractive: Boolean?, inputInteractive: Boolean?): TerminalInfo =
+    override fun info(
+        ansiLevel: AnsiLevel?,
+        hyperlinks: Boolean?,
+        outputInteractive: Boolean?,
+        inputInteractive: Boolean?,
+    ): TerminalInfo =
         TerminalInfo(
             ansiLevel = ansiLevel ?: AnsiLevel.NONE,
             ansiHyperLinks = hyperlinks ?: false,

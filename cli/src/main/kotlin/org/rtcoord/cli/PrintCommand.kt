@@ -32,17 +32,21 @@ class PrintCommand : TreeCommand("print") {
             "connector (id rtcoord-tap-...) goes when the command ends. Runs until Ctrl-C, SIGTERM, --count samples or " +
             "--for has passed, then exits 0."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord print /localhost/host.host_cxt/laser0.rtc:laser" to "the laser's scans as they come",
-        "rtcoord print laser0.rtc:laser --count 1 --json" to "one scan, as JSON",
-        "rtcoord print gyro0.rtc:gyro --for 5s" to "five seconds of the gyro",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord print /localhost/host.host_cxt/laser0.rtc:laser" to "the laser's scans as they come",
+            "rtcoord print laser0.rtc:laser --count 1 --json" to "one scan, as JSON",
+            "rtcoord print gyro0.rtc:gyro --for 5s" to "five seconds of the gyro",
+        )
 
     private val path by argument("PATH:PORT", help = "The out-port (component.rtc:port).")
 
     private val json by option("--json", help = "One JSON object per sample (as the global --json).").flag()
 
-    private val count by option("--count", "-n", metavar = "N", help = "Stop after N samples.").int().check("must be positive") { it > 0 }
+    private val count by
+        option("--count", "-n", metavar = "N", help = "Stop after N samples.").int().check("must be positive") {
+            it > 0
+        }
 
     private val duration by option("--for", metavar = "DURATION", help = "Stop after DURATION.").duration()
 
@@ -66,7 +70,8 @@ class PrintCommand : TreeCommand("print") {
                 printing.join()
                 stopping.cancel()
             }
-            // Closing the tree removes the tap before it returns; cancelling the tap would leave that to background work the exit cuts short.
+            // Closing the tree removes the tap before it returns; cancelling the tap would leave that to background
+            // work the exit cuts short.
             tree.close()
         }
     }
@@ -75,35 +80,39 @@ class PrintCommand : TreeCommand("print") {
 /** A sample as one line: time stamp, type, value. */
 internal fun PortData.line(): String = "${time ?: "-"}  ${typeLabel()}  ${valueText()}"
 
-private fun PortData.typeLabel(): String = when (this) {
-    is UnknownData -> typeName
-    is StructuredData -> DataTypeName.simpleName(typeName)
-    else -> javaClass.simpleName
-}
+private fun PortData.typeLabel(): String =
+    when (this) {
+        is UnknownData -> typeName
+        is StructuredData -> DataTypeName.simpleName(typeName)
+        else -> javaClass.simpleName
+    }
 
 /** A structured sample's members but its time stamp, which the line and the JSON give apart. */
-private val StructuredData.value: Map<String, Any?> get() = if (time != null) members - "tm" else members
+private val StructuredData.value: Map<String, Any?>
+    get() = if (time != null) members - "tm" else members
 
-private fun PortData.valueText(): String = when (this) {
-    is UnknownData -> bytes.joinToString("") { "%02x".format(it) }
-    is StructuredData -> MemberText.of(value)
-    is TimedDoubleSeq -> data.joinToString(" ", "[", "]")
-    is TimedFloatSeq -> data.joinToString(" ", "[", "]")
-    is TimedLongSeq -> data.joinToString(" ", "[", "]")
-    is TimedDouble -> data.toString()
-    else -> toString().substringAfter("data=", "").removeSuffix(")").ifEmpty { toString() }
-}
+private fun PortData.valueText(): String =
+    when (this) {
+        is UnknownData -> bytes.joinToString("") { "%02x".format(it) }
+        is StructuredData -> MemberText.of(value)
+        is TimedDoubleSeq -> data.joinToString(" ", "[", "]")
+        is TimedFloatSeq -> data.joinToString(" ", "[", "]")
+        is TimedLongSeq -> data.joinToString(" ", "[", "]")
+        is TimedDouble -> data.toString()
+        else -> toString().substringAfter("data=", "").removeSuffix(")").ifEmpty { toString() }
+    }
 
 /** A sample as JSON: time stamp, type and value. */
-internal fun PortData.toJson(): SampleJson = SampleJson(
-    time?.toString(),
-    typeLabel(),
-    when (this) {
-        is UnknownData -> JsonPrimitive(bytes.joinToString("") { "%02x".format(it) })
-        is StructuredData -> dynamicJson(value)
-        is TimedDoubleSeq -> dynamicJson(data)
-        is TimedFloatSeq -> dynamicJson(data)
-        is TimedLongSeq -> dynamicJson(data)
-        else -> JsonPrimitive(valueText())
-    },
-)
+internal fun PortData.toJson(): SampleJson =
+    SampleJson(
+        time?.toString(),
+        typeLabel(),
+        when (this) {
+            is UnknownData -> JsonPrimitive(bytes.joinToString("") { "%02x".format(it) })
+            is StructuredData -> dynamicJson(value)
+            is TimedDoubleSeq -> dynamicJson(data)
+            is TimedFloatSeq -> dynamicJson(data)
+            is TimedLongSeq -> dynamicJson(data)
+            else -> JsonPrimitive(valueText())
+        },
+    )

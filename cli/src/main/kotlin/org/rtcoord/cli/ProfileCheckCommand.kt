@@ -13,16 +13,19 @@ class ProfileCheckCommand : ProfileFileCommand("check") {
         "Compare the running system with a profile: components present, their state, connections, configuration and " +
             "rates. Prints each difference and exits 1 when there is any."
 
-    private val state by option("--state", help = "The state components should be in, any case (default: active, as rtcheck).")
-        .choice("active", "inactive", "any", ignoreCase = true).default("active")
+    private val state by
+        option("--state", help = "The state components should be in, any case (default: active, as rtcheck).")
+            .choice("active", "inactive", "any", ignoreCase = true)
+            .default("active")
 
     override suspend fun execute() {
         val profile = profile()
-        val expected = when (state) {
-            "active" -> LifeCycle.ACTIVE
-            "inactive" -> LifeCycle.INACTIVE
-            else -> null
-        }
+        val expected =
+            when (state) {
+                "active" -> LifeCycle.ACTIVE
+                "inactive" -> LifeCycle.INACTIVE
+                else -> null
+            }
         val differences = refusing { profiles.check(profile, expected) }
         if (session.json) {
             echoJson(differences.map { DifferenceJson(it.subject, it.expected, it.actual) })

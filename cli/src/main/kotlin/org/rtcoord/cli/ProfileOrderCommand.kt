@@ -4,10 +4,10 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import kotlin.time.Duration.Companion.seconds
 import org.rtcoord.cli.json.PlannedStepJson
 import org.rtcoord.cli.json.StepOutcomeJson
 import org.rtcoord.profile.OrderedAction
-import kotlin.time.Duration.Companion.seconds
 
 /** `rtcoord profile start|stop`: rtstart and rtstop, in the profile's Activation or Deactivation order. */
 class ProfileOrderCommand(name: String, private val action: OrderedAction) : ProfileFileCommand(name) {
@@ -18,8 +18,10 @@ class ProfileOrderCommand(name: String, private val action: OrderedAction) : Pro
 
     private val dryRun by option("--dry-run", help = "Print the plan, one step a line, and change nothing.").flag()
 
-    private val deadline by option("--step-deadline", metavar = "DURATION", help = "How long one step may take beyond its condition.")
-        .duration().default(10.seconds)
+    private val deadline by
+        option("--step-deadline", metavar = "DURATION", help = "How long one step may take beyond its condition.")
+            .duration()
+            .default(10.seconds)
 
     override suspend fun execute() {
         val profile = profile()

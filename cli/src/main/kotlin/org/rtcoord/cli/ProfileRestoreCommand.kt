@@ -14,17 +14,23 @@ class ProfileRestoreCommand : ProfileFileCommand("restore") {
             "its component declares is written, as rtresurrect and OpenRTM-aist write it, with a warning; a value the " +
             "component holds is not written, so a profile always restores onto the system it was saved from."
 
-    private val create by option(
-        "--create",
-        help = "First create missing components through the manager of their naming context (or the nearest above it), " +
-            "by the type in their component id; a restore refused after that deletes them again.",
-    ).flag()
+    private val create by
+        option(
+                "--create",
+                help =
+                    "First create missing components through the manager of their naming context (or the nearest above it), " +
+                        "by the type in their component id; a restore refused after that deletes them again.",
+            )
+            .flag()
 
-    private val strict by option(
-        "--strict",
-        help = "Refuse the restore, changing nothing, when it would write a value outside the constraint its component " +
-            "declares in __constraints__ (without it, a warning names each such value).",
-    ).flag()
+    private val strict by
+        option(
+                "--strict",
+                help =
+                    "Refuse the restore, changing nothing, when it would write a value outside the constraint its component " +
+                        "declares in __constraints__ (without it, a warning names each such value).",
+            )
+            .flag()
 
     override suspend fun execute() {
         val profile = profile()

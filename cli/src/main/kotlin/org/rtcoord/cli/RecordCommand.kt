@@ -16,17 +16,20 @@ class RecordCommand : TreeCommand("record") {
         "Record the system below PATH to FILE as JSON lines, as the live view sees it: the snapshot first, then every " +
             "event and change of shape. Replay it with rtcoord serve --replay FILE. Runs until Ctrl-C or --for has passed."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord -n localhost record run.jsonl" to "the name server's system, until Ctrl-C",
-        "rtcoord record run.jsonl /localhost/host.host_cxt --for 5m" to "one context, for five minutes",
-        "rtcoord serve --replay run.jsonl" to "the recording in a browser, with a time slider",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord -n localhost record run.jsonl" to "the name server's system, until Ctrl-C",
+            "rtcoord record run.jsonl /localhost/host.host_cxt --for 5m" to "one context, for five minutes",
+            "rtcoord serve --replay run.jsonl" to "the recording in a browser, with a time slider",
+        )
 
     private val file by argument("FILE", help = "The file to write (replaced).").path(canBeDir = false)
 
-    private val path by argument("PATH", help = "A name server, context or manager; default: every name server given.").default("/")
+    private val path by
+        argument("PATH", help = "A name server, context or manager; default: every name server given.").default("/")
 
-    private val poll by option("--poll", metavar = "PERIOD", help = "Poll every PERIOD instead of taking pushed events.").duration()
+    private val poll by
+        option("--poll", metavar = "PERIOD", help = "Poll every PERIOD instead of taking pushed events.").duration()
 
     private val duration by option("--for", metavar = "DURATION", help = "Stop after DURATION.").duration()
 

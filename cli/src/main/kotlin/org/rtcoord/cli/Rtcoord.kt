@@ -14,18 +14,17 @@ import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.multiple
 import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.mordant.terminal.Terminal
-import org.rtcoord.RtcException
-import org.rtcoord.RtcPath
-import org.rtcoord.TreeConfig
-import org.rtcoord.listenAddressProblem
-import org.rtcoord.nameServerPath
 import java.util.Properties
 import kotlin.time.Duration.Companion.seconds
+import org.rtcoord.RtcException
+import org.rtcoord.RtcPath
+import org.rtcoord.listenAddressProblem
+import org.rtcoord.nameServerPath
 
 /**
- * The root command: global options that say where the system is and how to talk about it. Its
- * [run] turns them into the [Session] every subcommand uses, and registers the session with the
- * context so the tree is closed when the command ends, however it ends.
+ * The root command: global options that say where the system is and how to talk about it. Its [run] turns them into the
+ * [Session] every subcommand uses, and registers the session with the context so the tree is closed when the command
+ * ends, however it ends.
  */
 class Rtcoord : CliktCommand(name = "rtcoord") {
     init {
@@ -51,59 +50,82 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
         "Browse and operate an OpenRTM-aist RT system: name servers, naming contexts, managers and components, " +
             "addressed by rtshell's paths (/host:port/context/name.rtc:port)."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord -n localhost ls -l" to "the root context of the name server on localhost:2809, as rtls -l /localhost/ lists it",
-        "rtcoord -n localhost ls -l -R" to "state and ports of everything that name server knows",
-        "rtcoord -n localhost act host.host_cxt/laser0.rtc" to "a relative path starts at the first name server given",
-        "rtcoord act /localhost/host.host_cxt/laser0.rtc" to "activate a component and wait until it is Active",
-        "RTCOORD_NAMESERVERS='a;b:2810' rtcoord find / --state error" to "components in ERROR on two name servers",
-    ) + "\n\nRelative paths start from RTCOORD_CWD (or rtshell's RTCSH_CWD) when it is set, else at the first name server " +
-        "given (-n or RTCOORD_NAMESERVERS). A name that is not found is answered with the close ones that exist (did you mean)."
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord -n localhost ls -l" to
+                "the root context of the name server on localhost:2809, as rtls -l /localhost/ lists it",
+            "rtcoord -n localhost ls -l -R" to "state and ports of everything that name server knows",
+            "rtcoord -n localhost act host.host_cxt/laser0.rtc" to
+                "a relative path starts at the first name server given",
+            "rtcoord act /localhost/host.host_cxt/laser0.rtc" to "activate a component and wait until it is Active",
+            "RTCOORD_NAMESERVERS='a;b:2810' rtcoord find / --state error" to "components in ERROR on two name servers",
+        ) +
+            "\n\nRelative paths start from RTCOORD_CWD (or rtshell's RTCSH_CWD) when it is set, else at the first name server " +
+            "given (-n or RTCOORD_NAMESERVERS). A name that is not found is answered with the close ones that exist (did you mean)."
 
-    private val nameServers by option(
-        "-n", "--nameserver",
-        metavar = "ADDRESS",
-        help = "A name server to use, HOST or HOST:PORT (repeatable). Without it: RTCOORD_NAMESERVERS, else rtshell's " +
-            "RTCTREE_NAMESERVERS, both separated by ';'. Name servers named in a path are always used. Relative paths " +
-            "start at the first one, unless RTCOORD_CWD says otherwise.",
-    ).convert { address -> nameServer(address) { fail(it) } }.multiple()
+    private val nameServers by
+        option(
+                "-n",
+                "--nameserver",
+                metavar = "ADDRESS",
+                help =
+                    "A name server to use, HOST or HOST:PORT (repeatable). Without it: RTCOORD_NAMESERVERS, else rtshell's " +
+                        "RTCTREE_NAMESERVERS, both separated by ';'. Name servers named in a path are always used. Relative paths " +
+                        "start at the first one, unless RTCOORD_CWD says otherwise.",
+            )
+            .convert { address -> nameServer(address) { fail(it) } }
+            .multiple()
 
-    private val timeout by option(
-        "--timeout",
-        metavar = "DURATION",
-        help = "How long any one call to the system may take, e.g. 3s or 500ms.",
-    ).duration().default(3.seconds)
+    private val timeout by
+        option(
+                "--timeout",
+                metavar = "DURATION",
+                help = "How long any one call to the system may take, e.g. 3s or 500ms.",
+            )
+            .duration()
+            .default(3.seconds)
 
-    private val listen by option(
-        "--listen",
-        metavar = "ADDRESS",
-        help = "The one address to listen on for components calling back (watch, run, demo). Default: the address this " +
-            "host uses to reach the first name server, loopback for a local one. 0.0.0.0 listens on every interface.",
-    ).convert { address -> listenAddressProblem(address)?.let { fail(it) } ?: address }
+    private val listen by
+        option(
+                "--listen",
+                metavar = "ADDRESS",
+                help =
+                    "The one address to listen on for components calling back (watch, run, demo). Default: the address this " +
+                        "host uses to reach the first name server, loopback for a local one. 0.0.0.0 listens on every interface.",
+            )
+            .convert { address -> listenAddressProblem(address)?.let { fail(it) } ?: address }
 
     private val json by option("--json", help = "Machine-readable output (JSON) from every listing command.").flag()
 
-    private val verbose by option("-v", "--verbose", help = "Turn JacORB's logging on and show the stack trace of an error.").flag()
+    private val verbose by
+        option("-v", "--verbose", help = "Turn JacORB's logging on and show the stack trace of an error.").flag()
 
-    private val quiet by option("-q", "--quiet", help = "Print no confirmations or progress; listings and errors still print.").flag()
+    private val quiet by
+        option("-q", "--quiet", help = "Print no confirmations or progress; listings and errors still print.").flag()
 
     override fun run() {
         if (verbose) CliLogging.verbose()
-        val session = Session(
-            nameServers = nameServers.ifEmpty { nameServersFromEnvironment() },
-            timeout = timeout,
-            json = json,
-            verbose = verbose,
-            quiet = quiet,
-            workingDirectory = workingDirectoryFromEnvironment(),
-            listenAddress = listen,
-        )
+        val session =
+            Session(
+                nameServers = nameServers.ifEmpty { nameServersFromEnvironment() },
+                timeout = timeout,
+                json = json,
+                verbose = verbose,
+                quiet = quiet,
+                workingDirectory = workingDirectoryFromEnvironment(),
+                listenAddress = listen,
+            )
         currentContext.findOrSetObject { currentContext.registerCloseable(session) }
     }
 
     private fun nameServersFromEnvironment(): List<String> {
-        val variable = NAME_SERVER_VARIABLES.firstOrNull { !currentContext.readEnvvar(it).isNullOrBlank() } ?: return emptyList()
-        return currentContext.readEnvvar(variable)!!.split(';').map { it.trim() }.filter { it.isNotEmpty() }
+        val variable =
+            NAME_SERVER_VARIABLES.firstOrNull { !currentContext.readEnvvar(it).isNullOrBlank() } ?: return emptyList()
+        return currentContext
+            .readEnvvar(variable)!!
+            .split(';')
+            .map { it.trim() }
+            .filter { it.isNotEmpty() }
             .map { address -> nameServer(address) { throw UsageError("$variable: $it") } }
     }
 
@@ -119,8 +141,8 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
 
     internal companion object {
         /**
-         * Whether Mordant prints [text] as it is: it expands tabs and interprets escape sequences, and
-         * leaves text without control characters (newlines apart) unchanged.
+         * Whether Mordant prints [text] as it is: it expands tabs and interprets escape sequences, and leaves text
+         * without control characters (newlines apart) unchanged.
          */
         private fun printsAsIs(text: String): Boolean = text.none { it.isISOControl() && it != '\n' }
 
@@ -128,15 +150,18 @@ class Rtcoord : CliktCommand(name = "rtcoord") {
         private val CWD_VARIABLES = listOf("RTCOORD_CWD", "RTCSH_CWD")
 
         /** [address] if it is `host`, `host:port` or a name server's `corbaloc:`; else [invalid] with why. */
-        private inline fun nameServer(address: String, invalid: (String) -> Nothing): String = try {
-            nameServerPath(address)
-            address
-        } catch (e: RtcException) {
-            invalid(e.message ?: "'$address' is not HOST[:PORT]")
-        }
+        private inline fun nameServer(address: String, invalid: (String) -> Nothing): String =
+            try {
+                nameServerPath(address)
+                address
+            } catch (e: RtcException) {
+                invalid(e.message ?: "'$address' is not HOST[:PORT]")
+            }
 
         /** The project version the jar was built as. */
-        fun version(): String = Rtcoord::class.java.getResourceAsStream("version.properties")
-            ?.use { Properties().apply { load(it) }.getProperty("version") } ?: "unknown"
+        fun version(): String =
+            Rtcoord::class.java.getResourceAsStream("version.properties")?.use {
+                Properties().apply { load(it) }.getProperty("version")
+            } ?: "unknown"
     }
 }

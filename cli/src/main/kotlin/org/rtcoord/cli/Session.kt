@@ -1,14 +1,14 @@
 package org.rtcoord.cli
 
+import kotlin.time.Duration
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.nameServerPath
-import kotlin.time.Duration
 
 /**
- * What the global options decided, shared by the commands of one run. The tree is made on first use,
- * so a command that fails on its arguments never starts an ORB, and closed with the session.
+ * What the global options decided, shared by the commands of one run. The tree is made on first use, so a command that
+ * fails on its arguments never starts an ORB, and closed with the session.
  */
 class Session(
     /** Name servers from `-n` or the environment. */
@@ -27,15 +27,17 @@ class Session(
     val listenAddress: String? = null,
 ) : AutoCloseable {
     /**
-     * Where relative paths start: the [workingDirectory] the environment set, else the first name server
-     * given; null when there is neither.
+     * Where relative paths start: the [workingDirectory] the environment set, else the first name server given; null
+     * when there is neither.
      */
-    val start: RtcPath? get() = workingDirectory ?: nameServers.firstOrNull()?.let(::nameServerPath)
+    val start: RtcPath?
+        get() = workingDirectory ?: nameServers.firstOrNull()?.let(::nameServerPath)
 
     private val lazyTree = lazy { RtcTree(treeConfig()) }
 
     /** A tree's configuration for [servers], with the run's deadline and listen address. */
-    fun treeConfig(servers: List<String> = nameServers): TreeConfig = TreeConfig(servers, timeout, listenAddress = listenAddress)
+    fun treeConfig(servers: List<String> = nameServers): TreeConfig =
+        TreeConfig(servers, timeout, listenAddress = listenAddress)
 
     /** The tree over the system, created on first use. */
     val tree: RtcTree by lazyTree

@@ -1,8 +1,8 @@
 package org.rtcoord.cli
 
 /**
- * A line of stderr rewritten in place on a terminal, for progress. [write] prints without a newline;
- * [clear] erases the line if anything was shown, so the output that follows starts clean.
+ * A line of stderr rewritten in place on a terminal, for progress. [write] prints without a newline; [clear] erases the
+ * line if anything was shown, so the output that follows starts clean.
  */
 internal class StatusLine(private val write: (String) -> Unit) {
     private var shown = false

@@ -1,18 +1,18 @@
 package org.rtcoord.cli
 
+import java.util.concurrent.CopyOnWriteArraySet
+import kotlin.time.Duration
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.withTimeoutOrNull
 import sun.misc.Signal
 import sun.misc.SignalHandler
-import java.util.concurrent.CopyOnWriteArraySet
-import kotlin.time.Duration
 
 /**
- * SIGINT and SIGTERM as a request to stop, for commands that run until stopped: the command then ends
- * as it does when its time is up (observers detached, a last line printed) and the process exits 0, as
- * a service manager expects of a service it stopped. Without this the JVM would end through its shutdown
- * hooks while the command still runs, with status 130 or 143, and a command racing those hooks fails
- * (`removeShutdownHook` throws "Shutdown in progress"). A second signal ends the process the JVM's way.
+ * SIGINT and SIGTERM as a request to stop, for commands that run until stopped: the command then ends as it does when
+ * its time is up (observers detached, a last line printed) and the process exits 0, as a service manager expects of a
+ * service it stopped. Without this the JVM would end through its shutdown hooks while the command still runs, with
+ * status 130 or 143, and a command racing those hooks fails (`removeShutdownHook` throws "Shutdown in progress"). A
+ * second signal ends the process the JVM's way.
  */
 internal class StopSignals : AutoCloseable {
     private val requested = CompletableDeferred<String>()
@@ -22,10 +22,11 @@ internal class StopSignals : AutoCloseable {
         waiting += this
         for (name in listOf("INT", "TERM")) {
             try {
-                previous[name] = Signal.handle(Signal(name)) { signal ->
-                    requested.complete("SIG${signal.name}")
-                    close()
-                }
+                previous[name] =
+                    Signal.handle(Signal(name)) { signal ->
+                        requested.complete("SIG${signal.name}")
+                        close()
+                    }
             } catch (e: IllegalArgumentException) {
                 // The JVM keeps the signal for itself (-Xrs, or a platform without it): it ends the process as before.
             }
@@ -37,7 +38,10 @@ internal class StopSignals : AutoCloseable {
         requested.complete(reason)
     }
 
-    /** Waits for a signal or [stop], at most [limit] (forever when null); returns the signal's name or the reason, or null when the time was up. */
+    /**
+     * Waits for a signal or [stop], at most [limit] (forever when null); returns the signal's name or the reason, or
+     * null when the time was up.
+     */
     suspend fun await(limit: Duration?): String? = withTimeoutOrNull(limit ?: Duration.INFINITE) { requested.await() }
 
     /** Gives the signals back to the JVM. */
@@ -52,9 +56,9 @@ internal class StopSignals : AutoCloseable {
         private val waiting = CopyOnWriteArraySet<StopSignals>()
 
         /**
-         * Stops every command of this JVM that is running until stopped, as a SIGINT to its process would;
-         * false when none is. For callers that run commands inside their own JVM (the tests), where a
-         * real signal would end the caller too.
+         * Stops every command of this JVM that is running until stopped, as a SIGINT to its process would; false when
+         * none is. For callers that run commands inside their own JVM (the tests), where a real signal would end the
+         * caller too.
          */
         fun interrupt(): Boolean = waiting.onEach { it.stop("SIGINT") }.isNotEmpty()
     }

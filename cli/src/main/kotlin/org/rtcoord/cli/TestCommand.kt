@@ -11,15 +11,15 @@ import com.github.ajalt.clikt.parameters.options.option
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.long
 import com.github.ajalt.clikt.parameters.types.path
+import java.nio.file.Paths
+import java.util.Locale
+import kotlin.random.Random
+import kotlin.time.TimeSource
 import kotlinx.coroutines.runBlocking
 import org.rtcoord.sim.explore.ExploreOptions
 import org.rtcoord.sim.test.CoordinatorTestRunner
 import org.rtcoord.sim.test.JUnitXml
 import org.rtcoord.sim.test.TestReport
-import java.nio.file.Paths
-import java.util.Locale
-import kotlin.random.Random
-import kotlin.time.TimeSource
 
 /** `rtcoord test [FILES|DIR]`: coordinator tests, each against a fresh simulated system. */
 class TestCommand : CliktCommand("test") {
@@ -31,81 +31,156 @@ class TestCommand : CliktCommand("test") {
             "for each failed one why (file:line:col, with the values its condition read) and its timeline, then a summary with " +
             "the wall time. Exits 1 when a scenario fails."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord test examples/" to "every *.test.kts in examples/",
-        "rtcoord test --junit target/rtcoord-tests nav.test.kts" to "one test file, with JUnit XML for CI",
-        "rtcoord test --parallel 4 tests/" to "every *.test.kts below tests/, four scenarios at a time",
-        "rtcoord test --explore --runs 200 nav.test.kts" to "200 runs, each with faults drawn from a random seed",
-        "rtcoord test --explore --for 10m --seed 42 --parallel 2 nav.test.kts" to "explore for 10 minutes, two runs at a time",
-        "rtcoord test --explore --replay 42:17 nav.test.kts" to "run 17 of seed 42 again",
-        "rtcoord test --explore --replay 42:17 --reruns 100 nav.test.kts" to "run it 100 times: how often it fails the same way",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord test examples/" to "every *.test.kts in examples/",
+            "rtcoord test --junit target/rtcoord-tests nav.test.kts" to "one test file, with JUnit XML for CI",
+            "rtcoord test --parallel 4 tests/" to "every *.test.kts below tests/, four scenarios at a time",
+            "rtcoord test --explore --runs 200 nav.test.kts" to "200 runs, each with faults drawn from a random seed",
+            "rtcoord test --explore --for 10m --seed 42 --parallel 2 nav.test.kts" to
+                "explore for 10 minutes, two runs at a time",
+            "rtcoord test --explore --replay 42:17 nav.test.kts" to "run 17 of seed 42 again",
+            "rtcoord test --explore --replay 42:17 --reruns 100 nav.test.kts" to
+                "run it 100 times: how often it fails the same way",
+        )
 
-    private val paths by argument("FILES|DIR", help = "Test files, or directories whose *.test.kts files are run; default: the current directory.")
-        .path(mustExist = true).multiple()
+    private val paths by
+        argument(
+                "FILES|DIR",
+                help = "Test files, or directories whose *.test.kts files are run; default: the current directory.",
+            )
+            .path(mustExist = true)
+            .multiple()
 
-    private val junit by option("--junit", metavar = "DIR", help = "Also write a JUnit XML report per test file into DIR, a test case per scenario.")
-        .path(canBeFile = false)
+    private val junit by
+        option(
+                "--junit",
+                metavar = "DIR",
+                help = "Also write a JUnit XML report per test file into DIR, a test case per scenario.",
+            )
+            .path(canBeFile = false)
 
-    private val parallel by option("--parallel", metavar = "N", help = "How many scenarios (with --explore: runs) go at once; default: one per processor.").int()
+    private val parallel by
+        option(
+                "--parallel",
+                metavar = "N",
+                help = "How many scenarios (with --explore: runs) go at once; default: one per processor.",
+            )
+            .int()
 
-    private val explore by option(
-        "--explore",
-        help = "Search fault schedules: each run draws up to --max-faults faults (fail, breakDown, repair, freeze, hang, exit, " +
-            "loseConnectors, killManager, restartNaming) on the test's components and managers, at moments within its scenario, " +
-            "and applies them alongside its steps; a run fails as the test would. Each distinct failure is shrunk to its smallest " +
-            "schedule and written as NAME.found-SEED-INDEX.test.kts. The test's explore { } narrows the search. One test file.",
-    ).flag()
+    private val explore by
+        option(
+                "--explore",
+                help =
+                    "Search fault schedules: each run draws up to --max-faults faults (fail, breakDown, repair, freeze, hang, exit, " +
+                        "loseConnectors, killManager, restartNaming) on the test's components and managers, at moments within its scenario, " +
+                        "and applies them alongside its steps; a run fails as the test would. Each distinct failure is shrunk to its smallest " +
+                        "schedule and written as NAME.found-SEED-INDEX.test.kts. The test's explore { } narrows the search. One test file.",
+            )
+            .flag()
 
-    private val runs by option("--runs", metavar = "N", help = "With --explore: how many runs; default: ${ExploreOptions.DEFAULT_RUNS} unless --for is given.").int()
+    private val runs by
+        option(
+                "--runs",
+                metavar = "N",
+                help = "With --explore: how many runs; default: ${ExploreOptions.DEFAULT_RUNS} unless --for is given.",
+            )
+            .int()
 
-    private val during by option("--for", metavar = "DURATION", help = "With --explore: how long to explore, e.g. 10m.").duration()
+    private val during by
+        option("--for", metavar = "DURATION", help = "With --explore: how long to explore, e.g. 10m.").duration()
 
-    private val seed by option("--seed", metavar = "S", help = "With --explore: the seed schedules are drawn from; default: a new one, printed.").long()
+    private val seed by
+        option(
+                "--seed",
+                metavar = "S",
+                help = "With --explore: the seed schedules are drawn from; default: a new one, printed.",
+            )
+            .long()
 
-    private val maxFaults by option("--max-faults", metavar = "K", help = "With --explore: the most faults a run has; default: ${ExploreOptions.DEFAULT_MAX_FAULTS}.").int()
-        .default(ExploreOptions.DEFAULT_MAX_FAULTS)
+    private val maxFaults by
+        option(
+                "--max-faults",
+                metavar = "K",
+                help = "With --explore: the most faults a run has; default: ${ExploreOptions.DEFAULT_MAX_FAULTS}.",
+            )
+            .int()
+            .default(ExploreOptions.DEFAULT_MAX_FAULTS)
 
-    private val replay by option("--replay", metavar = "SEED:INDEX", help = "With --explore: run that schedule again (as a run's line shows it), with the --max-faults it was drawn with.")
+    private val replay by
+        option(
+            "--replay",
+            metavar = "SEED:INDEX",
+            help =
+                "With --explore: run that schedule again (as a run's line shows it), with the --max-faults it was drawn with.",
+        )
 
-    private val reruns by option("--reruns", metavar = "N", help = "With --replay: run it N times and print how many agree; default: 1.").int().default(1)
+    private val reruns by
+        option("--reruns", metavar = "N", help = "With --replay: run it N times and print how many agree; default: 1.")
+            .int()
+            .default(1)
 
-    private val noWrite by option("--no-write", help = "With --explore: do not write the regression tests of what was found.").flag()
+    private val noWrite by
+        option("--no-write", help = "With --explore: do not write the regression tests of what was found.").flag()
 
     override fun run() {
         if (explore || replay != null) return exploreFaults()
         val runner = parallel?.let { CoordinatorTestRunner(parallelism = it) } ?: CoordinatorTestRunner()
-        val files = try {
-            runner.files(paths.ifEmpty { listOf(Paths.get("")) })
-        } catch (e: IllegalArgumentException) {
-            throw CommandFailed(e.message.orEmpty())
-        }
+        val files =
+            try {
+                runner.files(paths.ifEmpty { listOf(Paths.get("")) })
+            } catch (e: IllegalArgumentException) {
+                throw CommandFailed(e.message.orEmpty())
+            }
         if (files.isEmpty()) throw CommandFailed("${paths.joinToString(" ").ifEmpty { "." }}: no *.test.kts files")
         val began = TimeSource.Monotonic.markNow()
         val results = runBlocking { runner.runAll(files) }
         val wall = began.elapsedNow()
         for (result in results) {
             val scenario = if (result.scenario == result.file.name) "" else " › ${result.scenario}"
-            echo("${if (result.passed) "PASS" else "FAIL"} ${result.file}$scenario (${result.duration.inWholeMilliseconds} ms)")
+            echo(
+                "${if (result.passed) "PASS" else "FAIL"} ${result.file}$scenario (${result.duration.inWholeMilliseconds} ms)"
+            )
             if (!result.passed) (TestReport.failures(result) + TestReport.timeline(result)).forEach { echo("  $it") }
         }
         junit?.let { JUnitXml.write(results, it) }
         val failed = results.count { !it.passed }
         val seconds = String.format(Locale.ROOT, "%.1f", wall.inWholeMilliseconds / 1000.0)
-        echo("${results.size} scenarios in ${files.size} files, ${results.size - failed} passed, $failed failed (wall time $seconds s)")
+        echo(
+            "${results.size} scenarios in ${files.size} files, ${results.size - failed} passed, $failed failed (wall time $seconds s)"
+        )
         if (failed > 0) throw ProgramResult(1)
     }
 
     private fun exploreFaults() {
         val file = paths.singleOrNull() ?: throw CommandFailed("--explore: give one test file (${paths.size} given)")
-        val status = if (System.console() != null) StatusLine { System.err.print(it); System.err.flush() } else null
+        val status =
+            if (System.console() != null)
+                StatusLine {
+                    System.err.print(it)
+                    System.err.flush()
+                }
+            else null
         val exploration = TestExploration(::echo, status)
         val parallelism = parallel ?: Runtime.getRuntime().availableProcessors()
-        val failed = replay?.let { exploration.replay(file, it, maxFaults, reruns, parallelism) } ?: try {
-            exploration.explore(file, ExploreOptions(seed ?: Random.nextLong(0, 1_000_000), runs, during, maxFaults, parallelism, writeTests = !noWrite), junit)
-        } catch (e: IllegalArgumentException) {
-            throw CommandFailed(e.message.orEmpty())
-        }
+        val failed =
+            replay?.let { exploration.replay(file, it, maxFaults, reruns, parallelism) }
+                ?: try {
+                    exploration.explore(
+                        file,
+                        ExploreOptions(
+                            seed ?: Random.nextLong(0, 1_000_000),
+                            runs,
+                            during,
+                            maxFaults,
+                            parallelism,
+                            writeTests = !noWrite,
+                        ),
+                        junit,
+                    )
+                } catch (e: IllegalArgumentException) {
+                    throw CommandFailed(e.message.orEmpty())
+                }
         if (failed) throw ProgramResult(1)
     }
 }

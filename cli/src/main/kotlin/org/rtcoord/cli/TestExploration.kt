@@ -1,5 +1,8 @@
 package org.rtcoord.cli
 
+import java.nio.file.Path
+import java.util.Locale
+import kotlin.time.Duration
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
 import org.rtcoord.sim.explore.ExploreJUnit
@@ -8,21 +11,23 @@ import org.rtcoord.sim.explore.ExploreProgress
 import org.rtcoord.sim.explore.ExploreRefused
 import org.rtcoord.sim.explore.ExploreReport
 import org.rtcoord.sim.explore.FaultExplorer
-import java.nio.file.Path
-import java.util.Locale
-import kotlin.time.Duration
 
 /**
- * `rtcoord test --explore` and `--replay` on the console: a line per run (its `SEED:INDEX`, verdict and
- * schedule), a progress line on a terminal, and at the end each distinct failure once with its smallest
- * schedule and the command that replays it. Ctrl-C ends the exploration with what it found so far.
+ * `rtcoord test --explore` and `--replay` on the console: a line per run (its `SEED:INDEX`, verdict and schedule), a
+ * progress line on a terminal, and at the end each distinct failure once with its smallest schedule and the command
+ * that replays it. Ctrl-C ends the exploration with what it found so far.
  */
 internal class TestExploration(private val echo: (String) -> Unit, private val status: StatusLine?) {
     /** Explores [file]; whether it found a failure. */
     fun explore(file: Path, options: ExploreOptions, junit: Path?): Boolean {
         val explorer = FaultExplorer()
-        val limit = listOfNotNull(options.runs?.let { "$it runs" }, options.duration?.let { "for $it" }).ifEmpty { listOf("${ExploreOptions.DEFAULT_RUNS} runs") }
-        echo("exploring $file: seed ${options.seed}, ${limit.joinToString(" or ")}, up to ${options.maxFaults} faults a run, ${options.parallelism} at a time")
+        val limit =
+            listOfNotNull(options.runs?.let { "$it runs" }, options.duration?.let { "for $it" }).ifEmpty {
+                listOf("${ExploreOptions.DEFAULT_RUNS} runs")
+            }
+        echo(
+            "exploring $file: seed ${options.seed}, ${limit.joinToString(" or ")}, up to ${options.maxFaults} faults a run, ${options.parallelism} at a time"
+        )
         val report = refusedAsFailure {
             StopSignals().use { signals ->
                 runBlocking {
@@ -45,7 +50,11 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
     fun replay(file: Path, key: String, maxFaults: Int, reruns: Int, parallelism: Int): Boolean {
         val (seed, index) = parseKey(key)
         val report = refusedAsFailure {
-            runBlocking { FaultExplorer().replay(file, seed, index, maxFaults, reruns, parallelism) { done, verdict -> ran(done, reruns, key, verdict) } }
+            runBlocking {
+                FaultExplorer().replay(file, seed, index, maxFaults, reruns, parallelism) { done, verdict ->
+                    ran(done, reruns, key, verdict)
+                }
+            }
         }
         status?.clear()
         echo("run ${report.key} › ${report.scenario}: ${report.schedule}")
@@ -57,13 +66,16 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
     }
 
     private fun ran(done: Int, reruns: Int, key: String, verdict: String) {
-        if (status == null || reruns == 1) echo("run $key ($done of $reruns): $verdict") else status.show("$key: $done of $reruns reruns done")
+        if (status == null || reruns == 1) echo("run $key ($done of $reruns): $verdict")
+        else status.show("$key: $done of $reruns reruns done")
     }
 
     private fun progress(run: ExploreProgress) {
         status?.clear()
         echo("run ${run.key} ${run.verdict.substringBefore('\n')} › ${run.scenario}: ${run.schedule}")
-        status?.show("${run.runs} runs, ${run.failed} failed (${run.distinct} distinct), ${run.skipped} skipped, ${perMinute(run.perMinute)} schedules/min")
+        status?.show(
+            "${run.runs} runs, ${run.failed} failed (${run.distinct} distinct), ${run.skipped} skipped, ${perMinute(run.perMinute)} schedules/min"
+        )
     }
 
     private fun summarise(report: ExploreReport) {
@@ -71,15 +83,20 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
         for (found in report.failures) {
             echo("FAIL ${found.failure}")
             found.failure.details.forEach { echo("    $it") }
-            echo("  in ${found.occurrences} run(s) of scenario '${found.scenario}', first ${found.firstRun}: ${found.drawn}")
-            echo("  smallest schedule (${found.faults} fault(s), ${found.shrinkRuns} shrinking runs): ${found.smallest}")
+            echo(
+                "  in ${found.occurrences} run(s) of scenario '${found.scenario}', first ${found.firstRun}: ${found.drawn}"
+            )
+            echo(
+                "  smallest schedule (${found.faults} fault(s), ${found.shrinkRuns} shrinking runs): ${found.smallest}"
+            )
             echo("  replay: ${found.replay}")
             found.test?.let { test ->
-                val verified = when (found.failsAsWritten) {
-                    true -> "it fails as written"
-                    false -> "it passed when run as written: the failure depends on timing"
-                    null -> "not run"
-                }
+                val verified =
+                    when (found.failsAsWritten) {
+                        true -> "it fails as written"
+                        false -> "it passed when run as written: the failure depends on timing"
+                        null -> "not run"
+                    }
                 echo("  regression test: $test ($verified)")
             }
         }
@@ -87,15 +104,16 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
         val rate = if (report.elapsed.isPositive()) report.runs * 60_000.0 / report.elapsed.inWholeMilliseconds else 0.0
         echo(
             "${report.runs} runs in ${seconds(report.elapsed)}: ${report.failed} failed (${report.failures.size} distinct), " +
-                "${report.skipped} skipped${if (skips.isEmpty()) "" else " ($skips)"}; ${perMinute(rate)} schedules/min",
+                "${report.skipped} skipped${if (skips.isEmpty()) "" else " ($skips)"}; ${perMinute(rate)} schedules/min"
         )
     }
 
-    private inline fun <T> refusedAsFailure(block: () -> T): T = try {
-        block()
-    } catch (e: ExploreRefused) {
-        throw CommandFailed(e.lines.joinToString("; "))
-    }
+    private inline fun <T> refusedAsFailure(block: () -> T): T =
+        try {
+            block()
+        } catch (e: ExploreRefused) {
+            throw CommandFailed(e.lines.joinToString("; "))
+        }
 
     companion object {
         /** `SEED:INDEX` as the two numbers. */
@@ -103,12 +121,14 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
             val parts = key.split(':')
             val seed = parts.getOrNull(0)?.toLongOrNull()
             val index = parts.getOrNull(1)?.toLongOrNull()
-            if (parts.size != 2 || seed == null || index == null || index < 0) throw CommandFailed("--replay $key: give SEED:INDEX, as a run's line shows it (e.g. 42:17)")
+            if (parts.size != 2 || seed == null || index == null || index < 0)
+                throw CommandFailed("--replay $key: give SEED:INDEX, as a run's line shows it (e.g. 42:17)")
             return seed to index
         }
 
         private fun perMinute(rate: Double): String = String.format(Locale.ROOT, "%.1f", rate)
 
-        private fun seconds(duration: Duration): String = String.format(Locale.ROOT, "%.1f s", duration.inWholeMilliseconds / 1000.0)
+        private fun seconds(duration: Duration): String =
+            String.format(Locale.ROOT, "%.1f s", duration.inWholeMilliseconds / 1000.0)
     }
 }

@@ -19,15 +19,16 @@ import org.rtcoord.WrongKindException
 import org.rtcoord.cli.json.PrettyJson
 
 /**
- * A subcommand working on the RT system through the [Session]'s tree. It turns every failure into
- * the one-line error of [CommandFailed]; `-v` adds the stack trace.
+ * A subcommand working on the RT system through the [Session]'s tree. It turns every failure into the one-line error of
+ * [CommandFailed]; `-v` adds the stack trace.
  */
 abstract class TreeCommand(name: String) : CliktCommand(name) {
     /** The run's shared settings and tree, set up by [Rtcoord]. */
     protected val session: Session by requireObject()
 
     /** The tree, created on first use. */
-    protected val tree: RtcTree get() = session.tree
+    protected val tree: RtcTree
+        get() = session.tree
 
     /** Does the command's work. */
     protected abstract suspend fun execute()
@@ -69,12 +70,13 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
     protected fun usage(what: String): Nothing = throw UsageError(what).apply { context = currentContext }
 
     /** Why [server] does not answer a listing now; null when it does. */
-    protected suspend fun unreachable(server: NameServerNode): RtcException? = try {
-        server.refresh()
-        null
-    } catch (e: RtcException) {
-        e
-    }
+    protected suspend fun unreachable(server: NameServerNode): RtcException? =
+        try {
+            server.refresh()
+            null
+        } catch (e: RtcException) {
+            e
+        }
 
     /** Prints [value] as JSON, indented. */
     internal inline fun <reified T> echoJson(value: T) {
@@ -87,27 +89,30 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
     }
 
     /**
-     * Where discovery reports progress: stderr on a terminal, nowhere when the output is piped (or
-     * with `-q`), so scripts never see it.
+     * Where discovery reports progress: stderr on a terminal, nowhere when the output is piped (or with `-q`), so
+     * scripts never see it.
      */
     internal fun progressLine(): StatusLine? =
-        if (System.console() != null && !session.quiet) StatusLine { echo(it, trailingNewline = false, err = true) } else null
+        if (System.console() != null && !session.quiet) StatusLine { echo(it, trailingNewline = false, err = true) }
+        else null
 
     /**
-     * [text] read as a path, relative ones from the session's [start][Session.start]; with nothing to
-     * start from, a relative path fails saying how to give a start.
+     * [text] read as a path, relative ones from the session's [start][Session.start]; with nothing to start from, a
+     * relative path fails saying how to give a start.
      */
     protected fun pathOf(text: String): RtcPath {
         val start = session.start
         if (start == null && !text.startsWith('/') && !text.startsWith("corbaloc:", ignoreCase = true)) {
-            fail("$text: a relative path needs a start: give -n HOST[:PORT] (relative paths start at the first name server) or set RTCOORD_CWD")
+            fail(
+                "$text: a relative path needs a start: give -n HOST[:PORT] (relative paths start at the first name server) or set RTCOORD_CWD"
+            )
         }
         return RtcPath(text, start)
     }
 
     /**
-     * The node at [text]; a port path is refused rather than read as its component, and so is the root
-     * when no name server is configured (it would list nothing).
+     * The node at [text]; a port path is refused rather than read as its component, and so is the root when no name
+     * server is configured (it would list nothing).
      */
     protected suspend fun node(text: String): Node {
         val path = pathOf(text)
@@ -117,8 +122,8 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
     }
 
     /**
-     * Where a command that follows a whole system (serve, record) starts: the node at [text], or for
-     * `/` the one name server given (the root when there are several); `/` with none is a usage error.
+     * Where a command that follows a whole system (serve, record) starts: the node at [text], or for `/` the one name
+     * server given (the root when there are several); `/` with none is a usage error.
      */
     protected suspend fun systemTop(text: String): Node {
         if (!pathOf(text).isRoot) return node(text)
@@ -127,7 +132,8 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
     }
 
     /** The component at [text]; a port path is refused rather than read as its component. */
-    protected suspend fun component(text: String): ComponentNode = tree.component(objectPath(text, "component").toString())
+    protected suspend fun component(text: String): ComponentNode =
+        tree.component(objectPath(text, "component").toString())
 
     /** The manager at [text]; a port path is refused. */
     protected suspend fun manager(text: String): ManagerNode = tree.manager(objectPath(text, "manager").toString())
@@ -140,8 +146,8 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
         pathOf(text).also { if (it.port != null) throw WrongKindException(it.toString(), kind, "port") }
 
     /**
-     * [e] with the names close to the one not found, from where it was looked for: the directory that
-     * lacks a name, the component that lacks a port. [e] itself when nothing is close or it cannot tell.
+     * [e] with the names close to the one not found, from where it was looked for: the directory that lacks a name, the
+     * component that lacks a port. [e] itself when nothing is close or it cannot tell.
      */
     private suspend fun suggesting(e: NotFoundException): NotFoundException {
         val path = runCatching { RtcPath(e.subject) }.getOrNull() ?: return e
@@ -151,10 +157,13 @@ abstract class TreeCommand(name: String) : CliktCommand(name) {
                 port != null && e.reason.startsWith("no such port") ->
                     didYouMean(port, tree.component(path.withPort(null).toString()).snapshot().ports.map { it.name })
                 port == null && e.reason == "not found" ->
-                    (path.parent?.let { tree.node(it) } as? DirectoryNode)?.let { directory -> didYouMean(path.name, directory.children().map { it.name }) }.orEmpty()
+                    (path.parent?.let { tree.node(it) } as? DirectoryNode)
+                        ?.let { directory -> didYouMean(path.name, directory.children().map { it.name }) }
+                        .orEmpty()
                 else -> ""
             }
-        }.getOrDefault("")
+        }
+            .getOrDefault("")
         return if (hint.isEmpty()) e else NotFoundException(e.subject, e.reason + hint)
     }
 }

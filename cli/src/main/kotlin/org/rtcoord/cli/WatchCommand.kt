@@ -29,24 +29,32 @@ class WatchCommand : TreeCommand("watch") {
             "components that went with it. A context or manager watches everything below it, including components that " +
             "appear later. Runs until Ctrl-C, SIGTERM or --for has passed, then exits 0."
 
-    override fun helpEpilog(context: Context): String = examples(
-        "rtcoord watch /localhost/host.host_cxt/laser0.rtc" to "the laser's state, ports, configuration and contexts",
-        "rtcoord watch /localhost/host.host_cxt --poll 200ms --for 1m" to "a whole context, polled five times a second, for a minute",
-        "rtcoord --json watch /localhost/host.host_cxt | jq .event" to "one JSON object per line",
-        "rtcoord watch --data /localhost/host.host_cxt/laser0.rtc" to "the laser's events and the rate of its scans, every second",
-    )
+    override fun helpEpilog(context: Context): String =
+        examples(
+            "rtcoord watch /localhost/host.host_cxt/laser0.rtc" to
+                "the laser's state, ports, configuration and contexts",
+            "rtcoord watch /localhost/host.host_cxt --poll 200ms --for 1m" to
+                "a whole context, polled five times a second, for a minute",
+            "rtcoord --json watch /localhost/host.host_cxt | jq .event" to "one JSON object per line",
+            "rtcoord watch --data /localhost/host.host_cxt/laser0.rtc" to
+                "the laser's events and the rate of its scans, every second",
+        )
 
     private val paths by argument("PATH", help = "Components, naming contexts or managers.").multiple(required = true)
 
-    private val poll by option("--poll", metavar = "PERIOD", help = "Poll every PERIOD instead of taking pushed events.").duration()
+    private val poll by
+        option("--poll", metavar = "PERIOD", help = "Poll every PERIOD instead of taking pushed events.").duration()
 
     private val duration by option("--for", metavar = "DURATION", help = "Stop after DURATION.").duration()
 
-    private val data by option(
-        "--data",
-        help = "Also watch the data: every second a line per data out-port with the rate it sends at (the tree taps each " +
-            "one), and the ports' traffic as their components report it.",
-    ).flag()
+    private val data by
+        option(
+                "--data",
+                help =
+                    "Also watch the data: every second a line per data out-port with the rate it sends at (the tree taps each " +
+                        "one), and the ports' traffic as their components report it.",
+            )
+            .flag()
 
     override suspend fun execute() {
         val options = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
@@ -58,11 +66,14 @@ class WatchCommand : TreeCommand("watch") {
             // Traffic comes only to who names it: with --data.
             val types = if (data) setOf(RtcEvent::class.java, PortTraffic::class.java) else setOf(RtcEvent::class.java)
             // The system as it is when every event is caught, then what changes: nothing lost in between.
-            tree.follow(nodes, types, options, start = { snapshot -> presentLines(snapshot, nodes).forEach(::echo) }) { events.send(it) }
+            tree.follow(nodes, types, options, start = { snapshot -> presentLines(snapshot, nodes).forEach(::echo) }) {
+                events.send(it)
+            }
             val rates = if (data) PortRates.tap(nodes) else null
             coroutineScope {
                 val printing = launch {
-                    for (event in events) if (session.json) echo(OneLineJson.encodeToString(EventJson.of(event))) else echo(event.line())
+                    for (event in events) if (session.json) echo(OneLineJson.encodeToString(EventJson.of(event)))
+                    else echo(event.line())
                 }
                 val reporting = rates?.let { launch { it.report(session.json) { line -> echo(line) } } }
                 signals.await(duration)
@@ -76,38 +87,59 @@ class WatchCommand : TreeCommand("watch") {
     }
 
     /**
-     * A line per component below [nodes] with its state, per name server of theirs that does not answer,
-     * and per manager found dead that is, or hosted a component that is, below them, as [snapshot] has them.
+     * A line per component below [nodes] with its state, per name server of theirs that does not answer, and per
+     * manager found dead that is, or hosted a component that is, below them, as [snapshot] has them.
      */
     private fun presentLines(snapshot: SystemSnapshot, nodes: List<Node>): List<String> {
         val now = System.currentTimeMillis()
-        val servers = snapshot.nameServers.filter { entry -> !entry.reachable && nodes.any { it.path.nameServer == entry.node.address } }.map { entry ->
-            if (session.json) {
-                OneLineJson.encodeToString(EventJson.found(now, entry.node.path, EventDetail.NameServerLost(entry.cause?.message)))
-            } else {
-                "${timestamp(now)} ${entry.node.path} name server unreachable (${entry.cause?.reason})"
-            }
-        }
-        val components = snapshot.components.filter { entry -> nodes.any { entry.isAtOrBelow(it.path) } }.map { entry ->
-            val read = entry.node.snapshots.value
-            val what = if (!entry.alive) "unreachable" else read?.brief(entry.state) ?: entry.state.name
-            val method = entry.watchMethod
-            // An FSM's state entered before every event was caught is told here, or it would be told nowhere.
-            val fsm = entry.fsm
-            if (session.json) {
-                val present = EventDetail.Present(entry.state.name, read?.let { EventDetail.connections(it) }, fsm?.let(FsmJson::of), entry.alive)
-                OneLineJson.encodeToString(EventJson.found(now, entry.path, present, method?.let(WatchMethodJson::of)))
-            } else {
-                "${timestamp(now)} ${entry.path} $what" + (fsm?.let { ", FSM state ${it.text()}" } ?: "") + (method?.let { "; watched: ${it.text()}" } ?: "")
-            }
-        }
+        val servers =
+            snapshot.nameServers
+                .filter { entry -> !entry.reachable && nodes.any { it.path.nameServer == entry.node.address } }
+                .map { entry ->
+                    if (session.json) {
+                        OneLineJson.encodeToString(
+                            EventJson.found(now, entry.node.path, EventDetail.NameServerLost(entry.cause?.message))
+                        )
+                    } else {
+                        "${timestamp(now)} ${entry.node.path} name server unreachable (${entry.cause?.reason})"
+                    }
+                }
+        val components =
+            snapshot.components
+                .filter { entry -> nodes.any { entry.isAtOrBelow(it.path) } }
+                .map { entry ->
+                    val read = entry.node.snapshots.value
+                    val what = if (!entry.alive) "unreachable" else read?.brief(entry.state) ?: entry.state.name
+                    val method = entry.watchMethod
+                    // An FSM's state entered before every event was caught is told here, or it would be told nowhere.
+                    val fsm = entry.fsm
+                    if (session.json) {
+                        val present =
+                            EventDetail.Present(
+                                entry.state.name,
+                                read?.let { EventDetail.connections(it) },
+                                fsm?.let(FsmJson::of),
+                                entry.alive,
+                            )
+                        OneLineJson.encodeToString(
+                            EventJson.found(now, entry.path, present, method?.let(WatchMethodJson::of))
+                        )
+                    } else {
+                        "${timestamp(now)} ${entry.path} $what" +
+                            (fsm?.let { ", FSM state ${it.text()}" } ?: "") +
+                            (method?.let { "; watched: ${it.text()}" } ?: "")
+                    }
+                }
         // A manager that died while the watch started is in the snapshot, not among the events after it.
-        val managers = snapshot.managerOutages.filter { died ->
-            nodes.any { node ->
-                died.source.path.startsWith(node.path) ||
-                    died.components.any { hosted -> snapshot.component(hosted)?.isAtOrBelow(node.path) == true }
-            }
-        }.map { died -> if (session.json) OneLineJson.encodeToString(EventJson.of(died)) else died.line() }
+        val managers =
+            snapshot.managerOutages
+                .filter { died ->
+                    nodes.any { node ->
+                        died.source.path.startsWith(node.path) ||
+                            died.components.any { hosted -> snapshot.component(hosted)?.isAtOrBelow(node.path) == true }
+                    }
+                }
+                .map { died -> if (session.json) OneLineJson.encodeToString(EventJson.of(died)) else died.line() }
         return servers + components + managers
     }
 }

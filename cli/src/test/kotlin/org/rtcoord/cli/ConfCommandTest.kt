@@ -13,8 +13,7 @@ class ConfCommandTest {
     private val localiser = localisation.path("laser_localise0.rtc")
     private val fixture = localisation.system.component("laser_localise0")
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     @Test
     fun `lists the sets, the active one marked, hidden ones only with --all`() {
@@ -22,7 +21,10 @@ class ConfCommandTest {
         assertEquals(sets, runRtcoord("conf", localiser).ok())
         assertEquals(sets, runRtcoord("conf", localiser, "list").ok())
         assertEquals("  __constraints__\n    gain  0<x<10\n$sets", runRtcoord("conf", localiser, "list", "--all").ok())
-        assertEquals("  precise\n    fail  0\n    gain  0.5\n", runRtcoord("conf", localiser, "list", "--set", "precise").ok())
+        assertEquals(
+            "  precise\n    fail  0\n    gain  0.5\n",
+            runRtcoord("conf", localiser, "list", "--set", "precise").ok(),
+        )
         assertEquals(
             "{\n  \"active\": \"default\",\n  \"sets\": {\n    \"precise\": {\n      \"fail\": \"0\",\n      \"gain\": \"0.5\"\n    }\n  }\n}\n",
             runRtcoord("--json", "conf", localiser, "list", "--set", "precise").ok(),
@@ -49,8 +51,14 @@ class ConfCommandTest {
         assertTrue(configuration.add_configuration_set(ConfigurationSet("night", "", emptyArray())))
         val listed = runRtcoord("conf", localiser)
         assertEquals(0, listed.statusCode, listed.stderr)
-        assertEquals("  default\n    fail  0\n    gain  1.0\n  night\n  precise\n    fail  0\n    gain  0.5\n", listed.stdout)
-        assertEquals("rtcoord: $localiser: no configuration set is active; 'rtcoord conf $localiser act SET' activates one\n", listed.stderr)
+        assertEquals(
+            "  default\n    fail  0\n    gain  1.0\n  night\n  precise\n    fail  0\n    gain  0.5\n",
+            listed.stdout,
+        )
+        assertEquals(
+            "rtcoord: $localiser: no configuration set is active; 'rtcoord conf $localiser act SET' activates one\n",
+            listed.stderr,
+        )
         assertTrue(runRtcoord("--json", "conf", localiser, "list").stdout.contains("\"active\": null"))
         val sets = "sets: __constraints__, default, night, precise"
         assertEquals(
@@ -87,14 +95,23 @@ class ConfCommandTest {
 
         val written = runRtcoord("conf", localiser, "set", "gain", "42")
         assertEquals(0, written.statusCode, written.stderr)
-        assertEquals("rtcoord: warning: $localiser: gain: '42' is outside 0<x<10 (written: OpenRTM-aist does not check constraints)\n", written.stderr)
+        assertEquals(
+            "rtcoord: warning: $localiser: gain: '42' is outside 0<x<10 (written: OpenRTM-aist does not check constraints)\n",
+            written.stderr,
+        )
         await("the component to use gain 42") { fixture.parameter("gain") == "42" }
     }
 
     @Test
     fun `unknown parameters, sets and actions are named`() {
-        assertEquals("rtcoord: $localiser: no parameter 'speed' in configuration set 'default' (parameters: fail, gain)", runRtcoord("conf", localiser, "get", "speed").failure())
-        assertEquals("rtcoord: $localiser: no configuration set 'fast' (sets: __constraints__, default, precise)", runRtcoord("conf", localiser, "act", "fast").failure())
+        assertEquals(
+            "rtcoord: $localiser: no parameter 'speed' in configuration set 'default' (parameters: fail, gain)",
+            runRtcoord("conf", localiser, "get", "speed").failure(),
+        )
+        assertEquals(
+            "rtcoord: $localiser: no configuration set 'fast' (sets: __constraints__, default, precise)",
+            runRtcoord("conf", localiser, "act", "fast").failure(),
+        )
         runRtcoord("conf", localiser, "toggle").usageError()
     }
 }

@@ -12,8 +12,7 @@ class DelCommandTest {
     private val localisation = Localisation()
     private val doomed = localisation.path("doomed0.rtc")
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     /** A component in another process bound in the naming service, then killed: its registration stays. */
     private fun zombie() {
@@ -23,14 +22,25 @@ class DelCommandTest {
     @Test
     fun `a zombie is shown with a star and can be removed`() {
         zombie()
-        assertEquals("manager.mgr/\nlaser0.rtc\ngyro0.rtc\nodometry0.rtc\nlaser_localise0.rtc\n*doomed0.rtc\n", runRtcoord("ls", localisation.host).ok())
-        assertTrue(runRtcoord("ls", "-l", localisation.host).ok().endsWith("\n-       -    -    -    -    *doomed0.rtc\n"))
+        assertEquals(
+            "manager.mgr/\nlaser0.rtc\ngyro0.rtc\nodometry0.rtc\nlaser_localise0.rtc\n*doomed0.rtc\n",
+            runRtcoord("ls", localisation.host).ok(),
+        )
+        assertTrue(
+            runRtcoord("ls", "-l", localisation.host).ok().endsWith("\n-       -    -    -    -    *doomed0.rtc\n")
+        )
         assertEquals("-  -  -  -  -  *doomed0.rtc\n", runRtcoord("ls", "-l", doomed).ok())
         assertEquals("$doomed\n", runRtcoord("find", localisation.host, "--type", "zombie").ok())
-        assertEquals(runPeer("rtls", "-l", localisation.host).ok().output, runRtcoord("ls", "-l", localisation.host).ok())
+        assertEquals(
+            runPeer("rtls", "-l", localisation.host).ok().output,
+            runRtcoord("ls", "-l", localisation.host).ok(),
+        )
 
         runRtcoord("del", doomed).ok()
-        assertEquals("manager.mgr/\nlaser0.rtc\ngyro0.rtc\nodometry0.rtc\nlaser_localise0.rtc\n", runRtcoord("ls", localisation.host).ok())
+        assertEquals(
+            "manager.mgr/\nlaser0.rtc\ngyro0.rtc\nodometry0.rtc\nlaser_localise0.rtc\n",
+            runRtcoord("ls", localisation.host).ok(),
+        )
     }
 
     @Test

@@ -10,8 +10,7 @@ class DisCommandTest {
     private val laser = localisation.path("laser0.rtc:laser")
     private val localiser = localisation.path("laser_localise0.rtc:laser")
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     private fun long(name: String) = runRtcoord("ls", "-l", localisation.path(name)).ok()
 
@@ -40,7 +39,10 @@ class DisCommandTest {
     fun `ports that are not connected, or an unknown id, are errors`() {
         val gyro = localisation.path("gyro0.rtc:gyro")
         assertEquals("rtcoord: $laser: not connected to $gyro", runRtcoord("dis", laser, gyro).failure())
-        assertEquals("rtcoord: $laser: no connector 'nope' (connectors: ${connectorOf(laser)})", runRtcoord("dis", laser, "--id", "nope").failure())
+        assertEquals(
+            "rtcoord: $laser: no connector 'nope' (connectors: ${connectorOf(laser)})",
+            runRtcoord("dis", laser, "--id", "nope").failure(),
+        )
         assertEquals("Active  1/1  0/0  1/1  0/0  laser0.rtc\n", long("laser0.rtc"))
     }
 

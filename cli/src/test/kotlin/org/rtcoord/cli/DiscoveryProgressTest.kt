@@ -1,5 +1,6 @@
 package org.rtcoord.cli
 
+import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -7,7 +8,6 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
-import kotlin.time.Duration.Companion.milliseconds
 
 /** Progress during a long discovery, as a terminal would get it; a quick one shows nothing. */
 class DiscoveryProgressTest {
@@ -32,7 +32,12 @@ class DiscoveryProgressTest {
             gyro.release()
         }
         assertTrue(written.size >= 2, written.toString())
-        assertTrue(written.dropLast(1).all { Regex("""\rrtcoord: discovering: \d+ components in \d+ directories so far\u001b\[K""").matches(it) }, written.toString())
+        assertTrue(
+            written.dropLast(1).all {
+                Regex("""\rrtcoord: discovering: \d+ components in \d+ directories so far\u001b\[K""").matches(it)
+            },
+            written.toString(),
+        )
         assertEquals("\r\u001b[K", written.last())
     }
 

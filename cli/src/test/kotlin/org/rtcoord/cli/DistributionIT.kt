@@ -1,5 +1,9 @@
 package org.rtcoord.cli
 
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
+import java.util.concurrent.TimeUnit
 import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -7,14 +11,10 @@ import org.junit.jupiter.api.BeforeAll
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
 import org.junit.jupiter.api.io.TempDir
-import java.nio.file.Files
-import java.nio.file.Path
-import java.nio.file.Paths
-import java.util.concurrent.TimeUnit
 
 /**
- * The distribution archive as a user gets it: unpacked in a folder of its own, far from the source tree
- * and the build, and run with nothing but a JDK on the PATH.
+ * The distribution archive as a user gets it: unpacked in a folder of its own, far from the source tree and the build,
+ * and run with nothing but a JDK on the PATH.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class DistributionIT {
@@ -34,8 +34,7 @@ class DistributionIT {
         home = directory.resolve("rtcoord-$version")
     }
 
-    @AfterAll
-    fun stop() = localisation.close()
+    @AfterAll fun stop() = localisation.close()
 
     /** What a process printed and how it ended. */
     data class Run(val status: Int, val stdout: String, val stderr: String)
@@ -58,7 +57,11 @@ class DistributionIT {
         val expected = runRtcoord("ls", "-l", localisation.host).ok()
         val rtcoord = home.resolve("bin/rtcoord").toString()
         assertEquals(Run(0, expected, ""), run(listOf(rtcoord, "ls", "-l", localisation.host)))
-        assertEquals(Run(0, expected, ""), run(listOf(rtcoord, "ls", "-l", localisation.host)), "again, with the class archive mapped")
+        assertEquals(
+            Run(0, expected, ""),
+            run(listOf(rtcoord, "ls", "-l", localisation.host)),
+            "again, with the class archive mapped",
+        )
     }
 
     @Test
@@ -74,12 +77,21 @@ class DistributionIT {
         assertTrue(man.startsWith(".TH RTCOORD 1 "), man.take(80))
         for (command in SUBCOMMANDS.keys) assertTrue(""".SS "rtcoord $command"""" in man, "the man page has $command")
         assertTrue(""".SS "rtcoord conf set"""" in man, "and subcommands")
-        assertEquals(runRtcoord("completion", "bash").ok(), Files.readString(home.resolve("share/bash-completion/completions/rtcoord")))
-        assertEquals(runRtcoord("completion", "zsh").ok(), Files.readString(home.resolve("share/zsh/site-functions/_rtcoord")))
+        assertEquals(
+            runRtcoord("completion", "bash").ok(),
+            Files.readString(home.resolve("share/bash-completion/completions/rtcoord")),
+        )
+        assertEquals(
+            runRtcoord("completion", "zsh").ok(),
+            Files.readString(home.resolve("share/zsh/site-functions/_rtcoord")),
+        )
         assertTrue(Files.isRegularFile(home.resolve("share/rtcoord/examples/localisation.coord.kts")))
         assertTrue(Files.isRegularFile(home.resolve("share/rtcoord/examples/rtcoord-coordinator.service")))
         val libraries = Files.list(home.resolve("lib")).use { files -> files.map { it.fileName.toString() }.toList() }
         assertTrue("rtcoord-cli.jar" in libraries, libraries.toString())
-        assertEquals(emptyList<String>(), libraries.filter { it.startsWith("junit") || it.startsWith("opentest4j") || it.startsWith("apiguardian") })
+        assertEquals(
+            emptyList<String>(),
+            libraries.filter { it.startsWith("junit") || it.startsWith("opentest4j") || it.startsWith("apiguardian") },
+        )
     }
 }

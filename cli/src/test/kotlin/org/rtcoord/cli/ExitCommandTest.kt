@@ -10,8 +10,7 @@ import org.junit.jupiter.api.Test
 class ExitCommandTest {
     private val localisation = Localisation()
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     @Test
     fun `exited components finalise and leave naming`() {

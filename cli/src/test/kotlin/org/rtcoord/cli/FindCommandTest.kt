@@ -16,10 +16,10 @@ class FindCommandTest {
     private val host = localisation.host
     private val slave = localisation.path("manager.mgr/manager_slave")
 
-    @AfterAll
-    fun stop() = localisation.close()
+    @AfterAll fun stop() = localisation.close()
 
-    private fun find(vararg arguments: String): List<String> = runRtcoord("find", host, *arguments).ok().lines().filter { it.isNotEmpty() }
+    private fun find(vararg arguments: String): List<String> =
+        runRtcoord("find", host, *arguments).ok().lines().filter { it.isNotEmpty() }
 
     /**
      * What rtfind finds below the host context, sorted, each component once: rtfind finds a component at its naming
@@ -27,9 +27,17 @@ class FindCommandTest {
      * rtcoord names it at its naming path, and below its manager only when its naming path is not among the finds.
      */
     private fun rtfind(vararg arguments: String): List<String> {
-        val found = runPeer("rtfind", "$host/", *arguments).ok().output.lines()
-            .filter { it.isNotEmpty() && !it.startsWith("${localisation.path("manager.mgr")}/") || it.startsWith(slave) }
-        return found.filterNot { it.startsWith("$slave/") && it.endsWith(".rtc") && localisation.path(it.substringAfterLast('/')) in found }.sorted()
+        val found =
+            runPeer("rtfind", "$host/", *arguments).ok().output.lines().filter {
+                it.isNotEmpty() && !it.startsWith("${localisation.path("manager.mgr")}/") || it.startsWith(slave)
+            }
+        return found
+            .filterNot {
+                it.startsWith("$slave/") &&
+                    it.endsWith(".rtc") &&
+                    localisation.path(it.substringAfterLast('/')) in found
+            }
+            .sorted()
     }
 
     @Test

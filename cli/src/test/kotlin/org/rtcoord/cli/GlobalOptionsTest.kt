@@ -14,8 +14,7 @@ class GlobalOptionsTest {
     private val localisation = Localisation()
     private val address = localisation.naming.address
 
-    @AfterAll
-    fun stop() = localisation.close()
+    @AfterAll fun stop() = localisation.close()
 
     @Test
     fun `--version prints the project version`() {
@@ -23,7 +22,10 @@ class GlobalOptionsTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = ["ls", "cat", "find", "act", "deact", "reset", "exit", "con", "dis", "conf", "mgr", "del", "watch", "graph"])
+    @ValueSource(
+        strings =
+            ["ls", "cat", "find", "act", "deact", "reset", "exit", "con", "dis", "conf", "mgr", "del", "watch", "graph"]
+    )
     fun `every command has help with examples`(command: String) {
         val help = runRtcoord(command, "--help").ok()
         assertTrue(help.startsWith("Usage: rtcoord $command"), help)
@@ -37,8 +39,14 @@ class GlobalOptionsTest {
         assertTrue("no such option" in runRtcoord("ls", "--long").usageError())
         assertTrue("'fast' is not a positive duration" in runRtcoord("--timeout", "fast", "ls", "/").usageError())
         assertTrue("bad path" in runRtcoord("-n", "host:port:x", "ls").usageError())
-        assertTrue("RTCOORD_NAMESERVERS" in runRtcoord("ls", environment = mapOf("RTCOORD_NAMESERVERS" to "a:b:c")).usageError())
-        assertTrue("--listen: 203.0.113.7 is not an address of this host" in runRtcoord("--listen", "203.0.113.7", "ls", "/").usageError())
+        assertTrue(
+            "RTCOORD_NAMESERVERS" in
+                runRtcoord("ls", environment = mapOf("RTCOORD_NAMESERVERS" to "a:b:c")).usageError()
+        )
+        assertTrue(
+            "--listen: 203.0.113.7 is not an address of this host" in
+                runRtcoord("--listen", "203.0.113.7", "ls", "/").usageError()
+        )
     }
 
     @Test
@@ -46,7 +54,10 @@ class GlobalOptionsTest {
         val dead = deadNameServer()
         val both = mapOf("RTCOORD_NAMESERVERS" to address, "RTCTREE_NAMESERVERS" to dead)
         assertEquals("$address/\n", runRtcoord("ls", "/", environment = both).ok())
-        assertEquals("$address/\n", runRtcoord("-n", address, "ls", "/", environment = mapOf("RTCOORD_NAMESERVERS" to dead)).ok())
+        assertEquals(
+            "$address/\n",
+            runRtcoord("-n", address, "ls", "/", environment = mapOf("RTCOORD_NAMESERVERS" to dead)).ok(),
+        )
         val listed = runRtcoord("ls", "/", environment = mapOf("RTCTREE_NAMESERVERS" to "$address;$dead"))
         assertEquals("$address/\n", listed.stdout)
         assertTrue(listed.stderr.startsWith("rtcoord: /$dead: unreachable"), listed.stderr)
@@ -61,7 +72,10 @@ class GlobalOptionsTest {
             val started = System.nanoTime()
             val listed = runRtcoord("--timeout", "500ms", "ls", "-l", localisation.host).ok()
             assertTrue("-       -    -    -    -    *gyro0.rtc\n" in listed, listed)
-            assertTrue(System.nanoTime() - started < 3_000_000_000L, "took ${(System.nanoTime() - started) / 1_000_000} ms")
+            assertTrue(
+                System.nanoTime() - started < 3_000_000_000L,
+                "took ${(System.nanoTime() - started) / 1_000_000} ms",
+            )
         } finally {
             gyro.release()
         }

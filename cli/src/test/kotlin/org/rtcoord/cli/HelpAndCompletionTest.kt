@@ -1,12 +1,12 @@
 package org.rtcoord.cli
 
+import java.nio.file.Files
+import java.util.concurrent.TimeUnit
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.params.ParameterizedTest
 import org.junit.jupiter.params.provider.ValueSource
-import java.nio.file.Files
-import java.util.concurrent.TimeUnit
 
 /** `rtcoord help COMMAND` and `rtcoord completion SHELL`, which a shell user reaches for first. */
 class HelpAndCompletionTest {
@@ -27,7 +27,10 @@ class HelpAndCompletionTest {
     @ValueSource(strings = ["bash", "zsh"])
     fun `the completion script is valid shell and completes every command`(shell: String) {
         val script = runRtcoord("completion", shell).ok()
-        for (command in SUBCOMMANDS.keys) assertTrue(Regex("""\b$command\b""").containsMatchIn(script), "$shell script lacks $command")
+        for (command in SUBCOMMANDS.keys) assertTrue(
+            Regex("""\b$command\b""").containsMatchIn(script),
+            "$shell script lacks $command",
+        )
         assertTrue("--nameserver" in script && "--timeout" in script, "global options")
         val file = Files.createTempFile("rtcoord-completion", ".$shell")
         try {

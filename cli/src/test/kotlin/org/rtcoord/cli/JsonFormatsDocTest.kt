@@ -1,5 +1,7 @@
 package org.rtcoord.cli
 
+import java.nio.file.Files
+import java.nio.file.Paths
 import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.KSerializer
 import kotlinx.serialization.descriptors.PolymorphicKind
@@ -32,25 +34,39 @@ import org.rtcoord.cli.serve.LiveSnapshotJson
 import org.rtcoord.cli.serve.NetworkJson
 import org.rtcoord.cli.serve.RecordedUpdateJson
 import org.rtcoord.cli.serve.TimelineEntryJson
-import java.nio.file.Files
-import java.nio.file.Paths
 
 /**
- * docs/json.md against the types that write the JSON: every type reachable from what rtcoord writes has a
- * section, and each section's table lists the type's fields, in the order they are written, with their
- * JSON types (a sealed type's variants in alphabetical order). A field added, renamed or retyped without the
- * document fails here, with the table to paste.
+ * docs/json.md against the types that write the JSON: every type reachable from what rtcoord writes has a section, and
+ * each section's table lists the type's fields, in the order they are written, with their JSON types (a sealed type's
+ * variants in alphabetical order). A field added, renamed or retyped without the document fails here, with the table to
+ * paste.
  */
 @OptIn(ExperimentalSerializationApi::class)
 class JsonFormatsDocTest {
-    private val written: List<KSerializer<*>> = listOf(
-        LiveSnapshotJson.serializer(), NetworkJson.serializer(), CoordinatorJson.serializer(), TimelineEntryJson.serializer(),
-        ComponentReportJson.serializer(), ComponentErrorJson.serializer(), RecordedUpdateJson.serializer(),
-        EventJson.serializer(), SampleJson.serializer(), EntryJson.serializer(), PortJson.serializer(), ManagerReportJson.serializer(),
-        ConfigurationJson.serializer(), FoundJson.serializer(), ParameterJson.serializer(), CreatedJson.serializer(),
-        ConnectorJson.serializer(), DifferenceJson.serializer(), PlannedStepJson.serializer(), StepOutcomeJson.serializer(),
-        RestoreJson.serializer(),
-    )
+    private val written: List<KSerializer<*>> =
+        listOf(
+            LiveSnapshotJson.serializer(),
+            NetworkJson.serializer(),
+            CoordinatorJson.serializer(),
+            TimelineEntryJson.serializer(),
+            ComponentReportJson.serializer(),
+            ComponentErrorJson.serializer(),
+            RecordedUpdateJson.serializer(),
+            EventJson.serializer(),
+            SampleJson.serializer(),
+            EntryJson.serializer(),
+            PortJson.serializer(),
+            ManagerReportJson.serializer(),
+            ConfigurationJson.serializer(),
+            FoundJson.serializer(),
+            ParameterJson.serializer(),
+            CreatedJson.serializer(),
+            ConnectorJson.serializer(),
+            DifferenceJson.serializer(),
+            PlannedStepJson.serializer(),
+            StepOutcomeJson.serializer(),
+            RestoreJson.serializer(),
+        )
 
     @Test
     fun `docs json md lists every field of every type, in order, with its JSON type`() {
@@ -59,11 +75,18 @@ class JsonFormatsDocTest {
         written.forEach { collect(it.descriptor, expected) }
         val wrong = expected.filter { (name, rows) -> sections[name] != rows }
         assertEquals(
-            emptyMap<String, List<String>>(), wrong,
+            emptyMap<String, List<String>>(),
+            wrong,
             "docs/json.md disagrees with the types; the tables they need:\n" +
-                wrong.entries.joinToString("\n\n") { (name, rows) -> "### $name\n\n| Field | Type | Meaning |\n|---|---|---|\n" + rows.joinToString("\n") { "$it |" } },
+                wrong.entries.joinToString("\n\n") { (name, rows) ->
+                    "### $name\n\n| Field | Type | Meaning |\n|---|---|---|\n" + rows.joinToString("\n") { "$it |" }
+                },
         )
-        assertEquals(emptySet<String>(), sections.keys - expected.keys, "sections of docs/json.md that describe no type")
+        assertEquals(
+            emptySet<String>(),
+            sections.keys - expected.keys,
+            "sections of docs/json.md that describe no type",
+        )
     }
 
     /** Each `### Name` section's table rows as `| field | type`, the meaning left out. */
@@ -74,7 +97,11 @@ class JsonFormatsDocTest {
         var current: MutableList<String>? = null
         for (line in lines) {
             when {
-                line.startsWith("### ") -> current = mutableListOf<String>().also { sections[line.removePrefix("### ").trim().removeSurrounding("`")] = it }
+                line.startsWith("### ") ->
+                    current =
+                        mutableListOf<String>().also {
+                            sections[line.removePrefix("### ").trim().removeSurrounding("`")] = it
+                        }
                 line.startsWith("## ") -> current = null
                 line.startsWith("| ") && current != null && !line.startsWith("| Field") -> {
                     val cells = line.split(" | ").map { it.trim().trim('|').trim() }
@@ -97,14 +124,18 @@ class JsonFormatsDocTest {
                 into[nameOf(type)] = variants.map { "| ${nameOf(it)} | variant" }.sorted()
                 variants.forEach { collect(it, into) }
             }
-            StructureKind.CLASS, StructureKind.OBJECT -> {
+            StructureKind.CLASS,
+            StructureKind.OBJECT -> {
                 if (nameOf(type) in into) return
-                into[nameOf(type)] = (0 until type.elementsCount).map { index ->
-                    val element = type.getElementDescriptor(index)
-                    val spread = type.getElementAnnotations(index).any { it is Spread }
-                    if (spread) "| … | fields of ${nameOf(element)}" else "| `${type.getElementName(index)}` | ${label(element)}" +
-                        (if (type.isElementOptional(index)) ", optional" else "")
-                }
+                into[nameOf(type)] =
+                    (0 until type.elementsCount).map { index ->
+                        val element = type.getElementDescriptor(index)
+                        val spread = type.getElementAnnotations(index).any { it is Spread }
+                        if (spread) "| … | fields of ${nameOf(element)}"
+                        else
+                            "| `${type.getElementName(index)}` | ${label(element)}" +
+                                (if (type.isElementOptional(index)) ", optional" else "")
+                    }
                 (0 until type.elementsCount).forEach { collect(type.getElementDescriptor(it), into) }
             }
             else -> Unit
@@ -114,20 +145,23 @@ class JsonFormatsDocTest {
     /** The JSON type a field holds, naming rtcoord's types by their section. */
     private fun label(descriptor: SerialDescriptor): String {
         val type = descriptor
-        val base = when {
-            isJsonElement(type) -> "any"
-            type.kind == PrimitiveKind.STRING -> "string"
-            type.kind == PrimitiveKind.BOOLEAN -> "boolean"
-            type.kind is PrimitiveKind -> "number"
-            type.kind == StructureKind.LIST -> "array of ${label(type.getElementDescriptor(0))}"
-            type.kind == StructureKind.MAP -> "object of ${label(type.getElementDescriptor(1))}"
-            else -> nameOf(type)
-        }
+        val base =
+            when {
+                isJsonElement(type) -> "any"
+                type.kind == PrimitiveKind.STRING -> "string"
+                type.kind == PrimitiveKind.BOOLEAN -> "boolean"
+                type.kind is PrimitiveKind -> "number"
+                type.kind == StructureKind.LIST -> "array of ${label(type.getElementDescriptor(0))}"
+                type.kind == StructureKind.MAP -> "object of ${label(type.getElementDescriptor(1))}"
+                else -> nameOf(type)
+            }
         return if (descriptor.isNullable) "$base or null" else base
     }
 
-    private fun isJsonElement(descriptor: SerialDescriptor) = descriptor.serialName.removeSuffix("?") == JsonElement.serializer().descriptor.serialName
+    private fun isJsonElement(descriptor: SerialDescriptor) =
+        descriptor.serialName.removeSuffix("?") == JsonElement.serializer().descriptor.serialName
 
     /** A type's section name: its class's simple name without `Json`. */
-    private fun nameOf(descriptor: SerialDescriptor): String = descriptor.serialName.removeSuffix("?").substringAfterLast('.').removeSuffix("Json")
+    private fun nameOf(descriptor: SerialDescriptor): String =
+        descriptor.serialName.removeSuffix("?").substringAfterLast('.').removeSuffix("Json")
 }

@@ -1,6 +1,7 @@
 package org.rtcoord.cli
 
 import RTC.LifeCycleState
+import kotlin.time.Duration.Companion.milliseconds
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -10,14 +11,12 @@ import org.rtcoord.runtime.Behaviour
 import org.rtcoord.runtime.ComponentContext
 import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.rtSystem
-import kotlin.time.Duration.Companion.milliseconds
 
 /** `act`, `deact` and `reset`: they wait for the state, check everything first and report return codes. */
 class LifecycleCommandTest {
     private val localisation = Localisation()
 
-    @AfterEach
-    fun stop() = localisation.close()
+    @AfterEach fun stop() = localisation.close()
 
     private fun state(instance: String): LifeCycleState = localisation.system.component(instance).state
 
@@ -57,7 +56,14 @@ class LifecycleCommandTest {
 
     @Test
     fun `one bad path among good ones changes nothing`() {
-        val line = runRtcoord("deact", localisation.path("laser0.rtc"), localisation.path("sonar0.rtc"), localisation.path("gyro0.rtc")).failure()
+        val line =
+            runRtcoord(
+                    "deact",
+                    localisation.path("laser0.rtc"),
+                    localisation.path("sonar0.rtc"),
+                    localisation.path("gyro0.rtc"),
+                )
+                .failure()
         assertEquals("rtcoord: ${localisation.path("sonar0.rtc")}: not found", line)
         assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
         assertEquals(LifeCycleState.ACTIVE_STATE, state("gyro0"))
@@ -78,19 +84,27 @@ class LifecycleCommandTest {
     @Test
     fun `a component that refuses to activate fails the command with its return code`() {
         val stubborn = ComponentType("stubborn", behaviour = { Refusing })
-        rtSystem(localisation.naming.corbaloc) { component(stubborn) }.use {
-            val line = runRtcoord("act", localisation.path("stubborn0.rtc")).failure()
-            assertEquals("rtcoord: ${localisation.path("stubborn0.rtc")}: activate failed: RTC_ERROR (the component went to ERROR in context 0)", line)
-        }
+        rtSystem(localisation.naming.corbaloc) { component(stubborn) }
+            .use {
+                val line = runRtcoord("act", localisation.path("stubborn0.rtc")).failure()
+                assertEquals(
+                    "rtcoord: ${localisation.path("stubborn0.rtc")}: activate failed: RTC_ERROR (the component went to ERROR in context 0)",
+                    line,
+                )
+            }
     }
 
     @Test
     fun `a transition that outlasts the context's transition timeout succeeds, and one line says it was slow`() {
         localisation.system.component("laser_localise0").slowTransitions(900.milliseconds)
         val localiser = localisation.path("laser_localise0.rtc")
-        for ((command, done, state) in listOf(Triple("deact", "deactivated", "INACTIVE"), Triple("act", "activated", "ACTIVE"))) {
+        for ((command, done, state) in
+            listOf(Triple("deact", "deactivated", "INACTIVE"), Triple("act", "activated", "ACTIVE"))) {
             val line = runRtcoord(command, localiser).ok()
-            val slow = Regex("""\Q$localiser\E: $done slowly: its context answered RTC_ERROR once its transition timeout passed, $state after \d+ ms\n""")
+            val slow =
+                Regex(
+                    """\Q$localiser\E: $done slowly: its context answered RTC_ERROR once its transition timeout passed, $state after \d+ ms\n"""
+                )
             assertTrue(slow.matches(line), line)
         }
         assertEquals(LifeCycleState.ACTIVE_STATE, state("laser_localise0"))
@@ -103,7 +117,10 @@ class LifecycleCommandTest {
         runRtcoord("act", "--context", "0", localisation.path("laser0.rtc")).ok()
         assertEquals(LifeCycleState.ACTIVE_STATE, state("laser0"))
         val line = runRtcoord("deact", "--context", "1000", localisation.path("laser0.rtc")).failure()
-        assertEquals("rtcoord: ${localisation.path("laser0.rtc")}: no execution context with handle 1000 (handles: 0)", line)
+        assertEquals(
+            "rtcoord: ${localisation.path("laser0.rtc")}: no execution context with handle 1000 (handles: 0)",
+            line,
+        )
         runRtcoord("act", "--context", "0", "--index", "0", localisation.path("laser0.rtc")).usageError()
         runRtcoord("act").usageError()
     }

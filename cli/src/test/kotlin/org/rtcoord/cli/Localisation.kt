@@ -2,13 +2,13 @@ package org.rtcoord.cli
 
 import com.github.ajalt.clikt.testing.CliktCommandTestResult
 import com.github.ajalt.clikt.testing.test
+import java.net.ServerSocket
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.rtcoord.runtime.RtSystem
 import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.naming.NamingService
-import java.net.ServerSocket
 
 /** The paper's localisation system on an in-process naming service, for `rtcoord` to look at. */
 class Localisation : AutoCloseable {
@@ -28,8 +28,8 @@ class Localisation : AutoCloseable {
 }
 
 /**
- * Runs `rtcoord ARGUMENTS` in this JVM through Clikt's test harness, which captures what the command
- * echoes and its exit status. The environment holds only [environment].
+ * Runs `rtcoord ARGUMENTS` in this JVM through Clikt's test harness, which captures what the command echoes and its
+ * exit status. The environment holds only [environment].
  */
 fun runRtcoord(vararg arguments: String, environment: Map<String, String> = emptyMap()): CliktCommandTestResult {
     val command = rtcoord()

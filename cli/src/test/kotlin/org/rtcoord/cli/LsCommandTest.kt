@@ -15,8 +15,7 @@ class LsCommandTest {
     private val host = localisation.host
     private val address = localisation.naming.address
 
-    @AfterAll
-    fun stop() = localisation.close()
+    @AfterAll fun stop() = localisation.close()
 
     @Test
     fun `the short form lists names, directories with a slash`() {
@@ -34,8 +33,9 @@ class LsCommandTest {
             Active  1/0  0/0  1/0  0/0  gyro0.rtc
             Active  1/1  0/0  1/1  0/0  odometry0.rtc
             Active  3/2  2/2  1/0  0/0  laser_localise0.rtc
-            
-            """.trimIndent(),
+
+            """
+                .trimIndent(),
             ours,
         )
         assertEquals(runPeer("rtls", "-l", host).ok().output, ours)
@@ -44,20 +44,28 @@ class LsCommandTest {
     @Test
     fun `-l -R is rtls -l -R, headers and all`() {
         val ours = runRtcoord("ls", "-l", "-R", "/$address/").ok()
-        assertTrue(ours.startsWith(".:\n-  -  -  -  -  ${RuntimeProcess.hostContext}\n\n./${RuntimeProcess.hostContext}:\n"), ours)
+        assertTrue(
+            ours.startsWith(".:\n-  -  -  -  -  ${RuntimeProcess.hostContext}\n\n./${RuntimeProcess.hostContext}:\n"),
+            ours,
+        )
         assertEquals(withoutSlavesComponentsUnderMaster(runPeer("rtls", "-l", "-R", "/$address/").ok().output), ours)
     }
 
     /**
-     * [listing] with the master's section holding only its slaves: a master's `get_components` includes its
-     * slaves' components, which rtls shows twice (below the master and below the slave), rtcoord once.
+     * [listing] with the master's section holding only its slaves: a master's `get_components` includes its slaves'
+     * components, which rtls shows twice (below the master and below the slave), rtcoord once.
      */
     private fun withoutSlavesComponentsUnderMaster(listing: String): String {
         val header = "./${RuntimeProcess.hostContext}/manager.mgr:\n"
         val start = listing.indexOf(header) + header.length
         val end = listing.indexOf("\n\n", start)
         // Without the components' wider columns, the managers' dashes take rtls's narrowest padding.
-        val section = listing.substring(start, end).lines().filterNot { it.endsWith(".rtc") }.joinToString("\n") { it.replace(Regex(" {2,}"), "  ") }
+        val section =
+            listing
+                .substring(start, end)
+                .lines()
+                .filterNot { it.endsWith(".rtc") }
+                .joinToString("\n") { it.replace(Regex(" {2,}"), "  ") }
         return listing.substring(0, start) + section + listing.substring(end)
     }
 
@@ -90,14 +98,18 @@ class LsCommandTest {
         val dead = deadNameServer()
         val listed = runRtcoord("-n", address, "-n", dead, "ls")
         assertEquals("/$address/:\n${RuntimeProcess.hostContext}/\n", listed.stdout)
-        assertTrue(listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
+        assertTrue(
+            listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")),
+            listed.stderr,
+        )
         assertEquals(1, listed.statusCode)
     }
 
     @Test
     fun `with no name server configured, ls says so and how to give one, with status 1`() {
-        val expected = "rtcoord: no name server configured: give -n HOST[:PORT], or set RTCOORD_NAMESERVERS (or rtshell's RTCTREE_NAMESERVERS), " +
-            "e.g. RTCOORD_NAMESERVERS=localhost"
+        val expected =
+            "rtcoord: no name server configured: give -n HOST[:PORT], or set RTCOORD_NAMESERVERS (or rtshell's RTCTREE_NAMESERVERS), " +
+                "e.g. RTCOORD_NAMESERVERS=localhost"
         assertEquals(expected, runRtcoord("ls").failure())
         assertEquals(expected.replace("rtcoord: ", "rtcoord: /: "), runRtcoord("ls", "/").failure())
         assertEquals(expected.replace("rtcoord: ", "rtcoord: /: "), runRtcoord("ls", "-l", "-R", "/").failure())
@@ -108,7 +120,10 @@ class LsCommandTest {
         val dead = deadNameServer()
         val listed = runRtcoord("-n", address, "-n", dead, "ls", "-l", "/")
         assertEquals("-  -  -  -  -  $address\n", listed.stdout)
-        assertTrue(listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")), listed.stderr)
+        assertTrue(
+            listed.stderr.matches(Regex("rtcoord: /${Regex.escape(dead)}: unreachable \\(.+\\)\n")),
+            listed.stderr,
+        )
         assertEquals(1, listed.statusCode)
         // rtls fails on it too, with an error.
         val theirs = runPeer("rtls", "/$dead/")
@@ -133,7 +148,10 @@ class LsCommandTest {
         val recursive = runRtcoord("-n", dead[0], "-n", address, "-n", dead[1], "ls", "-R", "/")
         assertEquals(1, recursive.statusCode)
         assertTrue(recursive.stdout.startsWith(".:\n$address/\n"), recursive.stdout)
-        assertEquals(dead.map { "rtcoord: /$it" }, recursive.stderr.lines().filter { it.isNotEmpty() }.map { it.substringBefore(": unreachable") })
+        assertEquals(
+            dead.map { "rtcoord: /$it" },
+            recursive.stderr.lines().filter { it.isNotEmpty() }.map { it.substringBefore(": unreachable") },
+        )
         val json = runRtcoord("-n", dead[0], "--json", "ls", "/")
         assertEquals(1, json.statusCode)
         assertEquals("[]\n", json.stdout)
@@ -142,13 +160,17 @@ class LsCommandTest {
 
     @Test
     fun `a component path lists that component`() {
-        assertEquals("Active  1/0  0/0  1/0  0/0  gyro0.rtc\n", runRtcoord("ls", "-l", localisation.path("gyro0.rtc")).ok())
+        assertEquals(
+            "Active  1/0  0/0  1/0  0/0  gyro0.rtc\n",
+            runRtcoord("ls", "-l", localisation.path("gyro0.rtc")).ok(),
+        )
         assertEquals("gyro0.rtc\n", runRtcoord("ls", localisation.path("gyro0.rtc")).ok())
     }
 
     @Test
     fun `several paths are listed under their own headers`() {
-        val listed = runRtcoord("ls", localisation.path("manager.mgr"), localisation.path("manager.mgr/manager_slave")).ok()
+        val listed =
+            runRtcoord("ls", localisation.path("manager.mgr"), localisation.path("manager.mgr/manager_slave")).ok()
         assertEquals(
             "${localisation.path("manager.mgr")}:\nmanager_slave/\n\n" +
                 "${localisation.path("manager.mgr/manager_slave")}:\nlaser0.rtc\ngyro0.rtc\nodometry0.rtc\nlaser_localise0.rtc\n",
@@ -159,7 +181,8 @@ class LsCommandTest {
     @Test
     fun `--json gives every entry with its state and port counts`() {
         val json = runRtcoord("--json", "ls", localisation.path("gyro0.rtc")).ok()
-        val expected = """
+        val expected =
+            """
             [
               {
                 "path": "${localisation.path("gyro0.rtc")}",
@@ -187,24 +210,38 @@ class LsCommandTest {
               }
             ]
             
-        """.trimIndent()
+        """
+                .trimIndent()
         assertEquals(expected, json)
     }
 
     @Test
     fun `relative paths start from RTCOORD_CWD or rtshell's RTCSH_CWD`() {
         assertEquals("gyro0.rtc\n", runRtcoord("ls", "gyro0.rtc", environment = mapOf("RTCOORD_CWD" to host)).ok())
-        assertEquals("gyro0.rtc\n", runRtcoord("ls", "../${RuntimeProcess.hostContext}/gyro0.rtc", environment = mapOf("RTCSH_CWD" to "$host/")).ok())
+        assertEquals(
+            "gyro0.rtc\n",
+            runRtcoord("ls", "../${RuntimeProcess.hostContext}/gyro0.rtc", environment = mapOf("RTCSH_CWD" to "$host/"))
+                .ok(),
+        )
         // Without a path, the working directory is what ls lists, as rtls does.
-        assertEquals(runRtcoord("ls", host).ok(), runRtcoord("-n", address, "ls", environment = mapOf("RTCOORD_CWD" to host)).ok())
+        assertEquals(
+            runRtcoord("ls", host).ok(),
+            runRtcoord("-n", address, "ls", environment = mapOf("RTCOORD_CWD" to host)).ok(),
+        )
     }
 
     @Test
     fun `relative paths start at the first name server given, else the error says how to give a start`() {
         val hostContext = RuntimeProcess.hostContext
         assertEquals("gyro0.rtc\n", runRtcoord("-n", address, "ls", "$hostContext/gyro0.rtc").ok())
-        assertEquals("gyro0.rtc\n", runRtcoord("-n", address, "-n", deadNameServer(), "ls", "$hostContext/gyro0.rtc").ok())
-        assertEquals("gyro0.rtc\n", runRtcoord("ls", "$hostContext/gyro0.rtc", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok())
+        assertEquals(
+            "gyro0.rtc\n",
+            runRtcoord("-n", address, "-n", deadNameServer(), "ls", "$hostContext/gyro0.rtc").ok(),
+        )
+        assertEquals(
+            "gyro0.rtc\n",
+            runRtcoord("ls", "$hostContext/gyro0.rtc", environment = mapOf("RTCOORD_NAMESERVERS" to address)).ok(),
+        )
         assertEquals(
             "rtcoord: $hostContext/gyro0.rtc: a relative path needs a start: give -n HOST[:PORT] (relative paths start at the first name server) or set RTCOORD_CWD",
             runRtcoord("ls", "$hostContext/gyro0.rtc").failure(),

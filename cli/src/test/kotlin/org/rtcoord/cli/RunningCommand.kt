@@ -16,9 +16,9 @@ import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 
 /**
- * `rtcoord ARGUMENTS` running in the background of this JVM through Clikt's test harness, its stdout
- * read line by line as it is printed: a test waits for the line it expects ([awaitLine]) instead of a
- * fixed `--for` window, then [stop]s the command as Ctrl-C would and reads the whole result.
+ * `rtcoord ARGUMENTS` running in the background of this JVM through Clikt's test harness, its stdout read line by line
+ * as it is printed: a test waits for the line it expects ([awaitLine]) instead of a fixed `--for` window, then [stop]s
+ * the command as Ctrl-C would and reads the whole result.
  */
 class RunningCommand(vararg arguments: String) : AutoCloseable {
     private val lines = mutableListOf<String>()
@@ -26,21 +26,24 @@ class RunningCommand(vararg arguments: String) : AutoCloseable {
     private val lock = Object()
 
     /** The run's result, once it has ended. */
-    val result: CompletableFuture<CliktCommandTestResult> = CompletableFuture.supplyAsync {
-        val command = rtcoord()
-        command.test(arguments.toList()) { argv ->
-            // After the harness's own configuration: its recorder still gets every print.
-            command.context { terminal = Terminal(terminalInterface = LineTap(terminal.terminalInterface)) }
-            command.execute(argv)
-        }
-    }.whenComplete { _, _ -> synchronized(lock) { lock.notifyAll() } }
+    val result: CompletableFuture<CliktCommandTestResult> =
+        CompletableFuture.supplyAsync {
+                val command = rtcoord()
+                command.test(arguments.toList()) { argv ->
+                    // After the harness's own configuration: its recorder still gets every print.
+                    command.context { terminal = Terminal(terminalInterface = LineTap(terminal.terminalInterface)) }
+                    command.execute(argv)
+                }
+            }
+            .whenComplete { _, _ -> synchronized(lock) { lock.notifyAll() } }
 
     /** The stdout lines printed so far. */
-    val printed: List<String> get() = synchronized(lock) { lines.toList() }
+    val printed: List<String>
+        get() = synchronized(lock) { lines.toList() }
 
     /**
-     * Waits until a stdout line printed since the start satisfies [line] and returns it; fails naming
-     * [what] and showing the output when none does within [timeout] or the command ends first.
+     * Waits until a stdout line printed since the start satisfies [line] and returns it; fails naming [what] and
+     * showing the output when none does within [timeout] or the command ends first.
      */
     fun awaitLine(what: String, timeout: Duration = 60.seconds, line: (String) -> Boolean): String =
         awaitOutput(what, timeout) { it.firstOrNull(line) }
@@ -53,14 +56,18 @@ class RunningCommand(vararg arguments: String) : AutoCloseable {
         val deadline = TimeSource.Monotonic.markNow() + timeout
         synchronized(lock) {
             while (true) {
-                found(lines)?.let { return it }
+                found(lines)?.let {
+                    return it
+                }
                 val left = -deadline.elapsedNow()
                 if (result.isDone || !left.isPositive()) break
                 lock.wait(left.inWholeMilliseconds.coerceAtLeast(1))
             }
         }
         val ended = if (result.isDone) "the command ended" else "$timeout passed"
-        throw AssertionError("$ended before $what; stdout:\n${printed.joinToString("\n")}\nstderr:\n${runCatching { result.getNow(null)?.stderr }.getOrNull().orEmpty()}")
+        throw AssertionError(
+            "$ended before $what; stdout:\n${printed.joinToString("\n")}\nstderr:\n${runCatching { result.getNow(null)?.stderr }.getOrNull().orEmpty()}"
+        )
     }
 
     /** Stops the command as a SIGINT would and returns its result; fails when it does not end within [timeout]. */
@@ -69,7 +76,8 @@ class RunningCommand(vararg arguments: String) : AutoCloseable {
         // Until the command waits for a signal, a stop finds nothing to stop: asked again until it ends.
         while (!result.isDone) {
             StopSignals.interrupt()
-            if (!(-deadline.elapsedNow()).isPositive()) throw AssertionError("the command did not stop within $timeout; stdout:\n${printed.joinToString("\n")}")
+            if (!(-deadline.elapsedNow()).isPositive())
+                throw AssertionError("the command did not stop within $timeout; stdout:\n${printed.joinToString("\n")}")
             try {
                 result.get(50.milliseconds.inWholeMilliseconds, TimeUnit.MILLISECONDS)
             } catch (e: TimeoutException) {
@@ -102,7 +110,9 @@ class RunningCommand(vararg arguments: String) : AutoCloseable {
     }
 }
 
-/** Runs `rtcoord ARGUMENTS` until a stdout line satisfies [until], then stops it as Ctrl-C would; returns its result. */
+/**
+ * Runs `rtcoord ARGUMENTS` until a stdout line satisfies [until], then stops it as Ctrl-C would; returns its result.
+ */
 fun runRtcoordUntil(vararg arguments: String, what: String, until: (String) -> Boolean): CliktCommandTestResult =
     RunningCommand(*arguments).use { running ->
         running.awaitLine(what, line = until)

@@ -7,7 +7,10 @@ import org.junit.jupiter.api.Test
 class TextFormatsTest {
     @Test
     fun `columns are padded to the widest cell, the last one left as it is`() {
-        assertEquals(listOf("  a     1", "  long  22  x"), aligned(listOf(listOf("a", "1"), listOf("long", "22", "x")), "  "))
+        assertEquals(
+            listOf("  a     1", "  long  22  x"),
+            aligned(listOf(listOf("a", "1"), listOf("long", "22", "x")), "  "),
+        )
         assertEquals(listOf("key", "k    v"), aligned(listOf(listOf("key", ""), listOf("k", "v"))))
     }
 }

@@ -1,5 +1,6 @@
 package org.rtcoord.internal
 
+import java.util.concurrent.atomic.AtomicInteger
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.launch
 import org.omg.CORBA.ORB
@@ -12,13 +13,12 @@ import org.omg.Messaging.ExceptionHolder
 import org.omg.Messaging.ReplyHandler
 import org.omg.PortableServer.POA
 import org.omg.PortableServer.Servant
-import java.util.concurrent.atomic.AtomicInteger
 
 /**
- * Requests sent without a thread waiting for their replies: CORBA's asynchronous method invocation as
- * JacORB implements it, where the connection's reader thread hands each reply to a reply handler of ours
- * as it reads it. A blocking call also wakes the calling thread for every reply; polling 1000 components
- * at 10 Hz, that doubled the CPU of each read (53 against 22 us, bench/README.md).
+ * Requests sent without a thread waiting for their replies: CORBA's asynchronous method invocation as JacORB implements
+ * it, where the connection's reader thread hands each reply to a reply handler of ours as it reads it. A blocking call
+ * also wakes the calling thread for every reply; polling 1000 components at 10 Hz, that doubled the CPU of each read
+ * (53 against 22 us, bench/README.md).
  *
  * Only a JacORB ORB offers it: [supports] says whether a reference can be reached this way.
  */
@@ -30,10 +30,10 @@ internal class AsyncRequests(orb: ORB, private val scope: CoroutineScope) {
         (target as? ObjectImpl)?.let { runCatching { it._get_delegate() }.getOrNull() } is org.jacorb.orb.Delegate
 
     /**
-     * Where the replies to the requests made through it go, on the reader thread of their connection:
-     * [received] gets each reply's id and body, positioned at the result; [failed] each exception reply
-     * (whose request JacORB does not name). Both must return at once and never throw: a reply handler
-     * that throws makes JacORB close the connection, with every call pending on it.
+     * Where the replies to the requests made through it go, on the reader thread of their connection: [received] gets
+     * each reply's id and body, positioned at the result; [failed] each exception reply (whose request JacORB does not
+     * name). Both must return at once and never throw: a reply handler that throws makes JacORB close the connection,
+     * with every call pending on it.
      */
     inner class Replies(
         private val received: (requestId: Int, result: InputStream) -> Unit,
@@ -45,15 +45,14 @@ internal class AsyncRequests(orb: ORB, private val scope: CoroutineScope) {
         private val reference = HandlerReference(served.reference)
 
         /**
-         * A request of [operation] to [target], to be completed with its arguments and [Request.send]:
-         * its [Request.id] is known before it leaves, so a reply can never arrive before its sender knows
-         * which request it answers.
+         * A request of [operation] to [target], to be completed with its arguments and [Request.send]: its [Request.id]
+         * is known before it leaves, so a reply can never arrive before its sender knows which request it answers.
          */
         fun request(target: org.omg.CORBA.Object, operation: String): Request = Request(target as ObjectImpl, operation)
 
         /**
-         * Stops taking replies: the handler leaves the ORB once no reply is outstanding (at once, or when the
-         * last one arrives). A reply that never arrives, because its connection was lost, keeps it.
+         * Stops taking replies: the handler leaves the ORB once no reply is outstanding (at once, or when the last one
+         * arrives). A reply that never arrives, because its connection was lost, keeps it.
          */
         fun close() {
             closing = true

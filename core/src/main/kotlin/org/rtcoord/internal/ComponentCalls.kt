@@ -3,6 +3,10 @@ package org.rtcoord.internal
 import RTC.ExecutionContext
 import RTC.RTObject
 import RTC.ReturnCode_t
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeMark
+import kotlin.time.TimeSource
 import kotlinx.coroutines.withContext
 import org.rtcoord.Composition
 import org.rtcoord.ContextSelector
@@ -12,37 +16,55 @@ import org.rtcoord.OperationFailedException
 import org.rtcoord.TimedOutException
 import org.rtcoord.TransitionOutcome
 import org.rtcoord.TransitionOutcomeImpl
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeMark
-import kotlin.time.TimeSource
 
 /** A lifecycle operation, with the state it starts from, the one it leads to, and its call on a context. */
-internal enum class LifecycleOperation(val verb: String, val from: LifeCycle, val to: LifeCycle, val call: (ExecutionContext, RTObject) -> ReturnCode_t) {
+internal enum class LifecycleOperation(
+    val verb: String,
+    val from: LifeCycle,
+    val to: LifeCycle,
+    val call: (ExecutionContext, RTObject) -> ReturnCode_t,
+) {
     ACTIVATE("activate", LifeCycle.INACTIVE, LifeCycle.ACTIVE, { ec, component -> ec.activate_component(component) }),
-    DEACTIVATE("deactivate", LifeCycle.ACTIVE, LifeCycle.INACTIVE, { ec, component -> ec.deactivate_component(component) }),
+    DEACTIVATE(
+        "deactivate",
+        LifeCycle.ACTIVE,
+        LifeCycle.INACTIVE,
+        { ec, component -> ec.deactivate_component(component) },
+    ),
     RESET("reset", LifeCycle.ERROR, LifeCycle.INACTIVE, { ec, component -> ec.reset_component(component) }),
 }
 
 /**
- * The remote calls a [org.rtcoord.ComponentNode] makes besides reading ([ComponentReader]) and
- * configuring ([ConfigurationWriter]): choosing an execution context, lifecycle operations that wait for
- * their effect, and exit. Each call has the tree's deadline and every return code is checked.
+ * The remote calls a [org.rtcoord.ComponentNode] makes besides reading ([ComponentReader]) and configuring
+ * ([ConfigurationWriter]): choosing an execution context, lifecycle operations that wait for their effect, and exit.
+ * Each call has the tree's deadline and every return code is checked.
  */
-internal class ComponentCalls(private val core: TreeCore, private val subject: String, private val component: ComponentObject) {
+internal class ComponentCalls(
+    private val core: TreeCore,
+    private val subject: String,
+    private val component: ComponentObject,
+) {
     /** The component's handle for the context [selector] names, and the context. */
     suspend fun context(selector: ContextSelector): Pair<Int, ExecutionContext> {
         val snapshot = component.loaded(subject)
-        val handle = when (selector) {
-            is ContextSelector.Handle -> selector.handle
-            is ContextSelector.Index -> {
-                val ordered = snapshot.contexts.filter { it.owned } + snapshot.contexts.filter { !it.owned }
-                ordered.getOrNull(selector.index)?.handle
-                    ?: throw NotFoundException(subject, "no execution context at index ${selector.index} (it has ${ordered.size})")
+        val handle =
+            when (selector) {
+                is ContextSelector.Handle -> selector.handle
+                is ContextSelector.Index -> {
+                    val ordered = snapshot.contexts.filter { it.owned } + snapshot.contexts.filter { !it.owned }
+                    ordered.getOrNull(selector.index)?.handle
+                        ?: throw NotFoundException(
+                            subject,
+                            "no execution context at index ${selector.index} (it has ${ordered.size})",
+                        )
+                }
             }
-        }
-        val context = component.contexts[handle]
-            ?: throw NotFoundException(subject, "no execution context with handle $handle (handles: ${component.contexts.keys.sorted().joinToString()})")
+        val context =
+            component.contexts[handle]
+                ?: throw NotFoundException(
+                    subject,
+                    "no execution context with handle $handle (handles: ${component.contexts.keys.sorted().joinToString()})",
+                )
         return handle to context
     }
 
@@ -57,46 +79,59 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
         withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, component.ref).readComposition() }
 
     /**
-     * Performs [operation] in [selector]'s context, waits until the component is in the state it leads to
-     * (within [deadline], else the tree's), and publishes that state. A context that answers `RTC_ERROR`,
-     * or no answer within the deadline, may only have stopped waiting for a slow callback (OpenRTM-aist's
-     * `transition_timeout`, `ExecutionContextBase.waitForActivated` and the like): the state is read until
-     * the deadline, and one that arrives makes a slow success.
+     * Performs [operation] in [selector]'s context, waits until the component is in the state it leads to (within
+     * [deadline], else the tree's), and publishes that state. A context that answers `RTC_ERROR`, or no answer within
+     * the deadline, may only have stopped waiting for a slow callback (OpenRTM-aist's `transition_timeout`,
+     * `ExecutionContextBase.waitForActivated` and the like): the state is read until the deadline, and one that arrives
+     * makes a slow success.
      */
-    suspend fun perform(operation: LifecycleOperation, selector: ContextSelector, deadline: Duration?): TransitionOutcome {
+    suspend fun perform(
+        operation: LifecycleOperation,
+        selector: ContextSelector,
+        deadline: Duration?,
+    ): TransitionOutcome {
         val (handle, ec) = context(selector)
         val limit = deadline ?: core.remote.defaultDeadline
         val started = TimeSource.Monotonic.markNow()
-        val code = try {
-            core.remote.call(subject, operation.verb, limit) { operation.call(ec, component.ref) }
-        } catch (e: TimedOutException) {
-            null
-        }
+        val code =
+            try {
+                core.remote.call(subject, operation.verb, limit) { operation.call(ec, component.ref) }
+            } catch (e: TimedOutException) {
+                null
+            }
         if (code == ReturnCode_t.PRECONDITION_NOT_MET) {
             val now = runCatching { state(ec) }.getOrDefault(LifeCycle.UNKNOWN)
             code.orFail(subject, operation.verb, "the component is $now in context $handle, not ${operation.from}")
         }
-        val late = when (code) {
-            ReturnCode_t.RTC_OK -> null
-            ReturnCode_t.RTC_ERROR -> code.name()
-            null -> "no answer"
-            else -> {
-                code.orFail(subject, operation.verb, "in context $handle") // throws: any other code is a failure
-                null
+        val late =
+            when (code) {
+                ReturnCode_t.RTC_OK -> null
+                ReturnCode_t.RTC_ERROR -> code.name()
+                null -> "no answer"
+                else -> {
+                    code.orFail(subject, operation.verb, "in context $handle") // throws: any other code is a failure
+                    null
+                }
             }
-        }
         val stamp = awaitState(operation, ec, handle, started + limit, limit, late)
         component.publishStates(mapOf(handle to operation.to), stamp)
         return TransitionOutcomeImpl(operation.to, late, started.elapsedNow().inWholeMilliseconds)
     }
 
     /**
-     * Polls the state until it is [operation]'s target, failing at once if the component fell into ERROR
-     * instead (a reset's ERROR is the state it leaves); returns the stamp of the read that found the
-     * target (see [ComponentObject.stamp]). [late] is what the context answered when it did not report
-     * the target itself: the failure at [deadline] names it with the state found.
+     * Polls the state until it is [operation]'s target, failing at once if the component fell into ERROR instead (a
+     * reset's ERROR is the state it leaves); returns the stamp of the read that found the target (see
+     * [ComponentObject.stamp]). [late] is what the context answered when it did not report the target itself: the
+     * failure at [deadline] names it with the state found.
      */
-    private suspend fun awaitState(operation: LifecycleOperation, ec: ExecutionContext, handle: Int, deadline: TimeMark, limit: Duration, late: String?): Long {
+    private suspend fun awaitState(
+        operation: LifecycleOperation,
+        ec: ExecutionContext,
+        handle: Int,
+        deadline: TimeMark,
+        limit: Duration,
+        late: String?,
+    ): Long {
         val verb = operation.verb
         val target = operation.to
         var last: LifeCycle? = null
@@ -104,13 +139,27 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
             val stamp = component.stamp()
             val state = state(ec).also { last = it }
             if (state == LifeCycle.ERROR && operation.from != LifeCycle.ERROR) {
-                throw OperationFailedException(subject, verb, late ?: ReturnCode_t.RTC_ERROR.name(), "the component went to ERROR in context $handle")
+                throw OperationFailedException(
+                    subject,
+                    verb,
+                    late ?: ReturnCode_t.RTC_ERROR.name(),
+                    "the component went to ERROR in context $handle",
+                )
             }
             stamp.takeIf { state == target }
-        } ?: throw when (late) {
-            null, "no answer" -> TimedOutException(subject, "$verb (waiting for $target, still $last)", limit.inWholeMilliseconds)
-            else -> OperationFailedException(subject, verb, late, "in context $handle; still $last at its ${limit.inWholeMilliseconds} ms deadline")
         }
+            ?: throw when (late) {
+                null,
+                "no answer" ->
+                    TimedOutException(subject, "$verb (waiting for $target, still $last)", limit.inWholeMilliseconds)
+                else ->
+                    OperationFailedException(
+                        subject,
+                        verb,
+                        late,
+                        "in context $handle; still $last at its ${limit.inWholeMilliseconds} ms deadline",
+                    )
+            }
     }
 
     /** Asks the component to exit. */
@@ -125,7 +174,8 @@ internal class ComponentCalls(private val core: TreeCore, private val subject: S
     fun configuration(): ConfigurationWriter = ConfigurationWriter(core.remote, core.orb.orb, subject, component.ref)
 
     /** The calls on the execution context with [handle], [ec]. */
-    fun onContext(handle: Int, ec: ExecutionContext): ContextCalls = ContextCalls(core.remote, "$subject context $handle", ec)
+    fun onContext(handle: Int, ec: ExecutionContext): ContextCalls =
+        ContextCalls(core.remote, "$subject context $handle", ec)
 }
 
 /** The remote calls on one execution context: rate, running, participants. */
@@ -143,6 +193,8 @@ internal class ContextCalls(private val remote: Remote, val subject: String, pri
     }
 
     suspend fun remove(participant: ComponentObject, name: String) {
-        remote.call(subject, "remove_component") { context.remove_component(participant.ref) }.orFail(subject, "remove $name")
+        remote
+            .call(subject, "remove_component") { context.remove_component(participant.ref) }
+            .orFail(subject, "remove $name")
     }
 }

@@ -4,6 +4,7 @@ import RTC.ExecutionContext
 import RTC.PortService
 import RTC.RTObject
 import _SDOPackage.Configuration
+import java.util.concurrent.atomic.AtomicLong
 import kotlinx.coroutines.async
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
@@ -18,13 +19,11 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.ManagerNode
 import org.rtcoord.RtcPath
 import org.rtcoord.summary
-import java.util.concurrent.atomic.AtomicLong
 
 /**
- * A live component: its reference and the latest snapshot read from it. Reads are serialised per
- * component (one refresh at a time; a caller takes the result of a read that started after it arrived,
- * never of one that may have missed what it wrote); different components refresh in parallel; readers
- * take [snapshot]'s value without waiting.
+ * A live component: its reference and the latest snapshot read from it. Reads are serialised per component (one refresh
+ * at a time; a caller takes the result of a read that started after it arrived, never of one that may have missed what
+ * it wrote); different components refresh in parallel; readers take [snapshot]'s value without waiting.
  */
 internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     private val refreshing = Mutex()
@@ -32,17 +31,20 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     private val currentSummary = MutableStateFlow<ComponentSummary?>(null)
 
     /** Execution contexts by the component's handle for them, as of the last refresh. */
-    @Volatile var contexts: Map<Int, ExecutionContext> = emptyMap()
+    @Volatile
+    var contexts: Map<Int, ExecutionContext> = emptyMap()
         private set
 
     /** Port references by short port name, as of the last refresh. */
-    @Volatile var ports: Map<String, PortService> = emptyMap()
+    @Volatile
+    var ports: Map<String, PortService> = emptyMap()
         private set
 
     private val hosts = java.util.concurrent.ConcurrentHashMap<RtcPath, ManagerNode>()
 
     /** The managers whose listings showed this component, the latest node of each. */
-    val hostingManagers: Collection<ManagerNode> get() = hosts.values
+    val hostingManagers: Collection<ManagerNode>
+        get() = hosts.values
 
     /** Records that [manager]'s listing shows this component. */
     fun hostedBy(manager: ManagerNode) {
@@ -53,54 +55,59 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     private val nodes = LinkedHashMap<RtcPath, ComponentNode>()
 
     /** The paths at which the tree shows this component, in the order they were found. */
-    val knownPaths: List<RtcPath> get() = synchronized(nodes) { nodes.keys.toList() }
+    val knownPaths: List<RtcPath>
+        get() = synchronized(nodes) { nodes.keys.toList() }
 
     /**
-     * The one node that stands for the component in every event, log line and result: the first found in
-     * a naming context (where it registered itself), else the first found at all (below a manager, whose
-     * listing is an alias). The latest node at that path, since a listing may make it anew.
+     * The one node that stands for the component in every event, log line and result: the first found in a naming
+     * context (where it registered itself), else the first found at all (below a manager, whose listing is an alias).
+     * The latest node at that path, since a listing may make it anew.
      */
     val canonical: ComponentNode?
         get() = synchronized(nodes) { preferred(nodes.values) }
 
     /**
-     * The node of [found] (some of this component's nodes, as one walk found them) that stands for it: the
-     * [canonical] one when it is among them, else by the same rule among them alone.
+     * The node of [found] (some of this component's nodes, as one walk found them) that stands for it: the [canonical]
+     * one when it is among them, else by the same rule among them alone.
      */
     fun canonicalAmong(found: Collection<ComponentNode>): ComponentNode {
         val paths = found.mapTo(HashSet()) { it.path }
         return synchronized(nodes) { preferred(nodes.values.filter { it.path in paths }) } ?: found.first()
     }
 
-    private fun preferred(nodes: Collection<ComponentNode>): ComponentNode? = nodes.firstOrNull { !it.path.isAlias } ?: nodes.firstOrNull()
+    private fun preferred(nodes: Collection<ComponentNode>): ComponentNode? =
+        nodes.firstOrNull { !it.path.isAlias } ?: nodes.firstOrNull()
 
     /** Records that the tree shows this component at [node]'s path. */
     fun knownAs(node: ComponentNode) {
         synchronized(nodes) { nodes[node.path] = node }
     }
 
-    val snapshot: StateFlow<ComponentSnapshot?> get() = current
+    val snapshot: StateFlow<ComponentSnapshot?>
+        get() = current
 
     /** The summary of the latest read, full or not. */
-    val summary: StateFlow<ComponentSummary?> get() = currentSummary
+    val summary: StateFlow<ComponentSummary?>
+        get() = currentSummary
 
     /** The snapshot, read now if none was read yet. */
     suspend fun loaded(subject: String): ComponentSnapshot = current.value ?: refresh(subject)
 
     /**
-     * The instance name: the snapshot's, else the one the summary read in the caller's survey gave (or its
-     * failure), else read from the profile alone.
+     * The instance name: the snapshot's, else the one the summary read in the caller's survey gave (or its failure),
+     * else read from the profile alone.
      */
     suspend fun instanceName(subject: String): String =
-        current.value?.instanceName ?: SurveyReads.current()?.instanceName(this)
+        current.value?.instanceName
+            ?: SurveyReads.current()?.instanceName(this)
             ?: core.remote.call(subject, "get_component_profile") { ref.get_component_profile() }.instance_name
 
     /** The component's configuration object, once known. */
     @Volatile private var configuration: Configuration? = null
 
     /**
-     * Orders the reads: each read of the whole component ([refresh]) or of its states ([stamp]) takes the
-     * next stamp as it starts, so a read can tell whether another started after it, or after a write.
+     * Orders the reads: each read of the whole component ([refresh]) or of its states ([stamp]) takes the next stamp as
+     * it starts, so a read can tell whether another started after it, or after a write.
      */
     private val stamps = AtomicLong()
 
@@ -108,8 +115,8 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     @Volatile private var lastRead = 0L
 
     /**
-     * By context handle, the stamp of the read behind the state published: a state read that started
-     * earlier never replaces it. Guarded by [publishing], which makes each publication one step.
+     * By context handle, the stamp of the read behind the state published: a state read that started earlier never
+     * replaces it. Guarded by [publishing], which makes each publication one step.
      */
     private val stateStamps = HashMap<Int, Long>()
     private val publishing = Any()
@@ -123,42 +130,50 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
         return refreshing.withLock {
             // Only a read that started after this caller arrived is as fresh as its own would be: one that
             // started before may have missed what the caller just wrote.
-            current.value.takeIf { lastRead > arrived } ?: withContext(core.remote.dispatcher) {
-                val stamp = stamp()
-                val reader = ComponentReader(core.remote, subject, ref)
-                val withConfiguration = current.value?.configuration != null
-                val settings = async { if (withConfiguration) readConfiguration(reader) else null }
-                val reading = reader.read()
-                contexts = reading.contexts
-                ports = reading.ports
-                publishRead(reading.snapshot.copy(configuration = settings.await()), stamp).also { lastRead = stamp }
-            }
+            current.value.takeIf { lastRead > arrived }
+                ?: withContext(core.remote.dispatcher) {
+                    val stamp = stamp()
+                    val reader = ComponentReader(core.remote, subject, ref)
+                    val withConfiguration = current.value?.configuration != null
+                    val settings = async { if (withConfiguration) readConfiguration(reader) else null }
+                    val reading = reader.read()
+                    contexts = reading.contexts
+                    ports = reading.ports
+                    publishRead(reading.snapshot.copy(configuration = settings.await()), stamp).also {
+                        lastRead = stamp
+                    }
+                }
         }
     }
 
     /** Publishes [read], a whole read stamped [stamp], keeping each context's state that a later read found. */
-    private fun publishRead(read: ComponentSnapshot, stamp: Long): ComponentSnapshot = synchronized(publishing) {
-        val previous = current.value?.contexts.orEmpty().associateBy { it.handle }
-        val contexts = read.contexts.map { context ->
-            val later = previous[context.handle]?.takeIf { (stateStamps[context.handle] ?: 0) > stamp }
-            if (later == null) stateStamps[context.handle] = stamp
-            later?.let { context.copy(state = it.state) } ?: context
+    private fun publishRead(read: ComponentSnapshot, stamp: Long): ComponentSnapshot =
+        synchronized(publishing) {
+            val previous = current.value?.contexts.orEmpty().associateBy { it.handle }
+            val contexts =
+                read.contexts.map { context ->
+                    val later = previous[context.handle]?.takeIf { (stateStamps[context.handle] ?: 0) > stamp }
+                    if (later == null) stateStamps[context.handle] = stamp
+                    later?.let { context.copy(state = it.state) } ?: context
+                }
+            show(read.copy(contexts = contexts))
         }
-        show(read.copy(contexts = contexts))
-    }
 
     /**
-     * Publishes [states] by context handle, read by the read stamped [stamp], onto the latest snapshot
-     * (whatever else was published since stays); a context whose state a later read found keeps it.
+     * Publishes [states] by context handle, read by the read stamped [stamp], onto the latest snapshot (whatever else
+     * was published since stays); a context whose state a later read found keeps it.
      */
     fun publishStates(states: Map<Int, LifeCycle>, stamp: Long) {
         synchronized(publishing) {
             val latest = current.value ?: return
-            val contexts = latest.contexts.map { context ->
-                val state = states[context.handle]?.takeIf { stamp > (stateStamps[context.handle] ?: 0) } ?: return@map context
-                stateStamps[context.handle] = stamp
-                context.copy(state = state)
-            }
+            val contexts =
+                latest.contexts.map { context ->
+                    val state =
+                        states[context.handle]?.takeIf { stamp > (stateStamps[context.handle] ?: 0) }
+                            ?: return@map context
+                    stateStamps[context.handle] = stamp
+                    context.copy(state = state)
+                }
             show(latest.copy(contexts = contexts))
         }
     }
@@ -170,8 +185,8 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     }
 
     /**
-     * Reads what a listing shows (see [ComponentSummary]) and publishes it; the snapshot stays as it was.
-     * In a survey, the first path that reaches the component reads it, the others take that read.
+     * Reads what a listing shows (see [ComponentSummary]) and publishes it; the snapshot stays as it was. In a survey,
+     * the first path that reaches the component reads it, the others take that read.
      */
     suspend fun refreshSummary(subject: String): ComponentSummary {
         val survey = SurveyReads.current() ?: return readSummary(subject).summary
@@ -179,12 +194,13 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     }
 
     private suspend fun readSummary(subject: String): ComponentReader.SummaryReading = refreshing.withLock {
-        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, ref).readSummary() }.also { currentSummary.value = it.summary }
+        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, ref).readSummary() }
+            .also { currentSummary.value = it.summary }
     }
 
     /**
-     * Reads the configuration sets and publishes them with the rest of the latest snapshot. Read while no
-     * other read runs, so that a read started earlier, which may have missed a write, cannot publish after it.
+     * Reads the configuration sets and publishes them with the rest of the latest snapshot. Read while no other read
+     * runs, so that a read started earlier, which may have missed a write, cannot publish after it.
      */
     suspend fun loadConfiguration(subject: String): ConfigurationSnapshot {
         loaded(subject)

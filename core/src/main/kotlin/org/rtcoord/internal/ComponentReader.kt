@@ -17,65 +17,87 @@ import org.rtcoord.Composition
 import org.rtcoord.ConfigurationSnapshot
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.ContextSnapshot
-import org.rtcoord.LifeCycle
 import org.rtcoord.OperationUnsupportedException
 import org.rtcoord.PortInterface
 import org.rtcoord.PortKind
 import org.rtcoord.PortSnapshot
 
 /**
- * Reads a component, issuing the independent remote calls concurrently: profile, ports and execution
- * contexts together ([read]), configuration apart ([readConfiguration]), since listing a system does not
- * need it and every call counts at a thousand components; for listings, only what they show
- * ([readSummary]).
+ * Reads a component, issuing the independent remote calls concurrently: profile, ports and execution contexts together
+ * ([read]), configuration apart ([readConfiguration]), since listing a system does not need it and every call counts at
+ * a thousand components; for listings, only what they show ([readSummary]).
  */
 internal class ComponentReader(private val remote: Remote, private val subject: String, private val ref: RTObject) {
 
     /** A snapshot and the references behind it. */
-    class Reading(val snapshot: ComponentSnapshot, val contexts: Map<Int, ExecutionContext>, val ports: Map<String, PortService>)
+    class Reading(
+        val snapshot: ComponentSnapshot,
+        val contexts: Map<Int, ExecutionContext>,
+        val ports: Map<String, PortService>,
+    )
 
     /** A summary and the instance name the profile read for it gave. */
     class SummaryReading(val summary: ComponentSummary, val instanceName: String)
 
     suspend fun read(): Reading = coroutineScope {
         val profile = async { readProfile() }
-        val contexts = async { readContexts().map { (context, isOwned, handle) -> async { readContext(context, isOwned, handle) } }.awaitAll() }
+        val contexts = async {
+            readContexts()
+                .map { (context, isOwned, handle) -> async { readContext(context, isOwned, handle) } }
+                .awaitAll()
+        }
         val p = profile.await()
         // OpenRTM-aist never sets a parent: the extra call is made only for a component that has one.
-        val parent = p.parent?.let { parent -> remote.call(subject, "get_component_profile of the parent") { parent.get_component_profile() }.instance_name }
+        val parent =
+            p.parent?.let { parent ->
+                remote
+                    .call(subject, "get_component_profile of the parent") { parent.get_component_profile() }
+                    .instance_name
+            }
         val read = contexts.await()
-        val snapshot = ComponentSnapshot(
-            instanceName = p.instance_name,
-            typeName = p.type_name,
-            description = p.description,
-            version = p.version,
-            vendor = p.vendor,
-            category = p.category,
-            parent = parent,
-            properties = p.properties.toMap(),
-            ports = portsOf(p),
-            contexts = read.map { it.first },
-            configuration = null,
+        val snapshot =
+            ComponentSnapshot(
+                instanceName = p.instance_name,
+                typeName = p.type_name,
+                description = p.description,
+                version = p.version,
+                vendor = p.vendor,
+                category = p.category,
+                parent = parent,
+                properties = p.properties.toMap(),
+                ports = portsOf(p),
+                contexts = read.map { it.first },
+                configuration = null,
+            )
+        Reading(
+            snapshot,
+            read.associate { it.first.handle to it.second },
+            p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref },
         )
-        Reading(snapshot, read.associate { it.first.handle to it.second }, p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref })
     }
 
     /** What a listing shows: the profile's ports and the state in each context, without the contexts' own details. */
     suspend fun readSummary(): SummaryReading = coroutineScope {
         val profile = async { readProfile() }
         val states = async {
-            readContexts().map { (context, _, handle) -> async { handle to readState(context).toLifeCycle() } }.awaitAll().toMap()
+            readContexts()
+                .map { (context, _, handle) -> async { handle to readState(context).toLifeCycle() } }
+                .awaitAll()
+                .toMap()
         }
         val p = profile.await()
         SummaryReading(ComponentSummary(states.await(), portsOf(p)), p.instance_name)
     }
 
-    private suspend fun readProfile(): ComponentProfile = remote.call(subject, "get_component_profile") { ref.get_component_profile() }
+    private suspend fun readProfile(): ComponentProfile =
+        remote.call(subject, "get_component_profile") { ref.get_component_profile() }
 
     /** Every context with whether the component owns it and its handle for it. */
     private suspend fun readContexts(): List<Triple<ExecutionContext, Boolean, Int>> = coroutineScope {
         val owned = async { remote.call(subject, "get_owned_contexts") { ref.get_owned_contexts() } }
-        val participating = async { remote.call(subject, "get_participating_contexts") { ref.get_participating_contexts() } }
+        val participating = async {
+            remote.call(subject, "get_participating_contexts") { ref.get_participating_contexts() }
+        }
         // OpenRTM numbers owned contexts 0.. and participating ones 1000.. in list order.
         owned.await().mapIndexed { index, context -> Triple(context, true, index) } +
             participating.await().mapIndexed { index, context -> Triple(context, false, PARTICIPATING_BASE + index) }
@@ -84,49 +106,83 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     private suspend fun readState(context: ExecutionContext): LifeCycleState =
         remote.call(subject, "get_component_state") { context.get_component_state(ref) }
 
-    private fun portsOf(p: ComponentProfile): List<PortSnapshot> = p.port_profiles.map { port ->
-        val properties = port.properties.toMap()
-        PortSnapshot(
-            name = port.name.removePrefix("${p.instance_name}."),
-            fullName = port.name,
-            kind = when (properties["port.port_type"]) {
-                "DataInPort" -> PortKind.DATA_IN
-                "DataOutPort" -> PortKind.DATA_OUT
-                "CorbaPort" -> PortKind.SERVICE
-                else -> PortKind.OTHER
-            },
-            dataType = properties["dataport.data_type"],
-            interfaces = port.interfaces.map { profile ->
-                val polarity = if (profile.polarity == RTC.PortInterfacePolarity.PROVIDED) PortInterface.Polarity.PROVIDED else PortInterface.Polarity.REQUIRED
-                PortInterface(profile.instance_name, profile.type_name, polarity)
-            },
-            properties = properties,
-            connectors = port.connector_profiles.map { connector ->
-                ConnectorSnapshot(connector.connector_id, connector.name, connector.properties.toMap())
-            },
-        )
-    }
+    private fun portsOf(p: ComponentProfile): List<PortSnapshot> =
+        p.port_profiles.map { port ->
+            val properties = port.properties.toMap()
+            PortSnapshot(
+                name = port.name.removePrefix("${p.instance_name}."),
+                fullName = port.name,
+                kind =
+                    when (properties["port.port_type"]) {
+                        "DataInPort" -> PortKind.DATA_IN
+                        "DataOutPort" -> PortKind.DATA_OUT
+                        "CorbaPort" -> PortKind.SERVICE
+                        else -> PortKind.OTHER
+                    },
+                dataType = properties["dataport.data_type"],
+                interfaces =
+                    port.interfaces.map { profile ->
+                        val polarity =
+                            if (profile.polarity == RTC.PortInterfacePolarity.PROVIDED) PortInterface.Polarity.PROVIDED
+                            else PortInterface.Polarity.REQUIRED
+                        PortInterface(profile.instance_name, profile.type_name, polarity)
+                    },
+                properties = properties,
+                connectors =
+                    port.connector_profiles.map { connector ->
+                        ConnectorSnapshot(connector.connector_id, connector.name, connector.properties.toMap())
+                    },
+            )
+        }
 
-    private suspend fun readContext(context: ExecutionContext, owned: Boolean, handle: Int): Pair<ContextSnapshot, ExecutionContext> = coroutineScope {
+    private suspend fun readContext(
+        context: ExecutionContext,
+        owned: Boolean,
+        handle: Int,
+    ): Pair<ContextSnapshot, ExecutionContext> = coroutineScope {
         val state = async { readState(context) }
         val running = async { remote.call(subject, "is_running") { context.is_running() } }
         val profile = async {
             // Plain ExecutionContexts have no profile: fall back to what every context answers.
             try {
-                remote.call(subject, "get_profile") { ExecutionContextServiceHelper.unchecked_narrow(context).get_profile() }
+                remote
+                    .call(subject, "get_profile") {
+                        ExecutionContextServiceHelper.unchecked_narrow(context).get_profile()
+                    }
                     .let { ContextProfile(it.kind.label(), it.rate, it.participants.size, it.properties.toMap()) }
             } catch (e: OperationUnsupportedException) {
-                ContextProfile(remote.call(subject, "get_kind") { context.get_kind() }.label(), remote.call(subject, "get_rate") { context.get_rate() }, 0, emptyMap())
+                ContextProfile(
+                    remote.call(subject, "get_kind") { context.get_kind() }.label(),
+                    remote.call(subject, "get_rate") { context.get_rate() },
+                    0,
+                    emptyMap(),
+                )
             }
         }
         val (kind, rate, participants, properties) = profile.await()
-        ContextSnapshot(handle, owned, kind, rate, running.await(), state.await().toLifeCycle(), participants, properties) to context
+        ContextSnapshot(
+            handle,
+            owned,
+            kind,
+            rate,
+            running.await(),
+            state.await().toLifeCycle(),
+            participants,
+            properties,
+        ) to context
     }
 
     /** What a context's profile says of it, or what a plain context answers in its place. */
-    private data class ContextProfile(val kind: String, val rate: Double, val participants: Int, val properties: Map<String, String>)
+    private data class ContextProfile(
+        val kind: String,
+        val rate: Double,
+        val participants: Int,
+        val properties: Map<String, String>,
+    )
 
-    /** Whether the component owns SDO organisations (a composite) and belongs to any (a member), as rtctree reads it. */
+    /**
+     * Whether the component owns SDO organisations (a composite) and belongs to any (a member), as rtctree reads it.
+     */
     suspend fun readComposition(): Composition = coroutineScope {
         val owned = async { remote.call(subject, "get_owned_organizations") { ref.get_owned_organizations() } }
         val memberOf = async { remote.call(subject, "get_organizations") { ref.get_organizations() } }
@@ -135,17 +191,21 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
 
     /** The configuration sets, through [configuration] (the component's, fetched when null). */
     suspend fun readConfiguration(configuration: Configuration?): Pair<ConfigurationSnapshot, Configuration?> {
-        val target = configuration ?: try {
-            remote.call(subject, "get_configuration") { ref.get_configuration() }
-        } catch (e: OperationUnsupportedException) {
-            return ConfigurationSnapshot(emptyMap(), null) to null
-        }
+        val target =
+            configuration
+                ?: try {
+                    remote.call(subject, "get_configuration") { ref.get_configuration() }
+                } catch (e: OperationUnsupportedException) {
+                    return ConfigurationSnapshot(emptyMap(), null) to null
+                }
         return readSets(target) to target
     }
 
     private suspend fun readSets(configuration: Configuration): ConfigurationSnapshot {
         return coroutineScope {
-            val sets = async { remote.call(subject, "get_configuration_sets") { configuration.get_configuration_sets() } }
+            val sets = async {
+                remote.call(subject, "get_configuration_sets") { configuration.get_configuration_sets() }
+            }
             val active = async { remote.call(subject, "get_active_configuration_set") { configuration.activeSetId() } }
             ConfigurationSnapshot(sets.await().associate { it.id to it.configuration_data.toMap() }, active.await())
         }
@@ -159,4 +219,5 @@ internal fun Array<NameValue>.toMap(): Map<String, String> = associate { entry -
 
 private const val PARTICIPATING_BASE = 1000
 
-private fun RTC.ExecutionKind.label(): String = listOf("PERIODIC", "EVENT_DRIVEN", "OTHER").getOrElse(value()) { "UNKNOWN" }
+private fun RTC.ExecutionKind.label(): String =
+    listOf("PERIODIC", "EVENT_DRIVEN", "OTHER").getOrElse(value()) { "UNKNOWN" }

@@ -1,6 +1,5 @@
 package org.rtcoord.internal
 
-import org.jacorb.orb.giop.Messages
 import java.io.IOException
 import java.io.InputStream
 import java.util.concurrent.ConcurrentLinkedQueue
@@ -8,13 +7,13 @@ import java.util.concurrent.CountDownLatch
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration
+import org.jacorb.orb.giop.Messages
 
 /**
- * What the ORB has read of one connection a peer opened to it, counted in the stream it reads from: how
- * many bytes it took ([consumed]), and up to where it had handled every message when it last came back
- * for the next one ([handled]). JacORB's reader takes each GIOP message's 12-byte header, then exactly its
- * body, and hands the message to its POA before it reads again; so a read that starts where a message
- * ends means that message is in the POA's queue.
+ * What the ORB has read of one connection a peer opened to it, counted in the stream it reads from: how many bytes it
+ * took ([consumed]), and up to where it had handled every message when it last came back for the next one ([handled]).
+ * JacORB's reader takes each GIOP message's 12-byte header, then exactly its body, and hands the message to its POA
+ * before it reads again; so a read that starts where a message ends means that message is in the POA's queue.
  */
 internal class InboundConnection(private val input: InputStream) : InputStream() {
     /** Waits until [handled] reaches [target] for a [Barrier]. */
@@ -33,13 +32,18 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
     private val readerGone = CountDownLatch(1)
 
     /**
-     * Where [handled] must come for every byte this connection holds now, read or not, to have been
-     * handled; null when it has been already. Counted twice around the kernel's count, so that a read
-     * that ended in between is not counted half.
+     * Where [handled] must come for every byte this connection holds now, read or not, to have been handled; null when
+     * it has been already. Counted twice around the kernel's count, so that a read that ended in between is not counted
+     * half.
      */
     fun target(): Long? {
         if (closed || unframed) return null
-        fun unread(): Int? = try { input.available() } catch (e: IOException) { null }
+        fun unread(): Int? =
+            try {
+                input.available()
+            } catch (e: IOException) {
+                null
+            }
         repeat(SNAPSHOT_TRIES) {
             val before = consumed
             val waiting = unread() ?: return null
@@ -75,12 +79,13 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
 
     override fun read(b: ByteArray, off: Int, len: Int): Int {
         if (headerFill == 0 && bodyLeft == 0L) reached(consumed)
-        val n = try {
-            input.read(b, off, len)
-        } catch (e: IOException) {
-            ended()
-            throw e
-        }
+        val n =
+            try {
+                input.read(b, off, len)
+            } catch (e: IOException) {
+                ended()
+                throw e
+            }
         if (n < 0) ended() else take(b, off, n)
         return n
     }
@@ -134,9 +139,9 @@ internal class InboundConnection(private val input: InputStream) : InputStream()
     private fun bodySize(): Long = if (Messages.matchGIOPMagic(header)) Messages.getMsgSize(header).toLong() else -1
 
     /**
-     * Counts down the connections still to be handled up to their targets, and the one who set it up:
-     * [then] runs on the thread of the last connection to arrive, unless every connection had arrived
-     * by the time every wait was [setUp].
+     * Counts down the connections still to be handled up to their targets, and the one who set it up: [then] runs on
+     * the thread of the last connection to arrive, unless every connection had arrived by the time every wait was
+     * [setUp].
      */
     class Barrier(connections: Int, private val then: Runnable) {
         private val remaining = AtomicInteger(connections + 1)

@@ -1,6 +1,5 @@
 package org.rtcoord.internal
 
-import org.jacorb.orb.factory.ServerSocketFactory
 import java.io.InputStream
 import java.net.InetAddress
 import java.net.ServerSocket
@@ -8,16 +7,17 @@ import java.net.Socket
 import java.util.concurrent.ConcurrentHashMap
 import kotlin.time.Duration
 import kotlin.time.TimeSource
+import org.jacorb.orb.factory.ServerSocketFactory
 
 /**
- * Every connection peers opened to the tree's ORB, and how far its reader has got in each: the ORB's
- * server socket factory (JacORB's `jacorb.net.server_socket_factory`, which JacORB makes one of per ORB).
+ * Every connection peers opened to the tree's ORB, and how far its reader has got in each: the ORB's server socket
+ * factory (JacORB's `jacorb.net.server_socket_factory`, which JacORB makes one of per ORB).
  *
- * It answers one question ([allTaken]): has the ORB taken every byte that has reached this host for it
- * so far? A component's hints come on its own connection, read by a thread of their own, while the
- * answers to the tree's reads come on another. Under load, that thread may not run for milliseconds after
- * a read it overtook came back, so what the hints said meanwhile (an abort's ERROR, once a reset made the
- * component INACTIVE again) is in this host's socket, unread, while threads woken later run on.
+ * It answers one question ([allTaken]): has the ORB taken every byte that has reached this host for it so far? A
+ * component's hints come on its own connection, read by a thread of their own, while the answers to the tree's reads
+ * come on another. Under load, that thread may not run for milliseconds after a read it overtook came back, so what the
+ * hints said meanwhile (an abort's ERROR, once a reset made the component INACTIVE again) is in this host's socket,
+ * unread, while threads woken later run on.
  */
 internal class InboundConnections : ServerSocketFactory {
     private val connections: MutableSet<InboundConnection> = ConcurrentHashMap.newKeySet()
@@ -29,12 +29,13 @@ internal class InboundConnections : ServerSocketFactory {
 
     override fun createServerSocket(port: Int, backlog: Int): ServerSocket = Listening(port, backlog, null)
 
-    override fun createServerSocket(port: Int, backlog: Int, ifAddress: InetAddress?): ServerSocket = Listening(port, backlog, ifAddress)
+    override fun createServerSocket(port: Int, backlog: Int, ifAddress: InetAddress?): ServerSocket =
+        Listening(port, backlog, ifAddress)
 
     /**
-     * Whether the ORB has handed every message its connections hold now, read or not, to its POAs.
-     * If not, [later] runs once it has, on the ORB's thread that handed over the last of them, so it
-     * must not block; a connection that closes meanwhile counts as done.
+     * Whether the ORB has handed every message its connections hold now, read or not, to its POAs. If not, [later] runs
+     * once it has, on the ORB's thread that handed over the last of them, so it must not block; a connection that
+     * closes meanwhile counts as done.
      */
     fun allTaken(later: Runnable): Boolean {
         val targets = connections.mapNotNull { connection -> connection.target()?.let { connection to it } }
@@ -45,8 +46,8 @@ internal class InboundConnections : ServerSocketFactory {
     }
 
     /**
-     * Closes every connection peers opened, and any they open from now on, so that nothing more comes
-     * in; waits until each one's reader has found it closed, [timeout] at most for all of them.
+     * Closes every connection peers opened, and any they open from now on, so that nothing more comes in; waits until
+     * each one's reader has found it closed, [timeout] at most for all of them.
      */
     fun closeAll(timeout: Duration) {
         refusing = true
@@ -58,7 +59,8 @@ internal class InboundConnections : ServerSocketFactory {
     }
 
     /** A listening socket whose every accepted connection is counted, until [closeAll] refuses them. */
-    private inner class Listening(port: Int, backlog: Int, address: InetAddress?) : ServerSocket(port, backlog, address) {
+    private inner class Listening(port: Int, backlog: Int, address: InetAddress?) :
+        ServerSocket(port, backlog, address) {
         override fun accept(): Socket {
             while (true) {
                 val socket = Accepted()
@@ -76,24 +78,26 @@ internal class InboundConnections : ServerSocketFactory {
         private var counted: InboundConnection? = null
 
         /** What the ORB reads this connection through, once it has started to. */
-        @Synchronized
-        fun reader(): InboundConnection? = counted
+        @Synchronized fun reader(): InboundConnection? = counted
 
         @Synchronized
-        override fun getInputStream(): InputStream = counted ?: InboundConnection(super.getInputStream()).also {
-            counted = it
-            connections += it
-        }
+        override fun getInputStream(): InputStream =
+            counted
+                ?: InboundConnection(super.getInputStream()).also {
+                    counted = it
+                    connections += it
+                }
 
         override fun close() {
             try {
                 super.close()
             } finally {
                 accepted -= this
-                synchronized(this) { counted }?.let {
-                    it.release()
-                    connections -= it
-                }
+                synchronized(this) { counted }
+                    ?.let {
+                        it.release()
+                        connections -= it
+                    }
             }
         }
     }

@@ -1,18 +1,18 @@
 package org.rtcoord.internal
 
+import java.util.concurrent.Executor
+import java.util.concurrent.RejectedExecutionException
+import java.util.concurrent.atomic.AtomicBoolean
 import org.rtcoord.EventListener
 import org.rtcoord.RtcEvent
 import org.rtcoord.internal.events.StandIn
 import org.slf4j.LoggerFactory
-import java.util.concurrent.Executor
-import java.util.concurrent.RejectedExecutionException
-import java.util.concurrent.atomic.AtomicBoolean
 
 /**
- * The handler that calls a Java [listener] on its [executor] and waits until it has returned. What the
- * listener throws, and the executor's refusal of the task, come back here and go to the tree's failure
- * handler, naming the listener. A refusal is logged too, once per registration: it usually means the
- * caller's toolkit has gone (SWT's display disposed) and every later event will be refused as well.
+ * The handler that calls a Java [listener] on its [executor] and waits until it has returned. What the listener throws,
+ * and the executor's refusal of the task, come back here and go to the tree's failure handler, naming the listener. A
+ * refusal is logged too, once per registration: it usually means the caller's toolkit has gone (SWT's display disposed)
+ * and every later event will be refused as well.
  */
 internal class JavaListenerCall<E : RtcEvent>(
     override val listener: EventListener<in E>,
@@ -28,7 +28,11 @@ internal class JavaListenerCall<E : RtcEvent>(
             executor.runTask { listener.onEvent(delivered) }
         } catch (e: RejectedExecutionException) {
             if (refusalLogged.compareAndSet(false, true)) {
-                log.warn("listener {} gets no more events: {} (each one refused goes to the tree's listener failure handler)", listener, e.message)
+                log.warn(
+                    "listener {} gets no more events: {} (each one refused goes to the tree's listener failure handler)",
+                    listener,
+                    e.message,
+                )
             }
             throw e
         }

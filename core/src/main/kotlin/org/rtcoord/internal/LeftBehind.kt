@@ -6,11 +6,11 @@ import org.slf4j.LoggerFactory
 private val log = LoggerFactory.getLogger("org.rtcoord.internal.LeftBehind")
 
 /**
- * Removes, of the [entries] (observers, tap connectors) a component lists under this library's names,
- * those that trees which are gone left behind (a coordinator that crashed or was restarted): the ones
- * whose [endpoint] no longer answers, or that have none. One whose endpoint answers belongs to a live
- * tree, this one or another, and stays; so does one whose fate a probe cannot tell (it timed out).
- * [what] names an entry in the log; [removal] is the remote operation [remove] makes.
+ * Removes, of the [entries] (observers, tap connectors) a component lists under this library's names, those that trees
+ * which are gone left behind (a coordinator that crashed or was restarted): the ones whose [endpoint] no longer
+ * answers, or that have none. One whose endpoint answers belongs to a live tree, this one or another, and stays; so
+ * does one whose fate a probe cannot tell (it timed out). [what] names an entry in the log; [removal] is the remote
+ * operation [remove] makes.
  */
 internal suspend fun <T> TreeCore.removeLeftBehind(
     subject: String,
@@ -23,11 +23,12 @@ internal suspend fun <T> TreeCore.removeLeftBehind(
 ) {
     for (entry in entries) {
         val name = id(entry)
-        val gone = try {
-            remote.call(subject, "probe $what $name") { endpoint(entry)?.let(::isGone) ?: true }
-        } catch (e: RtcException) {
-            false
-        }
+        val gone =
+            try {
+                remote.call(subject, "probe $what $name") { endpoint(entry)?.let(::isGone) ?: true }
+            } catch (e: RtcException) {
+                false
+            }
         if (!gone) continue
         try {
             remote.call(subject, removal) { remove(name) }

@@ -10,9 +10,9 @@ import org.rtcoord.NotFoundException
 import org.rtcoord.RtcPath
 
 /**
- * The remote calls a [org.rtcoord.NamingDirectory] makes on its naming [context], found at [path]. A
- * failure to reach the context names the context, not the binding asked about: when the name server
- * goes down mid-listing, it is the server that is unreachable, not the component whose name was next.
+ * The remote calls a [org.rtcoord.NamingDirectory] makes on its naming [context], found at [path]. A failure to reach
+ * the context names the context, not the binding asked about: when the name server goes down mid-listing, it is the
+ * server that is unreachable, not the component whose name was next.
  */
 internal class NamingCalls(private val core: TreeCore, private val path: RtcPath, private val context: NamingContext) {
     /** Removes the binding [name] (`id.kind`), whatever it is bound to. */
@@ -28,11 +28,12 @@ internal class NamingCalls(private val core: TreeCore, private val path: RtcPath
     suspend fun resolve(name: String): org.omg.CORBA.Object? = resolve(nameComponents(name))
 
     /** What the binding [name] is bound to, or null when it was unbound since it was listed. */
-    suspend fun resolve(name: Array<NameComponent>): org.omg.CORBA.Object? = try {
-        core.remote.call(path.toString(), "resolve ${nameOf(name)}") { context.resolve(name) }
-    } catch (e: NotFoundException) {
-        null
-    }
+    suspend fun resolve(name: Array<NameComponent>): org.omg.CORBA.Object? =
+        try {
+            core.remote.call(path.toString(), "resolve ${nameOf(name)}") { context.resolve(name) }
+        } catch (e: NotFoundException) {
+            null
+        }
 
     /** Every binding, fetching past the first batch through the iterator (rtctree stops at 200). */
     suspend fun bindings(): List<Binding> {
@@ -61,14 +62,24 @@ internal class NamingCalls(private val core: TreeCore, private val path: RtcPath
         /** `id.kind` as a CosNaming name; the kind follows the last dot. */
         fun nameComponents(name: String): Array<NameComponent> {
             val dot = name.lastIndexOf('.')
-            return arrayOf(if (dot < 0) NameComponent(name, "") else NameComponent(name.substring(0, dot), name.substring(dot + 1)))
+            return arrayOf(
+                if (dot < 0) NameComponent(name, "") else NameComponent(name.substring(0, dot), name.substring(dot + 1))
+            )
         }
 
         /** The last component of [name] as `id.kind` (`id` without a kind). */
-        fun nameOf(name: Array<NameComponent>): String = name.last().let { if (it.kind.isEmpty()) it.id else "${it.id}.${it.kind}" }
+        fun nameOf(name: Array<NameComponent>): String =
+            name.last().let { if (it.kind.isEmpty()) it.id else "${it.id}.${it.kind}" }
 
         /** The context [fullName] below [root], resolved in one call, as [path]. */
-        suspend fun contextAt(core: TreeCore, path: RtcPath, root: NamingContext, fullName: Array<NameComponent>): NamingContext =
-            NamingContextHelper.unchecked_narrow(core.remote.call(path.toString(), "resolve") { root.resolve(fullName) })
+        suspend fun contextAt(
+            core: TreeCore,
+            path: RtcPath,
+            root: NamingContext,
+            fullName: Array<NameComponent>,
+        ): NamingContext =
+            NamingContextHelper.unchecked_narrow(
+                core.remote.call(path.toString(), "resolve") { root.resolve(fullName) }
+            )
     }
 }

@@ -12,8 +12,8 @@ import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.NotFoundException
 
 /**
- * The remote calls a [org.rtcoord.Port] makes: connecting, reading its connections and disconnecting.
- * [owner] is its component, read again (as [ownerSubject]) when the port's reference is not known yet.
+ * The remote calls a [org.rtcoord.Port] makes: connecting, reading its connections and disconnecting. [owner] is its
+ * component, read again (as [ownerSubject]) when the port's reference is not known yet.
  */
 internal class PortCalls(
     private val core: TreeCore,
@@ -24,26 +24,41 @@ internal class PortCalls(
 ) {
     /** The port's object reference, as its component's last read found it. */
     suspend fun reference(): PortService {
-        owner.ports[name]?.let { return it }
+        owner.ports[name]?.let {
+            return it
+        }
         owner.refresh(ownerSubject)
         return owner.ports[name] ?: throw NotFoundException(subject, "no such port")
     }
 
     /**
-     * Connects this port to [others] with [properties] under [connectorName] and [id] (empty: the
-     * component chooses); returns the connector as the port made it.
+     * Connects this port to [others] with [properties] under [connectorName] and [id] (empty: the component chooses);
+     * returns the connector as the port made it.
      */
-    suspend fun connect(others: List<PortCalls>, properties: Map<String, String>, connectorName: String, id: String, othersNamed: String): ConnectorSnapshot {
+    suspend fun connect(
+        others: List<PortCalls>,
+        properties: Map<String, String>,
+        connectorName: String,
+        id: String,
+        othersNamed: String,
+    ): ConnectorSnapshot {
         val references = listOf(reference()) + others.map { it.reference() }
-        val holder = ConnectorProfileHolder(
-            ConnectorProfile(
-                connectorName,
-                id,
-                references.toTypedArray(),
-                properties.map { (key, value) -> NameValue(key, core.orb.orb.create_any().apply { insert_string(value) }) }.toTypedArray(),
-            ),
-        )
-        core.remote.call(subject, "connect") { references.first().connect(holder) }.orFail(subject, "connect", "to $othersNamed")
+        val holder =
+            ConnectorProfileHolder(
+                ConnectorProfile(
+                    connectorName,
+                    id,
+                    references.toTypedArray(),
+                    properties
+                        .map { (key, value) ->
+                            NameValue(key, core.orb.orb.create_any().apply { insert_string(value) })
+                        }
+                        .toTypedArray(),
+                )
+            )
+        core.remote
+            .call(subject, "connect") { references.first().connect(holder) }
+            .orFail(subject, "connect", "to $othersNamed")
         val made = holder.value
         return ConnectorSnapshot(made.connector_id, made.name, made.properties.toMap())
     }
@@ -52,16 +67,24 @@ internal class PortCalls(
     suspend fun connections(): List<Connection> = coroutineScope {
         val port = reference()
         val profiles = core.remote.call(subject, "get_connector_profiles") { port.get_connector_profiles() }
-        profiles.map { profile ->
-            async {
-                Connection(profile.connector_id, profile.name, profile.properties.toMap(), profile.ports.map { peer -> async { describe(peer) } }.awaitAll())
+        profiles
+            .map { profile ->
+                async {
+                    Connection(
+                        profile.connector_id,
+                        profile.name,
+                        profile.properties.toMap(),
+                        profile.ports.map { peer -> async { describe(peer) } }.awaitAll(),
+                    )
+                }
             }
-        }.awaitAll()
+            .awaitAll()
     }
 
     private suspend fun describe(peer: PortService): Connection.End {
-        val profile = runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
-            ?: return Connection.End("?", null)
+        val profile =
+            runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
+                ?: return Connection.End("?", null)
         val owner = profile.owner?.let { core.components.objectFor(it) }
         val instance = profile.name.substringBefore('.')
         val path = owner?.knownPaths?.firstOrNull()?.withPort(profile.name.removePrefix("$instance."))
@@ -73,13 +96,17 @@ internal class PortCalls(
         val port = reference()
         val profile = core.remote.call(subject, "get_connector_profile") { port.get_connector_profile(connectorId) }
         val peers = coroutineScope { profile.ports.map { async { ownerOf(it) } }.awaitAll() }.filterNotNull()
-        core.remote.call(subject, "disconnect") { port.disconnect(connectorId) }
+        core.remote
+            .call(subject, "disconnect") { port.disconnect(connectorId) }
             .orFail(subject, "disconnect", "connector '$connectorId'")
         return peers
     }
 
     /** The component owning [peer], if it answers. */
-    private suspend fun ownerOf(peer: PortService): ComponentObject? =
-        runCatching { core.remote.call(subject, "get_port_profile") { peer.get_port_profile() } }.getOrNull()
-            ?.owner?.let { core.components.objectFor(it) }
+    private suspend fun ownerOf(peer: PortService): ComponentObject? = runCatching {
+        core.remote.call(subject, "get_port_profile") { peer.get_port_profile() }
+    }
+        .getOrNull()
+        ?.owner
+        ?.let { core.components.objectFor(it) }
 }

@@ -1,5 +1,7 @@
 package org.rtcoord.internal
 
+import java.security.SecureRandom
+import java.util.UUID
 import org.omg.CORBA.ORB
 import org.omg.CORBA.Policy
 import org.omg.PortableServer.IdAssignmentPolicyValue
@@ -7,13 +9,11 @@ import org.omg.PortableServer.POA
 import org.omg.PortableServer.POAHelper
 import org.omg.PortableServer.Servant
 import org.omg.PortableServer.ThreadPolicyValue
-import java.security.SecureRandom
-import java.util.UUID
 
 /**
- * A POA of the tree's ORB, created on first use, whose objects get random ids (16 bytes from a secure
- * generator), so only whoever was handed a reference can reach its object. [singleThread] makes one
- * thread deliver every call, in the order they came (a multi-threaded POA reorders oneway calls).
+ * A POA of the tree's ORB, created on first use, whose objects get random ids (16 bytes from a secure generator), so
+ * only whoever was handed a reference can reach its object. [singleThread] makes one thread deliver every call, in the
+ * order they came (a multi-threaded POA reorders oneway calls).
  */
 internal class RandomIdPoa(private val orb: ORB, private val name: String, private val singleThread: Boolean) {
     private val random = SecureRandom()
@@ -21,10 +21,11 @@ internal class RandomIdPoa(private val orb: ORB, private val name: String, priva
     private val poa: POA by lazy {
         val root = POAHelper.narrow(orb.resolve_initial_references("RootPOA"))
         root.the_POAManager().activate()
-        val policies = listOfNotNull(
-            root.create_id_assignment_policy(IdAssignmentPolicyValue.USER_ID),
-            if (singleThread) root.create_thread_policy(ThreadPolicyValue.SINGLE_THREAD_MODEL) else null,
-        )
+        val policies =
+            listOfNotNull(
+                root.create_id_assignment_policy(IdAssignmentPolicyValue.USER_ID),
+                if (singleThread) root.create_thread_policy(ThreadPolicyValue.SINGLE_THREAD_MODEL) else null,
+            )
         root.create_POA("$name-${UUID.randomUUID()}", root.the_POAManager(), policies.toTypedArray<Policy>())
     }
 

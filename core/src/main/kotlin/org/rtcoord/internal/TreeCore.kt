@@ -1,5 +1,8 @@
 package org.rtcoord.internal
 
+import java.util.concurrent.Future
+import java.util.concurrent.atomic.AtomicBoolean
+import java.util.concurrent.atomic.AtomicLong
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
@@ -14,28 +17,33 @@ import org.rtcoord.internal.events.MillisClock
 import org.rtcoord.internal.events.Watcher
 import org.rtcoord.internal.model.SystemModel
 import org.slf4j.LoggerFactory
-import java.util.concurrent.Future
-import java.util.concurrent.atomic.AtomicBoolean
-import java.util.concurrent.atomic.AtomicLong
 
 /**
- * What every node of one tree shares: the ORB, the remote-call runner, the scope, the registry and the
- * model. [nameServers] are the tree's name servers; the host of the first is asked when the ORB starts.
+ * What every node of one tree shares: the ORB, the remote-call runner, the scope, the registry and the model.
+ * [nameServers] are the tree's name servers; the host of the first is asked when the ORB starts.
  */
 internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<NameServerNode>) : AutoCloseable {
     private val log = LoggerFactory.getLogger("org.rtcoord.RtcTree")
 
-    val orb = OrbHolder(
-        config.orb as org.omg.CORBA.ORB?,
-        { config.listenAddress ?: listenAddressToward(nameServers().firstOrNull()?.address?.substringBeforeLast(':')) },
-        config.callTimeout,
-    )
+    val orb =
+        OrbHolder(
+            config.orb as org.omg.CORBA.ORB?,
+            {
+                config.listenAddress
+                    ?: listenAddressToward(nameServers().firstOrNull()?.address?.substringBeforeLast(':'))
+            },
+            config.callTimeout,
+        )
     private val threads = TreeThreads(config.concurrency)
     val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned, threads)
-    val scope = CoroutineScope(
-        SupervisorJob() + threads.dispatcher + CoroutineName("rtc-tree") + CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
-            ListenerFailures(config.listenerFailures),
-    )
+    val scope =
+        CoroutineScope(
+            SupervisorJob() +
+                threads.dispatcher +
+                CoroutineName("rtc-tree") +
+                CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
+                ListenerFailures(config.listenerFailures)
+        )
     /** The monotonic clock of every component monitor. */
     val clock = MillisClock()
 
@@ -65,7 +73,9 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     }
 
     private fun listenAddressToward(nameServer: String?): String =
-        ListenAddress.toward(nameServer).also { log.debug("listening on {}, the address that reaches {}", it, nameServer ?: "this host") }
+        ListenAddress.toward(nameServer).also {
+            log.debug("listening on {}, the address that reaches {}", it, nameServer ?: "this host")
+        }
 
     override fun close() {
         if (!closed.compareAndSet(false, true)) return

@@ -6,19 +6,19 @@ import org.rtcoord.RtcTree
 import org.rtcoord.internal.events.ListenerFailures
 
 /**
- * The tree's scope: its threads and its job. The dsl's coordinators run in a child of it, on the tree's
- * threads rather than kotlinx's shared ones (which outlive an OSGi bundle), and they end before those
- * threads do. Public for the dsl only.
+ * The tree's scope: its threads and its job. The dsl's coordinators run in a child of it, on the tree's threads rather
+ * than kotlinx's shared ones (which outlive an OSGi bundle), and they end before those threads do. Public for the dsl
+ * only.
  */
-@InternalRtcoordApi
-public fun RtcTree.treeScope(): CoroutineScope = core.scope
+@InternalRtcoordApi public fun RtcTree.treeScope(): CoroutineScope = core.scope
 
 /**
- * Tells the tree's [org.rtcoord.ListenerFailureHandler] that [listener] threw [error] on [event], or that
- * its executor refused the task: the dsl's Java facade reports its listeners' failures where the tree's
- * own listeners' go. Public for the dsl only.
+ * Tells the tree's [org.rtcoord.ListenerFailureHandler] that [listener] threw [error] on [event], or that its executor
+ * refused the task: the dsl's Java facade reports its listeners' failures where the tree's own listeners' go. Public
+ * for the dsl only.
  */
 @InternalRtcoordApi
 public fun RtcTree.reportListenerFailure(listener: Any, event: Any, error: Throwable) {
-    checkNotNull(core.scope.coroutineContext[ListenerFailures]) { "a tree's scope holds its listener failure handler" }.report(listener, event, error)
+    checkNotNull(core.scope.coroutineContext[ListenerFailures]) { "a tree's scope holds its listener failure handler" }
+        .report(listener, event, error)
 }

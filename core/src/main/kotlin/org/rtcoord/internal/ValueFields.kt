@@ -3,8 +3,8 @@ package org.rtcoord.internal
 import org.rtcoord.InternalRtcoordApi
 
 /**
- * The fields of a [org.rtcoord.ValueObject] by name, in declaration order: what its `equals`,
- * `hashCode` and `toString` are made of. Public for the dsl's values only.
+ * The fields of a [org.rtcoord.ValueObject] by name, in declaration order: what its `equals`, `hashCode` and `toString`
+ * are made of. Public for the dsl's values only.
  */
 @InternalRtcoordApi
 public class ValueFields(vararg fields: Pair<String, Any?>) {

@@ -1,18 +1,17 @@
 package org.rtcoord.java
 
+import java.util.concurrent.CompletableFuture
 import org.rtcoord.ExecutionContextView
 import org.rtcoord.RtcException
 import org.rtcoord.internal.JavaCalls
-import java.util.concurrent.CompletableFuture
 
 /**
- * An [ExecutionContextView] for Java callers: each operation blocking, and as a [CompletableFuture]
- * (`...Async`). [JavaComponent.executionContext] gives one; `new JavaExecutionContext(context)` drives a
- * context at hand.
+ * An [ExecutionContextView] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`).
+ * [JavaComponent.executionContext] gives one; `new JavaExecutionContext(context)` drives a context at hand.
  */
 public class JavaExecutionContext(
     /** The execution context this facade drives. */
-    @get:JvmSynthetic public val context: ExecutionContextView,
+    @get:JvmSynthetic public val context: ExecutionContextView
 ) {
     private val calls = JavaCalls(context.component.core.scope)
 
@@ -21,12 +20,10 @@ public class JavaExecutionContext(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
-    @Throws(RtcException::class, InterruptedException::class)
-    public fun rate(): Double = calls.await { context.rate() }
+    @Throws(RtcException::class, InterruptedException::class) public fun rate(): Double = calls.await { context.rate() }
 
     /** [rate], when done; it fails with what [rate] throws. */
     public fun rateAsync(): CompletableFuture<Double> = calls.future { context.rate() }
@@ -36,8 +33,7 @@ public class JavaExecutionContext(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -51,8 +47,7 @@ public class JavaExecutionContext(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -66,30 +61,32 @@ public class JavaExecutionContext(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun add(participant: JavaComponent): Unit = calls.await { context.add(participant.node) }
 
     /** [add], when done; it fails with what [add] throws. */
-    public fun addAsync(participant: JavaComponent): CompletableFuture<Void?> = calls.done { context.add(participant.node) }
+    public fun addAsync(participant: JavaComponent): CompletableFuture<Void?> = calls.done {
+        context.add(participant.node)
+    }
 
     /**
      * Removes [participant] from this context.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun remove(participant: JavaComponent): Unit = calls.await { context.remove(participant.node) }
 
     /** [remove], when done; it fails with what [remove] throws. */
-    public fun removeAsync(participant: JavaComponent): CompletableFuture<Void?> = calls.done { context.remove(participant.node) }
+    public fun removeAsync(participant: JavaComponent): CompletableFuture<Void?> = calls.done {
+        context.remove(participant.node)
+    }
 
     override fun toString(): String = context.toString()
 }

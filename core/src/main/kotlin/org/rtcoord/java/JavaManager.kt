@@ -1,19 +1,19 @@
 package org.rtcoord.java
 
+import java.util.concurrent.CompletableFuture
 import org.jspecify.annotations.Nullable
 import org.rtcoord.ManagerNode
 import org.rtcoord.RtcException
 import org.rtcoord.internal.JavaCalls
-import java.util.concurrent.CompletableFuture
 
 /**
  * A [ManagerNode] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`).
- * [JavaTree.manager] finds one by path; `new JavaManager(node)` drives a manager at hand, such as an
- * event's source ([org.rtcoord.ManagerDied.source]).
+ * [JavaTree.manager] finds one by path; `new JavaManager(node)` drives a manager at hand, such as an event's source
+ * ([org.rtcoord.ManagerDied.source]).
  */
 public class JavaManager(
     /** The manager this facade drives. */
-    @get:JvmSynthetic public val node: ManagerNode,
+    @get:JvmSynthetic public val node: ManagerNode
 ) {
     private val calls = JavaCalls(node.core.scope)
 
@@ -22,8 +22,7 @@ public class JavaManager(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -37,8 +36,7 @@ public class JavaManager(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -52,8 +50,7 @@ public class JavaManager(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -63,32 +60,36 @@ public class JavaManager(
     public fun isMasterAsync(): CompletableFuture<Boolean> = calls.future { node.isMaster() }
 
     /**
-     * Creates a component of [type], named [instanceName] (or as the manager names it when null), with
-     * creation [options] (see [ManagerNode.create]).
+     * Creates a component of [type], named [instanceName] (or as the manager names it when null), with creation
+     * [options] (see [ManagerNode.create]).
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun create(type: String, instanceName: @Nullable String? = null, options: Map<String, String> = emptyMap()): JavaComponent =
-        calls.await { JavaComponent(node.create(type, instanceName, options)) }
+    public fun create(
+        type: String,
+        instanceName: @Nullable String? = null,
+        options: Map<String, String> = emptyMap(),
+    ): JavaComponent = calls.await { JavaComponent(node.create(type, instanceName, options)) }
 
     /** [create], when done; it fails with what [create] throws. */
     @JvmOverloads
-    public fun createAsync(type: String, instanceName: @Nullable String? = null, options: Map<String, String> = emptyMap()): CompletableFuture<JavaComponent> =
-        calls.future { JavaComponent(node.create(type, instanceName, options)) }
+    public fun createAsync(
+        type: String,
+        instanceName: @Nullable String? = null,
+        options: Map<String, String> = emptyMap(),
+    ): CompletableFuture<JavaComponent> = calls.future { JavaComponent(node.create(type, instanceName, options)) }
 
     /**
      * Deletes component [instanceName] through the manager that hosts it (see [ManagerNode.delete]).
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -102,25 +103,27 @@ public class JavaManager(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun loadModule(path: String, initFunction: String = ""): Unit = calls.await { node.loadModule(path, initFunction) }
+    public fun loadModule(path: String, initFunction: String = ""): Unit = calls.await {
+        node.loadModule(path, initFunction)
+    }
 
     /** [loadModule], when done; it fails with what [loadModule] throws. */
     @JvmOverloads
-    public fun loadModuleAsync(path: String, initFunction: String = ""): CompletableFuture<Void?> = calls.done { node.loadModule(path, initFunction) }
+    public fun loadModuleAsync(path: String, initFunction: String = ""): CompletableFuture<Void?> = calls.done {
+        node.loadModule(path, initFunction)
+    }
 
     /**
      * Unloads module [path].
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -134,38 +137,39 @@ public class JavaManager(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun loadableModules(): List<Map<String, String>> = calls.await { node.loadableModules() }
 
     /** [loadableModules], when done; it fails with what [loadableModules] throws. */
-    public fun loadableModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future { node.loadableModules() }
+    public fun loadableModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future {
+        node.loadableModules()
+    }
 
     /**
      * Modules the manager has loaded.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun loadedModules(): List<Map<String, String>> = calls.await { node.loadedModules() }
 
     /** [loadedModules], when done; it fails with what [loadedModules] throws. */
-    public fun loadedModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future { node.loadedModules() }
+    public fun loadedModulesAsync(): CompletableFuture<List<Map<String, String>>> = calls.future {
+        node.loadedModules()
+    }
 
     /**
      * The component types the manager can create, as their factory profiles.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)

@@ -1,5 +1,6 @@
 package org.rtcoord.java
 
+import java.util.concurrent.CompletableFuture
 import org.jspecify.annotations.Nullable
 import org.rtcoord.Connection
 import org.rtcoord.ConnectorSnapshot
@@ -10,28 +11,27 @@ import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
 import org.rtcoord.Subscription
 import org.rtcoord.internal.JavaCalls
-import java.util.concurrent.CompletableFuture
 
 /**
- * A [Port] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`).
- * [JavaTree.port] and [JavaComponent.port] find one by name; `new JavaPort(port)` drives a port at hand.
+ * A [Port] for Java callers: each operation blocking, and as a [CompletableFuture] (`...Async`). [JavaTree.port] and
+ * [JavaComponent.port] find one by name; `new JavaPort(port)` drives a port at hand.
  */
 public class JavaPort(
     /** The port this facade drives. */
-    @get:JvmSynthetic public val port: Port,
+    @get:JvmSynthetic public val port: Port
 ) {
     private val calls = JavaCalls(port.component.core.scope)
 
     /** Where the port is: `/host:port/ctx/name.rtc:port`. */
-    public val path: RtcPath get() = port.path
+    public val path: RtcPath
+        get() = port.path
 
     /**
      * The port as last read.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -41,47 +41,52 @@ public class JavaPort(
     public fun snapshotAsync(): CompletableFuture<PortSnapshot> = calls.future { port.snapshot() }
 
     /**
-     * Connects this port to [others] with connector [properties] and [name] (made up when null), and
-     * returns the new connector (see [Port.connect]).
+     * Connects this port to [others] with connector [properties] and [name] (made up when null), and returns the new
+     * connector (see [Port.connect]).
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun connect(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: @Nullable String? = null): ConnectorSnapshot =
-        calls.await { port.connect(others.map { it.port }, properties, name) }
+    public fun connect(
+        others: List<JavaPort>,
+        properties: Map<String, String> = emptyMap(),
+        name: @Nullable String? = null,
+    ): ConnectorSnapshot = calls.await { port.connect(others.map { it.port }, properties, name) }
 
     /** [connect], when done; it fails with what [connect] throws. */
     @JvmOverloads
-    public fun connectAsync(others: List<JavaPort>, properties: Map<String, String> = emptyMap(), name: @Nullable String? = null): CompletableFuture<ConnectorSnapshot> =
-        calls.future { port.connect(others.map { it.port }, properties, name) }
+    public fun connectAsync(
+        others: List<JavaPort>,
+        properties: Map<String, String> = emptyMap(),
+        name: @Nullable String? = null,
+    ): CompletableFuture<ConnectorSnapshot> = calls.future { port.connect(others.map { it.port }, properties, name) }
 
     /**
      * Removes the connection [connectorId] from this port and its peers.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun disconnect(connectorId: String): Unit = calls.await { port.disconnect(connectorId) }
 
     /** [disconnect], when done; it fails with what [disconnect] throws. */
-    public fun disconnectAsync(connectorId: String): CompletableFuture<Void?> = calls.done { port.disconnect(connectorId) }
+    public fun disconnectAsync(connectorId: String): CompletableFuture<Void?> = calls.done {
+        port.disconnect(connectorId)
+    }
 
     /**
      * Removes every connection of this port.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -95,8 +100,7 @@ public class JavaPort(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -106,13 +110,12 @@ public class JavaPort(
     public fun connectionsAsync(): CompletableFuture<List<Connection>> = calls.future { port.connections() }
 
     /**
-     * Subscribes [listener] to this out-port's data and returns once subscribed; cancel the returned
-     * [Subscription] to stop (see [Port.tap]).
+     * Subscribes [listener] to this out-port's data and returns once subscribed; cancel the returned [Subscription] to
+     * stop (see [Port.tap]).
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)

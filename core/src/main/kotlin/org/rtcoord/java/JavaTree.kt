@@ -1,5 +1,9 @@
 package org.rtcoord.java
 
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.Executor
+import java.util.function.Consumer
+import java.util.function.Predicate
 import kotlinx.coroutines.flow.toList
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.DirectoryNode
@@ -7,30 +11,26 @@ import org.rtcoord.EventListener
 import org.rtcoord.EventOptions
 import org.rtcoord.NameServerNode
 import org.rtcoord.NamingDirectory
+import org.rtcoord.RootNode
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.RtcPath
-import org.rtcoord.RootNode
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
 import org.rtcoord.SystemSnapshot
 import org.rtcoord.TreeConfig
 import org.rtcoord.WrongKindException
-import org.rtcoord.label
 import org.rtcoord.internal.JavaCalls
 import org.rtcoord.internal.JavaListenerCall
 import org.rtcoord.internal.runTask
-import java.util.concurrent.CompletableFuture
-import java.util.concurrent.Executor
-import java.util.function.Consumer
-import java.util.function.Predicate
+import org.rtcoord.label
 
 /**
- * An [RtcTree] for Java callers: every operation as a blocking call (which throws the [RtcException]
- * the operation failed with) and as a [CompletableFuture] (`...Async`), paths as strings, events
- * delivered on an [Executor] the caller chooses. Nodes come back as [JavaNode]s; operate on them through
- * [JavaComponent], [JavaManager] and [JavaPort]. Closing it closes the tree, and ends its threads.
- * `new JavaTree(tree)` drives a tree Kotlin code made, and closes it with the facade.
+ * An [RtcTree] for Java callers: every operation as a blocking call (which throws the [RtcException] the operation
+ * failed with) and as a [CompletableFuture] (`...Async`), paths as strings, events delivered on an [Executor] the
+ * caller chooses. Nodes come back as [JavaNode]s; operate on them through [JavaComponent], [JavaManager] and
+ * [JavaPort]. Closing it closes the tree, and ends its threads. `new JavaTree(tree)` drives a tree Kotlin code made,
+ * and closes it with the facade.
  *
  * ```java
  * try (JavaTree tree = new JavaTree(new TreeConfig(List.of("127.0.0.1:2809")))) {
@@ -41,14 +41,14 @@ import java.util.function.Predicate
  */
 public class JavaTree(
     /** The tree this facade drives; Kotlin code shares it with the suspend API. */
-    @get:JvmSynthetic public val tree: RtcTree,
+    @get:JvmSynthetic public val tree: RtcTree
 ) : AutoCloseable {
     /** A tree configured by [config] (the defaults unless given), with its facade. */
-    @JvmOverloads
-    public constructor(config: TreeConfig = TreeConfig()) : this(RtcTree(config))
+    @JvmOverloads public constructor(config: TreeConfig = TreeConfig()) : this(RtcTree(config))
 
     /** How the tree talks to the system. */
-    public val config: TreeConfig get() = tree.config
+    public val config: TreeConfig
+        get() = tree.config
 
     private val calls = JavaCalls(tree.core.scope)
 
@@ -57,8 +57,7 @@ public class JavaTree(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -72,68 +71,71 @@ public class JavaTree(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun children(path: String): List<JavaNode> = calls.await { directory(path).children().map(::JavaNode) }
 
     /** [children], when done; it fails with what [children] throws. */
-    public fun childrenAsync(path: String): CompletableFuture<List<JavaNode>> = calls.future { directory(path).children().map(::JavaNode) }
+    public fun childrenAsync(path: String): CompletableFuture<List<JavaNode>> = calls.future {
+        directory(path).children().map(::JavaNode)
+    }
 
     /**
      * The component at [path].
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun component(path: String): JavaComponent = calls.await { JavaComponent(tree.component(path)) }
 
     /** [component], when done; it fails with what [component] throws. */
-    public fun componentAsync(path: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.component(path)) }
+    public fun componentAsync(path: String): CompletableFuture<JavaComponent> = calls.future {
+        JavaComponent(tree.component(path))
+    }
 
     /**
      * The component named [name] (`laser0.rtc` or `laser0`) wherever it is registered (see [RtcTree.componentNamed]).
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun componentNamed(name: String): JavaComponent = calls.await { JavaComponent(tree.componentNamed(name)) }
 
     /** [componentNamed], when done; it fails with what [componentNamed] throws. */
-    public fun componentNamedAsync(name: String): CompletableFuture<JavaComponent> = calls.future { JavaComponent(tree.componentNamed(name)) }
+    public fun componentNamedAsync(name: String): CompletableFuture<JavaComponent> = calls.future {
+        JavaComponent(tree.componentNamed(name))
+    }
 
     /**
      * The manager at [path].
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
     public fun manager(path: String): JavaManager = calls.await { JavaManager(tree.manager(path)) }
 
     /** [manager], when done; it fails with what [manager] throws. */
-    public fun managerAsync(path: String): CompletableFuture<JavaManager> = calls.future { JavaManager(tree.manager(path)) }
+    public fun managerAsync(path: String): CompletableFuture<JavaManager> = calls.future {
+        JavaManager(tree.manager(path))
+    }
 
     /**
      * The port at `component.rtc:port`.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -147,28 +149,31 @@ public class JavaTree(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
     public fun connect(from: String, to: String, properties: Map<String, String> = emptyMap()): ConnectorSnapshot =
-        calls.await { tree.connect(from, to, properties) }
+        calls.await {
+            tree.connect(from, to, properties)
+        }
 
     /** [connect], when done; it fails with what [connect] throws. */
     @JvmOverloads
-    public fun connectAsync(from: String, to: String, properties: Map<String, String> = emptyMap()): CompletableFuture<ConnectorSnapshot> =
-        calls.future { tree.connect(from, to, properties) }
+    public fun connectAsync(
+        from: String,
+        to: String,
+        properties: Map<String, String> = emptyMap(),
+    ): CompletableFuture<ConnectorSnapshot> = calls.future { tree.connect(from, to, properties) }
 
     /**
-     * Reads the naming context, name server, manager or root at [path] and everything below it down to
-     * [depth] levels, concurrently (see [DirectoryNode.survey]).
+     * Reads the naming context, name server, manager or root at [path] and everything below it down to [depth] levels,
+     * concurrently (see [DirectoryNode.survey]).
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
@@ -177,15 +182,16 @@ public class JavaTree(
 
     /** [survey], when done; it fails with what [survey] throws. */
     @JvmOverloads
-    public fun surveyAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> = calls.done { directory(path).survey(depth) }
+    public fun surveyAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> = calls.done {
+        directory(path).survey(depth)
+    }
 
     /**
      * Removes the binding at [path] from its naming context, whatever it is bound to, dead or alive (as `rtdel`).
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @Throws(RtcException::class, InterruptedException::class)
@@ -199,58 +205,68 @@ public class JavaTree(
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun refresh(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await { tree.refresh(RtcPath(path), depth) }
+    public fun refresh(path: String, depth: Int = Int.MAX_VALUE): Unit = calls.await {
+        tree.refresh(RtcPath(path), depth)
+    }
 
     /** [refresh], when done; it fails with what [refresh] throws. */
     @JvmOverloads
-    public fun refreshAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> =
-        calls.done { tree.refresh(RtcPath(path), depth) }
+    public fun refreshAsync(path: String, depth: Int = Int.MAX_VALUE): CompletableFuture<Void?> = calls.done {
+        tree.refresh(RtcPath(path), depth)
+    }
 
     /**
-     * Every node below [from] (included), at most [maxDepth] levels down, that [filter] accepts, in
-     * depth-first order (see [RtcTree.find]). [filter] sees each node as it was last read. Unreachable
-     * contexts and managers below are skipped; [from], or a name server the walk reaches, that cannot be
-     * listed fails the call as [children] does: a search of a dead name server is not an empty one.
+     * Every node below [from] (included), at most [maxDepth] levels down, that [filter] accepts, in depth-first order
+     * (see [RtcTree.find]). [filter] sees each node as it was last read. Unreachable contexts and managers below are
+     * skipped; [from], or a name server the walk reaches, that cannot be listed fails the call as [children] does: a
+     * search of a dead name server is not an empty one.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
     public fun find(from: String, filter: Predicate<JavaNode>, maxDepth: Int = Int.MAX_VALUE): List<JavaNode> =
-        calls.await { findAll(from, filter, maxDepth) }
+        calls.await {
+            findAll(from, filter, maxDepth)
+        }
 
     /** [find], when done; it fails with what [find] throws. */
     @JvmOverloads
-    public fun findAsync(from: String, filter: Predicate<JavaNode>, maxDepth: Int = Int.MAX_VALUE): CompletableFuture<List<JavaNode>> =
-        calls.future { findAll(from, filter, maxDepth) }
+    public fun findAsync(
+        from: String,
+        filter: Predicate<JavaNode>,
+        maxDepth: Int = Int.MAX_VALUE,
+    ): CompletableFuture<List<JavaNode>> = calls.future { findAll(from, filter, maxDepth) }
 
     /**
-     * Calls [listener] on [executor] with every event of [type] from the node at [path] (see [RtcTree.on]),
-     * one event at a time: the next waits until the listener has returned, so [EventOptions.overlap] holds.
-     * A UI passes its toolkit's executor (SWT: `display::asyncExec`) and touches its widgets in the listener.
-     * What the listener throws goes to [TreeConfig.listenerFailures], naming it and the event.
-     * Returns once the node is watched; close the [Subscription] to stop.
+     * Calls [listener] on [executor] with every event of [type] from the node at [path] (see [RtcTree.on]), one event
+     * at a time: the next waits until the listener has returned, so [EventOptions.overlap] holds. A UI passes its
+     * toolkit's executor (SWT: `display::asyncExec`) and touches its widgets in the listener. What the listener throws
+     * goes to [TreeConfig.listenerFailures], naming it and the event. Returns once the node is watched; close the
+     * [Subscription] to stop.
      *
      * @throws RtcException naming what failed and why: one of its subclasses (`NotFoundException`,
      *   `UnreachableException`, `TimedOutException`, `OperationFailedException`, ...).
-     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is
-     *   cancelled.
+     * @throws InterruptedException if the calling thread is interrupted while it waits; the operation is cancelled.
      * @throws org.rtcoord.ClosedException once the tree is closed.
      */
     @JvmOverloads
     @Throws(RtcException::class, InterruptedException::class)
-    public fun <E : RtcEvent> subscribe(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions = EventOptions()): Subscription =
-        calls.await { on(path, type, executor, listener, options) }
+    public fun <E : RtcEvent> subscribe(
+        path: String,
+        type: Class<E>,
+        executor: Executor,
+        listener: EventListener<E>,
+        options: EventOptions = EventOptions(),
+    ): Subscription = calls.await { on(path, type, executor, listener, options) }
 
     /** [subscribe], when the node is watched. */
     @JvmOverloads
@@ -263,8 +279,8 @@ public class JavaTree(
     ): CompletableFuture<Subscription> = calls.future { on(path, type, executor, listener, options) }
 
     /**
-     * Calls [listener] on [executor] with how the tree watches each watched component and with managers
-     * that die or return (see [RtcTree.onWatching]). Close the [Subscription] to stop.
+     * Calls [listener] on [executor] with how the tree watches each watched component and with managers that die or
+     * return (see [RtcTree.onWatching]). Close the [Subscription] to stop.
      */
     public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription =
         tree.onWatching(JavaListenerCall(listener, executor, RtcEvent::class.java))
@@ -273,11 +289,10 @@ public class JavaTree(
     public fun snapshot(): SystemSnapshot = tree.snapshot()
 
     /**
-     * Subscribes to the events of [type] from the nodes at [paths], then calls [start] on [executor] with
-     * the model as it is once they are watched, and [listener] with every later event, one at a time, none
-     * missed and none twice (see [RtcTree.follow]): what a view needs to draw the system and keep it true.
-     * Returns once [start] was called; close the [Subscription] to stop. [follow] with a set of types
-     * follows several kinds of event from one snapshot.
+     * Subscribes to the events of [type] from the nodes at [paths], then calls [start] on [executor] with the model as
+     * it is once they are watched, and [listener] with every later event, one at a time, none missed and none twice
+     * (see [RtcTree.follow]): what a view needs to draw the system and keep it true. Returns once [start] was called;
+     * close the [Subscription] to stop. [follow] with a set of types follows several kinds of event from one snapshot.
      *
      * @throws RtcException when a path names nothing or cannot be watched; nothing is left subscribed.
      * @throws java.util.concurrent.RejectedExecutionException when [executor] refuses [start]'s task.
@@ -303,11 +318,13 @@ public class JavaTree(
         start: Consumer<SystemSnapshot>,
         listener: EventListener<in E>,
         options: EventOptions = EventOptions(),
-    ): CompletableFuture<Subscription> = calls.future { followed(paths, setOf(type), type, executor, start, listener, options) }
+    ): CompletableFuture<Subscription> = calls.future {
+        followed(paths, setOf(type), type, executor, start, listener, options)
+    }
 
     /**
-     * [follow] for the events of every one of [types] (`Set.of(StateChanged.class, PortTraffic.class)`),
-     * from one snapshot: [listener] gets them in the order they happened, whatever their type.
+     * [follow] for the events of every one of [types] (`Set.of(StateChanged.class, PortTraffic.class)`), from one
+     * snapshot: [listener] gets them in the order they happened, whatever their type.
      *
      * @throws RtcException when a path names nothing or cannot be watched; nothing is left subscribed.
      * @throws java.util.concurrent.RejectedExecutionException when [executor] refuses [start]'s task.
@@ -333,22 +350,30 @@ public class JavaTree(
         start: Consumer<SystemSnapshot>,
         listener: EventListener<RtcEvent>,
         options: EventOptions = EventOptions(),
-    ): CompletableFuture<Subscription> = calls.future { followed(paths, types, RtcEvent::class.java, executor, start, listener, options) }
+    ): CompletableFuture<Subscription> = calls.future {
+        followed(paths, types, RtcEvent::class.java, executor, start, listener, options)
+    }
 
     /** Closes the tree (see [RtcTree.close]). */
     override fun close() {
         tree.close()
     }
 
-    private suspend fun directory(path: String): DirectoryNode = when (val node = tree.node(path)) {
-        is DirectoryNode -> node
-        else -> throw WrongKindException(node.path.toString(), "directory", node.kind.label())
-    }
+    private suspend fun directory(path: String): DirectoryNode =
+        when (val node = tree.node(path)) {
+            is DirectoryNode -> node
+            else -> throw WrongKindException(node.path.toString(), "directory", node.kind.label())
+        }
 
     private suspend fun unbindAt(path: String) {
         val parsed = RtcPath(path)
         val parent = parsed.parent?.let { tree.node(it) }
-        if (parent !is NamingDirectory) throw WrongKindException(path, "binding in a naming context", "child of ${parent?.kind?.label() ?: "nothing"}")
+        if (parent !is NamingDirectory)
+            throw WrongKindException(
+                path,
+                "binding in a naming context",
+                "child of ${parent?.kind?.label() ?: "nothing"}",
+            )
         parent.unbind(parsed.name)
     }
 
@@ -372,9 +397,20 @@ public class JavaTree(
         options: EventOptions,
     ): Subscription {
         require(types.isNotEmpty()) { "follow needs at least one event type" }
-        return tree.follow(paths.map { tree.node(it) }, types, options, { snapshot -> executor.runTask { start.accept(snapshot) } }, JavaListenerCall(listener, executor, type))
+        return tree.follow(
+            paths.map { tree.node(it) },
+            types,
+            options,
+            { snapshot -> executor.runTask { start.accept(snapshot) } },
+            JavaListenerCall(listener, executor, type),
+        )
     }
 
-    private suspend fun <E : RtcEvent> on(path: String, type: Class<E>, executor: Executor, listener: EventListener<E>, options: EventOptions): Subscription =
-        tree.on(tree.node(path), setOf(type), options, JavaListenerCall(listener, executor, type))
+    private suspend fun <E : RtcEvent> on(
+        path: String,
+        type: Class<E>,
+        executor: Executor,
+        listener: EventListener<E>,
+        options: EventOptions,
+    ): Subscription = tree.on(tree.node(path), setOf(type), options, JavaListenerCall(listener, executor, type))
 }

@@ -5,10 +5,12 @@ import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 
 /**
- * The `rts_ext` part of an element (comment, visibility, location, free properties) and whatever else
- * the file had on it that the schema does not name, kept so a round trip loses nothing.
+ * The `rts_ext` part of an element (comment, visibility, location, free properties) and whatever else the file had on
+ * it that the schema does not name, kept so a round trip loses nothing.
  */
-public class Extension @JvmOverloads constructor(
+public class Extension
+@JvmOverloads
+constructor(
     public val comment: @Nullable String? = null,
     public val visible: @Nullable Boolean? = null,
     public val location: @Nullable Location? = null,
@@ -35,29 +37,40 @@ public class Extension @JvmOverloads constructor(
         unknownElements: List<ForeignElement> = this.unknownElements,
     ) = Extension(comment, visible, location, properties, unknownAttributes, unknownElements)
 
-    override fun fields(): ValueFields = ValueFields(
-        "comment" to comment, "visible" to visible, "location" to location, "properties" to properties,
-        "unknownAttributes" to unknownAttributes, "unknownElements" to unknownElements,
-    )
+    override fun fields(): ValueFields =
+        ValueFields(
+            "comment" to comment,
+            "visible" to visible,
+            "location" to location,
+            "properties" to properties,
+            "unknownAttributes" to unknownAttributes,
+            "unknownElements" to unknownElements,
+        )
 }
 
 /** Where RTSystemEditor draws an element. */
-public class Location @JvmOverloads constructor(
+public class Location
+@JvmOverloads
+constructor(
     public val x: Int,
     public val y: Int,
     public val width: Int,
     public val height: Int,
     public val direction: String = "RIGHT",
 ) : ValueObject() {
-    override fun fields(): ValueFields = ValueFields("x" to x, "y" to y, "width" to width, "height" to height, "direction" to direction)
+    override fun fields(): ValueFields =
+        ValueFields("x" to x, "y" to y, "width" to width, "height" to height, "direction" to direction)
 }
 
 /** An element outside the schema, kept as read: its name as written, attributes, children and text. */
-public class ForeignElement @JvmOverloads constructor(
+public class ForeignElement
+@JvmOverloads
+constructor(
     public val name: String,
     public val attributes: Map<String, String> = emptyMap(),
     public val children: List<ForeignElement> = emptyList(),
     public val text: String = "",
 ) : ValueObject() {
-    override fun fields(): ValueFields = ValueFields("name" to name, "attributes" to attributes, "children" to children, "text" to text)
+    override fun fields(): ValueFields =
+        ValueFields("name" to name, "attributes" to attributes, "children" to children, "text" to text)
 }

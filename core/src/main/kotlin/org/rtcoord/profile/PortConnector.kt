@@ -7,11 +7,13 @@ import org.rtcoord.profile.internal.COMPONENT_PATH_ID
 import org.rtcoord.profile.internal.withoutReferences
 
 /**
- * A connection between two ports. Data port connectors carry the data-flow fields; service port
- * connectors [transMethod]. Connector properties (`dataport.*` and others) are in [ext]'s properties,
- * where rtshell and RTSystemEditor keep them.
+ * A connection between two ports. Data port connectors carry the data-flow fields; service port connectors
+ * [transMethod]. Connector properties (`dataport.*` and others) are in [ext]'s properties, where rtshell and
+ * RTSystemEditor keep them.
  */
-public class PortConnector @JvmOverloads constructor(
+public class PortConnector
+@JvmOverloads
+constructor(
     public val connectorId: String,
     public val name: String,
     public val source: TargetComponent,
@@ -25,10 +27,10 @@ public class PortConnector @JvmOverloads constructor(
     public val ext: Extension = Extension(),
 ) : ValueObject() {
     /**
-     * The properties to connect with: the profile's fields as `dataport.*` properties for a data
-     * connector, overridden by the extension properties, without the object references that belong to
-     * the old connection: those rtshell leaves out and every value that is an IOR, such as the
-     * `port.<type>.<instance>` a service port publishes for each interface it provides.
+     * The properties to connect with: the profile's fields as `dataport.*` properties for a data connector, overridden
+     * by the extension properties, without the object references that belong to the old connection: those rtshell
+     * leaves out and every value that is an IOR, such as the `port.<type>.<instance>` a service port publishes for each
+     * interface it provides.
      */
     public fun connectionProperties(): Map<String, String> = buildMap {
         dataflowType?.let { put("dataport.dataflow_type", it) }
@@ -47,7 +49,8 @@ public class PortConnector @JvmOverloads constructor(
     public fun withSource(source: TargetComponent): PortConnector = copy(source = source)
 
     /** This connector with another [subscriptionType] (`flush`, `new`, `periodic`), or none. */
-    public fun withSubscriptionType(subscriptionType: @Nullable String?): PortConnector = copy(subscriptionType = subscriptionType)
+    public fun withSubscriptionType(subscriptionType: @Nullable String?): PortConnector =
+        copy(subscriptionType = subscriptionType)
 
     /** This connector with another [ext]. */
     public fun withExt(ext: Extension): PortConnector = copy(ext = ext)
@@ -57,11 +60,33 @@ public class PortConnector @JvmOverloads constructor(
         source: TargetComponent = this.source,
         subscriptionType: String? = this.subscriptionType,
         ext: Extension = this.ext,
-    ) = PortConnector(connectorId, name, source, target, dataType, interfaceType, dataflowType, subscriptionType, pushInterval, transMethod, ext)
+    ) =
+        PortConnector(
+            connectorId,
+            name,
+            source,
+            target,
+            dataType,
+            interfaceType,
+            dataflowType,
+            subscriptionType,
+            pushInterval,
+            transMethod,
+            ext,
+        )
 
-    override fun fields(): ValueFields = ValueFields(
-        "connectorId" to connectorId, "name" to name, "source" to source, "target" to target, "dataType" to dataType,
-        "interfaceType" to interfaceType, "dataflowType" to dataflowType, "subscriptionType" to subscriptionType,
-        "pushInterval" to pushInterval, "transMethod" to transMethod, "ext" to ext,
-    )
+    override fun fields(): ValueFields =
+        ValueFields(
+            "connectorId" to connectorId,
+            "name" to name,
+            "source" to source,
+            "target" to target,
+            "dataType" to dataType,
+            "interfaceType" to interfaceType,
+            "dataflowType" to dataflowType,
+            "subscriptionType" to subscriptionType,
+            "pushInterval" to pushInterval,
+            "transMethod" to transMethod,
+            "ext" to ext,
+        )
 }

@@ -5,7 +5,9 @@ import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 
 /** One component of a profile, found on the live system by its [pathUri]. */
-public class ProfileComponent @JvmOverloads constructor(
+public class ProfileComponent
+@JvmOverloads
+constructor(
     /** `RTC:vendor:category:type:version`. */
     public val id: String,
     /** The name-server path without its leading slash: `host:port/ctx.host_cxt/comp0.rtc`. */
@@ -32,10 +34,12 @@ public class ProfileComponent @JvmOverloads constructor(
     public fun withId(id: String): ProfileComponent = copy(id = id)
 
     /** This component as another instance, [instanceName], found at [pathUri]. */
-    public fun withInstance(instanceName: String, pathUri: String): ProfileComponent = copy(instanceName = instanceName, pathUri = pathUri)
+    public fun withInstance(instanceName: String, pathUri: String): ProfileComponent =
+        copy(instanceName = instanceName, pathUri = pathUri)
 
     /** This component with [configurationSets] instead of its own. */
-    public fun withConfigurationSets(configurationSets: List<ConfigurationSet>): ProfileComponent = copy(configurationSets = configurationSets)
+    public fun withConfigurationSets(configurationSets: List<ConfigurationSet>): ProfileComponent =
+        copy(configurationSets = configurationSets)
 
     /** This component with another [ext]. */
     public fun withExt(ext: Extension): ProfileComponent = copy(ext = ext)
@@ -46,22 +50,49 @@ public class ProfileComponent @JvmOverloads constructor(
         instanceName: String = this.instanceName,
         configurationSets: List<ConfigurationSet> = this.configurationSets,
         ext: Extension = this.ext,
-    ) = ProfileComponent(id, pathUri, instanceName, activeConfigurationSet, compositeType, isRequired, dataPorts, servicePorts, configurationSets, executionContexts, participants, ext)
+    ) =
+        ProfileComponent(
+            id,
+            pathUri,
+            instanceName,
+            activeConfigurationSet,
+            compositeType,
+            isRequired,
+            dataPorts,
+            servicePorts,
+            configurationSets,
+            executionContexts,
+            participants,
+            ext,
+        )
 
-    override fun fields(): ValueFields = ValueFields(
-        "id" to id, "pathUri" to pathUri, "instanceName" to instanceName, "activeConfigurationSet" to activeConfigurationSet,
-        "compositeType" to compositeType, "isRequired" to isRequired, "dataPorts" to dataPorts, "servicePorts" to servicePorts,
-        "configurationSets" to configurationSets, "executionContexts" to executionContexts, "participants" to participants, "ext" to ext,
-    )
+    override fun fields(): ValueFields =
+        ValueFields(
+            "id" to id,
+            "pathUri" to pathUri,
+            "instanceName" to instanceName,
+            "activeConfigurationSet" to activeConfigurationSet,
+            "compositeType" to compositeType,
+            "isRequired" to isRequired,
+            "dataPorts" to dataPorts,
+            "servicePorts" to servicePorts,
+            "configurationSets" to configurationSets,
+            "executionContexts" to executionContexts,
+            "participants" to participants,
+            "ext" to ext,
+        )
 }
 
 /** A data or service port of a component, by its short name. */
-public class ProfilePort @JvmOverloads constructor(public val name: String, public val ext: Extension = Extension()) : ValueObject() {
+public class ProfilePort @JvmOverloads constructor(public val name: String, public val ext: Extension = Extension()) :
+    ValueObject() {
     override fun fields(): ValueFields = ValueFields("name" to name, "ext" to ext)
 }
 
 /** A configuration set: its id and its parameters' values in file order. */
-public class ConfigurationSet @JvmOverloads constructor(
+public class ConfigurationSet
+@JvmOverloads
+constructor(
     public val id: String,
     public val data: Map<String, String> = emptyMap(),
     public val ext: Extension = Extension(),
@@ -73,12 +104,15 @@ public class ConfigurationSet @JvmOverloads constructor(
 }
 
 /** An execution context of a component: id (the component's handle), kind, rate in Hz, participants. */
-public class ExecutionContext @JvmOverloads constructor(
+public class ExecutionContext
+@JvmOverloads
+constructor(
     public val id: String,
     public val kind: String = "PERIODIC",
     public val rate: @Nullable Double? = null,
     public val participants: List<TargetComponent> = emptyList(),
     public val ext: Extension = Extension(),
 ) : ValueObject() {
-    override fun fields(): ValueFields = ValueFields("id" to id, "kind" to kind, "rate" to rate, "participants" to participants, "ext" to ext)
+    override fun fields(): ValueFields =
+        ValueFields("id" to id, "kind" to kind, "rate" to rate, "participants" to participants, "ext" to ext)
 }

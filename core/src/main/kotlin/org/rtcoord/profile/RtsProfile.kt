@@ -5,14 +5,16 @@ import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 
 /**
- * An RTSProfile 0.2 document: a whole RT system as RTSystemEditor and rtshell save it. Read and write it
- * with [RtsProfiles]; save, restore, check and order a live system with [SystemProfiles]; change it with
- * the `with...` methods, each of which returns a changed copy.
+ * An RTSProfile 0.2 document: a whole RT system as RTSystemEditor and rtshell save it. Read and write it with
+ * [RtsProfiles]; save, restore, check and order a live system with [SystemProfiles]; change it with the `with...`
+ * methods, each of which returns a changed copy.
  *
- * Every element keeps its `rts_ext` data and whatever the schema does not name in its [Extension], so
- * reading and writing a file loses nothing.
+ * Every element keeps its `rts_ext` data and whatever the schema does not name in its [Extension], so reading and
+ * writing a file loses nothing.
  */
-public class RtsProfile @JvmOverloads constructor(
+public class RtsProfile
+@JvmOverloads
+constructor(
     /** `RTSystem:vendor:name:version`. */
     public val id: String,
     public val version: String = "0.2",
@@ -37,10 +39,12 @@ public class RtsProfile @JvmOverloads constructor(
     public fun withComponents(components: List<ProfileComponent>): RtsProfile = copy(components = components)
 
     /** This profile with [connectors] as its data port connectors. */
-    public fun withDataPortConnectors(connectors: List<PortConnector>): RtsProfile = copy(dataPortConnectors = connectors)
+    public fun withDataPortConnectors(connectors: List<PortConnector>): RtsProfile =
+        copy(dataPortConnectors = connectors)
 
     /** This profile with [connectors] as its service port connectors. */
-    public fun withServicePortConnectors(connectors: List<PortConnector>): RtsProfile = copy(servicePortConnectors = connectors)
+    public fun withServicePortConnectors(connectors: List<PortConnector>): RtsProfile =
+        copy(servicePortConnectors = connectors)
 
     /** This profile with [orderings] instead of its own ordering blocks. */
     public fun withOrderings(orderings: Map<OrderingKind, Ordering>): RtsProfile = copy(orderings = orderings)
@@ -54,17 +58,41 @@ public class RtsProfile @JvmOverloads constructor(
         servicePortConnectors: List<PortConnector> = this.servicePortConnectors,
         orderings: Map<OrderingKind, Ordering> = this.orderings,
         ext: Extension = this.ext,
-    ) = RtsProfile(id, version, abstract, creationDate, updateDate, components, groups, dataPortConnectors, servicePortConnectors, orderings, ext)
+    ) =
+        RtsProfile(
+            id,
+            version,
+            abstract,
+            creationDate,
+            updateDate,
+            components,
+            groups,
+            dataPortConnectors,
+            servicePortConnectors,
+            orderings,
+            ext,
+        )
 
-    override fun fields(): ValueFields = ValueFields(
-        "id" to id, "version" to version, "abstract" to abstract, "creationDate" to creationDate, "updateDate" to updateDate,
-        "components" to components, "groups" to groups, "dataPortConnectors" to dataPortConnectors,
-        "servicePortConnectors" to servicePortConnectors, "orderings" to orderings, "ext" to ext,
-    )
+    override fun fields(): ValueFields =
+        ValueFields(
+            "id" to id,
+            "version" to version,
+            "abstract" to abstract,
+            "creationDate" to creationDate,
+            "updateDate" to updateDate,
+            "components" to components,
+            "groups" to groups,
+            "dataPortConnectors" to dataPortConnectors,
+            "servicePortConnectors" to servicePortConnectors,
+            "orderings" to orderings,
+            "ext" to ext,
+        )
 }
 
 /** A component group (`Groups`): an id and its members. */
-public class ComponentGroup @JvmOverloads constructor(
+public class ComponentGroup
+@JvmOverloads
+constructor(
     public val groupId: String,
     public val members: List<TargetComponent> = emptyList(),
     public val ext: Extension = Extension(),

@@ -18,26 +18,48 @@ public enum class OrderedAction(
 }
 
 /**
- * One step of an ordered start or stop: act on [component]'s context [contextId] once every step of a
- * lower [sequence] is done and [condition] holds.
+ * One step of an ordered start or stop: act on [component]'s context [contextId] once every step of a lower [sequence]
+ * is done and [condition] holds.
  */
-public class PlannedStep(public val sequence: Int, public val component: String, public val contextId: Int, public val condition: Condition) : ValueObject() {
-    override fun fields(): ValueFields = ValueFields("sequence" to sequence, "component" to component, "contextId" to contextId, "condition" to condition)
+public class PlannedStep(
+    public val sequence: Int,
+    public val component: String,
+    public val contextId: Int,
+    public val condition: Condition,
+) : ValueObject() {
+    override fun fields(): ValueFields =
+        ValueFields(
+            "sequence" to sequence,
+            "component" to component,
+            "contextId" to contextId,
+            "condition" to condition,
+        )
 
-    override fun toString(): String = "$sequence $component context $contextId" + when (condition) {
-        Condition.None -> ""
-        is Condition.WaitTime -> " after waiting ${condition.milliseconds} ms"
-        is Condition.Preceding -> " after ${condition.components.joinToString { it.instanceName }} (${condition.sendingTiming}" +
-            (if (condition.timeoutMillis > 0) ", timeout ${condition.timeoutMillis} ms)" else ")")
-    }
+    override fun toString(): String =
+        "$sequence $component context $contextId" +
+            when (condition) {
+                Condition.None -> ""
+                is Condition.WaitTime -> " after waiting ${condition.milliseconds} ms"
+                is Condition.Preceding ->
+                    " after ${condition.components.joinToString { it.instanceName }} (${condition.sendingTiming}" +
+                        (if (condition.timeoutMillis > 0) ", timeout ${condition.timeoutMillis} ms)" else ")")
+            }
 }
 
 /**
- * What became of one step: done (and when, from the start of the run; [detail] says if it was slow),
- * failed (why) or not done (why).
+ * What became of one step: done (and when, from the start of the run; [detail] says if it was slow), failed (why) or
+ * not done (why).
  */
-public class StepOutcome(public val step: PlannedStep, public val done: Boolean, public val atMillis: Long, public val detail: String) : ValueObject() {
-    override fun fields(): ValueFields = ValueFields("step" to step, "done" to done, "atMillis" to atMillis, "detail" to detail)
+public class StepOutcome(
+    public val step: PlannedStep,
+    public val done: Boolean,
+    public val atMillis: Long,
+    public val detail: String,
+) : ValueObject() {
+    override fun fields(): ValueFields =
+        ValueFields("step" to step, "done" to done, "atMillis" to atMillis, "detail" to detail)
 
-    override fun toString(): String = if (done) "done at $atMillis ms: $step" + detail.ifEmpty { null }?.let { " ($it)" }.orEmpty() else "NOT done: $step: $detail"
+    override fun toString(): String =
+        if (done) "done at $atMillis ms: $step" + detail.ifEmpty { null }?.let { " ($it)" }.orEmpty()
+        else "NOT done: $step: $detail"
 }

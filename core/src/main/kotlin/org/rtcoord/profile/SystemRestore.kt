@@ -4,7 +4,9 @@ import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 
 /** What a restore did, kept as it was, and could not find. */
-public class RestoreReport @JvmOverloads constructor(
+public class RestoreReport
+@JvmOverloads
+constructor(
     /** Changes made, one line each (`connected a:out to b:in`), components created first. */
     public val done: List<String>,
     /** Connections already there as the profile has them. */
@@ -13,17 +15,29 @@ public class RestoreReport @JvmOverloads constructor(
     public val missingOptional: List<String>,
     /** The components created through their managers, by path. */
     public val created: List<String> = emptyList(),
-    /** Values written outside the constraint their component declares, one line each naming component, set and parameter. */
+    /**
+     * Values written outside the constraint their component declares, one line each naming component, set and
+     * parameter.
+     */
     public val warnings: List<String> = emptyList(),
 ) : ValueObject() {
     /** This report with the components made for it, [created]. */
-    @JvmSynthetic internal fun created(created: List<String>): RestoreReport = RestoreReport(done, kept, missingOptional, created, warnings)
+    @JvmSynthetic
+    internal fun created(created: List<String>): RestoreReport =
+        RestoreReport(done, kept, missingOptional, created, warnings)
 
-    override fun fields(): ValueFields = ValueFields("done" to done, "kept" to kept, "missingOptional" to missingOptional, "created" to created, "warnings" to warnings)
+    override fun fields(): ValueFields =
+        ValueFields(
+            "done" to done,
+            "kept" to kept,
+            "missingOptional" to missingOptional,
+            "created" to created,
+            "warnings" to warnings,
+        )
 }
 
 /** A profile that cannot be applied as a whole; nothing was changed. */
 public class ProfileRefusedException(
     /** Why, naming the component, port or value. */
-    public val reason: String,
+    public val reason: String
 ) : Exception(reason)

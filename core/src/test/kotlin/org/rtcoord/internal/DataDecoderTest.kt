@@ -1,6 +1,10 @@
 package org.rtcoord.internal
 
 import RTC.Time
+import java.nio.ByteBuffer
+import java.nio.ByteOrder
+import java.time.Instant
+import java.util.Properties
 import org.jacorb.orb.CDROutputStream
 import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -19,10 +23,6 @@ import org.rtcoord.datatypes.DataCodec
 import org.rtcoord.datatypes.StandardDataTypes
 import org.rtcoord.internal.data.DataDecoder
 import org.rtcoord.internal.data.DataTap
-import java.nio.ByteBuffer
-import java.nio.ByteOrder
-import java.time.Instant
-import java.util.Properties
 
 /** Decoding against JacORB's own CDR encoder (big-endian, from the compiled IDL) and hand-made little-endian bytes. */
 class DataDecoderTest {
@@ -38,30 +38,53 @@ class DataDecoderTest {
     @Test
     fun `big-endian samples encoded by JacORB from the IDL decode to their values`() {
         val double = jacorb { RTC.TimedDoubleHelper.write(it, RTC.TimedDouble(time, 2.5)) }
-        assertEquals(TimedDouble(instant, 2.5), DataDecoder("IDL:RTC/TimedDouble:1.0", littleEndian = false).decode(double))
+        assertEquals(
+            TimedDouble(instant, 2.5),
+            DataDecoder("IDL:RTC/TimedDouble:1.0", littleEndian = false).decode(double),
+        )
 
         val seq = jacorb { RTC.TimedDoubleSeqHelper.write(it, RTC.TimedDoubleSeq(time, doubleArrayOf(1.0, 2.0, 3.5))) }
-        assertEquals(TimedDoubleSeq(instant, listOf(1.0, 2.0, 3.5)), DataDecoder("TimedDoubleSeq", littleEndian = false).decode(seq))
+        assertEquals(
+            TimedDoubleSeq(instant, listOf(1.0, 2.0, 3.5)),
+            DataDecoder("TimedDoubleSeq", littleEndian = false).decode(seq),
+        )
 
         val text = jacorb { RTC.TimedStringHelper.write(it, RTC.TimedString(time, "scan ok")) }
-        assertEquals(TimedString(instant, "scan ok"), DataDecoder("RTC::TimedString", littleEndian = false).decode(text))
+        assertEquals(
+            TimedString(instant, "scan ok"),
+            DataDecoder("RTC::TimedString", littleEndian = false).decode(text),
+        )
 
         val long = jacorb { RTC.TimedLongHelper.write(it, RTC.TimedLong(time, -7)) }
         assertEquals(TimedLong(instant, -7), DataDecoder("IDL:RTC/TimedLong:1.0", littleEndian = false).decode(long))
 
-        val pose = jacorb { RTC.TimedPose2DHelper.write(it, RTC.TimedPose2D(time, RTC.Pose2D(RTC.Point2D(1.0, 2.0), 0.5))) }
-        assertEquals(TimedPose2D(instant, 1.0, 2.0, 0.5), DataDecoder("IDL:RTC/TimedPose2D:1.0", littleEndian = false).decode(pose))
+        val pose = jacorb {
+            RTC.TimedPose2DHelper.write(it, RTC.TimedPose2D(time, RTC.Pose2D(RTC.Point2D(1.0, 2.0), 0.5)))
+        }
+        assertEquals(
+            TimedPose2D(instant, 1.0, 2.0, 0.5),
+            DataDecoder("IDL:RTC/TimedPose2D:1.0", littleEndian = false).decode(pose),
+        )
 
-        val velocity = jacorb { RTC.TimedVelocity2DHelper.write(it, RTC.TimedVelocity2D(time, RTC.Velocity2D(0.1, 0.0, -0.2))) }
-        assertEquals(TimedVelocity2D(instant, 0.1, 0.0, -0.2), DataDecoder("IDL:RTC/TimedVelocity2D:1.0", littleEndian = false).decode(velocity))
+        val velocity = jacorb {
+            RTC.TimedVelocity2DHelper.write(it, RTC.TimedVelocity2D(time, RTC.Velocity2D(0.1, 0.0, -0.2)))
+        }
+        assertEquals(
+            TimedVelocity2D(instant, 0.1, 0.0, -0.2),
+            DataDecoder("IDL:RTC/TimedVelocity2D:1.0", littleEndian = false).decode(velocity),
+        )
     }
 
     @Test
     fun `every other standard type decodes member by member, and encodes to JacORB's bytes`() {
-        val geometry = RTC.RangerGeometry(
-            RTC.Geometry3D(RTC.Pose3D(RTC.Point3D(0.1, 0.0, 0.3), RTC.Orientation3D(0.0, 0.0, 1.5)), RTC.Size3D(0.05, 0.05, 0.07)),
-            emptyArray(),
-        )
+        val geometry =
+            RTC.RangerGeometry(
+                RTC.Geometry3D(
+                    RTC.Pose3D(RTC.Point3D(0.1, 0.0, 0.3), RTC.Orientation3D(0.0, 0.0, 1.5)),
+                    RTC.Size3D(0.05, 0.05, 0.07),
+                ),
+                emptyArray(),
+            )
         val config = RTC.RangerConfig(-2.35, 2.35, 0.0043, 0.02, 30.0, 0.001, 40.0)
         val scan = RTC.RangeData(time, doubleArrayOf(1.0, 2.5, 29.9), geometry, config)
         val bytes = jacorb { RTC.RangeDataHelper.write(it, scan) }
@@ -73,9 +96,15 @@ class DataDecoderTest {
         assertEquals(emptyList<Any>(), decoded.member("geometry.elementGeometries"))
 
         val codec = DataCodec(StandardDataTypes.named("RangeData")!!)
-        assertEquals(bytes.toList(), codec.encode(decoded.members, littleEndian = false).toList(), "our encoder writes what JacORB writes")
+        assertEquals(
+            bytes.toList(),
+            codec.encode(decoded.members, littleEndian = false).toList(),
+            "our encoder writes what JacORB writes",
+        )
 
-        val image = jacorb { RTC.CameraImageHelper.write(it, RTC.CameraImage(time, 2, 1, 24, "", 1.0, byteArrayOf(1, 2, 3, 4, 5, 6))) }
+        val image = jacorb {
+            RTC.CameraImageHelper.write(it, RTC.CameraImage(time, 2, 1, 24, "", 1.0, byteArrayOf(1, 2, 3, 4, 5, 6)))
+        }
         val camera = DataDecoder("CameraImage", littleEndian = false).decode(image) as StructuredData
         assertEquals(listOf<Byte>(1, 2, 3, 4, 5, 6), camera.member("pixels"))
         assertEquals(24, camera.member("bpp"), "an unsigned short reads as an Int")
@@ -83,9 +112,20 @@ class DataDecoderTest {
 
     @Test
     fun `little-endian samples, as OpenRTM sends by default, decode with the sequence aligned from the first byte`() {
-        val bytes = ByteBuffer.allocate(32).order(ByteOrder.LITTLE_ENDIAN)
-            .putInt(1_700_000_000).putInt(123_456_789).putInt(2).putInt(0).putDouble(1.25).putDouble(-3.0).array()
-        assertEquals(TimedDoubleSeq(instant, listOf(1.25, -3.0)), DataDecoder("IDL:RTC/TimedDoubleSeq:1.0", littleEndian = true).decode(bytes))
+        val bytes =
+            ByteBuffer.allocate(32)
+                .order(ByteOrder.LITTLE_ENDIAN)
+                .putInt(1_700_000_000)
+                .putInt(123_456_789)
+                .putInt(2)
+                .putInt(0)
+                .putDouble(1.25)
+                .putDouble(-3.0)
+                .array()
+        assertEquals(
+            TimedDoubleSeq(instant, listOf(1.25, -3.0)),
+            DataDecoder("IDL:RTC/TimedDoubleSeq:1.0", littleEndian = true).decode(bytes),
+        )
         val other = DataDecoder("IDL:RTC/TimedDoubleSeq:1.0", littleEndian = false).decode(bytes)
         assertTrue(other is UnknownData, "read in the wrong byte order the length exceeds the data: $other")
     }
@@ -109,13 +149,15 @@ class DataDecoderTest {
     }
 
     companion object {
-        private val orb: ORB = ORB.init(emptyArray(), Properties().apply {
-            setProperty("org.omg.CORBA.ORBClass", "org.jacorb.orb.ORB")
-            setProperty("org.omg.CORBA.ORBSingletonClass", "org.jacorb.orb.ORBSingleton")
-        })
+        private val orb: ORB =
+            ORB.init(
+                emptyArray(),
+                Properties().apply {
+                    setProperty("org.omg.CORBA.ORBClass", "org.jacorb.orb.ORB")
+                    setProperty("org.omg.CORBA.ORBSingletonClass", "org.jacorb.orb.ORBSingleton")
+                },
+            )
 
-        @JvmStatic
-        @AfterAll
-        fun shutdown() = orb.destroy()
+        @JvmStatic @AfterAll fun shutdown() = orb.destroy()
     }
 }

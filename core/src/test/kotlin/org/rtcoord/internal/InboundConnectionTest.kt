@@ -1,16 +1,16 @@
 package org.rtcoord.internal
 
+import java.io.InputStream
+import java.nio.ByteBuffer
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Test
-import java.io.InputStream
-import java.nio.ByteBuffer
 
 /**
- * [InboundConnection] read step by step on the test's thread, as JacORB's reader reads: a 12-byte
- * header, then the body in as many reads as the bytes come in, then the next header once the message
- * is handed on. The bytes "in the socket" are those given to [Arrivals].
+ * [InboundConnection] read step by step on the test's thread, as JacORB's reader reads: a 12-byte header, then the body
+ * in as many reads as the bytes come in, then the next header once the message is handed on. The bytes "in the socket"
+ * are those given to [Arrivals].
  */
 class InboundConnectionTest {
     /** A socket's input whose bytes arrive when the test says so; it never blocks. */
@@ -82,5 +82,13 @@ class InboundConnectionTest {
 
     /** A GIOP 1.2 request with a 24-byte body starting with [id], big-endian. */
     private fun message(id: Int): ByteArray =
-        ByteBuffer.allocate(36).put("GIOP".toByteArray()).put(1).put(2).put(0).put(0).putInt(24).put(id.toByte()).array()
+        ByteBuffer.allocate(36)
+            .put("GIOP".toByteArray())
+            .put(1)
+            .put(2)
+            .put(0)
+            .put(0)
+            .putInt(24)
+            .put(id.toByte())
+            .array()
 }

@@ -1,10 +1,5 @@
 package org.rtcoord.internal
 
-import org.junit.jupiter.api.AfterEach
-import org.junit.jupiter.api.Assertions.assertEquals
-import org.junit.jupiter.api.Assertions.assertFalse
-import org.junit.jupiter.api.Assertions.assertTrue
-import org.junit.jupiter.api.Test
 import java.io.DataInputStream
 import java.io.EOFException
 import java.net.InetAddress
@@ -17,12 +12,17 @@ import java.util.concurrent.CountDownLatch
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.Semaphore
 import java.util.concurrent.TimeUnit
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertFalse
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
 
 /**
- * [InboundConnections] over real loopback sockets, read as JacORB reads them: each GIOP header, then
- * exactly its body, then the message is handed on before the next read. The reader here hands each
- * message to [handled] once the test lets it ([handOn]), so a message can be held between read and
- * hand-off, and tells what it holds ([holding]) and what it skipped for not being GIOP ([skipped]).
+ * [InboundConnections] over real loopback sockets, read as JacORB reads them: each GIOP header, then exactly its body,
+ * then the message is handed on before the next read. The reader here hands each message to [handled] once the test
+ * lets it ([handOn]), so a message can be held between read and hand-off, and tells what it holds ([holding]) and what
+ * it skipped for not being GIOP ([skipped]).
  */
 class InboundConnectionsTest {
     private val inbound = InboundConnections()
@@ -56,7 +56,11 @@ class InboundConnectionsTest {
                 readerEnded.countDown()
             }
         }
-    }.apply { isDaemon = true; start() }
+    }
+        .apply {
+            isDaemon = true
+            start()
+        }
 
     @AfterEach
     fun close() {
@@ -108,7 +112,10 @@ class InboundConnectionsTest {
         assertTrue(inbound.allTaken { error("nothing to wait for") })
     }
 
-    /** Asks once the reader holds the first message; the handed-on messages when [InboundConnections.allTaken] called back. */
+    /**
+     * Asks once the reader holds the first message; the handed-on messages when [InboundConnections.allTaken] called
+     * back.
+     */
     private fun waitForAll(): CompletableFuture<List<Int>> {
         assertEquals(1, holding.poll(5, TimeUnit.SECONDS), "the reader holds the first message")
         val later = CompletableFuture<List<Int>>()
@@ -125,8 +132,15 @@ class InboundConnectionsTest {
     private fun message(id: Int, littleEndian: Boolean = false): ByteArray {
         val body = ByteArray(24) { if (it == 0) id.toByte() else 7 }
         val order = if (littleEndian) ByteOrder.LITTLE_ENDIAN else ByteOrder.BIG_ENDIAN
-        return ByteBuffer.allocate(12 + body.size).order(order)
-            .put("GIOP".toByteArray()).put(1).put(2).put(if (littleEndian) 1 else 0).put(0).putInt(body.size).put(body)
+        return ByteBuffer.allocate(12 + body.size)
+            .order(order)
+            .put("GIOP".toByteArray())
+            .put(1)
+            .put(2)
+            .put(if (littleEndian) 1 else 0)
+            .put(0)
+            .putInt(body.size)
+            .put(body)
             .array()
     }
 }

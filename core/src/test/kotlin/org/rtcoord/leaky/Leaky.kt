@@ -12,7 +12,8 @@ import org.rtcoord.internal.ValueFields
 public open class Leaky internal constructor(private val size: Int) : ValueObject() {
     public constructor() : this(0)
 
-    internal val count: Int get() = size
+    internal val count: Int
+        get() = size
 
     public suspend fun await(): Int = size
 

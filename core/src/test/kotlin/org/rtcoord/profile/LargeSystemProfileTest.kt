@@ -1,5 +1,6 @@
 package org.rtcoord.profile
 
+import kotlin.time.measureTimedValue
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -9,7 +10,6 @@ import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.naming.NamingService
-import kotlin.time.measureTimedValue
 
 /** Save, restore, check and start on the 200-component pipeline (relays in nested naming contexts). */
 class LargeSystemProfileTest {
@@ -27,9 +27,16 @@ class LargeSystemProfileTest {
                     assertEquals(COUNT - 1, profiles.teardown(saved).size)
                     tree.componentNamed("relay7").setParameter("fail", "1", "default")
                     val disturbed = profiles.check(saved, state = null)
-                    assertTrue(disturbed.size >= COUNT && disturbed.any { it.subject.endsWith("relay7.rtc default.fail") }, disturbed.takeLast(3).toString())
+                    assertTrue(
+                        disturbed.size >= COUNT && disturbed.any { it.subject.endsWith("relay7.rtc default.fail") },
+                        disturbed.takeLast(3).toString(),
+                    )
                     val (report, restoring) = measureTimedValue { profiles.restore(saved) }
-                    assertEquals(COUNT - 1, report.done.count { it.startsWith("connected ") }, report.done.take(5).toString())
+                    assertEquals(
+                        COUNT - 1,
+                        report.done.count { it.startsWith("connected ") },
+                        report.done.take(5).toString(),
+                    )
                     assertTrue(report.done.any { it.endsWith("set fail in 'default'") }, report.done.toString())
                     assertEquals(emptyList<ProfileDifference>(), profiles.check(saved, state = null))
                     assertEquals(emptyList<String>(), profiles.restore(saved).done)

@@ -16,24 +16,52 @@ internal class CdrInput(data: ByteArray, order: ByteOrder) {
         buffer.position(buffer.position() + padding)
     }
 
-    fun octet(): Byte { align(1); return buffer.get() }
-    fun short(): Short { align(2); return buffer.short }
-    fun long(): Int { align(4); return buffer.int }
-    fun longLong(): Long { align(8); return buffer.long }
-    fun float(): Float { align(4); return buffer.float }
-    fun double(): Double { align(8); return buffer.double }
+    fun octet(): Byte {
+        align(1)
+        return buffer.get()
+    }
+
+    fun short(): Short {
+        align(2)
+        return buffer.short
+    }
+
+    fun long(): Int {
+        align(4)
+        return buffer.int
+    }
+
+    fun longLong(): Long {
+        align(8)
+        return buffer.long
+    }
+
+    fun float(): Float {
+        align(4)
+        return buffer.float
+    }
+
+    fun double(): Double {
+        align(8)
+        return buffer.double
+    }
 
     /** A sequence's length, checked against what is left given each element takes at least [minimumSize] bytes. */
     fun length(minimumSize: Int): Int {
         val length = long().toLong() and 0xffffffffL
-        require(length * minimumSize <= buffer.remaining()) { "a sequence of $length elements exceeds the data, at byte ${buffer.position()}" }
+        require(length * minimumSize <= buffer.remaining()) {
+            "a sequence of $length elements exceeds the data, at byte ${buffer.position()}"
+        }
         return length.toInt()
     }
 
     fun doubles(count: Int): DoubleArray {
         if (count == 0) return DoubleArray(0)
         align(8)
-        return DoubleArray(count).also { buffer.asDoubleBuffer().get(it); buffer.position(buffer.position() + 8 * count) }
+        return DoubleArray(count).also {
+            buffer.asDoubleBuffer().get(it)
+            buffer.position(buffer.position() + 8 * count)
+        }
     }
 
     fun octets(count: Int): ByteArray {
@@ -62,5 +90,6 @@ internal class CdrInput(data: ByteArray, order: ByteOrder) {
     private fun utf16(bytes: ByteArray): String = String(bytes, Charsets.UTF_16)
 
     /** Whether every byte was read. */
-    val exhausted: Boolean get() = !buffer.hasRemaining()
+    val exhausted: Boolean
+        get() = !buffer.hasRemaining()
 }

@@ -4,8 +4,8 @@ import java.nio.ByteBuffer
 import java.nio.ByteOrder
 
 /**
- * Writes CDR as OpenRTM's `corba_cdr` transport sends a sample: no encapsulation header, each value
- * aligned to its size counted from the first byte, in the byte [order] the connector negotiated.
+ * Writes CDR as OpenRTM's `corba_cdr` transport sends a sample: no encapsulation header, each value aligned to its size
+ * counted from the first byte, in the byte [order] the connector negotiated.
  */
 internal class CdrOutput(private val order: ByteOrder, capacity: Int = 256) {
     private var buffer: ByteBuffer = ByteBuffer.allocate(capacity).order(order)
@@ -13,7 +13,8 @@ internal class CdrOutput(private val order: ByteOrder, capacity: Int = 256) {
     private fun reserve(alignment: Int, size: Int) {
         val padding = (alignment - buffer.position() % alignment) % alignment
         if (buffer.remaining() < padding + size) {
-            val grown = ByteBuffer.allocate(maxOf(buffer.capacity() * 2, buffer.position() + padding + size)).order(order)
+            val grown =
+                ByteBuffer.allocate(maxOf(buffer.capacity() * 2, buffer.position() + padding + size)).order(order)
             buffer.flip()
             grown.put(buffer)
             buffer = grown
@@ -21,12 +22,35 @@ internal class CdrOutput(private val order: ByteOrder, capacity: Int = 256) {
         repeat(padding) { buffer.put(0) }
     }
 
-    fun octet(value: Byte) { reserve(1, 1); buffer.put(value) }
-    fun short(value: Short) { reserve(2, 2); buffer.putShort(value) }
-    fun long(value: Int) { reserve(4, 4); buffer.putInt(value) }
-    fun longLong(value: Long) { reserve(8, 8); buffer.putLong(value) }
-    fun float(value: Float) { reserve(4, 4); buffer.putFloat(value) }
-    fun double(value: Double) { reserve(8, 8); buffer.putDouble(value) }
+    fun octet(value: Byte) {
+        reserve(1, 1)
+        buffer.put(value)
+    }
+
+    fun short(value: Short) {
+        reserve(2, 2)
+        buffer.putShort(value)
+    }
+
+    fun long(value: Int) {
+        reserve(4, 4)
+        buffer.putInt(value)
+    }
+
+    fun longLong(value: Long) {
+        reserve(8, 8)
+        buffer.putLong(value)
+    }
+
+    fun float(value: Float) {
+        reserve(4, 4)
+        buffer.putFloat(value)
+    }
+
+    fun double(value: Double) {
+        reserve(8, 8)
+        buffer.putDouble(value)
+    }
 
     /** [count] doubles at once: a sequence's elements after its length. */
     fun doubles(values: DoubleArray) {

@@ -1,9 +1,9 @@
 package org.rtcoord.datatypes
 
 /**
- * The repository ID a port's `dataport.data_type` means: OpenRTM-aist 1.2 and later write
- * `IDL:RTC/TimedDouble:1.0`, earlier versions and some tools `TimedDouble` or `RTC::TimedDouble`. A name
- * without a module is one of module `RTC`, as the standard types are.
+ * The repository ID a port's `dataport.data_type` means: OpenRTM-aist 1.2 and later write `IDL:RTC/TimedDouble:1.0`,
+ * earlier versions and some tools `TimedDouble` or `RTC::TimedDouble`. A name without a module is one of module `RTC`,
+ * as the standard types are.
  */
 public object DataTypeName {
     /** `IDL:RTC/TimedDouble:1.0` for any of the forms above; an `IDL:` name as it is. */

@@ -1,25 +1,25 @@
 package org.rtcoord.datatypes
 
 /**
- * An IDL type as far as CDR needs it: what its bytes are, not how a language maps it. Standard types
- * come from [StandardDataTypes]; users' IDL is read into the same model. Typedefs stay as [Alias] so
- * that a type prints under the name its IDL gives it; they add nothing to the bytes.
+ * An IDL type as far as CDR needs it: what its bytes are, not how a language maps it. Standard types come from
+ * [StandardDataTypes]; users' IDL is read into the same model. Typedefs stay as [Alias] so that a type prints under the
+ * name its IDL gives it; they add nothing to the bytes.
  *
  * Values of each type, as [DataCodec] reads and writes them:
  *
- * | type | value |
- * |---|---|
- * | `boolean` | [Boolean] |
- * | `octet`, `char`, `wchar` | [Byte], [Char], [Char] |
- * | `short`, `unsigned short` | [Short], [Int] |
- * | `long`, `unsigned long` | [Int], [Long] |
- * | `long long`, `unsigned long long` | [Long], [java.math.BigInteger] |
- * | `float`, `double` | [Float], [Double] |
- * | `string`, `wstring` | [String] |
- * | sequence, array | [List] (written from a primitive array too) |
- * | struct | [Map] of member name to value, in declaration order |
- * | enum | the enumerator's name, a [String] |
- * | union | [Map] of [UNION_DISCRIMINATOR] to the discriminator, and the selected member's name to its value |
+ * |type                             |value                                                                                           |
+ * |---------------------------------|------------------------------------------------------------------------------------------------|
+ * |`boolean`                        |[Boolean]                                                                                       |
+ * |`octet`, `char`, `wchar`         |[Byte], [Char], [Char]                                                                          |
+ * |`short`, `unsigned short`        |[Short], [Int]                                                                                  |
+ * |`long`, `unsigned long`          |[Int], [Long]                                                                                   |
+ * |`long long`, `unsigned long long`|[Long], [java.math.BigInteger]                                                                  |
+ * |`float`, `double`                |[Float], [Double]                                                                               |
+ * |`string`, `wstring`              |[String]                                                                                        |
+ * |sequence, array                  |[List] (written from a primitive array too)                                                     |
+ * |struct                           |[Map] of member name to value, in declaration order                                             |
+ * |enum                             |the enumerator's name, a [String]                                                               |
+ * |union                            |[Map] of [UNION_DISCRIMINATOR] to the discriminator, and the selected member's name to its value|
  */
 public sealed class IdlType {
     /** The type as IDL writes it: `double`, `sequence<RTC::Point2D>`, `RTC::RangeData`. */
@@ -53,12 +53,14 @@ public sealed class IdlType {
 
     /** `sequence<element>`, at most [bound] elements (0: unbounded). */
     public class Sequence(public val element: IdlType, public val bound: Int = 0) : IdlType() {
-        override val name: String get() = "sequence<${element.name}${if (bound > 0) ", $bound" else ""}>"
+        override val name: String
+            get() = "sequence<${element.name}${if (bound > 0) ", $bound" else ""}>"
     }
 
     /** An array of exactly [length] elements (a multi-dimensional array is an array of arrays). */
     public class ArrayType(public val element: IdlType, public val length: Int) : IdlType() {
-        override val name: String get() = "${element.name}[$length]"
+        override val name: String
+            get() = "${element.name}[$length]"
     }
 
     /** A declared type, with its [repositoryId] (`IDL:RTC/RangeData:1.0`); [name] is its scoped name. */
@@ -67,10 +69,18 @@ public sealed class IdlType {
     }
 
     /** A struct: its members in declaration order. */
-    public class Struct(override val name: String, override val repositoryId: String, public val members: List<Member>) : Declared()
+    public class Struct(
+        override val name: String,
+        override val repositoryId: String,
+        public val members: List<Member>,
+    ) : Declared()
 
     /** An enum: its enumerators in declaration order (their ordinals are what CDR carries). */
-    public class Enum(override val name: String, override val repositoryId: String, public val enumerators: List<String>) : Declared()
+    public class Enum(
+        override val name: String,
+        override val repositoryId: String,
+        public val enumerators: List<String>,
+    ) : Declared()
 
     /** A union: the [discriminator]'s type and the [cases]; the one with no labels is `default`. */
     public class Union(
@@ -85,18 +95,20 @@ public sealed class IdlType {
     }
 
     /** A typedef: another name for [type]. */
-    public class Alias(override val name: String, override val repositoryId: String, public val type: IdlType) : Declared()
+    public class Alias(override val name: String, override val repositoryId: String, public val type: IdlType) :
+        Declared()
 
     /** A struct member. */
     public class Member(public val name: String, public val type: IdlType)
 
     /**
-     * A union's case: the discriminator values that select it ([labels], as [DataCodec] reads the
-     * discriminator: numbers, characters, booleans, enumerator names) or none for `default`.
+     * A union's case: the discriminator values that select it ([labels], as [DataCodec] reads the discriminator:
+     * numbers, characters, booleans, enumerator names) or none for `default`.
      */
     public class Case(public val labels: List<Any>, public val name: String, public val type: IdlType) {
         /** Whether this is the `default` case. */
-        public val isDefault: Boolean get() = labels.isEmpty()
+        public val isDefault: Boolean
+            get() = labels.isEmpty()
     }
 
     public companion object {

@@ -5,24 +5,34 @@ import kotlin.math.abs
 import kotlin.math.sin
 
 /**
- * Made-up samples of one data type for a simulated out-port: deterministic from the time stamp and the
- * port's [seed] (a test can compute what a port sends at a given time), different at every sample, and
- * plausible where the type says what plausible is: a `tm` member is the time stamp itself, a
- * `RangeData` is a 1081-beam scan whose ranges lie within its configuration's limits, a `CameraImage`
- * holds `width * height * bpp / 8` pixel bytes. Numbers move smoothly (sines of the time); enumerators,
- * union cases and booleans change every second or so.
+ * Made-up samples of one data type for a simulated out-port: deterministic from the time stamp and the port's [seed] (a
+ * test can compute what a port sends at a given time), different at every sample, and plausible where the type says
+ * what plausible is: a `tm` member is the time stamp itself, a `RangeData` is a 1081-beam scan whose ranges lie within
+ * its configuration's limits, a `CameraImage` holds `width * height * bpp / 8` pixel bytes. Numbers move smoothly
+ * (sines of the time); enumerators, union cases and booleans change every second or so.
  */
 public class MadeUpValues(public val type: IdlType, private val seed: Int) {
     /** The sample stamped [timeNanos] (nanoseconds since the epoch), as [DataCodec] encodes it. */
     public fun at(timeNanos: Long): Any? = value(type, timeNanos, seed)
 
     private fun value(type: IdlType, time: Long, key: Int): Any? {
-        if (type is IdlType.Struct) SPECIAL[type.repositoryId]?.let { return it(this, type, time, key) }
+        if (type is IdlType.Struct)
+            SPECIAL[type.repositoryId]?.let {
+                return it(this, type, time, key)
+            }
         return when (type) {
             is IdlType.Alias -> value(type.type, time, key)
             is IdlType.Primitive -> primitive(type, time, key)
-            is IdlType.StringType -> "${if (type.wide) "wide " else ""}sample ${time / 1_000_000}".take(if (type.bound > 0) type.bound else Int.MAX_VALUE)
-            is IdlType.Sequence -> elements(type.element, if (type.bound > 0) minOf(SEQUENCE_LENGTH, type.bound) else SEQUENCE_LENGTH, time, key)
+            is IdlType.StringType ->
+                "${if (type.wide) "wide " else ""}sample ${time / 1_000_000}"
+                    .take(if (type.bound > 0) type.bound else Int.MAX_VALUE)
+            is IdlType.Sequence ->
+                elements(
+                    type.element,
+                    if (type.bound > 0) minOf(SEQUENCE_LENGTH, type.bound) else SEQUENCE_LENGTH,
+                    time,
+                    key,
+                )
             is IdlType.ArrayType -> elements(type.element, type.length, time, key)
             is IdlType.Struct -> members(type, time, key)
             is IdlType.Enum -> type.enumerators[step(time, key, SLOW_MILLIS, type.enumerators.size)]
@@ -31,46 +41,63 @@ public class MadeUpValues(public val type: IdlType, private val seed: Int) {
     }
 
     /** A struct's members, each made up on its own. */
-    private fun members(type: IdlType.Struct, time: Long, key: Int): MutableMap<String, Any?> = LinkedHashMap<String, Any?>().apply {
-        for (member in type.members) {
-            put(member.name, if (member.name == "tm" && member.type.isTime()) time(time) else value(member.type, time, mix(key, member.name)))
+    private fun members(type: IdlType.Struct, time: Long, key: Int): MutableMap<String, Any?> =
+        LinkedHashMap<String, Any?>().apply {
+            for (member in type.members) {
+                put(
+                    member.name,
+                    if (member.name == "tm" && member.type.isTime()) time(time)
+                    else value(member.type, time, mix(key, member.name)),
+                )
+            }
         }
-    }
 
-    private fun elements(element: IdlType, count: Int, time: Long, key: Int): Any = when (element.resolved) {
-        IdlType.Primitive.DOUBLE -> DoubleArray(count) { wave(time, mix(key, it)) }
-        IdlType.Primitive.OCTET -> ByteArray(count) { (step(time, mix(key, it), FAST_MILLIS, 256)).toByte() }
-        else -> List(count) { value(element, time, mix(key, it)) }
-    }
+    private fun elements(element: IdlType, count: Int, time: Long, key: Int): Any =
+        when (element.resolved) {
+            IdlType.Primitive.DOUBLE -> DoubleArray(count) { wave(time, mix(key, it)) }
+            IdlType.Primitive.OCTET -> ByteArray(count) { (step(time, mix(key, it), FAST_MILLIS, 256)).toByte() }
+            else -> List(count) { value(element, time, mix(key, it)) }
+        }
 
     private fun union(type: IdlType.Union, time: Long, key: Int): Map<String, Any?> {
         val labelled = type.cases.filter { !it.isDefault }
         if (labelled.isEmpty()) return mapOf(IdlType.UNION_DISCRIMINATOR to discriminatorFor(type, null))
         val case = labelled[step(time, key, SLOW_MILLIS, labelled.size)]
-        return linkedMapOf(IdlType.UNION_DISCRIMINATOR to discriminatorFor(type, case.labels.first()), case.name to value(case.type, time, mix(key, case.name)))
+        return linkedMapOf(
+            IdlType.UNION_DISCRIMINATOR to discriminatorFor(type, case.labels.first()),
+            case.name to value(case.type, time, mix(key, case.name)),
+        )
     }
 
     /** A label as the discriminator's own type writes it. */
-    private fun discriminatorFor(type: IdlType.Union, label: Any?): Any = when (val discriminator = type.discriminator.resolved) {
-        is IdlType.Enum -> label ?: discriminator.enumerators.first()
-        IdlType.Primitive.BOOLEAN -> label ?: false
-        IdlType.Primitive.CHAR, IdlType.Primitive.WCHAR -> label ?: 'a'
-        else -> (label as? Long) ?: 0L
-    }
+    private fun discriminatorFor(type: IdlType.Union, label: Any?): Any =
+        when (val discriminator = type.discriminator.resolved) {
+            is IdlType.Enum -> label ?: discriminator.enumerators.first()
+            IdlType.Primitive.BOOLEAN -> label ?: false
+            IdlType.Primitive.CHAR,
+            IdlType.Primitive.WCHAR -> label ?: 'a'
+            else -> (label as? Long) ?: 0L
+        }
 
-    private fun primitive(type: IdlType.Primitive, time: Long, key: Int): Any = when (type) {
-        IdlType.Primitive.BOOLEAN -> step(time, key, SLOW_MILLIS, 2) == 1
-        IdlType.Primitive.CHAR, IdlType.Primitive.WCHAR -> 'a' + step(time, key, FAST_MILLIS, 26)
-        IdlType.Primitive.OCTET -> step(time, key, FAST_MILLIS, 256).toByte()
-        IdlType.Primitive.SHORT, IdlType.Primitive.USHORT -> step(time, key, FAST_MILLIS, 1000).toShort()
-        IdlType.Primitive.LONG, IdlType.Primitive.ULONG -> step(time, key, FAST_MILLIS, 1_000_000)
-        IdlType.Primitive.LONGLONG, IdlType.Primitive.ULONGLONG -> step(time, key, FAST_MILLIS, 1_000_000).toLong()
-        IdlType.Primitive.FLOAT -> wave(time, key).toFloat()
-        IdlType.Primitive.DOUBLE -> wave(time, key)
-        else -> error("unknown primitive ${type.name}")
-    }
+    private fun primitive(type: IdlType.Primitive, time: Long, key: Int): Any =
+        when (type) {
+            IdlType.Primitive.BOOLEAN -> step(time, key, SLOW_MILLIS, 2) == 1
+            IdlType.Primitive.CHAR,
+            IdlType.Primitive.WCHAR -> 'a' + step(time, key, FAST_MILLIS, 26)
+            IdlType.Primitive.OCTET -> step(time, key, FAST_MILLIS, 256).toByte()
+            IdlType.Primitive.SHORT,
+            IdlType.Primitive.USHORT -> step(time, key, FAST_MILLIS, 1000).toShort()
+            IdlType.Primitive.LONG,
+            IdlType.Primitive.ULONG -> step(time, key, FAST_MILLIS, 1_000_000)
+            IdlType.Primitive.LONGLONG,
+            IdlType.Primitive.ULONGLONG -> step(time, key, FAST_MILLIS, 1_000_000).toLong()
+            IdlType.Primitive.FLOAT -> wave(time, key).toFloat()
+            IdlType.Primitive.DOUBLE -> wave(time, key)
+            else -> error("unknown primitive ${type.name}")
+        }
 
-    private fun time(nanos: Long): Map<String, Any?> = linkedMapOf("sec" to nanos / 1_000_000_000, "nsec" to nanos % 1_000_000_000)
+    private fun time(nanos: Long): Map<String, Any?> =
+        linkedMapOf("sec" to nanos / 1_000_000_000, "nsec" to nanos % 1_000_000_000)
 
     private fun IdlType.isTime(): Boolean = (resolved as? IdlType.Struct)?.repositoryId == TIME
 
@@ -81,12 +108,13 @@ public class MadeUpValues(public val type: IdlType, private val seed: Int) {
         const val SLOW_MILLIS = 1000L
 
         /** Values of the device types whose members depend on each other. */
-        val SPECIAL: Map<String, MadeUpValues.(IdlType.Struct, Long, Int) -> Any?> = mapOf(
-            "IDL:RTC/RangeData:1.0" to { type, time, key -> ranger(type, time, key, "ranges") },
-            "IDL:RTC/IntensityData:1.0" to { type, time, key -> ranger(type, time, key, "intensities") },
-            "IDL:RTC/CameraImage:1.0" to { type, time, key -> cameraImage(type, time, key) },
-            "IDL:RTC/PointCloud:1.0" to { type, time, key -> pointCloud(type, time, key) },
-        )
+        val SPECIAL: Map<String, MadeUpValues.(IdlType.Struct, Long, Int) -> Any?> =
+            mapOf(
+                "IDL:RTC/RangeData:1.0" to { type, time, key -> ranger(type, time, key, "ranges") },
+                "IDL:RTC/IntensityData:1.0" to { type, time, key -> ranger(type, time, key, "intensities") },
+                "IDL:RTC/CameraImage:1.0" to { type, time, key -> cameraImage(type, time, key) },
+                "IDL:RTC/PointCloud:1.0" to { type, time, key -> pointCloud(type, time, key) },
+            )
 
         /** A 270-degree scanner with a quarter-degree resolution, as common laser rangers are: 1081 beams. */
         fun MadeUpValues.ranger(type: IdlType.Struct, time: Long, key: Int, readings: String): Any? {
@@ -94,10 +122,16 @@ public class MadeUpValues(public val type: IdlType, private val seed: Int) {
             val beams = 1081
             val maxRange = 30.0
             generic[readings] = sineRanges(beams, phase = time / 1e9 + key)
-            generic["config"] = linkedMapOf(
-                "minAngle" to -0.75 * PI, "maxAngle" to 0.75 * PI, "angularRes" to 1.5 * PI / (beams - 1),
-                "minRange" to 0.02, "maxRange" to maxRange, "rangeRes" to 0.001, "frequency" to 40.0,
-            )
+            generic["config"] =
+                linkedMapOf(
+                    "minAngle" to -0.75 * PI,
+                    "maxAngle" to 0.75 * PI,
+                    "angularRes" to 1.5 * PI / (beams - 1),
+                    "minRange" to 0.02,
+                    "maxRange" to maxRange,
+                    "rangeRes" to 0.001,
+                    "frequency" to 40.0,
+                )
             return generic
         }
 
@@ -119,9 +153,9 @@ public class MadeUpValues(public val type: IdlType, private val seed: Int) {
         }
 
         /**
-         * 2 to 5 m along the beams, a sine of the beam's angle shifted by [phase]: walls coming and going.
-         * The sines come by rotation (two multiplications each) rather than a `sin` per beam: a scan costs
-         * microseconds, so a simulated ranger at 100 Hz stays well under 1 % of a core.
+         * 2 to 5 m along the beams, a sine of the beam's angle shifted by [phase]: walls coming and going. The sines
+         * come by rotation (two multiplications each) rather than a `sin` per beam: a scan costs microseconds, so a
+         * simulated ranger at 100 Hz stays well under 1 % of a core.
          */
         fun sineRanges(beams: Int, phase: Double): DoubleArray {
             val step = 0.02
@@ -142,7 +176,8 @@ public class MadeUpValues(public val type: IdlType, private val seed: Int) {
         fun wave(time: Long, key: Int): Double = (abs(key) % 100) / 10.0 + sin(time / 1e9 * (1 + abs(key) % 7) + key)
 
         /** A whole number in `0 until bound` that advances every [millis] milliseconds. */
-        fun step(time: Long, key: Int, millis: Long, bound: Int): Int = (((time / 1_000_000 / millis) + abs(key)) % bound).toInt()
+        fun step(time: Long, key: Int, millis: Long, bound: Int): Int =
+            (((time / 1_000_000 / millis) + abs(key)) % bound).toInt()
 
         fun mix(key: Int, part: Any): Int = 31 * key + part.hashCode()
     }

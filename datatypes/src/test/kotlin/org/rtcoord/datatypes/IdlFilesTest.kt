@@ -1,12 +1,12 @@
 package org.rtcoord.datatypes
 
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import java.nio.file.Files
-import java.nio.file.Path
-import java.nio.file.Paths
 
 /** Users' IDL read with JacORB's parser: every construct a data type can use, and what goes wrong. */
 class IdlFilesTest {
@@ -29,7 +29,10 @@ class IdlFilesTest {
                 "char[2] tags; wstring label; unsigned long long serial}",
             status.describe(),
         )
-        assertTrue(types.types.keys.containsAll(listOf("IDL:Acme/Common/Blob:1.0", "IDL:RTC/TimedLong:1.0")), "included files' types too")
+        assertTrue(
+            types.types.keys.containsAll(listOf("IDL:Acme/Common/Blob:1.0", "IDL:RTC/TimedLong:1.0")),
+            "included files' types too",
+        )
     }
 
     @Test
@@ -60,7 +63,10 @@ class IdlFilesTest {
 
     @Test
     fun `a missing include is named`(@org.junit.jupiter.api.io.TempDir directory: Path) {
-        Files.writeString(directory.resolve("Lonely.idl"), "#include \"Nowhere.idl\"\nmodule Lonely { struct S { long x; }; };\n")
+        Files.writeString(
+            directory.resolve("Lonely.idl"),
+            "#include \"Nowhere.idl\"\nmodule Lonely { struct S { long x; }; };\n",
+        )
         val message = IdlFiles.readDirectory(directory).errors.single()
         assertTrue(message.contains("Nowhere.idl"), message)
         assertFalse(message.contains('\n'), message)
@@ -69,15 +75,19 @@ class IdlFilesTest {
     @Test
     fun `a directory without IDL, or none at all, is named`(@org.junit.jupiter.api.io.TempDir directory: Path) {
         assertEquals(listOf("$directory: no .idl file in it"), IdlFiles.readDirectory(directory).errors)
-        assertEquals(listOf("${directory.resolve("nowhere")}: not a directory"), IdlFiles.readDirectory(directory.resolve("nowhere")).errors)
+        assertEquals(
+            listOf("${directory.resolve("nowhere")}: not a directory"),
+            IdlFiles.readDirectory(directory.resolve("nowhere")).errors,
+        )
     }
 
-    private fun flatten(value: Any?): Any? = when (value) {
-        is Map<*, *> -> value.mapValues { flatten(it.value) }
-        is DoubleArray -> value.toList().map(::flatten)
-        is ByteArray -> value.toList().map(::flatten)
-        is List<*> -> value.map(::flatten)
-        is Number -> if (value is Double || value is Float) value.toDouble() else value.toLong()
-        else -> value
-    }
+    private fun flatten(value: Any?): Any? =
+        when (value) {
+            is Map<*, *> -> value.mapValues { flatten(it.value) }
+            is DoubleArray -> value.toList().map(::flatten)
+            is ByteArray -> value.toList().map(::flatten)
+            is List<*> -> value.map(::flatten)
+            is Number -> if (value is Double || value is Float) value.toDouble() else value.toLong()
+            else -> value
+        }
 }

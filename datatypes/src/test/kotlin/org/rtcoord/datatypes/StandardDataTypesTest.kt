@@ -1,20 +1,20 @@
 package org.rtcoord.datatypes
 
+import java.nio.file.Paths
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertNotEquals
 import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import java.nio.file.Paths
 
 /**
- * Every struct of OpenRTM-aist's three data type files: known by its name, the same whether read from
- * idlj's TypeCodes (what rtcoord runs on) or parsed from the IDL at run time, and through the codec and
- * back in both byte orders.
+ * Every struct of OpenRTM-aist's three data type files: known by its name, the same whether read from idlj's TypeCodes
+ * (what rtcoord runs on) or parsed from the IDL at run time, and through the codec and back in both byte orders.
  */
 class StandardDataTypesTest {
-    private val idl = Paths.get(System.getProperty("rtcoord.root") ?: "..").resolve("idl/src/main/idl").toAbsolutePath().normalize()
+    private val idl =
+        Paths.get(System.getProperty("rtcoord.root") ?: "..").resolve("idl/src/main/idl").toAbsolutePath().normalize()
     private val parsed = IdlFiles.read(listOf(idl.resolve("InterfaceDataTypes.idl")))
     private val structs = parsed.types.values.filterIsInstance<IdlType.Struct>()
 
@@ -34,7 +34,11 @@ class StandardDataTypesTest {
             val value = MadeUpValues(codec.type, seed = 7).at(1_700_000_000_123_456_789)
             for (littleEndian in listOf(true, false)) {
                 val bytes = codec.encode(value, littleEndian)
-                assertEquals(comparable(value), comparable(codec.decode(bytes, littleEndian)), "${struct.name}, little-endian $littleEndian")
+                assertEquals(
+                    comparable(value),
+                    comparable(codec.decode(bytes, littleEndian)),
+                    "${struct.name}, little-endian $littleEndian",
+                )
             }
         }
     }
@@ -56,8 +60,12 @@ class StandardDataTypesTest {
         val codec = DataCodec(StandardDataTypes.named("RangeData")!!)
         @Suppress("UNCHECKED_CAST")
         val value = MadeUpValues(codec.type, seed = 3).at(1_000_000_001) as MutableMap<String, Any?>
-        fun Map<*, *>.with(name: String, change: MutableMap<Any?, Any?>.() -> Unit) = toMutableMap().apply { this[name] = (this[name] as Map<*, *>).toMutableMap().apply(change) }
-        value["geometry"] = (value["geometry"] as Map<*, *>).with("geometry") { this["size"] = (this["size"] as Map<*, *>).toMutableMap().apply { this["l"] = "long" } }
+        fun Map<*, *>.with(name: String, change: MutableMap<Any?, Any?>.() -> Unit) =
+            toMutableMap().apply { this[name] = (this[name] as Map<*, *>).toMutableMap().apply(change) }
+        value["geometry"] =
+            (value["geometry"] as Map<*, *>).with("geometry") {
+                this["size"] = (this["size"] as Map<*, *>).toMutableMap().apply { this["l"] = "long" }
+            }
         val wrong = assertThrows(IllegalArgumentException::class.java) { codec.encode(value, littleEndian = true) }
         assertEquals("RTC::RangeData.geometry.geometry.size.l: expected a number, got String long", wrong.message)
         value.remove("ranges")
@@ -68,7 +76,10 @@ class StandardDataTypesTest {
         val cloud = MadeUpValues(points.type, seed = 3).at(1_000_000_001) as MutableMap<String, Any?>
         cloud["points"] = (cloud["points"] as List<*>).toMutableList().apply { this[2] = 42 }
         val element = assertThrows(IllegalArgumentException::class.java) { points.encode(cloud, littleEndian = false) }
-        assertEquals("RTC::PointCloud.points[2]: expected a struct (a map of its members), got Integer 42", element.message)
+        assertEquals(
+            "RTC::PointCloud.points[2]: expected a struct (a map of its members), got Integer 42",
+            element.message,
+        )
     }
 
     @Test
@@ -97,14 +108,15 @@ class StandardDataTypesTest {
     }
 
     /** Values as decoding gives them: every array a list, every number widened as its type reads. */
-    private fun comparable(value: Any?): Any? = when (value) {
-        is Map<*, *> -> value.mapValues { comparable(it.value) }
-        is DoubleArray -> value.toList()
-        is ByteArray -> value.toList()
-        is List<*> -> value.map(::comparable)
-        is Int -> value.toLong()
-        is Short -> value.toLong()
-        is java.math.BigInteger -> value.toLong()
-        else -> value
-    }
+    private fun comparable(value: Any?): Any? =
+        when (value) {
+            is Map<*, *> -> value.mapValues { comparable(it.value) }
+            is DoubleArray -> value.toList()
+            is ByteArray -> value.toList()
+            is List<*> -> value.map(::comparable)
+            is Int -> value.toLong()
+            is Short -> value.toLong()
+            is java.math.BigInteger -> value.toLong()
+            else -> value
+        }
 }

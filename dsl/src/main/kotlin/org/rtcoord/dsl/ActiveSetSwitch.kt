@@ -1,17 +1,17 @@
 package org.rtcoord.dsl
 
+import java.util.concurrent.ConcurrentHashMap
 import org.rtcoord.ComponentNode
 import org.rtcoord.ConfigurationSetActivated
 import org.rtcoord.Node
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
-import java.util.concurrent.ConcurrentHashMap
 
 /**
- * Follows which configuration set is active in each component watched, as a coordinator means it: a
- * switch from one set to another. OpenRTM-aist's ConfigAdmin leaves no set active after every write
- * until a set is activated again, so a write shows as `default -> none -> default`: that is no switch,
- * and `default -> none -> precise` is one, from `default`.
+ * Follows which configuration set is active in each component watched, as a coordinator means it: a switch from one set
+ * to another. OpenRTM-aist's ConfigAdmin leaves no set active after every write until a set is activated again, so a
+ * write shows as `default -> none -> default`: that is no switch, and `default -> none -> precise` is one, from
+ * `default`.
  */
 internal class ActiveSetSwitch : EventReading<ConfigurationSetActivated> {
     /** The set last seen active, by component path. */

@@ -3,15 +3,16 @@ package org.rtcoord.dsl
 import kotlin.time.Duration
 
 /**
- * How long a supervisor waits before restarting a component that keeps failing: the first restart of a
- * run waits [initial], each consecutive one [factor] times longer, never more than [max]. Restarts are
- * consecutive while each failure comes within the supervisor's restart period of the previous restart.
+ * How long a supervisor waits before restarting a component that keeps failing: the first restart of a run waits
+ * [initial], each consecutive one [factor] times longer, never more than [max]. Restarts are consecutive while each
+ * failure comes within the supervisor's restart period of the previous restart.
  *
  * @property initial the wait before the first restart of a run.
  * @property max the longest wait.
  * @property factor how much longer each consecutive wait is.
  */
-public class Backoff private constructor(
+public class Backoff
+private constructor(
     public val initial: Duration,
     public val max: Duration,
     public val factor: Double,

@@ -2,6 +2,8 @@
 
 package org.rtcoord.dsl
 
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
@@ -42,17 +44,14 @@ import org.rtcoord.dsl.internal.catchFailure
 import org.rtcoord.dsl.internal.plan
 import org.rtcoord.dsl.internal.queued
 import org.rtcoord.internal.treeScope
-import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * Runs a [Coordination]'s plan against a live system: subscribes its rules, starts its timers, mode
- * machines and supervisors, and runs their handlers, one structured-concurrency scope for all of it. A
- * failing handler is logged and counted and the coordinator keeps running; [close] cancels running
- * handlers and detaches every observer. What the script names (not a pattern) is followed when it is
- * re-created, by a supervisor, a rule or by hand, with one subscription per component however many
- * rules, transitions and supervisors watch it. The plan is taken when the coordinator is made: several
- * coordinators may run one coordination, one after another or at once.
+ * Runs a [Coordination]'s plan against a live system: subscribes its rules, starts its timers, mode machines and
+ * supervisors, and runs their handlers, one structured-concurrency scope for all of it. A failing handler is logged and
+ * counted and the coordinator keeps running; [close] cancels running handlers and detaches every observer. What the
+ * script names (not a pattern) is followed when it is re-created, by a supervisor, a rule or by hand, with one
+ * subscription per component however many rules, transitions and supervisors watch it. The plan is taken when the
+ * coordinator is made: several coordinators may run one coordination, one after another or at once.
  *
  * @param options how rules watch, overriding the script's own choice when given.
  * @param log receives one line per rule firing, action, mode transition and failure.
@@ -74,11 +73,18 @@ public class Coordinator(
     /** A child of the tree's: the coordinator runs on the tree's threads, which end only once it has. */
     private val job = SupervisorJob(tree.treeScope().coroutineContext.job)
     private val context = tree.treeScope().coroutineContext + job
-    private val identities = Identities(tree, watching, CoroutineScope(context + CoroutineName("coordinator names")), log, watchedByName())
+    private val identities =
+        Identities(tree, watching, CoroutineScope(context + CoroutineName("coordinator names")), log, watchedByName())
     private val managers = ManagerWatch(tree, watching, log)
     private val engine = Engine(tree, identities, plan.directory, log, managers)
-    private val scope = CoroutineScope(context + CoroutineName("coordinator") + engine + CoroutineExceptionHandler { _, e -> failed("timer", e) })
-    private val interpreters = plan.machines.map { MachineInterpreter(it, scope, engine, Configurator(engine, scope), log, ::failed, ::watchNetwork) }
+    private val scope =
+        CoroutineScope(
+            context + CoroutineName("coordinator") + engine + CoroutineExceptionHandler { _, e -> failed("timer", e) }
+        )
+    private val interpreters =
+        plan.machines.map {
+            MachineInterpreter(it, scope, engine, Configurator(engine, scope), log, ::failed, ::watchNetwork)
+        }
     /** The listeners of followed names, and the subscriptions to nodes that are not followed. */
     private val listeners = CopyOnWriteArrayList<Subscription>()
     private val subscriptions = CopyOnWriteArrayList<Subscription>()
@@ -89,16 +95,21 @@ public class Coordinator(
     private val failureList = CopyOnWriteArrayList<HandlerFailure>()
 
     /** How many handler runs failed so far: the size of [handlerFailures]. */
-    public val failures: Int get() = failureCount.value
+    public val failures: Int
+        get() = failureCount.value
 
-    /** Every handler run that failed so far, in order, each with its subject and the line of the script it failed at. */
-    public val handlerFailures: List<HandlerFailure> get() = failureList.toList()
+    /**
+     * Every handler run that failed so far, in order, each with its subject and the line of the script it failed at.
+     */
+    public val handlerFailures: List<HandlerFailure>
+        get() = failureList.toList()
 
     /** [failures] as it changes, for those who wait for the first: `failureCounts.first { it > 0 }`. */
     public val failureCounts: StateFlow<Int> = failureCount.asStateFlow()
 
     /** Every action that failed so far, in order: those that stopped a handler and the best efforts. */
-    public val failedActions: List<FailedAction> get() = engine.failedActions.toList()
+    public val failedActions: List<FailedAction>
+        get() = engine.failedActions.toList()
 
     private val ruleActivities = plan.rules.associateWith { RuleActivity(it.description) }
 
@@ -106,28 +117,37 @@ public class Coordinator(
     public val rules: List<RuleActivity> = ruleActivities.values.toList()
 
     /**
-     * What each supervisor has done, in declaration order: there from the coordinator's making, so that a
-     * view can follow it before [start]; a supervisor's [status][SupervisorActivity.status] changes once it runs.
+     * What each supervisor has done, in declaration order: there from the coordinator's making, so that a view can
+     * follow it before [start]; a supervisor's [status][SupervisorActivity.status] changes once it runs.
      */
-    public val supervision: List<SupervisorActivity> = plan.supervisions.map { SupervisorActivity(it.name, it.strategy.name) }
+    public val supervision: List<SupervisorActivity> =
+        plan.supervisions.map { SupervisorActivity(it.name, it.strategy.name) }
 
     /** The coordination's mode machines as they run, in declaration order. */
     public val machines: List<RunningMachine> = interpreters.map { it.running }
 
     /** Whether every coroutine of the coordinator has ended, once [close]d: nothing it ran can act any more. */
-    internal val ended: Boolean get() = job.isCompleted
-
-    /** How many subscriptions to the tree the coordinator holds now: one per followed component, one per other node watched. */
-    internal val treeSubscriptions: Int get() = identities.subscriptions + subscriptions.size
-
-    /** The running machine named [name]. */
-    public fun machine(name: String): RunningMachine = machines.firstOrNull { it.name == name }
-        ?: throw IllegalArgumentException("no machine named '$name' (machines: ${machines.joinToString { it.name }.ifEmpty { "none" }})")
+    internal val ended: Boolean
+        get() = job.isCompleted
 
     /**
-     * Resolves every rule's target and subscribes it, and starts the supervisors; fails (with nothing
-     * left running) when a target does not exist or is ambiguous, and with a [ClosedException] once the
-     * coordinator is closed: a closed coordinator does not start again (make a new one).
+     * How many subscriptions to the tree the coordinator holds now: one per followed component, one per other node
+     * watched.
+     */
+    internal val treeSubscriptions: Int
+        get() = identities.subscriptions + subscriptions.size
+
+    /** The running machine named [name]. */
+    public fun machine(name: String): RunningMachine =
+        machines.firstOrNull { it.name == name }
+            ?: throw IllegalArgumentException(
+                "no machine named '$name' (machines: ${machines.joinToString { it.name }.ifEmpty { "none" }})"
+            )
+
+    /**
+     * Resolves every rule's target and subscribes it, and starts the supervisors; fails (with nothing left running)
+     * when a target does not exist or is ambiguous, and with a [ClosedException] once the coordinator is closed: a
+     * closed coordinator does not start again (make a new one).
      */
     public suspend fun start() {
         // Not kotlinx's JobCancellationException from the first suspension in the cancelled scope.
@@ -138,8 +158,11 @@ public class Coordinator(
             plan.rules.forEach { subscribe(it) }
             withContext(engine) {
                 plan.dataRules.forEach { rule ->
-                    DataRuleRun(rule, engine, scope) { what, handler -> run("rule $what") { Reaction(engine, null).handle(handler) } }
-                        .also { dataRuns += it }.start()
+                    DataRuleRun(rule, engine, scope) { what, handler ->
+                            run("rule $what") { Reaction(engine, null).handle(handler) }
+                        }
+                        .also { dataRuns += it }
+                        .start()
                 }
             }
             interpreters.forEach { machine ->
@@ -147,9 +170,12 @@ public class Coordinator(
                 watchNetwork(machine)
             }
             plan.supervisions.zip(supervision).forEach { (supervision, activity) ->
-                supervisors += Supervisor(supervision, activity, engine, scope, log) { escalated(supervision, it) }.also { it.start() }
+                supervisors +=
+                    Supervisor(supervision, activity, engine, scope, log) { escalated(supervision, it) }
+                        .also { it.start() }
             }
-            // Last: watching a manager watches the components below it, and the tree names each component by the path it
+            // Last: watching a manager watches the components below it, and the tree names each component by the path
+            // it
             // was first watched at; the rules' names (naming contexts) come first.
             plan.managers.forEach { watchManager(it) }
         } catch (e: Exception) {
@@ -178,13 +204,17 @@ public class Coordinator(
     }
 
     /**
-     * The events the plan watches of each name it follows, so that each name's one subscription asks the
-     * tree for all of them and no more; a supervised component is watched for everything.
+     * The events the plan watches of each name it follows, so that each name's one subscription asks the tree for all
+     * of them and no more; a supervised component is watched for everything.
      */
     private fun watchedByName(): Map<String, Set<Class<out RtcEvent>>> {
-        val patterns = plan.rules.map { it.pattern } + plan.machines.flatMap { it.eventPatterns + NetworkWatch(it).patterns }
-        val named = patterns.mapNotNull { pattern -> pattern.target.followedName?.let { it to pattern.watched } } +
-            plan.supervisions.flatMap { supervision -> supervision.children.map { it.selector to RtcEvent::class.java } }
+        val patterns =
+            plan.rules.map { it.pattern } + plan.machines.flatMap { it.eventPatterns + NetworkWatch(it).patterns }
+        val named =
+            patterns.mapNotNull { pattern -> pattern.target.followedName?.let { it to pattern.watched } } +
+                plan.supervisions.flatMap { supervision ->
+                    supervision.children.map { it.selector to RtcEvent::class.java }
+                }
         return named.groupBy({ it.first }, { it.second }).mapValues { it.value.toSet() }
     }
 
@@ -218,9 +248,9 @@ public class Coordinator(
     }
 
     /**
-     * Subscribes what [machine]'s networks name that exists now and is not watched yet: at the start, and
-     * each time a network is done (a mode may create what its network names). Only the machine's own
-     * coroutine calls it once the machine runs.
+     * Subscribes what [machine]'s networks name that exists now and is not watched yet: at the start, and each time a
+     * network is done (a mode may create what its network names). Only the machine's own coroutine calls it once the
+     * machine runs.
      */
     private suspend fun watchNetwork(machine: MachineInterpreter) {
         for (grouped in machine.networkWatch.unwatched().groupBy { it.target.key }.values) {
@@ -234,10 +264,10 @@ public class Coordinator(
     }
 
     /**
-     * Hands the events of [types] from what [target] names to a listener [made] for each node: a component
-     * the script names is followed across re-creation, and a pattern covers every match as they come and
-     * go, each on its one subscription; a manager or naming context is watched by a subscription of its
-     * own, which covers the components below it as they come and go.
+     * Hands the events of [types] from what [target] names to a listener [made] for each node: a component the script
+     * names is followed across re-creation, and a pattern covers every match as they come and go, each on its one
+     * subscription; a manager or naming context is watched by a subscription of its own, which covers the components
+     * below it as they come and go.
      */
     private suspend fun listen(target: Target, types: Set<Class<out RtcEvent>>, made: () -> NodeListener) {
         when (target) {
@@ -258,23 +288,26 @@ public class Coordinator(
 
     private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
         for (handler in supervision.escalationHandlers) {
-            run("escalation handler of ${escalation.supervisor}") { Reaction(engine, null).handle { handler(escalation) } }
+            run("escalation handler of ${escalation.supervisor}") {
+                Reaction(engine, null).handle { handler(escalation) }
+            }
         }
     }
 
     /** Runs [rule]'s handler on [event] if every guard holds; on the tree's threads, so the run's engine goes along. */
-    private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E): Unit = withContext(engine) {
-        val reaction = Reaction(engine, event)
-        if (!rule.guards.all { guard -> reaction.guard(event) }) return@withContext
-        log("rule '${rule.description}' fired: ${describe(event)}")
-        val activity = ruleActivities.getValue(rule)
-        activity.fired(describe(event))
-        try {
-            run("rule '${rule.description}'", activity::failed) { reaction.handle { rule.handler(this, event) } }
-        } finally {
-            activity.returned()
+    private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E): Unit =
+        withContext(engine) {
+            val reaction = Reaction(engine, event)
+            if (!rule.guards.all { guard -> reaction.guard(event) }) return@withContext
+            log("rule '${rule.description}' fired: ${describe(event)}")
+            val activity = ruleActivities.getValue(rule)
+            activity.fired(describe(event))
+            try {
+                run("rule '${rule.description}'", activity::failed) { reaction.handle { rule.handler(this, event) } }
+            } finally {
+                activity.returned()
+            }
         }
-    }
 
     private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {
         catchFailure({ ScriptCallSite.tracking(block) }) { e ->
@@ -283,7 +316,10 @@ public class Coordinator(
         }
     }
 
-    /** Lists the failure, logs it, then counts it: whoever sees the line finds it in the list, and whoever sees the count both. */
+    /**
+     * Lists the failure, logs it, then counts it: whoever sees the line finds it in the list, and whoever sees the
+     * count both.
+     */
     private fun failed(what: String, e: Throwable) {
         val failure = HandlerFailure.of(what, e)
         failureList += failure
@@ -292,19 +328,23 @@ public class Coordinator(
     }
 
     /**
-     * Runs the script's `onStop` actions, each within 10 s (one that takes longer is cut short and
-     * logged), then [close]s: what a host calls to end a run the script is told of.
+     * Runs the script's `onStop` actions, each within 10 s (one that takes longer is cut short and logged), then
+     * [close]s: what a host calls to end a run the script is told of.
      */
     public suspend fun stop() {
         withContext(engine) {
             for (action in plan.stopActions) {
-                withTimeoutOrNull(STOP_LIMIT) { run("on stop") { Reaction(engine, null).handle(action) } } ?: log("on stop did not finish within $STOP_LIMIT: cut short")
+                withTimeoutOrNull(STOP_LIMIT) { run("on stop") { Reaction(engine, null).handle(action) } }
+                    ?: log("on stop did not finish within $STOP_LIMIT: cut short")
             }
         }
         close()
     }
 
-    /** Cancels running handlers and timers and detaches the rules' observers, without the script's `onStop` actions ([stop] runs them). Idempotent. */
+    /**
+     * Cancels running handlers and timers and detaches the rules' observers, without the script's `onStop` actions
+     * ([stop] runs them). Idempotent.
+     */
     override fun close() {
         supervisors.forEach(Supervisor::close)
         dataRuns.forEach(DataRuleRun::stop)
@@ -321,6 +361,7 @@ public class Coordinator(
         /** How long each `onStop` action may take: a stop must end, even with a handler that hangs. */
         val STOP_LIMIT = 10.seconds
 
-        fun describe(event: RtcEvent): String = "${event.javaClass.simpleName} at ${(event.source as? ComponentNode)?.path ?: event.path}"
+        fun describe(event: RtcEvent): String =
+            "${event.javaClass.simpleName} at ${(event.source as? ComponentNode)?.path ?: event.path}"
     }
 }

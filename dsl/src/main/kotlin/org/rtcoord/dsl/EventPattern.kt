@@ -24,11 +24,10 @@ import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
 
 /**
- * One kind of event of one target (a component entering ERROR, a port losing a connection): what rules
- * and mode transitions are triggered by. [description] is how scripts, logs and `check` name it.
- * Most patterns take the events of their [type] as they come; one that follows a value, or a condition
- * it also fires on when first seen, reads events of a wider [watched] type through a [reading] of its
- * own, which each run of a plan makes afresh.
+ * One kind of event of one target (a component entering ERROR, a port losing a connection): what rules and mode
+ * transitions are triggered by. [description] is how scripts, logs and `check` name it. Most patterns take the events
+ * of their [type] as they come; one that follows a value, or a condition it also fires on when first seen, reads events
+ * of a wider [watched] type through a [reading] of its own, which each run of a plan makes afresh.
  */
 internal class EventPattern<E : RtcEvent>(
     val description: String,
@@ -50,14 +49,13 @@ internal class EventPattern<E : RtcEvent>(
 }
 
 /**
- * How a pattern that follows a value (a parameter's effective value, the active set, being in a state)
- * reads events: it reads a component's value before the first event, and turns each event into one of
- * its kind, or drops it.
+ * How a pattern that follows a value (a parameter's effective value, the active set, being in a state) reads events: it
+ * reads a component's value before the first event, and turns each event into one of its kind, or drops it.
  */
 internal interface EventReading<E : RtcEvent> {
     /**
-     * Reads [node]'s value now, so that its first change is measured from it; returns the event its
-     * present condition amounts to for a level-triggered reading, null otherwise.
+     * Reads [node]'s value now, so that its first change is measured from it; returns the event its present condition
+     * amounts to for a level-triggered reading, null otherwise.
      */
     suspend fun prepare(node: Node): E?
 
@@ -67,12 +65,17 @@ internal interface EventReading<E : RtcEvent> {
 
 /** One subscriber's view of a [pattern]: each event must be matched once, in order, as a [reading] follows a value. */
 internal class EventMatcher<E : RtcEvent>(val pattern: EventPattern<E>, private val reading: EventReading<E>?) {
-    /** Reads what the pattern follows of [node], before [node]'s first event reaches [match]; returns the event its present condition amounts to, if any. */
+    /**
+     * Reads what the pattern follows of [node], before [node]'s first event reaches [match]; returns the event its
+     * present condition amounts to, if any.
+     */
     suspend fun prepare(node: Node): E? = reading?.prepare(node)?.takeIf(pattern.matches)
 
     /** [event] as one of the pattern's, or null when it is not one. */
     fun match(event: RtcEvent): E? {
-        val translated = if (reading != null) reading.translate(event) else event.takeIf(pattern.type::isInstance)?.let(pattern.type::cast)
+        val translated =
+            if (reading != null) reading.translate(event)
+            else event.takeIf(pattern.type::isInstance)?.let(pattern.type::cast)
         return translated?.takeIf(pattern.matches)
     }
 }
@@ -82,72 +85,130 @@ internal object EventPatterns {
     fun state(target: ComponentRef, state: LifeCycle) =
         EventPattern("$target enters $state", Target.Component(target), StateChanged::class.java) { it.new == state }
 
-    /** [state], and a component already in [state] when watched: a [StateChanged] from [state] to itself in its default context. */
-    fun inState(target: ComponentRef, state: LifeCycle) = EventPattern(
-        "$target is in or enters $state", Target.Component(target), StateChanged::class.java, reading = { InState(state) },
-    ) { it.new == state }
+    /**
+     * [state], and a component already in [state] when watched: a [StateChanged] from [state] to itself in its default
+     * context.
+     */
+    fun inState(target: ComponentRef, state: LifeCycle) =
+        EventPattern(
+            "$target is in or enters $state",
+            Target.Component(target),
+            StateChanged::class.java,
+            reading = { InState(state) },
+        ) {
+            it.new == state
+        }
 
     fun fsmState(target: ComponentRef, state: String) =
-        EventPattern("$target's FSM enters $state", Target.Component(target), FsmStateChanged::class.java) { it.new == state }
+        EventPattern("$target's FSM enters $state", Target.Component(target), FsmStateChanged::class.java) {
+            it.new == state
+        }
 
-    fun stateChanged(target: ComponentRef) = EventPattern("$target changes state", Target.Component(target), StateChanged::class.java) { true }
+    fun stateChanged(target: ComponentRef) =
+        EventPattern("$target changes state", Target.Component(target), StateChanged::class.java) { true }
 
-    /** Changes of the effective value of [name]: in the active set, or by a switch to a set that holds another value. */
+    /**
+     * Changes of the effective value of [name]: in the active set, or by a switch to a set that holds another value.
+     */
     fun configParam(target: ComponentRef, name: String): EventPattern<ParameterChanged> {
         return EventPattern(
-            "$target parameter $name changes", Target.Component(target), ParameterChanged::class.java,
-            watched = RtcEvent::class.java, reading = { EffectiveValue(name) }, parameter = name,
-        ) { true }
+            "$target parameter $name changes",
+            Target.Component(target),
+            ParameterChanged::class.java,
+            watched = RtcEvent::class.java,
+            reading = { EffectiveValue(name) },
+            parameter = name,
+        ) {
+            true
+        }
     }
 
     /** Changes of [name] in any set, as the component reports them. */
     fun configParamInAnySet(target: ComponentRef, name: String) =
-        EventPattern("$target parameter $name changes in any set", Target.Component(target), ParameterChanged::class.java, parameter = name) { it.name == name }
+        EventPattern(
+            "$target parameter $name changes in any set",
+            Target.Component(target),
+            ParameterChanged::class.java,
+            parameter = name,
+        ) {
+            it.name == name
+        }
 
     fun configSetActivated(target: ComponentRef): EventPattern<ConfigurationSetActivated> {
         return EventPattern(
-            "$target activates a configuration set", Target.Component(target), ConfigurationSetActivated::class.java,
+            "$target activates a configuration set",
+            Target.Component(target),
+            ConfigurationSetActivated::class.java,
             reading = ::ActiveSetSwitch,
-        ) { true }
+        ) {
+            true
+        }
     }
 
-    fun rateChanged(target: ComponentRef) = EventPattern("$target rate changes", Target.Component(target), ContextRateChanged::class.java) { true }
+    fun rateChanged(target: ComponentRef) =
+        EventPattern("$target rate changes", Target.Component(target), ContextRateChanged::class.java) { true }
 
-    fun connected(target: ComponentRef) = EventPattern("$target connects", Target.Component(target), PortConnected::class.java) { true }
+    fun connected(target: ComponentRef) =
+        EventPattern("$target connects", Target.Component(target), PortConnected::class.java) { true }
 
-    fun disconnected(target: ComponentRef) = EventPattern("$target disconnects", Target.Component(target), PortDisconnected::class.java) { true }
+    fun disconnected(target: ComponentRef) =
+        EventPattern("$target disconnects", Target.Component(target), PortDisconnected::class.java) { true }
 
-    fun lost(target: ComponentRef) = EventPattern("$target is lost", Target.Component(target), HeartbeatLost::class.java) { true }
+    fun lost(target: ComponentRef) =
+        EventPattern("$target is lost", Target.Component(target), HeartbeatLost::class.java) { true }
 
-    fun zombie(target: ComponentRef) = EventPattern("$target becomes a zombie", Target.Component(target), BecameZombie::class.java) { true }
+    fun zombie(target: ComponentRef) =
+        EventPattern("$target becomes a zombie", Target.Component(target), BecameZombie::class.java) { true }
 
-    fun recovered(target: ComponentRef) = EventPattern("$target recovers", Target.Component(target), Recovered::class.java) { true }
+    fun recovered(target: ComponentRef) =
+        EventPattern("$target recovers", Target.Component(target), Recovered::class.java) { true }
 
-    fun finalized(target: ComponentRef) = EventPattern("$target exits", Target.Component(target), ComponentFinalized::class.java) { true }
+    fun finalized(target: ComponentRef) =
+        EventPattern("$target exits", Target.Component(target), ComponentFinalized::class.java) { true }
 
-    fun connected(target: PortRef) = EventPattern("$target connects", Target.Port(target), PortConnected::class.java) { it.port == target.name }
+    fun connected(target: PortRef) =
+        EventPattern("$target connects", Target.Port(target), PortConnected::class.java) { it.port == target.name }
 
-    fun disconnected(target: PortRef) = EventPattern("$target disconnects", Target.Port(target), PortDisconnected::class.java) { it.port == target.name }
+    fun disconnected(target: PortRef) =
+        EventPattern("$target disconnects", Target.Port(target), PortDisconnected::class.java) {
+            it.port == target.name
+        }
 
     fun created(target: ManagerRef) =
-        EventPattern("$target creates a component", Target.Manager(target), ManagerComponentChanged::class.java) { it.created }
+        EventPattern("$target creates a component", Target.Manager(target), ManagerComponentChanged::class.java) {
+            it.created
+        }
 
     fun deleted(target: ManagerRef) =
-        EventPattern("$target deletes a component", Target.Manager(target), ManagerComponentChanged::class.java) { !it.created }
+        EventPattern("$target deletes a component", Target.Manager(target), ManagerComponentChanged::class.java) {
+            !it.created
+        }
 
-    fun died(target: ManagerRef) = EventPattern("$target dies", Target.Manager(target), ManagerDied::class.java) { target.names(it.source) }
+    fun died(target: ManagerRef) =
+        EventPattern("$target dies", Target.Manager(target), ManagerDied::class.java) { target.names(it.source) }
 
-    fun returned(target: ManagerRef) = EventPattern("$target answers again", Target.Manager(target), ManagerReturned::class.java) { target.names(it.source) }
+    fun returned(target: ManagerRef) =
+        EventPattern("$target answers again", Target.Manager(target), ManagerReturned::class.java) {
+            target.names(it.source)
+        }
 
     fun appeared(target: ContextRef) =
-        EventPattern("$target gains a binding", Target.Context(target), NodeAppeared::class.java) { it.source.path.toString() == RtcPath(target.path).toString() }
+        EventPattern("$target gains a binding", Target.Context(target), NodeAppeared::class.java) {
+            it.source.path.toString() == RtcPath(target.path).toString()
+        }
 
     fun vanished(target: ContextRef) =
-        EventPattern("$target loses a binding", Target.Context(target), NodeVanished::class.java) { it.source.path.toString() == RtcPath(target.path).toString() }
+        EventPattern("$target loses a binding", Target.Context(target), NodeVanished::class.java) {
+            it.source.path.toString() == RtcPath(target.path).toString()
+        }
 
     fun unreachable(target: ContextRef) =
-        EventPattern("$target's name server stops answering", Target.Context(target), NameServerLost::class.java) { it.source.address == RtcPath(target.path).nameServer }
+        EventPattern("$target's name server stops answering", Target.Context(target), NameServerLost::class.java) {
+            it.source.address == RtcPath(target.path).nameServer
+        }
 
     fun reachable(target: ContextRef) =
-        EventPattern("$target's name server answers again", Target.Context(target), NameServerReturned::class.java) { it.source.address == RtcPath(target.path).nameServer }
+        EventPattern("$target's name server answers again", Target.Context(target), NameServerReturned::class.java) {
+            it.source.address == RtcPath(target.path).nameServer
+        }
 }

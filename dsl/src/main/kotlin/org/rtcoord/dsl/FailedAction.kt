@@ -7,8 +7,8 @@ import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 
 /**
- * An action of the coordinator that failed: [action] as the log wrote it, [reason] as the system
- * answered, and whether it was a best effort ([Reaction.attempt]), after which its handler went on.
+ * An action of the coordinator that failed: [action] as the log wrote it, [reason] as the system answered, and whether
+ * it was a best effort ([Reaction.attempt]), after which its handler went on.
  */
 public class FailedAction(
     public val action: String,

@@ -3,13 +3,17 @@ package org.rtcoord.dsl
 import org.rtcoord.dsl.internal.scriptFrames
 
 /**
- * A handler run that failed (a rule's, a timer's, a mode's action or guard, an escalation handler):
- * [subject] says which, [at] the line of the script it failed at, [type] and [message] what was thrown.
+ * A handler run that failed (a rule's, a timer's, a mode's action or guard, an escalation handler): [subject] says
+ * which, [at] the line of the script it failed at, [type] and [message] what was thrown.
  */
-public class HandlerFailure internal constructor(
+public class HandlerFailure
+internal constructor(
     /** Which handler: `rule 'laser0.rtc enters ERROR'`, `timer every 5s`, `entry of mode m/a`. */
     public val subject: String,
-    /** The script's innermost frame, as `file:line`; null when no script's code was on the way (a coordinator built in code). */
+    /**
+     * The script's innermost frame, as `file:line`; null when no script's code was on the way (a coordinator built in
+     * code).
+     */
     public val at: String?,
     /** The simple name of the exception's class. */
     public val type: String,
@@ -26,7 +30,10 @@ public class HandlerFailure internal constructor(
             val frames = scriptFrames(error)
             val message = error.message ?: "(no message)"
             return HandlerFailure(
-                subject, frames.firstOrNull()?.let { "${it.fileName}:${it.lineNumber}" }, error.javaClass.simpleName, message,
+                subject,
+                frames.firstOrNull()?.let { "${it.fileName}:${it.lineNumber}" },
+                error.javaClass.simpleName,
+                message,
                 frames.map { "${it.fileName}:${it.lineNumber} (${it.className}.${it.methodName})" },
             )
         }

@@ -1,18 +1,18 @@
 package org.rtcoord.dsl
 
+import java.util.concurrent.ConcurrentHashMap
 import org.rtcoord.ComponentNode
 import org.rtcoord.LifeCycle
 import org.rtcoord.Node
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.StateChanged
-import java.util.concurrent.ConcurrentHashMap
 
 /**
- * Follows whether each component watched is in [state], for a rule on being in it or entering it: one
- * firing per stay. The read that finds a component already in [state] is made when its events start to
- * reach the rule, and may come after changes whose events are still on their way: the event of the entry
- * that read found is then not a second entry, and is dropped.
+ * Follows whether each component watched is in [state], for a rule on being in it or entering it: one firing per stay.
+ * The read that finds a component already in [state] is made when its events start to reach the rule, and may come
+ * after changes whose events are still on their way: the event of the entry that read found is then not a second entry,
+ * and is dropped.
  */
 internal class InState(private val state: LifeCycle) : EventReading<StateChanged> {
     /** Whether the component was last known in [state], by component path and context handle. */
@@ -21,12 +21,13 @@ internal class InState(private val state: LifeCycle) : EventReading<StateChanged
     /** A component already in [state] in its default context: a [StateChanged] from [state] to itself. */
     override suspend fun prepare(node: Node): StateChanged? {
         if (node !is ComponentNode) return null
-        val now = try {
-            node.state()
-        } catch (e: RtcException) {
-            // Judged from its first event instead.
-            return null
-        }
+        val now =
+            try {
+                node.state()
+            } catch (e: RtcException) {
+                // Judged from its first event instead.
+                return null
+            }
         inState[node.path.toString() to DEFAULT_HANDLE] = now == state
         return if (now == state) StateChanged(node, DEFAULT_HANDLE, now, now) else null
     }

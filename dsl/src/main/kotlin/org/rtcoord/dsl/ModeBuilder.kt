@@ -1,13 +1,12 @@
 package org.rtcoord.dsl
 
-import org.rtcoord.dsl.internal.Selectors
 import java.nio.file.Path
 import kotlin.time.Duration
+import org.rtcoord.dsl.internal.Selectors
 
 /**
- * Declares a mode (or, in `modes("system") { ... }`, the machine's top): its sub-modes and which is
- * initial, entry and exit actions, the network it needs and its transitions:
- *
+ * Declares a mode (or, in `modes("system") { ... }`, the machine's top): its sub-modes and which is initial, entry and
+ * exit actions, the network it needs and its transitions:
  * ```
  * mode("nominal") {
  *     entry { log("nominal") }
@@ -18,8 +17,8 @@ import kotlin.time.Duration
  * }
  * ```
  *
- * These functions only declare; the actions (`entry`, `exit`, `goTo { }`, guards) run later, when the
- * coordinator moves between modes.
+ * These functions only declare; the actions (`entry`, `exit`, `goTo { }`, guards) run later, when the coordinator moves
+ * between modes.
  */
 @RtcDsl
 public class ModeBuilder internal constructor(internal val name: String, private val directory: Path) {
@@ -32,16 +31,19 @@ public class ModeBuilder internal constructor(internal val name: String, private
         private set
 
     /** The reconfiguration of the system for the active modes' network succeeded: `on(done) goTo "running"`. */
-    public val done: NetworkOutcome get() = NetworkOutcome.DONE
+    public val done: NetworkOutcome
+        get() = NetworkOutcome.DONE
 
     /** The reconfiguration failed: `on(failed) goTo "safe"`. */
-    public val failed: NetworkOutcome get() = NetworkOutcome.FAILED
+    public val failed: NetworkOutcome
+        get() = NetworkOutcome.FAILED
 
     /**
-     * The network of the active modes, once done, broke: a component it requires active entered ERROR,
-     * was lost or exited, or a connection it requires was removed: `on(networkBroken) goTo "degraded"`.
+     * The network of the active modes, once done, broke: a component it requires active entered ERROR, was lost or
+     * exited, or a connection it requires was removed: `on(networkBroken) goTo "degraded"`.
      */
-    public val networkBroken: NetworkOutcome get() = NetworkOutcome.BROKEN
+    public val networkBroken: NetworkOutcome
+        get() = NetworkOutcome.BROKEN
 
     /** The sub-mode [name] is the one entered when this mode is entered; required when there are sub-modes. */
     public fun initial(name: String) {
@@ -64,15 +66,19 @@ public class ModeBuilder internal constructor(internal val name: String, private
     }
 
     /**
-     * Declares the network this mode needs. Entering the mode brings the live system to the network of
-     * all active modes (inner ones override outer ones), then raises [done] or [failed].
+     * Declares the network this mode needs. Entering the mode brings the live system to the network of all active modes
+     * (inner ones override outer ones), then raises [done] or [failed].
      */
     public fun network(declare: NetworkBuilder.() -> Unit) {
         (network ?: NetworkBuilder(directory::profile).also { network = it }).declare()
     }
 
-    /** A component, by name or path; for a transition's trigger, a glob, or with [type] every component of that type, as for rules. */
-    public fun component(name: String = "*", type: String? = null): ComponentRef = ComponentRef(Selectors.of(name, type))
+    /**
+     * A component, by name or path; for a transition's trigger, a glob, or with [type] every component of that type, as
+     * for rules.
+     */
+    public fun component(name: String = "*", type: String? = null): ComponentRef =
+        ComponentRef(Selectors.of(name, type))
 
     /** A port, as `component:port`. */
     public fun port(path: String): PortRef = portRef(path)
@@ -95,7 +101,10 @@ public class ModeBuilder internal constructor(internal val name: String, private
     /** Transitions on a naming context's events. */
     public fun on(target: ContextRef): ContextTransitions = ContextTransitions(this, target)
 
-    /** A transition on the outcome of bringing the system to the active modes' network: `on(done)`, `on(failed)`, `on(networkBroken)`. */
+    /**
+     * A transition on the outcome of bringing the system to the active modes' network: `on(done)`, `on(failed)`,
+     * `on(networkBroken)`.
+     */
     public fun on(outcome: NetworkOutcome): TransitionTrigger = add(Trigger.Network(outcome))
 
     /** A transition taken once the mode has been active for [delay] (restarting each time it is entered). */

@@ -2,12 +2,12 @@
 
 package org.rtcoord.dsl
 
+import kotlin.time.Duration
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
 import org.rtcoord.profile.ProfileFormatException
 import org.rtcoord.profile.RtsProfile
-import kotlin.time.Duration
 
 /** A data connection from out-port [from] to in-port [to], each `component:port` (plain names get `.rtc`). */
 public class Link(public val from: String, public val to: String) : ValueObject() {
@@ -17,16 +17,17 @@ public class Link(public val from: String, public val to: String) : ValueObject(
 }
 
 /**
- * The network a mode declares (see [NetworkBuilder]), or that of the active modes merged, inner modes
- * overriding outer ones. It names only what it constrains: components, connections and configuration
- * sets it does not mention are left as they are.
+ * The network a mode declares (see [NetworkBuilder]), or that of the active modes merged, inner modes overriding outer
+ * ones. It names only what it constrains: components, connections and configuration sets it does not mention are left
+ * as they are.
  *
  * @property components whether each component must be ACTIVE (true) or must not be (false).
  * @property connections whether each connection must exist (true) or must not (false).
  * @property configurationSets the configuration set each component must have active.
  * @property stepDeadline how long each step of bringing the system here may take; null: the default.
  */
-public class Network internal constructor(
+public class Network
+internal constructor(
     public val components: Map<String, Boolean>,
     public val connections: Map<Link, Boolean>,
     public val configurationSets: Map<String, String>,
@@ -35,30 +36,46 @@ public class Network internal constructor(
 ) {
     /** One line per kind of constraint, as `check` lists them. */
     public val description: List<String>
-        get() = listOfNotNull(
-            components.filterValues { it }.keys.takeIf { it.isNotEmpty() }?.let { "active ${it.joinToString()}" },
-            components.filterValues { !it }.keys.takeIf { it.isNotEmpty() }?.let { "inactive ${it.joinToString()}" },
-            connections.filterValues { it }.keys.takeIf { it.isNotEmpty() }?.let { "connected ${it.joinToString()}" },
-            connections.filterValues { !it }.keys.takeIf { it.isNotEmpty() }?.let { "not connected ${it.joinToString()}" },
-            configurationSets.takeIf { it.isNotEmpty() }?.let { sets -> "configuration sets ${sets.entries.joinToString { "${it.key}=${it.value}" }}" },
-            stepDeadline?.let { "each step within $it" },
-        )
+        get() =
+            listOfNotNull(
+                components.filterValues { it }.keys.takeIf { it.isNotEmpty() }?.let { "active ${it.joinToString()}" },
+                components
+                    .filterValues { !it }
+                    .keys
+                    .takeIf { it.isNotEmpty() }
+                    ?.let { "inactive ${it.joinToString()}" },
+                connections
+                    .filterValues { it }
+                    .keys
+                    .takeIf { it.isNotEmpty() }
+                    ?.let { "connected ${it.joinToString()}" },
+                connections
+                    .filterValues { !it }
+                    .keys
+                    .takeIf { it.isNotEmpty() }
+                    ?.let { "not connected ${it.joinToString()}" },
+                configurationSets
+                    .takeIf { it.isNotEmpty() }
+                    ?.let { sets -> "configuration sets ${sets.entries.joinToString { "${it.key}=${it.value}" }}" },
+                stepDeadline?.let { "each step within $it" },
+            )
 
     /** This network with [inner]'s constraints taking precedence where both say something. */
-    internal fun overriddenBy(inner: Network): Network = Network(
-        components + inner.components,
-        connections + inner.connections,
-        configurationSets + inner.configurationSets,
-        inner.stepDeadline ?: stepDeadline,
-        properties + inner.properties,
-    )
+    internal fun overriddenBy(inner: Network): Network =
+        Network(
+            components + inner.components,
+            connections + inner.connections,
+            configurationSets + inner.configurationSets,
+            inner.stepDeadline ?: stepDeadline,
+            properties + inner.properties,
+        )
 }
 
 /**
  * Declares the network a mode needs: `network { active("laser0.rtc"); connected("laser0.rtc:laser",
- * "laser_localise0.rtc:laser"); configSet("laser_localise0.rtc", "default") }`, or takes it from an
- * RTSProfile: `network { profile("nav.xml") }`. Components are named as in `component(...)` (a name or a
- * full path, not a pattern); ports as `component:port`.
+ * "laser_localise0.rtc:laser"); configSet("laser_localise0.rtc", "default") }`, or takes it from an RTSProfile:
+ * `network { profile("nav.xml") }`. Components are named as in `component(...)` (a name or a full path, not a pattern);
+ * ports as `component:port`.
  */
 @RtcDsl
 public class NetworkBuilder internal constructor(private val readProfile: (String) -> RtsProfile) {
@@ -96,26 +113,29 @@ public class NetworkBuilder internal constructor(private val readProfile: (Strin
     /** [component] must have configuration set [id] active. */
     public fun configSet(component: String, id: String) {
         val name = component(component)
-        configurationSets[name]?.takeIf { it != id }?.let { problems += "$name is given two configuration sets ($it, $id)" }
+        configurationSets[name]
+            ?.takeIf { it != id }
+            ?.let { problems += "$name is given two configuration sets ($it, $id)" }
         configurationSets[name] = id
     }
 
     /**
-     * Everything the RTSProfile [file] (XML or YAML, relative to the script's directory) says of the
-     * network: its required components active (with [active] false their states are left alone), its
-     * connections made with the profile's connector properties, and each component's active
-     * configuration set. Components are named by the profile's paths (`pathUri`). Optional components
-     * (`isRequired` false) and their connections are left alone, as a restore leaves them. Configuration
-     * values are not written, only sets switched: `restoreProfile(file)` in an entry action writes them.
-     * The file is read when the script is evaluated; one that cannot be read is a problem of the machine.
+     * Everything the RTSProfile [file] (XML or YAML, relative to the script's directory) says of the network: its
+     * required components active (with [active] false their states are left alone), its connections made with the
+     * profile's connector properties, and each component's active configuration set. Components are named by the
+     * profile's paths (`pathUri`). Optional components (`isRequired` false) and their connections are left alone, as a
+     * restore leaves them. Configuration values are not written, only sets switched: `restoreProfile(file)` in an entry
+     * action writes them. The file is read when the script is evaluated; one that cannot be read is a problem of the
+     * machine.
      */
     public fun profile(file: String, active: Boolean = true) {
-        val profile = try {
-            readProfile(file)
-        } catch (e: ProfileFormatException) {
-            problems += "profile ${e.message}"
-            return
-        }
+        val profile =
+            try {
+                readProfile(file)
+            } catch (e: ProfileFormatException) {
+                problems += "profile ${e.message}"
+                return
+            }
         val required = profile.components.filter { it.isRequired }
         val paths = required.associate { it.instanceName to "/" + it.pathUri.removePrefix("/") }
         if (active) required.forEach { active(paths.getValue(it.instanceName)) }
@@ -126,10 +146,13 @@ public class NetworkBuilder internal constructor(private val readProfile: (Strin
             val toPort = connector.target.shortPortName ?: continue
             connected("$from:$fromPort", "$to:$toPort", connector.connectionProperties())
         }
-        required.filter { it.activeConfigurationSet.isNotEmpty() }.forEach { configSet(paths.getValue(it.instanceName), it.activeConfigurationSet) }
+        required
+            .filter { it.activeConfigurationSet.isNotEmpty() }
+            .forEach { configSet(paths.getValue(it.instanceName), it.activeConfigurationSet) }
     }
 
-    internal fun build(): Network = Network(components.toMap(), connections.toMap(), configurationSets.toMap(), stepDeadline, properties.toMap())
+    internal fun build(): Network =
+        Network(components.toMap(), connections.toMap(), configurationSets.toMap(), stepDeadline, properties.toMap())
 
     private fun require(component: String, active: Boolean) {
         if (components[component] == !active) problems += "$component is declared both active and inactive"
@@ -142,7 +165,8 @@ public class NetworkBuilder internal constructor(private val readProfile: (Strin
     }
 
     private fun component(selector: String): String {
-        if (selector.any { it == '*' || it == '?' }) problems += "'$selector' is a pattern; a network names single components"
+        if (selector.any { it == '*' || it == '?' })
+            problems += "'$selector' is a pattern; a network names single components"
         return normalized(selector)
     }
 
@@ -156,8 +180,11 @@ public class NetworkBuilder internal constructor(private val readProfile: (Strin
     }
 
     private companion object {
-        /** A plain name gets `.rtc`, as `component(...)` finds it, so that `laser0` and `laser0.rtc` are one component. */
+        /**
+         * A plain name gets `.rtc`, as `component(...)` finds it, so that `laser0` and `laser0.rtc` are one component.
+         */
         fun normalized(selector: String): String =
-            if (selector.startsWith("/") || selector.startsWith("corbaloc:") || '.' in selector) selector else "$selector.rtc"
+            if (selector.startsWith("/") || selector.startsWith("corbaloc:") || '.' in selector) selector
+            else "$selector.rtc"
     }
 }

@@ -1,14 +1,14 @@
 package org.rtcoord.dsl
 
+import java.nio.file.Path
 import org.rtcoord.EventOptions
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
-import java.nio.file.Path
 
 /**
- * What a script declared, frozen when a coordinator is made: rules, timers, supervisors and mode
- * machines, with plain selectors for what they name. It holds nothing of a run, so one plan can be
- * started any number of times, one run after another or at once on different trees.
+ * What a script declared, frozen when a coordinator is made: rules, timers, supervisors and mode machines, with plain
+ * selectors for what they name. It holds nothing of a run, so one plan can be started any number of times, one run
+ * after another or at once on different trees.
  *
  * @property directory what the script's relative file names (profiles) are relative to.
  */

@@ -1,5 +1,6 @@
 package org.rtcoord.dsl
 
+import kotlin.time.Duration
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.ConfigurationSnapshot
@@ -13,21 +14,23 @@ import org.rtcoord.TransitionOutcome
 import org.rtcoord.dsl.internal.Engine
 import org.rtcoord.dsl.internal.Selectors
 import org.rtcoord.dsl.internal.Undo
-import kotlin.time.Duration
 
 /**
  * A component named in a script: a full path, a name searched on every name server, or a glob pattern
- * (`*_localise?.rtc`) or a type (`component(type = "laser")`, selector `* type=laser`), rules only. A plain selector: the running coordinator resolves it when it is
- * used, and again after the component is re-created, so it never pins one CORBA reference for life. Its
- * actions run in a running coordinator's handlers; they wait for their effect and log what they do.
+ * (`*_localise?.rtc`) or a type (`component(type = "laser")`, selector `* type=laser`), rules only. A plain selector:
+ * the running coordinator resolves it when it is used, and again after the component is re-created, so it never pins
+ * one CORBA reference for life. Its actions run in a running coordinator's handlers; they wait for their effect and log
+ * what they do.
  */
 @RtcDsl
-public class ComponentRef internal constructor(
+public class ComponentRef
+internal constructor(
     /** What the script wrote. */
-    public val selector: String,
+    public val selector: String
 ) {
     /** Whether the selector is a pattern that may match several components: a glob, or a type. */
-    public val isPattern: Boolean get() = Selectors.isPattern(selector)
+    public val isPattern: Boolean
+        get() = Selectors.isPattern(selector)
 
     internal suspend fun node(): ComponentNode = Engine.current().component(selector)
 
@@ -37,32 +40,48 @@ public class ComponentRef internal constructor(
     /** Its state in its default execution context, read now (from the component answering to the name now). */
     public suspend fun state(): LifeCycle = Engine.current().withComponent(selector) { it.state() }
 
-    /** What was last read of it: its profile, ports with their connectors, execution contexts with its state in each. */
+    /**
+     * What was last read of it: its profile, ports with their connectors, execution contexts with its state in each.
+     */
     public suspend fun snapshot(): ComponentSnapshot = node().snapshot()
 
     /**
-     * Its configuration: every set by id with its parameters, and which set is active
-     * ([ConfigurationSnapshot.value] reads a parameter in force); read the first time, kept up to date after.
+     * Its configuration: every set by id with its parameters, and which set is active ([ConfigurationSnapshot.value]
+     * reads a parameter in force); read the first time, kept up to date after.
      */
-    public suspend fun configuration(): ConfigurationSnapshot = Engine.current().withComponent(selector) { it.configuration() }
+    public suspend fun configuration(): ConfigurationSnapshot =
+        Engine.current().withComponent(selector) { it.configuration() }
 
     /**
-     * Activates it and waits until it is ACTIVE, within [deadline] (the tree's call timeout by default);
-     * one that gets there after its context answered `RTC_ERROR` (its transition timeout passed first) is
-     * logged as slow, not failed. Undone by a deactivation.
+     * Activates it and waits until it is ACTIVE, within [deadline] (the tree's call timeout by default); one that gets
+     * there after its context answered `RTC_ERROR` (its transition timeout passed first) is logged as slow, not failed.
+     * Undone by a deactivation.
      */
     public suspend fun activate(deadline: Duration? = null): Unit =
-        Engine.current().let { engine -> engine.actReversibly("activate", this) { engine.noteSlow(it.activate(deadline = deadline)); { deactivate() } } }
-
-    /** Deactivates it and waits until it is INACTIVE, within [deadline], slow ones as [activate]. Undone by an activation. */
-    public suspend fun deactivate(deadline: Duration? = null): Unit =
-        Engine.current().let { engine -> engine.actReversibly("deactivate", this) { engine.noteSlow(it.deactivate(deadline = deadline)); { activate() } } }
+        Engine.current().let { engine ->
+            engine.actReversibly("activate", this) {
+                engine.noteSlow(it.activate(deadline = deadline));
+                { deactivate() }
+            }
+        }
 
     /**
-     * Resets it from ERROR and waits until it is INACTIVE, within [deadline], slow ones as [activate]. A
-     * reset whose `on_reset` fails is told from a slow one only at [deadline] (the component stays in ERROR
-     * either way, and says nothing): a script that goes on without a component it cannot reset chooses how
-     * long a reset may take, `attempt { reset(deadline = 1.seconds) }`.
+     * Deactivates it and waits until it is INACTIVE, within [deadline], slow ones as [activate]. Undone by an
+     * activation.
+     */
+    public suspend fun deactivate(deadline: Duration? = null): Unit =
+        Engine.current().let { engine ->
+            engine.actReversibly("deactivate", this) {
+                engine.noteSlow(it.deactivate(deadline = deadline));
+                { activate() }
+            }
+        }
+
+    /**
+     * Resets it from ERROR and waits until it is INACTIVE, within [deadline], slow ones as [activate]. A reset whose
+     * `on_reset` fails is told from a slow one only at [deadline] (the component stays in ERROR either way, and says
+     * nothing): a script that goes on without a component it cannot reset chooses how long a reset may take, `attempt {
+     * reset(deadline = 1.seconds) }`.
      */
     public suspend fun reset(deadline: Duration? = null): Unit =
         Engine.current().let { engine -> engine.act("reset", this) { engine.noteSlow(it.reset(deadline = deadline)) } }
@@ -86,9 +105,9 @@ public class ComponentRef internal constructor(
     }
 
     /**
-     * Sets parameters of its active configuration set (or of `inSet(...)`'s set), all in one change:
-     * `configure { set("gain", "2.0") }`. An unknown parameter or a value the component refuses changes none.
-     * A value outside the constraint the component declares is written, as OpenRTM-aist writes it, and logged as a warning.
+     * Sets parameters of its active configuration set (or of `inSet(...)`'s set), all in one change: `configure {
+     * set("gain", "2.0") }`. An unknown parameter or a value the component refuses changes none. A value outside the
+     * constraint the component declares is written, as OpenRTM-aist writes it, and logged as a warning.
      */
     public suspend fun configure(changes: ConfigurationChanges.() -> Unit) {
         val requested = ConfigurationChanges().apply(changes)
@@ -99,7 +118,8 @@ public class ComponentRef internal constructor(
     }
 
     /** Makes configuration set [id] the active one. */
-    public suspend fun activateConfigSet(id: String): Unit = Engine.current().act("activate configuration set $id", this) { it.activateConfigurationSet(id) }
+    public suspend fun activateConfigSet(id: String): Unit =
+        Engine.current().act("activate configuration set $id", this) { it.activateConfigurationSet(id) }
 
     /** Its port [name]. */
     public fun port(name: String): PortRef = PortRef(this, name)
@@ -115,19 +135,31 @@ public class PortRef internal constructor(public val component: ComponentRef, pu
     /** What was last read of it: its kind, data type, properties and connectors (ids, names, properties). */
     public suspend fun snapshot(): PortSnapshot = port().snapshot()
 
-    /** Its connections, read now, each with both its ends ([Connection.ports]: OpenRTM's full name and, where known, the path). */
+    /**
+     * Its connections, read now, each with both its ends ([Connection.ports]: OpenRTM's full name and, where known, the
+     * path).
+     */
     public suspend fun connections(): List<Connection> = port().connections()
 
     /**
-     * The ports at the far end of its connections, read now, each once: what a connector's snapshot alone
-     * does not say. `port("laser0.rtc:laser").peers()` gives `[laser_localise0.rtc:laser]`-like refs,
-     * named by path where the tree knows the far component, else by OpenRTM's `instance.port`.
+     * The ports at the far end of its connections, read now, each once: what a connector's snapshot alone does not say.
+     * `port("laser0.rtc:laser").peers()` gives `[laser_localise0.rtc:laser]`-like refs, named by path where the tree
+     * knows the far component, else by OpenRTM's `instance.port`.
      */
     public suspend fun peers(): List<PortRef> {
         val here = port()
-        return here.connections().flatMap { it.ports }.filter { it.path != here.path }.map { end ->
-            end.path?.let { portRef(it.toString()) } ?: PortRef(ComponentRef(end.fullName.substringBeforeLast('.')), end.fullName.substringAfterLast('.'))
-        }.distinctBy { it.toString() }
+        return here
+            .connections()
+            .flatMap { it.ports }
+            .filter { it.path != here.path }
+            .map { end ->
+                end.path?.let { portRef(it.toString()) }
+                    ?: PortRef(
+                        ComponentRef(end.fullName.substringBeforeLast('.')),
+                        end.fullName.substringAfterLast('.'),
+                    )
+            }
+            .distinctBy { it.toString() }
     }
 
     /** Disconnects every connection of this port. Undone by making the same connections again. */
@@ -148,7 +180,8 @@ public class PortRef internal constructor(public val component: ComponentRef, pu
 @RtcDsl
 public class ManagerRef internal constructor(public val selector: String) {
     /** Creates a component of [type] (named [name], or as the manager names it) and returns it. */
-    public suspend fun create(type: String, name: String? = null): ComponentRef = Engine.current().create(this, type, name)
+    public suspend fun create(type: String, name: String? = null): ComponentRef =
+        Engine.current().create(this, type, name)
 
     /** Deletes component [instanceName] through the manager that hosts it. */
     public suspend fun delete(instanceName: String): Unit = Engine.current().delete(this, instanceName)
@@ -183,7 +216,8 @@ public class ConfigurationChanges internal constructor() {
         set = id
     }
 
-    internal fun describe(): String = values.entries.joinToString { "${it.key}=${it.value}" } + (set?.let { " in $it" } ?: "")
+    internal fun describe(): String =
+        values.entries.joinToString { "${it.key}=${it.value}" } + (set?.let { " in $it" } ?: "")
 }
 
 /** The port [path] names, as `component:port`. */
@@ -194,11 +228,14 @@ internal fun portRef(path: String): PortRef {
 }
 
 /** [port] as a port: a [PortRef] or `component:port` text. */
-internal fun portOf(port: Any): PortRef = when (port) {
-    is PortRef -> port
-    is String -> portRef(port)
-    else -> throw IllegalArgumentException("not a port: $port (a port(...) or \"component:port\")")
-}
+internal fun portOf(port: Any): PortRef =
+    when (port) {
+        is PortRef -> port
+        is String -> portRef(port)
+        else -> throw IllegalArgumentException("not a port: $port (a port(...) or \"component:port\")")
+    }
 
 /** How to undo the removal of [connections]: make each again. */
-internal fun reconnecting(connections: List<Connection>, engine: Engine): Undo = { connections.forEach { engine.reconnect(it) } }
+internal fun reconnecting(connections: List<Connection>, engine: Engine): Undo = {
+    connections.forEach { engine.reconnect(it) }
+}

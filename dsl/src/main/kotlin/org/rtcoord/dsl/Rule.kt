@@ -1,32 +1,44 @@
 package org.rtcoord.dsl
 
-import org.rtcoord.RtcEvent
 import kotlin.time.Duration
+import org.rtcoord.RtcEvent
 
 /** What a rule watches: a component (or pattern), a port, a manager or a naming context. */
 internal sealed class Target {
-    /** What a run follows for this target's events when it names components: a name (followed through re-creation) or a pattern (covering every match, as they come). */
-    open val followedName: String? get() = null
+    /**
+     * What a run follows for this target's events when it names components: a name (followed through re-creation) or a
+     * pattern (covering every match, as they come).
+     */
+    open val followedName: String?
+        get() = null
 
     /** What tells two targets apart: equal keys watch the same thing. */
     abstract val key: String
 
     class Component(val ref: ComponentRef) : Target() {
-        override val followedName: String get() = ref.selector
-        override val key: String get() = "component ${ref.selector}"
+        override val followedName: String
+            get() = ref.selector
+
+        override val key: String
+            get() = "component ${ref.selector}"
     }
 
     class Port(val ref: PortRef) : Target() {
-        override val followedName: String get() = ref.component.selector
-        override val key: String get() = "component ${ref.component.selector}"
+        override val followedName: String
+            get() = ref.component.selector
+
+        override val key: String
+            get() = "component ${ref.component.selector}"
     }
 
     class Manager(val ref: ManagerRef) : Target() {
-        override val key: String get() = "manager ${ref.selector}"
+        override val key: String
+            get() = "manager ${ref.selector}"
     }
 
     class Context(val ref: ContextRef) : Target() {
-        override val key: String get() = "context ${ref.path}"
+        override val key: String
+            get() = "context ${ref.path}"
     }
 }
 
@@ -36,8 +48,11 @@ internal class Rule<E : RtcEvent>(
     val guards: List<suspend Reaction.(RtcEvent) -> Boolean>,
     val handler: suspend Reaction.(E) -> Unit,
 ) {
-    val description: String get() = pattern.description
-    val target: Target get() = pattern.target
+    val description: String
+        get() = pattern.description
+
+    val target: Target
+        get() = pattern.target
 }
 
 /** A timer: [action] after [delay], then every [period] if there is one; [subject] names its runs in the log. */

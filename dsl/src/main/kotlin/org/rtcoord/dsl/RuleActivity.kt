@@ -2,6 +2,7 @@
 
 package org.rtcoord.dsl
 
+import java.time.Instant
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
@@ -9,15 +10,15 @@ import kotlinx.coroutines.flow.update
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.ValueObject
 import org.rtcoord.internal.ValueFields
-import java.time.Instant
 
 /**
- * What one rule of a running [Coordinator] has done: how often it fired, when last, and how its
- * handler failed. Safe to read from any thread; each change is a new [Status].
+ * What one rule of a running [Coordinator] has done: how often it fired, when last, and how its handler failed. Safe to
+ * read from any thread; each change is a new [Status].
  */
-public class RuleActivity internal constructor(
+public class RuleActivity
+internal constructor(
     /** The rule as the script declared it, `component laser0.rtc: state ERROR`. */
-    public val description: String,
+    public val description: String
 ) {
     /** A rule's record at one moment; each change is a new one. */
     public class Status(
@@ -34,7 +35,8 @@ public class RuleActivity internal constructor(
         /** How many of its handler runs have started and not returned yet. */
         public val running: Int = 0,
     ) : ValueObject() {
-        @JvmSynthetic internal fun copy(
+        @JvmSynthetic
+        internal fun copy(
             firings: Int = this.firings,
             lastFired: Instant? = this.lastFired,
             lastEvent: String? = this.lastEvent,
@@ -45,7 +47,11 @@ public class RuleActivity internal constructor(
 
         override fun fields(): ValueFields =
             ValueFields(
-                "firings" to firings, "lastFired" to lastFired, "lastEvent" to lastEvent, "failures" to failures, "lastFailure" to lastFailure,
+                "firings" to firings,
+                "lastFired" to lastFired,
+                "lastEvent" to lastEvent,
+                "failures" to failures,
+                "lastFailure" to lastFailure,
                 "running" to running,
             )
     }
@@ -56,7 +62,9 @@ public class RuleActivity internal constructor(
     public val status: StateFlow<Status> = current.asStateFlow()
 
     internal fun fired(event: String) {
-        current.update { it.copy(firings = it.firings + 1, lastFired = Instant.now(), lastEvent = event, running = it.running + 1) }
+        current.update {
+            it.copy(firings = it.firings + 1, lastFired = Instant.now(), lastEvent = event, running = it.running + 1)
+        }
     }
 
     internal fun returned() {

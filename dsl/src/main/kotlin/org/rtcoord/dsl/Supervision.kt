@@ -4,23 +4,23 @@ import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 
 /**
- * A supervisor, as a script declares it with `supervise(component("a.rtc"), component("b.rtc")) { ... }`:
- * the components in their declared order, the [strategy], the restart intensity ([maxRestarts]), the
- * [backoff] and the [restart] type. A [org.rtcoord.dsl.Coordinator] runs it:
+ * A supervisor, as a script declares it with `supervise(component("a.rtc"), component("b.rtc")) { ... }`: the
+ * components in their declared order, the [strategy], the restart intensity ([maxRestarts]), the [backoff] and the
+ * [restart] type. A [org.rtcoord.dsl.Coordinator] runs it:
  *
  * - a component that enters ERROR is reset and activated again;
- * - one that is lost (no heartbeat, unreachable) is reset and activated if it still answers, else
- *   re-created through the manager that hosted it (or that manager's master) with the same type and
- *   name, its connections made again and its active configuration set restored, then activated;
+ * - one that is lost (no heartbeat, unreachable) is reset and activated if it still answers, else re-created through
+ *   the manager that hosted it (or that manager's master) with the same type and name, its connections made again and
+ *   its active configuration set restored, then activated;
  * - one that exits is re-created the same way if it is [permanent];
- * - the [strategy] decides which of the others are restarted with it: stopped in reverse declared order
- *   before, started in declared order after;
+ * - the [strategy] decides which of the others are restarted with it: stopped in reverse declared order before, started
+ *   in declared order after;
  * - a failure beyond [maxRestarts] escalates: [onEscalation] handlers run and the supervisor stops.
  *
- * A component whose registration vanishes is noticed by its own events: it exited, or it stopped
- * answering. A component that still runs but was unbound from naming has not failed. Connections are
- * recorded when the supervisor starts and as they are made; one removed while all its supervised
- * components run normally is removed on purpose and not made again.
+ * A component whose registration vanishes is noticed by its own events: it exited, or it stopped answering. A component
+ * that still runs but was unbound from naming has not failed. Connections are recorded when the supervisor starts and
+ * as they are made; one removed while all its supervised components run normally is removed on purpose and not made
+ * again.
  *
  * Every step goes to the coordinator's log; a step that fails is logged with the object it concerned.
  */
@@ -28,7 +28,9 @@ import kotlin.time.Duration.Companion.seconds
 public class Supervision internal constructor(internal val children: List<ComponentRef>) {
     init {
         require(children.isNotEmpty()) { "supervise needs at least one component" }
-        children.firstOrNull { it.isPattern }?.let { throw IllegalArgumentException("cannot supervise '$it': it is a pattern; name each component") }
+        children
+            .firstOrNull { it.isPattern }
+            ?.let { throw IllegalArgumentException("cannot supervise '$it': it is a pattern; name each component") }
         val twice = children.groupBy { it.selector }.filterValues { it.size > 1 }.keys
         require(twice.isEmpty()) { "cannot supervise ${twice.joinToString()} twice in one supervisor" }
     }
@@ -49,25 +51,32 @@ public class Supervision internal constructor(internal val children: List<Compon
     public var restart: RestartType = RestartType.PERMANENT
 
     /** Restart only the failed component. */
-    public val oneForOne: Strategy get() = Strategy.ONE_FOR_ONE
+    public val oneForOne: Strategy
+        get() = Strategy.ONE_FOR_ONE
 
     /** Restart every component. */
-    public val oneForAll: Strategy get() = Strategy.ONE_FOR_ALL
+    public val oneForAll: Strategy
+        get() = Strategy.ONE_FOR_ALL
 
     /** Restart the failed component and those declared after it. */
-    public val restForOne: Strategy get() = Strategy.REST_FOR_ONE
+    public val restForOne: Strategy
+        get() = Strategy.REST_FOR_ONE
 
     /** Restarted after failures and after exits. */
-    public val permanent: RestartType get() = RestartType.PERMANENT
+    public val permanent: RestartType
+        get() = RestartType.PERMANENT
 
     /** Restarted after failures only. */
-    public val transient: RestartType get() = RestartType.TRANSIENT
+    public val transient: RestartType
+        get() = RestartType.TRANSIENT
 
     /** Never restarted. */
-    public val temporary: RestartType get() = RestartType.TEMPORARY
+    public val temporary: RestartType
+        get() = RestartType.TEMPORARY
 
     /** No wait between restarts. */
-    public val immediately: Backoff get() = Backoff.NONE
+    public val immediately: Backoff
+        get() = Backoff.NONE
 
     /** [maxRestarts] restarts within [period]: `3 within 60.seconds`. */
     public infix fun Int.within(period: Duration): RestartIntensity = RestartIntensity(this, period)
@@ -77,14 +86,21 @@ public class Supervision internal constructor(internal val children: List<Compon
 
     /** Gives the supervised component [component] its own [restart] type: `child(logger, restart = temporary)`. */
     public fun child(component: ComponentRef, restart: RestartType) {
-        require(component in children) { "'$component' is not supervised here (supervised: ${children.joinToString()})" }
+        require(component in children) {
+            "'$component' is not supervised here (supervised: ${children.joinToString()})"
+        }
         restartOverrides[component] = restart
     }
 
     /** [child] by the name or path the component was given in `supervise(...)`. */
     public fun child(name: String, restart: RestartType) {
-        child(children.firstOrNull { it.selector == name || it.selector == "$name.rtc" || "${it.selector}.rtc" == name }
-            ?: throw IllegalArgumentException("'$name' is not supervised here (supervised: ${children.joinToString()})"), restart)
+        child(
+            children.firstOrNull { it.selector == name || it.selector == "$name.rtc" || "${it.selector}.rtc" == name }
+                ?: throw IllegalArgumentException(
+                    "'$name' is not supervised here (supervised: ${children.joinToString()})"
+                ),
+            restart,
+        )
     }
 
     /** Runs [handler] when the supervisor gives up; it may act on the system like a rule's handler. */
@@ -95,10 +111,12 @@ public class Supervision internal constructor(internal val children: List<Compon
     internal fun restartOf(component: ComponentRef): RestartType = restartOverrides[component] ?: restart
 
     /** What the supervisor is called in the log: its components' names. */
-    internal val name: String get() = "supervisor(${children.joinToString()})"
+    internal val name: String
+        get() = "supervisor(${children.joinToString()})"
 
     /** One line: what `check` shows. */
     public val description: String
-        get() = "supervise ${children.joinToString()}: $strategy, at most $maxRestarts, back-off $backoff, $restart" +
-            restartOverrides.entries.joinToString("") { (child, type) -> ", $child $type" }
+        get() =
+            "supervise ${children.joinToString()}: $strategy, at most $maxRestarts, back-off $backoff, $restart" +
+                restartOverrides.entries.joinToString("") { (child, type) -> ", $child $type" }
 }

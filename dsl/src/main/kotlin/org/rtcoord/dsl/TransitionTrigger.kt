@@ -3,8 +3,8 @@ package org.rtcoord.dsl
 import kotlin.time.Duration
 
 /**
- * The outcome of bringing the live system to a mode's network, and what happens to it after:
- * `on(done) goTo "running"`, `on(failed) goTo "safe"`, `on(networkBroken) goTo "degraded"`.
+ * The outcome of bringing the live system to a mode's network, and what happens to it after: `on(done) goTo "running"`,
+ * `on(failed) goTo "safe"`, `on(networkBroken) goTo "degraded"`.
  */
 public enum class NetworkOutcome(private val text: String) {
     /** The live system was read back and matches the network the active modes declare. */
@@ -14,9 +14,8 @@ public enum class NetworkOutcome(private val text: String) {
     FAILED("failed"),
 
     /**
-     * After [DONE], the network broke: a component it requires active entered ERROR, was lost, became
-     * unreachable or exited, or a connection it requires was removed. Raised once per network brought
-     * about; each breach is logged.
+     * After [DONE], the network broke: a component it requires active entered ERROR, was lost, became unreachable or
+     * exited, or a connection it requires was removed. Raised once per network brought about; each breach is logged.
      */
     BROKEN("networkBroken");
 
@@ -29,25 +28,29 @@ internal sealed class Trigger {
     abstract val description: String
 
     /** How the script declared it: `on laser0.rtc enters ERROR`, `on done`, `after 5s`. */
-    val declaration: String get() = if (this is Timeout) description else "on $description"
+    val declaration: String
+        get() = if (this is Timeout) description else "on $description"
 
     class Event(val pattern: EventPattern<*>) : Trigger() {
-        override val description: String get() = pattern.description
+        override val description: String
+            get() = pattern.description
     }
 
     class Network(val outcome: NetworkOutcome) : Trigger() {
-        override val description: String get() = outcome.toString()
+        override val description: String
+            get() = outcome.toString()
     }
 
     class Timeout(val delay: Duration) : Trigger() {
-        override val description: String get() = "after $delay"
+        override val description: String
+            get() = "after $delay"
     }
 }
 
 /**
  * A transition being declared: its trigger, narrowed by guards, completed by [goTo]:
- * `on(component("laser0.rtc")).state(ERROR).where { ... } goTo "degraded"`. A trigger without a
- * [goTo] is an error when the machine is checked.
+ * `on(component("laser0.rtc")).state(ERROR).where { ... } goTo "degraded"`. A trigger without a [goTo] is an error when
+ * the machine is checked.
  */
 @RtcDsl
 public class TransitionTrigger internal constructor(internal val trigger: Trigger) {
@@ -57,8 +60,8 @@ public class TransitionTrigger internal constructor(internal val trigger: Trigge
         private set
 
     /**
-     * Takes the transition only when [guard] holds; its [Reaction.event] is the triggering event (null
-     * for `done`, `failed` and `after`). Guards are checked in order, deepest mode first.
+     * Takes the transition only when [guard] holds; its [Reaction.event] is the triggering event (null for `done`,
+     * `failed` and `after`). Guards are checked in order, deepest mode first.
      */
     public fun where(guard: suspend Reaction.() -> Boolean): TransitionTrigger = apply { guards += guard }
 

@@ -2,9 +2,12 @@ package org.rtcoord.dsl
 
 import org.rtcoord.LifeCycle
 
-/** The events of a component that can trigger a transition: `on(component("laser0.rtc")).state(ERROR) goTo "degraded"`. */
+/**
+ * The events of a component that can trigger a transition: `on(component("laser0.rtc")).state(ERROR) goTo "degraded"`.
+ */
 @RtcDsl
-public class ComponentTransitions internal constructor(private val mode: ModeBuilder, private val target: ComponentRef) {
+public class ComponentTransitions
+internal constructor(private val mode: ModeBuilder, private val target: ComponentRef) {
     /** When the component enters [state] (in any execution context). */
     public fun state(state: LifeCycle): TransitionTrigger = mode.trigger(EventPatterns.state(target, state))
 
@@ -14,7 +17,9 @@ public class ComponentTransitions internal constructor(private val mode: ModeBui
     /** On every lifecycle change. */
     public fun stateChanged(): TransitionTrigger = mode.trigger(EventPatterns.stateChanged(target))
 
-    /** When the effective value of configuration parameter [name] changes (set in the active set, or by a set switch). */
+    /**
+     * When the effective value of configuration parameter [name] changes (set in the active set, or by a set switch).
+     */
     public fun configParam(name: String): TransitionTrigger = mode.trigger(EventPatterns.configParam(target, name))
 
     /** When another configuration set becomes active. */

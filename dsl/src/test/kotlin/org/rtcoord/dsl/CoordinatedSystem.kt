@@ -1,23 +1,22 @@
 package org.rtcoord.dsl
 
+import java.nio.file.Path
+import java.nio.file.Paths
+import java.util.concurrent.CopyOnWriteArrayList
 import org.junit.jupiter.api.AfterEach
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.WatchMode
-import org.rtcoord.dsl.Coordinator
 import org.rtcoord.runtime.RtSystem
 import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.naming.NamingService
-import java.nio.file.Path
-import java.nio.file.Paths
-import java.util.concurrent.CopyOnWriteArrayList
 
 /**
- * What a coordinator test runs against, made for each test and closed after it: a naming service, a
- * fixture system registered in it (the localisation system unless the test declares its own), a tree
- * for the coordinator, a [witness] tree to read results back with, and the coordinator's [log].
+ * What a coordinator test runs against, made for each test and closed after it: a naming service, a fixture system
+ * registered in it (the localisation system unless the test declares its own), a tree for the coordinator, a [witness]
+ * tree to read results back with, and the coordinator's [log].
  *
  * @param declareSystem the system to start, given the naming service's `corbaloc`.
  * @param options how the coordinators of the test watch, unless a call says otherwise.
@@ -39,10 +38,12 @@ abstract class CoordinatedSystem(
     protected val log: MutableList<String> = CopyOnWriteArrayList()
 
     /** The naming context the fixtures register their components in. */
-    protected val host: String get() = "/${naming.address}/${RuntimeProcess.hostContext}"
+    protected val host: String
+        get() = "/${naming.address}/${RuntimeProcess.hostContext}"
 
     /** What a coordinator resolves the script's relative file names against. */
-    protected open val scriptDirectory: Path get() = Paths.get("")
+    protected open val scriptDirectory: Path
+        get() = Paths.get("")
 
     /** The full path of [name] (a component, or a port as `component.rtc:port`) in [host]. */
     protected fun path(name: String): String = "$host/$name"

@@ -23,7 +23,11 @@ class DataLivenessTest {
     fun `time while the component is not ACTIVE does not count`() {
         val liveness = DataLiveness(start = 0, silenceMillis = 500, minRate = null)
         assertEquals(Finding.NOTHING, liveness.check(2000, active = false))
-        assertEquals(Finding.NOTHING, liveness.check(2400, active = true), "silence counts from when it was seen ACTIVE")
+        assertEquals(
+            Finding.NOTHING,
+            liveness.check(2400, active = true),
+            "silence counts from when it was seen ACTIVE",
+        )
         assertEquals(Finding.Silent(500), liveness.check(2500, active = true))
     }
 

@@ -1,5 +1,8 @@
 package org.rtcoord.dsl
 
+import java.nio.file.Paths
+import java.time.Instant
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.test.advanceTimeBy
 import kotlinx.coroutines.test.runCurrent
@@ -14,10 +17,6 @@ import org.rtcoord.dsl.internal.Configurator
 import org.rtcoord.dsl.internal.Engine
 import org.rtcoord.dsl.internal.Identities
 import org.rtcoord.dsl.internal.MachineInterpreter
-import org.rtcoord.dsl.ModeTransition
-import java.nio.file.Paths
-import java.time.Instant
-import kotlin.time.Duration.Companion.seconds
 
 /** The state machine core on virtual time: timeouts, nesting, entry and exit order, without a live system. */
 class MachineInterpreterTest {
@@ -25,42 +24,50 @@ class MachineInterpreterTest {
     fun `timeouts move the machine, outer ones keep running in sub-modes, and a left mode's timers stop`() = runTest {
         val trace = mutableListOf<String>()
         val failures = mutableListOf<String>()
-        val machine = Coordination(emptyList(), TreeConfig()).modes("m") {
-            initial("a")
-            mode("a") {
-                entry { trace += "enter a at ${testScheduler.currentTime}" }
-                exit { trace += "exit a" }
-                after(5.seconds) goTo "b"
-            }
-            mode("b") {
-                entry { trace += "enter b" }
-                exit { trace += "exit b" }
-                initial("b1")
-                after(10.seconds).goTo("a") { trace += "action b -> a" }
-                mode("b1") {
-                    exit { trace += "exit b1" }
-                    after(2.seconds) goTo "b2"
-                    // Cancelled when b1 is left at 7 s; had it fired at 25 s it would count as unconsumed.
-                    after(20.seconds) goTo "a"
+        val machine =
+            Coordination(emptyList(), TreeConfig()).modes("m") {
+                initial("a")
+                mode("a") {
+                    entry { trace += "enter a at ${testScheduler.currentTime}" }
+                    exit { trace += "exit a" }
+                    after(5.seconds) goTo "b"
                 }
-                mode("b2") {
-                    entry { trace += "enter b2 at ${testScheduler.currentTime}" }
-                    exit { trace += "exit b2" }
+                mode("b") {
+                    entry { trace += "enter b" }
+                    exit { trace += "exit b" }
+                    initial("b1")
+                    after(10.seconds).goTo("a") { trace += "action b -> a" }
+                    mode("b1") {
+                        exit { trace += "exit b1" }
+                        after(2.seconds) goTo "b2"
+                        // Cancelled when b1 is left at 7 s; had it fired at 25 s it would count as unconsumed.
+                        after(20.seconds) goTo "a"
+                    }
+                    mode("b2") {
+                        entry { trace += "enter b2 at ${testScheduler.currentTime}" }
+                        exit { trace += "exit b2" }
+                    }
                 }
             }
-        }
         val engine = engine(backgroundScope)
-        val interpreter = MachineInterpreter(
-            machine, backgroundScope, engine, Configurator(engine, backgroundScope), log = {}, failed = { what, e -> failures += "$what: $e" },
-            now = { Instant.ofEpochMilli(testScheduler.currentTime) },
-        )
+        val interpreter =
+            MachineInterpreter(
+                machine,
+                backgroundScope,
+                engine,
+                Configurator(engine, backgroundScope),
+                log = {},
+                failed = { what, e -> failures += "$what: $e" },
+                now = { Instant.ofEpochMilli(testScheduler.currentTime) },
+            )
         interpreter.start()
         runCurrent()
         assertEquals("m/a", interpreter.running.mode.value)
 
         advanceTimeBy(31.seconds)
         runCurrent()
-        fun move(from: String?, to: String, trigger: String, seconds: Long) = ModeTransition(from, to, trigger, Instant.ofEpochSecond(seconds))
+        fun move(from: String?, to: String, trigger: String, seconds: Long) =
+            ModeTransition(from, to, trigger, Instant.ofEpochSecond(seconds))
         assertEquals(
             listOf(
                 move(null, "m/a", "start", 0),
@@ -75,7 +82,15 @@ class MachineInterpreterTest {
         )
         assertEquals(
             listOf(
-                "enter a at 0", "exit a", "enter b", "exit b1", "enter b2 at 7000", "exit b2", "exit b", "action b -> a", "enter a at 15000",
+                "enter a at 0",
+                "exit a",
+                "enter b",
+                "exit b1",
+                "enter b2 at 7000",
+                "exit b2",
+                "exit b",
+                "action b -> a",
+                "enter a at 15000",
             ),
             trace.take(9),
         )
@@ -86,13 +101,22 @@ class MachineInterpreterTest {
     @Test
     fun `a failing entry action is reported and the machine still enters the mode`() = runTest {
         val failures = mutableListOf<String>()
-        val machine = Coordination(emptyList(), TreeConfig()).modes("m") {
-            initial("a")
-            mode("a") { after(1.seconds) goTo "b" }
-            mode("b") { entry { error("cannot start b") } }
-        }
+        val machine =
+            Coordination(emptyList(), TreeConfig()).modes("m") {
+                initial("a")
+                mode("a") { after(1.seconds) goTo "b" }
+                mode("b") { entry { error("cannot start b") } }
+            }
         val engine = engine(backgroundScope)
-        val interpreter = MachineInterpreter(machine, backgroundScope, engine, Configurator(engine, backgroundScope), log = {}, failed = { what, e -> failures += "$what: ${e.message}" })
+        val interpreter =
+            MachineInterpreter(
+                machine,
+                backgroundScope,
+                engine,
+                Configurator(engine, backgroundScope),
+                log = {},
+                failed = { what, e -> failures += "$what: ${e.message}" },
+            )
         interpreter.start()
         advanceTimeBy(2.seconds)
         runCurrent()
@@ -102,9 +126,9 @@ class MachineInterpreterTest {
 
     private val tree = RtcTree()
 
-    @AfterEach
-    fun closeTree() = tree.close()
+    @AfterEach fun closeTree() = tree.close()
 
     /** An engine on a tree that knows no name server: these machines never act on the system. */
-    private fun engine(scope: CoroutineScope) = Engine(tree, Identities(tree, EventOptions(), scope, {}, emptyMap()), Paths.get(""), {})
+    private fun engine(scope: CoroutineScope) =
+        Engine(tree, Identities(tree, EventOptions(), scope, {}, emptyMap()), Paths.get(""), {})
 }

@@ -1,5 +1,10 @@
 package org.rtcoord.dsl
 
+import java.nio.file.Files
+import java.nio.file.Path
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
+import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Test
@@ -8,11 +13,6 @@ import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
-import java.nio.file.Files
-import java.nio.file.Path
-import kotlinx.coroutines.runBlocking
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.seconds
 
 /** A machine that cannot run is rejected when its declaration ends, naming the machine, the mode and the reason. */
 class MachineValidationTest {
@@ -23,18 +23,23 @@ class MachineValidationTest {
 
     @Test
     fun `a valid machine is kept as an inspectable model`() {
-        val machine = coordination.modes("m") {
-            initial("a")
-            mode("a") {
-                network { active("laser0"); connected("laser0:laser", "laser_localise0.rtc:laser"); configSet("laser_localise0", "precise") }
-                on(component("laser0.rtc")).state(ERROR).where { true } goTo "b"
+        val machine =
+            coordination.modes("m") {
+                initial("a")
+                mode("a") {
+                    network {
+                        active("laser0")
+                        connected("laser0:laser", "laser_localise0.rtc:laser")
+                        configSet("laser_localise0", "precise")
+                    }
+                    on(component("laser0.rtc")).state(ERROR).where { true } goTo "b"
+                }
+                mode("b") {
+                    entry {}
+                    initial("b1")
+                    mode("b1") { after(5.seconds) goTo "a" }
+                }
             }
-            mode("b") {
-                entry { }
-                initial("b1")
-                mode("b1") { after(5.seconds) goTo "a" }
-            }
-        }
         assertEquals(listOf("m/a", "m/b", "m/b/b1"), machine.modes.map { it.path })
         assertEquals(mapOf("laser0.rtc" to true), machine.modes[0].network?.components, "plain names get .rtc")
         assertEquals(
@@ -56,7 +61,9 @@ class MachineValidationTest {
     @Test
     fun `a transition to an unknown mode`() {
         assertEquals(
-            listOf("mode 'm/a': transition on laser0.rtc enters ERROR goes to unknown mode 'degaded' (modes: a, degraded)"),
+            listOf(
+                "mode 'm/a': transition on laser0.rtc enters ERROR goes to unknown mode 'degaded' (modes: a, degraded)"
+            ),
             problems {
                 initial("a")
                 mode("a") { on(component("laser0.rtc")).state(ERROR) goTo "degaded" }
@@ -67,15 +74,22 @@ class MachineValidationTest {
 
     @Test
     fun `an unreachable mode, reported at its outermost unreachable level`() {
-        val failure = assertThrows(InvalidMachineException::class.java) {
-            coordination.modes("m") {
-                initial("a")
-                mode("a") { on(done) goTo "b" }
-                mode("b")
-                mode("island") { initial("shore"); mode("shore") { after(1.seconds) goTo "a" } }
+        val failure =
+            assertThrows(InvalidMachineException::class.java) {
+                coordination.modes("m") {
+                    initial("a")
+                    mode("a") { on(done) goTo "b" }
+                    mode("b")
+                    mode("island") {
+                        initial("shore")
+                        mode("shore") { after(1.seconds) goTo "a" }
+                    }
+                }
             }
-        }
-        assertEquals("machine 'm': mode 'm/island' is unreachable: no transition leads to it or into it", failure.message)
+        assertEquals(
+            "machine 'm': mode 'm/island' is unreachable: no transition leads to it or into it",
+            failure.message,
+        )
     }
 
     @Test
@@ -85,26 +99,64 @@ class MachineValidationTest {
             problems {
                 initial("a")
                 mode("a") { on(failed) goTo "deep" }
-                mode("outer") { initial("first"); mode("first"); mode("deep") }
+                mode("outer") {
+                    initial("first")
+                    mode("first")
+                    mode("deep")
+                }
             },
         )
     }
 
     @Test
     fun `missing, misplaced and wrong initial modes`() {
-        assertEquals(listOf("the machine has sub-modes (a, b) but no initial(...)"), problems { mode("a"); mode("b") })
         assertEquals(
-            listOf("mode 'm/a': initial mode 'q' is not one of its sub-modes (x)", "mode 'm/a/x' declares initial 'y' but has no sub-modes"),
-            problems { initial("a"); mode("a") { initial("q"); mode("x") { initial("y") } } },
+            listOf("the machine has sub-modes (a, b) but no initial(...)"),
+            problems {
+                mode("a")
+                mode("b")
+            },
         )
-        assertEquals(listOf("it declares no modes"), problems { })
+        assertEquals(
+            listOf(
+                "mode 'm/a': initial mode 'q' is not one of its sub-modes (x)",
+                "mode 'm/a/x' declares initial 'y' but has no sub-modes",
+            ),
+            problems {
+                initial("a")
+                mode("a") {
+                    initial("q")
+                    mode("x") { initial("y") }
+                }
+            },
+        )
+        assertEquals(listOf("it declares no modes"), problems {})
     }
 
     @Test
     fun `names used twice, in the same machine or for two machines`() {
-        assertEquals(listOf("the name 'a' is used 2 times (m/a, m/b/a)"), problems { initial("a"); mode("a"); mode("b") { initial("a"); mode("a") } })
-        coordination.modes("m") { initial("a"); mode("a") }
-        assertEquals(listOf("another machine is named 'm'"), problems { initial("a"); mode("a") })
+        assertEquals(
+            listOf("the name 'a' is used 2 times (m/a, m/b/a)"),
+            problems {
+                initial("a")
+                mode("a")
+                mode("b") {
+                    initial("a")
+                    mode("a")
+                }
+            },
+        )
+        coordination.modes("m") {
+            initial("a")
+            mode("a")
+        }
+        assertEquals(
+            listOf("another machine is named 'm'"),
+            problems {
+                initial("a")
+                mode("a")
+            },
+        )
     }
 
     @Test
@@ -119,7 +171,7 @@ class MachineValidationTest {
                 "mode 'm/a': transition after 0s: the delay must be positive",
             ),
             problems {
-                exit { }
+                exit {}
                 initial("a")
                 mode("a") {
                     network {
@@ -137,27 +189,32 @@ class MachineValidationTest {
     }
 
     @Test
-    fun `in a script, the error is one line at the machine's declaration`(@TempDir directory: Path): Unit = runBlocking {
-        val script = directory.resolve("modes.coord.kts")
-        Files.writeString(
-            script,
-            """
-            val laser = component("laser0.rtc")
+    fun `in a script, the error is one line at the machine's declaration`(@TempDir directory: Path): Unit =
+        runBlocking {
+            val script = directory.resolve("modes.coord.kts")
+            Files.writeString(
+                script,
+                """
+                val laser = component("laser0.rtc")
 
-            modes("system") {
-                initial("nominal")
-                mode("nominal") { on(laser).state(ERROR) goTo "degaded" }
-                mode("degraded") { after(5.seconds) goTo "nominal" }
-            }
-            """.trimIndent(),
-        )
-        val failure = assertThrows(ScriptFailure::class.java) { runBlocking { ScriptHost(directory.resolve("cache")).load(script) } }
-        assertEquals(
-            listOf(
-                "$script:3:1: machine 'system': mode 'system/nominal': transition on laser0.rtc enters ERROR " +
-                    "goes to unknown mode 'degaded' (modes: nominal, degraded)",
-            ),
-            failure.problems,
-        )
-    }
+                modes("system") {
+                    initial("nominal")
+                    mode("nominal") { on(laser).state(ERROR) goTo "degaded" }
+                    mode("degraded") { after(5.seconds) goTo "nominal" }
+                }
+                """
+                    .trimIndent(),
+            )
+            val failure =
+                assertThrows(ScriptFailure::class.java) {
+                    runBlocking { ScriptHost(directory.resolve("cache")).load(script) }
+                }
+            assertEquals(
+                listOf(
+                    "$script:3:1: machine 'system': mode 'system/nominal': transition on laser0.rtc enters ERROR " +
+                        "goes to unknown mode 'degaded' (modes: nominal, degraded)"
+                ),
+                failure.problems,
+            )
+        }
 }

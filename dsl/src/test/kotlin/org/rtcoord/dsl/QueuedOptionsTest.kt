@@ -1,13 +1,13 @@
 package org.rtcoord.dsl
 
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
 import org.rtcoord.EventOptions
 import org.rtcoord.Overlap
 import org.rtcoord.WatchMode
 import org.rtcoord.dsl.internal.queued
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /** A subscription shared by several rules queues every event, and watches as the rules asked otherwise. */
 class QueuedOptionsTest {

@@ -1,5 +1,7 @@
 package org.rtcoord.dsl
 
+import java.nio.file.Files
+import java.nio.file.Path
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertThrows
@@ -15,22 +17,21 @@ import org.rtcoord.profile.ProfileFormat
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
 import org.rtcoord.profile.TargetComponent
-import java.nio.file.Files
-import java.nio.file.Path
 
 class ScriptHostTest {
-    @TempDir
-    lateinit var directory: Path
+    @TempDir lateinit var directory: Path
 
     private val host by lazy { ScriptHost(directory.resolve("cache")) }
 
-    private fun script(name: String, text: String): Path = directory.resolve(name).also { Files.writeString(it, text.trimIndent()) }
+    private fun script(name: String, text: String): Path =
+        directory.resolve(name).also { Files.writeString(it, text.trimIndent()) }
 
     @Test
     fun `a script declares rules and timers, reading its arguments and the host's configuration`(): Unit = runBlocking {
-        val file = script(
-            "model.coord.kts",
-            """
+        val file =
+            script(
+                "model.coord.kts",
+                """
             nameServers("127.0.0.1:2809")
             val target = args.firstOrNull() ?: "laser0.rtc"
             on(component(target)).state(ERROR) { reset() }
@@ -38,10 +39,16 @@ class ScriptHostTest {
             on(component("laser_localise0.rtc")).where { event -> event is StateChanged }.configParam("gain") { old, new -> log("${'$'}old -> ${'$'}new") }
             every(host.callTimeout) { }
             """,
-        )
-        val coordination = host.load(file, listOf("gyro0.rtc"), TreeConfig(callTimeout = kotlin.time.Duration.parse("2s")))
+            )
+        val coordination =
+            host.load(file, listOf("gyro0.rtc"), TreeConfig(callTimeout = kotlin.time.Duration.parse("2s")))
         assertEquals(
-            listOf("on gyro0.rtc enters ERROR", "on gyro0.rtc:gyro disconnects", "on laser_localise0.rtc parameter gain changes where { event -> event is StateChanged }", "every 2s"),
+            listOf(
+                "on gyro0.rtc enters ERROR",
+                "on gyro0.rtc:gyro disconnects",
+                "on laser_localise0.rtc parameter gain changes where { event -> event is StateChanged }",
+                "every 2s",
+            ),
             coordination.description,
         )
         assertEquals(listOf("gyro0.rtc"), coordination.args)
@@ -49,10 +56,12 @@ class ScriptHostTest {
     }
 
     @Test
-    fun `a script declares supervisors, and a bad one is one line naming the component and the reason`(): Unit = runBlocking {
-        val file = script(
-            "supervised.coord.kts",
-            """
+    fun `a script declares supervisors, and a bad one is one line naming the component and the reason`(): Unit =
+        runBlocking {
+            val file =
+                script(
+                    "supervised.coord.kts",
+                    """
             val logger = component("logger0.rtc")
             supervise(component("laser0.rtc"), component("laser_localise0.rtc"), logger) {
                 strategy = restForOne
@@ -62,49 +71,97 @@ class ScriptHostTest {
                 onEscalation { escalation -> log(escalation.reason) }
             }
             """,
-        )
-        assertEquals(
-            listOf("supervise laser0.rtc, laser_localise0.rtc, logger0.rtc: restForOne, at most 5 within 30s, back-off exponential from 1s to 30s, permanent, logger0.rtc temporary"),
-            host.load(file).description,
-        )
-        val pattern = script("pattern.coord.kts", "supervise(component(\"laser0.rtc\"), component(\"*_localise0\"))")
-        assertEquals(
-            listOf("$pattern:1:1: cannot supervise '*_localise0': it is a pattern; name each component"),
-            assertThrows(ScriptFailure::class.java) { runBlocking { host.load(pattern) } }.problems,
-        )
-        val stranger = script("stranger.coord.kts", "supervise(component(\"laser0.rtc\")) { child(\"gyro0\", restart = transient) }")
-        assertEquals(
-            listOf("$stranger:1:1: 'gyro0' is not supervised here (supervised: laser0.rtc)"),
-            assertThrows(ScriptFailure::class.java) { runBlocking { host.load(stranger) } }.problems,
-        )
-    }
+                )
+            assertEquals(
+                listOf(
+                    "supervise laser0.rtc, laser_localise0.rtc, logger0.rtc: restForOne, at most 5 within 30s, back-off exponential from 1s to 30s, permanent, logger0.rtc temporary"
+                ),
+                host.load(file).description,
+            )
+            val pattern =
+                script("pattern.coord.kts", "supervise(component(\"laser0.rtc\"), component(\"*_localise0\"))")
+            assertEquals(
+                listOf("$pattern:1:1: cannot supervise '*_localise0': it is a pattern; name each component"),
+                assertThrows(ScriptFailure::class.java) { runBlocking { host.load(pattern) } }.problems,
+            )
+            val stranger =
+                script(
+                    "stranger.coord.kts",
+                    "supervise(component(\"laser0.rtc\")) { child(\"gyro0\", restart = transient) }",
+                )
+            assertEquals(
+                listOf("$stranger:1:1: 'gyro0' is not supervised here (supervised: laser0.rtc)"),
+                assertThrows(ScriptFailure::class.java) { runBlocking { host.load(stranger) } }.problems,
+            )
+        }
 
     @Test
-    fun `a network's profile is read beside the script, and one that cannot be read is the machine's problem`(): Unit = runBlocking {
-        val laser = ProfileComponent("RTC:AIST:sensor:laser:1.0", "127.0.0.1:2809/host.host_cxt/laser0.rtc", "laser0", "default", isRequired = true)
-        val localiser = ProfileComponent("RTC:AIST:nav:laser_localise:1.0", "127.0.0.1:2809/host.host_cxt/laser_localise0.rtc", "laser_localise0", "precise", isRequired = true)
-        val spare = ProfileComponent("RTC:AIST:sensor:gyro:1.0", "127.0.0.1:2809/host.host_cxt/gyro0.rtc", "gyro0")
-        val connector = PortConnector(
-            "c1", "scan", TargetComponent(laser.id, "laser0", "laser0.laser"), TargetComponent(localiser.id, "laser_localise0", "laser_localise0.laser"),
-            dataType = "IDL:RTC/TimedDoubleSeq:1.0", interfaceType = "corba_cdr", dataflowType = "push",
-        )
-        val profile = RtsProfile("RTSystem:test:nav:1.0", components = listOf(laser, localiser, spare), dataPortConnectors = listOf(connector))
-        Files.writeString(directory.resolve("nav.xml"), RtsProfiles.write(profile, ProfileFormat.XML))
-        val file = script("nav.coord.kts", "modes(\"m\") {\n    initial(\"a\")\n    mode(\"a\") { network { profile(\"nav.xml\") } }\n}\n")
-        val context = "/127.0.0.1:2809/host.host_cxt"
-        assertEquals(
-            listOf(
-                "modes m, initially a", "  mode a",
-                "    network: active $context/laser0.rtc, $context/laser_localise0.rtc",
-                "    network: connected $context/laser0.rtc:laser -> $context/laser_localise0.rtc:laser",
-                "    network: configuration sets $context/laser0.rtc=default, $context/laser_localise0.rtc=precise",
-            ),
-            host.load(file).description,
-        )
-        val absent = script("absent.coord.kts", "modes(\"m\") {\n    initial(\"a\")\n    mode(\"a\") { network { profile(\"none.xml\") } }\n}\n")
-        val problem = assertThrows(ScriptFailure::class.java) { runBlocking { host.load(absent) } }.problems.single()
-        assertTrue(problem.startsWith("$absent:") && ": machine 'm': mode 'm/a': network: profile ${directory.resolve("none.xml")}: cannot read" in problem, problem)
-    }
+    fun `a network's profile is read beside the script, and one that cannot be read is the machine's problem`(): Unit =
+        runBlocking {
+            val laser =
+                ProfileComponent(
+                    "RTC:AIST:sensor:laser:1.0",
+                    "127.0.0.1:2809/host.host_cxt/laser0.rtc",
+                    "laser0",
+                    "default",
+                    isRequired = true,
+                )
+            val localiser =
+                ProfileComponent(
+                    "RTC:AIST:nav:laser_localise:1.0",
+                    "127.0.0.1:2809/host.host_cxt/laser_localise0.rtc",
+                    "laser_localise0",
+                    "precise",
+                    isRequired = true,
+                )
+            val spare = ProfileComponent("RTC:AIST:sensor:gyro:1.0", "127.0.0.1:2809/host.host_cxt/gyro0.rtc", "gyro0")
+            val connector =
+                PortConnector(
+                    "c1",
+                    "scan",
+                    TargetComponent(laser.id, "laser0", "laser0.laser"),
+                    TargetComponent(localiser.id, "laser_localise0", "laser_localise0.laser"),
+                    dataType = "IDL:RTC/TimedDoubleSeq:1.0",
+                    interfaceType = "corba_cdr",
+                    dataflowType = "push",
+                )
+            val profile =
+                RtsProfile(
+                    "RTSystem:test:nav:1.0",
+                    components = listOf(laser, localiser, spare),
+                    dataPortConnectors = listOf(connector),
+                )
+            Files.writeString(directory.resolve("nav.xml"), RtsProfiles.write(profile, ProfileFormat.XML))
+            val file =
+                script(
+                    "nav.coord.kts",
+                    "modes(\"m\") {\n    initial(\"a\")\n    mode(\"a\") { network { profile(\"nav.xml\") } }\n}\n",
+                )
+            val context = "/127.0.0.1:2809/host.host_cxt"
+            assertEquals(
+                listOf(
+                    "modes m, initially a",
+                    "  mode a",
+                    "    network: active $context/laser0.rtc, $context/laser_localise0.rtc",
+                    "    network: connected $context/laser0.rtc:laser -> $context/laser_localise0.rtc:laser",
+                    "    network: configuration sets $context/laser0.rtc=default, $context/laser_localise0.rtc=precise",
+                ),
+                host.load(file).description,
+            )
+            val absent =
+                script(
+                    "absent.coord.kts",
+                    "modes(\"m\") {\n    initial(\"a\")\n    mode(\"a\") { network { profile(\"none.xml\") } }\n}\n",
+                )
+            val problem =
+                assertThrows(ScriptFailure::class.java) { runBlocking { host.load(absent) } }.problems.single()
+            assertTrue(
+                problem.startsWith("$absent:") &&
+                    ": machine 'm': mode 'm/a': network: profile ${directory.resolve("none.xml")}: cannot read" in
+                        problem,
+                problem,
+            )
+        }
 
     @Test
     fun `compile errors come as file, line, column and message`(): Unit = runBlocking {
@@ -120,12 +177,16 @@ class ScriptHostTest {
     fun `the type errors newcomers meet first say what to write`(): Unit = runBlocking {
         val timer = script("timer.coord.kts", "every(5) { log(\"tick\") }")
         assertEquals(
-            listOf("$timer:1:7: Argument type mismatch: actual type is 'Int', but 'Duration' was expected (hint: a duration has a unit: write 5.seconds (or 5.milliseconds, 5.minutes))"),
+            listOf(
+                "$timer:1:7: Argument type mismatch: actual type is 'Int', but 'Duration' was expected (hint: a duration has a unit: write 5.seconds (or 5.milliseconds, 5.minutes))"
+            ),
             host.check(timer),
         )
         val intensity = script("intensity.coord.kts", "supervise(component(\"odometry0\")) {\n    maxRestarts = 3\n}")
         assertEquals(
-            listOf("$intensity:2:17: Assignment type mismatch: actual type is 'Int', but 'RestartIntensity' was expected (hint: write how many restarts within how long: maxRestarts = 3 within 60.seconds)"),
+            listOf(
+                "$intensity:2:17: Assignment type mismatch: actual type is 'Int', but 'RestartIntensity' was expected (hint: write how many restarts within how long: maxRestarts = 3 within 60.seconds)"
+            ),
             host.check(intensity),
         )
     }
@@ -133,15 +194,21 @@ class ScriptHostTest {
     @Test
     fun `a bad name in a script is its line and the reason, without Java class names`(): Unit = runBlocking {
         val file = script("port.coord.kts", "val odometry = component(\"odometry0\")\nval gyro = port(\"gyro0.rtc\")\n")
-        assertEquals(listOf("$file:2:1: not a port: 'gyro0.rtc' (write component:port)"), assertThrows(ScriptFailure::class.java) { runBlocking { host.load(file) } }.problems)
+        assertEquals(
+            listOf("$file:2:1: not a port: 'gyro0.rtc' (write component:port)"),
+            assertThrows(ScriptFailure::class.java) { runBlocking { host.load(file) } }.problems,
+        )
     }
 
     @Test
     fun `a script that throws while it starts names its line`(): Unit = runBlocking {
         val file = script("throws.coord.kts", "val limit = 3\nval bad = args[limit]\n")
         val failure = assertThrows(ScriptFailure::class.java) { runBlocking { host.load(file) } }
-        assertTrue(failure.problems.single().startsWith("$file:2:1: ArrayIndexOutOfBoundsException") ||
-            failure.problems.single().startsWith("$file:2:1: IndexOutOfBoundsException"), failure.problems.single())
+        assertTrue(
+            failure.problems.single().startsWith("$file:2:1: ArrayIndexOutOfBoundsException") ||
+                failure.problems.single().startsWith("$file:2:1: IndexOutOfBoundsException"),
+            failure.problems.single(),
+        )
     }
 
     @Test

@@ -1,5 +1,8 @@
 package org.rtcoord.examples
 
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -16,9 +19,6 @@ import org.rtcoord.dsl.Mode
 import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.awaitValue
 import org.rtcoord.runtime.RuntimeComponent
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
 
 class ExamplesTest {
     enum class Mode(val options: EventOptions) {
@@ -34,91 +34,136 @@ class ExamplesTest {
 
     @ParameterizedTest
     @CsvSource("PUSH,TRANSIENT", "PUSH,PERSISTENT", "POLL,TRANSIENT", "POLL,PERSISTENT")
-    fun `localisation - the laser fails and the odometry-gyro localiser takes over`(mode: Mode, fault: Fault): Unit = runBlocking {
-        ExampleSystem("localisation.coord.kts", mode.options).use { example ->
-            example.coordinator.start()
-            val faulted = TimeSource.Monotonic.markNow()
-            fault.inject(example.system.component("laser0"))
+    fun `localisation - the laser fails and the odometry-gyro localiser takes over`(mode: Mode, fault: Fault): Unit =
+        runBlocking {
+            ExampleSystem("localisation.coord.kts", mode.options).use { example ->
+                example.coordinator.start()
+                val faulted = TimeSource.Monotonic.markNow()
+                fault.inject(example.system.component("laser0"))
 
-            await("odo_localise0 to be ACTIVE") {
-                runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
-            }
-            println("localisation example ($mode, $fault laser fault): fault to odo_localise0 ACTIVE in ${faulted.elapsedNow()}")
-            val created = example.witness.component(example.path("odo_localise0.rtc")).also { it.refresh() }.snapshot()
-            assertEquals(mapOf("odo" to 1, "gyro" to 1, "pose" to 0), created.ports.associate { it.name to it.connectors.size })
-            val connections = example.witness.port(example.path("odo_localise0.rtc:odo")).connections() +
-                example.witness.port(example.path("odo_localise0.rtc:gyro")).connections()
-            assertEquals(
-                setOf(example.path("odometry0.rtc:odo"), example.path("gyro0.rtc:gyro")),
-                connections.map { it.ports.first().path.toString() }.toSet(),
-            )
-            val old = example.witness.component(example.path("laser_localise0.rtc")).also { it.refresh() }.snapshot()
-            assertEquals(LifeCycle.INACTIVE, old.state)
-            assertTrue(old.ports.all { it.connectors.isEmpty() })
-            assertEquals(fault.laserAfter, example.witness.component(example.path("laser0.rtc")).state())
-            assertEquals(0, example.coordinator.failures)
-            val resetFailed = FailedAction("reset ${example.path("laser0.rtc")}", "reset failed: RTC_ERROR (in context 0; still ERROR at its 1000 ms deadline)", bestEffort = true)
-            assertEquals(if (fault == Fault.PERSISTENT) listOf(resetFailed) else emptyList<FailedAction>(), example.coordinator.failedActions)
-        }
-    }
-
-    @Test
-    fun `frozen laser - a laser ACTIVE but silent is noticed from its data and odometry takes over`(): Unit = runBlocking {
-        ExampleSystem("frozen-laser.coord.kts", Mode.PUSH.options).use { example ->
-            example.coordinator.start()
-            val laser = example.system.component("laser0")
-            val tap = awaitValue("the coordinator's tap on laser0:laser") {
-                runBlocking { example.witness.port(example.path("laser0.rtc:laser")).connections() }.firstOrNull { it.id.startsWith("rtcoord-tap-") }
-            }
-            // Longer than the threshold with scans flowing: no switch.
-            val watched = TimeSource.Monotonic.markNow()
-            val consumer = example.system.component("laser_localise0")
-            val first = consumer.latest("laser")
-            await("800 ms of scans reaching the laser localiser") { watched.elapsedNow() > 800.milliseconds && consumer.latest("laser") !== first }
-            assertTrue(example.system.components.none { it.instanceName == "odo_localise0" }, "no switch while scans flow")
-
-            val frozen = TimeSource.Monotonic.markNow()
-            laser.freezeOutput()
-            await("odo_localise0 to be ACTIVE") {
-                runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
-            }
-            val took = frozen.elapsedNow()
-            println("frozen-laser example: freeze to odo_localise0 ACTIVE in $took")
-            assertTrue(took >= 500.milliseconds, "not before the 500 ms of silence: $took")
-            assertEquals(LifeCycle.ACTIVE, example.witness.component(example.path("laser0.rtc")).state(), "the laser stayed ACTIVE")
-            val old = example.witness.component(example.path("laser_localise0.rtc")).also { it.refresh() }.snapshot()
-            assertEquals(LifeCycle.INACTIVE, old.state)
-            assertTrue(old.ports.all { it.connectors.isEmpty() })
-            val localiser = example.system.component("odo_localise0")
-            val before = localiser.latest("odo")
-            await("the odometry to reach the new localiser") { localiser.latest("odo") !== before }
-            assertEquals(0, example.coordinator.failures)
-            assertTrue(example.log.any { it.contains("sent no scan for 500 ms") }, example.log.joinToString("\n"))
-
-            example.coordinator.close()
-            await("the coordinator's tap removed on close") {
-                runBlocking { example.witness.port(example.path("laser0.rtc:laser")).connections() }.none { it.id == tap.id }
+                await("odo_localise0 to be ACTIVE") {
+                    runBlocking {
+                        runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull()
+                    } == LifeCycle.ACTIVE
+                }
+                println(
+                    "localisation example ($mode, $fault laser fault): fault to odo_localise0 ACTIVE in ${faulted.elapsedNow()}"
+                )
+                val created =
+                    example.witness.component(example.path("odo_localise0.rtc")).also { it.refresh() }.snapshot()
+                assertEquals(
+                    mapOf("odo" to 1, "gyro" to 1, "pose" to 0),
+                    created.ports.associate { it.name to it.connectors.size },
+                )
+                val connections =
+                    example.witness.port(example.path("odo_localise0.rtc:odo")).connections() +
+                        example.witness.port(example.path("odo_localise0.rtc:gyro")).connections()
+                assertEquals(
+                    setOf(example.path("odometry0.rtc:odo"), example.path("gyro0.rtc:gyro")),
+                    connections.map { it.ports.first().path.toString() }.toSet(),
+                )
+                val old =
+                    example.witness.component(example.path("laser_localise0.rtc")).also { it.refresh() }.snapshot()
+                assertEquals(LifeCycle.INACTIVE, old.state)
+                assertTrue(old.ports.all { it.connectors.isEmpty() })
+                assertEquals(fault.laserAfter, example.witness.component(example.path("laser0.rtc")).state())
+                assertEquals(0, example.coordinator.failures)
+                val resetFailed =
+                    FailedAction(
+                        "reset ${example.path("laser0.rtc")}",
+                        "reset failed: RTC_ERROR (in context 0; still ERROR at its 1000 ms deadline)",
+                        bestEffort = true,
+                    )
+                assertEquals(
+                    if (fault == Fault.PERSISTENT) listOf(resetFailed) else emptyList<FailedAction>(),
+                    example.coordinator.failedActions,
+                )
             }
         }
-    }
 
     @Test
-    fun `localisation - a coordinator started after the laser broke still switches to odometry (includeCurrent)`(): Unit = runBlocking {
+    fun `frozen laser - a laser ACTIVE but silent is noticed from its data and odometry takes over`(): Unit =
+        runBlocking {
+            ExampleSystem("frozen-laser.coord.kts", Mode.PUSH.options).use { example ->
+                example.coordinator.start()
+                val laser = example.system.component("laser0")
+                val tap =
+                    awaitValue("the coordinator's tap on laser0:laser") {
+                        runBlocking { example.witness.port(example.path("laser0.rtc:laser")).connections() }
+                            .firstOrNull { it.id.startsWith("rtcoord-tap-") }
+                    }
+                // Longer than the threshold with scans flowing: no switch.
+                val watched = TimeSource.Monotonic.markNow()
+                val consumer = example.system.component("laser_localise0")
+                val first = consumer.latest("laser")
+                await("800 ms of scans reaching the laser localiser") {
+                    watched.elapsedNow() > 800.milliseconds && consumer.latest("laser") !== first
+                }
+                assertTrue(
+                    example.system.components.none { it.instanceName == "odo_localise0" },
+                    "no switch while scans flow",
+                )
+
+                val frozen = TimeSource.Monotonic.markNow()
+                laser.freezeOutput()
+                await("odo_localise0 to be ACTIVE") {
+                    runBlocking {
+                        runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull()
+                    } == LifeCycle.ACTIVE
+                }
+                val took = frozen.elapsedNow()
+                println("frozen-laser example: freeze to odo_localise0 ACTIVE in $took")
+                assertTrue(took >= 500.milliseconds, "not before the 500 ms of silence: $took")
+                assertEquals(
+                    LifeCycle.ACTIVE,
+                    example.witness.component(example.path("laser0.rtc")).state(),
+                    "the laser stayed ACTIVE",
+                )
+                val old =
+                    example.witness.component(example.path("laser_localise0.rtc")).also { it.refresh() }.snapshot()
+                assertEquals(LifeCycle.INACTIVE, old.state)
+                assertTrue(old.ports.all { it.connectors.isEmpty() })
+                val localiser = example.system.component("odo_localise0")
+                val before = localiser.latest("odo")
+                await("the odometry to reach the new localiser") { localiser.latest("odo") !== before }
+                assertEquals(0, example.coordinator.failures)
+                assertTrue(example.log.any { it.contains("sent no scan for 500 ms") }, example.log.joinToString("\n"))
+
+                example.coordinator.close()
+                await("the coordinator's tap removed on close") {
+                    runBlocking { example.witness.port(example.path("laser0.rtc:laser")).connections() }
+                        .none { it.id == tap.id }
+                }
+            }
+        }
+
+    @Test
+    fun `localisation - a coordinator started after the laser broke still switches to odometry (includeCurrent)`():
+        Unit = runBlocking {
         ExampleSystem("localisation.coord.kts", Mode.PUSH.options).use { example ->
             example.system.component("laser0").breakDown()
-            await("laser0 to be in ERROR before the coordinator starts") { example.system.component("laser0").state == RTC.LifeCycleState.ERROR_STATE }
+            await("laser0 to be in ERROR before the coordinator starts") {
+                example.system.component("laser0").state == RTC.LifeCycleState.ERROR_STATE
+            }
             example.coordinator.start()
             await("odo_localise0 to be ACTIVE") {
-                runBlocking { runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull() } == LifeCycle.ACTIVE
+                runBlocking {
+                    runCatching { example.witness.component(example.path("odo_localise0.rtc")).state() }.getOrNull()
+                } == LifeCycle.ACTIVE
             }
-            assertTrue(example.log.any { it.contains("rule 'laser0.rtc is in or enters ERROR' fired") }, example.log.joinToString("\n"))
+            assertTrue(
+                example.log.any { it.contains("rule 'laser0.rtc is in or enters ERROR' fired") },
+                example.log.joinToString("\n"),
+            )
             assertEquals(0, example.coordinator.failures)
         }
     }
 
     @ParameterizedTest
     @EnumSource(Fault::class)
-    fun `localisation - a switch the manager refuses is taken back and the laser localiser runs again`(fault: Fault): Unit = runBlocking {
+    fun `localisation - a switch the manager refuses is taken back and the laser localiser runs again`(
+        fault: Fault
+    ): Unit = runBlocking {
         ExampleSystem("localisation.coord.kts", Mode.PUSH.options).use { example ->
             example.system.master!!.remove_slave_manager(example.system.slave!!.ref)
             example.coordinator.start()
@@ -127,13 +172,21 @@ class ExamplesTest {
 
             // The rule's failure is counted after its onFailure block finished.
             await("the switch to fail and be taken back") { example.coordinator.failures == 1 }
-            assertTrue(example.log.any { it.startsWith("the switch to odometry failed") && it.endsWith("back to the laser localiser") })
+            assertTrue(
+                example.log.any {
+                    it.startsWith("the switch to odometry failed") && it.endsWith("back to the laser localiser")
+                }
+            )
             await("the laser localiser to run again") { localiser.state == RTC.LifeCycleState.ACTIVE_STATE }
             assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
             assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
             assertTrue(example.system.components.none { it.instanceName == "odo_localise0" })
             if (fault == Fault.TRANSIENT) {
-                assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("laser0").state, "the laser, reset, runs again")
+                assertEquals(
+                    RTC.LifeCycleState.ACTIVE_STATE,
+                    example.system.component("laser0").state,
+                    "the laser, reset, runs again",
+                )
                 val before = localiser.latest("laser")
                 await("the laser's data to reach the localiser again") { localiser.latest("laser") !== before }
             } else {
@@ -151,7 +204,10 @@ class ExamplesTest {
             val gyro = example.system.component("gyro0")
             repeat(3) { restart ->
                 gyro.fail()
-                await("restart ${restart + 1}") { example.log.any { it.contains("restart ${restart + 1} of 3") } && gyro.state == RTC.LifeCycleState.ACTIVE_STATE }
+                await("restart ${restart + 1}") {
+                    example.log.any { it.contains("restart ${restart + 1} of 3") } &&
+                        gyro.state == RTC.LifeCycleState.ACTIVE_STATE
+                }
             }
             gyro.fail()
             await("the coordinator to give up") { example.log.any { it.contains("failed 4 times") } }
@@ -160,16 +216,19 @@ class ExamplesTest {
     }
 
     @Test
-    fun `bounded restart - a gyro whose reset fails is left in ERROR, and the coordinator says so`(): Unit = runBlocking {
-        ExampleSystem("bounded-restart.coord.kts", Mode.PUSH.options, args = listOf("3")).use { example ->
-            example.coordinator.start()
-            val gyro = example.system.component("gyro0")
-            gyro.breakDown()
-            await("the coordinator to say it leaves the gyro") { example.log.any { it.contains("gyro0 cannot be reset: leaving it in ERROR") } }
-            assertEquals(RTC.LifeCycleState.ERROR_STATE, gyro.state)
-            assertEquals(0, example.coordinator.failures, "a failed reset is expected, not a handler failure")
+    fun `bounded restart - a gyro whose reset fails is left in ERROR, and the coordinator says so`(): Unit =
+        runBlocking {
+            ExampleSystem("bounded-restart.coord.kts", Mode.PUSH.options, args = listOf("3")).use { example ->
+                example.coordinator.start()
+                val gyro = example.system.component("gyro0")
+                gyro.breakDown()
+                await("the coordinator to say it leaves the gyro") {
+                    example.log.any { it.contains("gyro0 cannot be reset: leaving it in ERROR") }
+                }
+                assertEquals(RTC.LifeCycleState.ERROR_STATE, gyro.state)
+                assertEquals(0, example.coordinator.failures, "a failed reset is expected, not a handler failure")
+            }
         }
-    }
 
     @Test
     fun `gain schedule - a gain above 2 switches to the precise set`(): Unit = runBlocking {
@@ -177,44 +236,68 @@ class ExamplesTest {
             example.coordinator.start()
             val localiser = example.witness.component(example.path("laser_localise0.rtc"))
             localiser.setParameter("gain", "3.0")
-            await("the precise set to be active") { example.system.component("laser_localise0").activeConfigurationSet == "precise" }
+            await("the precise set to be active") {
+                example.system.component("laser_localise0").activeConfigurationSet == "precise"
+            }
             localiser.setParameter("gain", "1.5", set = "precise")
-            await("the default set to be active again") { example.system.component("laser_localise0").activeConfigurationSet == "default" }
+            await("the default set to be active again") {
+                example.system.component("laser_localise0").activeConfigurationSet == "default"
+            }
         }
     }
 
     @ParameterizedTest
     @EnumSource(Fault::class)
-    fun `modes - the laser fails, the system runs on odometry, and back on the laser once it is active`(fault: Fault): Unit = runBlocking {
+    fun `modes - the laser fails, the system runs on odometry, and back on the laser once it is active`(
+        fault: Fault
+    ): Unit = runBlocking {
         ExampleSystem("modes.coord.kts", Mode.PUSH.options).use { example ->
             example.coordinator.start()
             val machine = example.coordinator.machine("localisation")
-            await("the laser mode's network") { example.log.any { it.startsWith("mode localisation/laser: network done (0 steps") } }
+            await("the laser mode's network") {
+                example.log.any { it.startsWith("mode localisation/laser: network done (0 steps") }
+            }
 
             val laser = example.system.component("laser0")
             val faulted = TimeSource.Monotonic.markNow()
             fault.inject(laser)
-            await("the odometry localiser to track", timeout = 30.seconds) { machine.mode.value == "localisation/degraded/odometry/tracking" }
-            println("modes example ($fault laser fault): fault to odo_localise0 ACTIVE and tracking in ${faulted.elapsedNow()}")
-            assertEquals(fault.laserAfter, example.witness.component(example.path("laser0.rtc")).state(), "reset on entry if it can be")
+            await("the odometry localiser to track", timeout = 30.seconds) {
+                machine.mode.value == "localisation/degraded/odometry/tracking"
+            }
+            println(
+                "modes example ($fault laser fault): fault to odo_localise0 ACTIVE and tracking in ${faulted.elapsedNow()}"
+            )
+            assertEquals(
+                fault.laserAfter,
+                example.witness.component(example.path("laser0.rtc")).state(),
+                "reset on entry if it can be",
+            )
             assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("laser_localise0").state)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("odo_localise0").state)
             assertEquals(setOf("odometry0.odo"), example.peers("odo_localise0.rtc:odo"))
             assertEquals(setOf("gyro0.gyro"), example.peers("odo_localise0.rtc:gyro"))
-            assertEquals(emptySet<String>(), example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"))
+            assertEquals(
+                emptySet<String>(),
+                example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"),
+            )
 
             if (fault == Fault.PERSISTENT) {
                 laser.repair()
                 example.witness.component(example.path("laser0.rtc")).reset()
             }
             example.witness.component(example.path("laser0.rtc")).activate()
-            await("the laser mode's network again", timeout = 30.seconds) { example.log.count { it.startsWith("mode localisation/laser: network done") } == 2 }
+            await("the laser mode's network again", timeout = 30.seconds) {
+                example.log.count { it.startsWith("mode localisation/laser: network done") } == 2
+            }
             assertEquals("localisation/laser", machine.mode.value)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("laser_localise0").state)
             assertEquals(RTC.LifeCycleState.INACTIVE_STATE, example.system.component("odo_localise0").state)
             assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
             assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
-            assertEquals(emptySet<String>(), example.peers("odo_localise0.rtc:odo") + example.peers("odo_localise0.rtc:gyro"))
+            assertEquals(
+                emptySet<String>(),
+                example.peers("odo_localise0.rtc:odo") + example.peers("odo_localise0.rtc:gyro"),
+            )
             assertEquals(
                 listOf("start", "laser0.rtc enters ERROR", "done", "laser0.rtc enters ACTIVE"),
                 machine.history.value.map { it.trigger },
@@ -224,54 +307,87 @@ class ExamplesTest {
     }
 
     @Test
-    fun `supervision - a laser that exits is re-created and reconnected, the localiser restarted after it, and past the limit the localiser stops`(): Unit = runBlocking {
+    fun `supervision - a laser that exits is re-created and reconnected, the localiser restarted after it, and past the limit the localiser stops`():
+        Unit = runBlocking {
         ExampleSystem("supervision.coord.kts", Mode.PUSH.options, args = listOf("1")).use { example ->
             example.coordinator.start()
-            val (odometry, exited, localiser) = listOf("odometry0", "laser0", "laser_localise0").map(example.system::component)
+            val (odometry, exited, localiser) =
+                listOf("odometry0", "laser0", "laser_localise0").map(example.system::component)
             example.witness.component(example.path("laser0.rtc")).exit()
 
-            val laser = awaitValue("laser0 to be re-created and active") {
-                example.system.runtime.components.firstOrNull { it.instanceName == "laser0" && it !== exited && it.state == RTC.LifeCycleState.ACTIVE_STATE }
+            val laser =
+                awaitValue("laser0 to be re-created and active") {
+                    example.system.runtime.components.firstOrNull {
+                        it.instanceName == "laser0" && it !== exited && it.state == RTC.LifeCycleState.ACTIVE_STATE
+                    }
+                }
+            await("the localiser to be restarted after it") {
+                example.log.any { it.endsWith("activate ${example.path("laser_localise0.rtc")}") }
             }
-            await("the localiser to be restarted after it") { example.log.any { it.endsWith("activate ${example.path("laser_localise0.rtc")}") } }
-            val steps = example.log.filter { ": stop " in it || ": start " in it }.map { it.substringAfter("): ").substringBefore(" /") + " " + it.substringAfterLast('/') }
+            val steps =
+                example.log
+                    .filter { ": stop " in it || ": start " in it }
+                    .map { it.substringAfter("): ").substringBefore(" /") + " " + it.substringAfterLast('/') }
             assertEquals(listOf("stop laser_localise0.rtc", "start laser0.rtc", "start laser_localise0.rtc"), steps)
             val before = localiser.latest("laser")
             await("the new laser's data to reach the localiser") { localiser.latest("laser") !== before }
             example.witness.refresh(RtcPath(example.path("laser0.rtc")).parent!!, depth = 0)
             val connections = example.witness.port(example.path("laser0.rtc:laser")).connections()
-            assertEquals(listOf(example.path("laser_localise0.rtc:laser")), connections.map { it.ports.last().path.toString() })
-            assertEquals(1, example.witness.port(example.path("laser_localise0.rtc:laser")).connections().size, "no stale connector left")
+            assertEquals(
+                listOf(example.path("laser_localise0.rtc:laser")),
+                connections.map { it.ports.last().path.toString() },
+            )
+            assertEquals(
+                1,
+                example.witness.port(example.path("laser_localise0.rtc:laser")).connections().size,
+                "no stale connector left",
+            )
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, odometry.state)
 
             laser.fail()
             await("the supervisor to give up and stop the localiser") {
-                example.log.any { it.startsWith("giving up: ${example.path("laser0.rtc")} entered ERROR after 1 restarts") } &&
-                    localiser.state == RTC.LifeCycleState.INACTIVE_STATE
+                example.log.any {
+                    it.startsWith("giving up: ${example.path("laser0.rtc")} entered ERROR after 1 restarts")
+                } && localiser.state == RTC.LifeCycleState.INACTIVE_STATE
             }
             assertEquals(RTC.LifeCycleState.ERROR_STATE, laser.state)
-            await("the localisation to go on from odometry") { example.system.components.any { it.instanceName == "odo_localise0" && it.state == RTC.LifeCycleState.ACTIVE_STATE } }
+            await("the localisation to go on from odometry") {
+                example.system.components.any {
+                    it.instanceName == "odo_localise0" && it.state == RTC.LifeCycleState.ACTIVE_STATE
+                }
+            }
             assertEquals(0, example.coordinator.failures)
         }
     }
 
     @Test
-    fun `supervision - a laser that stays broken cannot be restarted, and the localisation goes on from odometry`(): Unit = runBlocking {
+    fun `supervision - a laser that stays broken cannot be restarted, and the localisation goes on from odometry`():
+        Unit = runBlocking {
         ExampleSystem("supervision.coord.kts", Mode.PUSH.options, args = listOf("2")).use { example ->
             example.coordinator.start()
-            val (odometry, laser, localiser) = listOf("odometry0", "laser0", "laser_localise0").map(example.system::component)
+            val (odometry, laser, localiser) =
+                listOf("odometry0", "laser0", "laser_localise0").map(example.system::component)
             val faulted = TimeSource.Monotonic.markNow()
             laser.breakDown()
 
             await("the supervisor to give up on the laser", timeout = 30.seconds) {
                 example.log.any { it.startsWith("giving up: ${example.path("laser0.rtc")}") }
             }
-            await("the odometry localiser to run") { example.system.components.any { it.instanceName == "odo_localise0" && it.state == RTC.LifeCycleState.ACTIVE_STATE } }
-            println("supervision example (persistent laser fault, 2 restarts allowed): fault to odo_localise0 ACTIVE in ${faulted.elapsedNow()}")
+            await("the odometry localiser to run") {
+                example.system.components.any {
+                    it.instanceName == "odo_localise0" && it.state == RTC.LifeCycleState.ACTIVE_STATE
+                }
+            }
+            println(
+                "supervision example (persistent laser fault, 2 restarts allowed): fault to odo_localise0 ACTIVE in ${faulted.elapsedNow()}"
+            )
             assertEquals(setOf("odometry0.odo"), example.peers("odo_localise0.rtc:odo"))
             assertEquals(setOf("gyro0.gyro"), example.peers("odo_localise0.rtc:gyro"))
             assertEquals(RTC.LifeCycleState.INACTIVE_STATE, localiser.state)
-            assertEquals(emptySet<String>(), example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"))
+            assertEquals(
+                emptySet<String>(),
+                example.peers("laser_localise0.rtc:laser") + example.peers("laser_localise0.rtc:odo"),
+            )
             assertEquals(RTC.LifeCycleState.ERROR_STATE, laser.state)
             assertEquals(RTC.LifeCycleState.ACTIVE_STATE, odometry.state, "restForOne leaves the odometry alone")
             assertEquals(0, example.coordinator.failures)
@@ -279,27 +395,44 @@ class ExamplesTest {
     }
 
     @Test
-    fun `supervision - the slave manager hosting the pipeline is killed, and the master re-creates it in another slave, connected and active`(): Unit = runBlocking {
-        ExampleSystem("supervision.coord.kts", Mode.PUSH.options, pipeline = ExampleSystem.Pipeline.SEPARATE_PROCESS).use { example ->
-            example.coordinator.start()
-            val killed = TimeSource.Monotonic.markNow()
-            example.pipelineProcess!!.kill()
+    fun `supervision - the slave manager hosting the pipeline is killed, and the master re-creates it in another slave, connected and active`():
+        Unit = runBlocking {
+        ExampleSystem("supervision.coord.kts", Mode.PUSH.options, pipeline = ExampleSystem.Pipeline.SEPARATE_PROCESS)
+            .use { example ->
+                example.coordinator.start()
+                val killed = TimeSource.Monotonic.markNow()
+                example.pipelineProcess!!.kill()
 
-            val pipeline = listOf("odometry0", "laser0", "laser_localise0").map { name ->
-                awaitValue("$name to be re-created through the master and active", 30.seconds) {
-                    example.system.runtime.components.firstOrNull { it.instanceName == name && !it.isExited && it.state == RTC.LifeCycleState.ACTIVE_STATE }
+                val pipeline =
+                    listOf("odometry0", "laser0", "laser_localise0").map { name ->
+                        awaitValue("$name to be re-created through the master and active", 30.seconds) {
+                            example.system.runtime.components.firstOrNull {
+                                it.instanceName == name && !it.isExited && it.state == RTC.LifeCycleState.ACTIVE_STATE
+                            }
+                        }
+                    }
+                println(
+                    "supervision example: slave manager SIGKILL to the pipeline ACTIVE again in another slave in ${killed.elapsedNow()}"
+                )
+                val localiser = pipeline.last()
+                await("the localiser to get laser and odometry data again") {
+                    localiser.latest("laser") != null && localiser.latest("odo") != null
                 }
+                example.witness.refresh(RtcPath(example.path("laser0.rtc")).parent!!, depth = 0)
+                assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
+                assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
+                assertEquals(
+                    1,
+                    example.log.count { it.endsWith("failed together: one restart") },
+                    example.log.joinToString("\n"),
+                )
+                assertTrue(example.log.none { it.startsWith("giving up") }, example.log.joinToString("\n"))
+                assertEquals(
+                    RTC.LifeCycleState.ACTIVE_STATE,
+                    example.system.component("gyro0").state,
+                    "the gyro, in another process, is left alone",
+                )
+                assertEquals(0, example.coordinator.failures)
             }
-            println("supervision example: slave manager SIGKILL to the pipeline ACTIVE again in another slave in ${killed.elapsedNow()}")
-            val localiser = pipeline.last()
-            await("the localiser to get laser and odometry data again") { localiser.latest("laser") != null && localiser.latest("odo") != null }
-            example.witness.refresh(RtcPath(example.path("laser0.rtc")).parent!!, depth = 0)
-            assertEquals(setOf("laser0.laser"), example.peers("laser_localise0.rtc:laser"))
-            assertEquals(setOf("odometry0.odo"), example.peers("laser_localise0.rtc:odo"))
-            assertEquals(1, example.log.count { it.endsWith("failed together: one restart") }, example.log.joinToString("\n"))
-            assertTrue(example.log.none { it.startsWith("giving up") }, example.log.joinToString("\n"))
-            assertEquals(RTC.LifeCycleState.ACTIVE_STATE, example.system.component("gyro0").state, "the gyro, in another process, is left alone")
-            assertEquals(0, example.coordinator.failures)
-        }
     }
 }

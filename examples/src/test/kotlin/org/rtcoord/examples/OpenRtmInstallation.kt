@@ -3,8 +3,8 @@ package org.rtcoord.examples
 import java.nio.file.Path
 
 /**
- * How [OpenRtmSystem] runs managers of one real OpenRTM-aist implementation: its manager daemon, the
- * localisation system's component modules, and what every manager of the system needs to know.
+ * How [OpenRtmSystem] runs managers of one real OpenRTM-aist implementation: its manager daemon, the localisation
+ * system's component modules, and what every manager of the system needs to know.
  */
 interface OpenRtmInstallation {
     /** How test output names it: `real OpenRTM-aist-Python`. */
@@ -14,7 +14,8 @@ interface OpenRtmInstallation {
     val components: Path
 
     /** Where managers find modules: [components], and any the installation loads besides. */
-    val loadPath: List<Path> get() = listOf(components)
+    val loadPath: List<Path>
+        get() = listOf(components)
 
     /** The file of [type]'s module, as a manager loads it from its load path: `laser.py`, `laser.so`. */
     fun module(type: String): String
@@ -23,9 +24,9 @@ interface OpenRtmInstallation {
     fun daemon(conf: Path): List<String>
 
     /**
-     * The configuration lines every manager of the system gets, after the system's own: how a master
-     * starts a slave (`manager.modules.<language>.manager_cmd`, a script it may write into
-     * [directory]), where modules are found. [shared] is the file those lines will be in.
+     * The configuration lines every manager of the system gets, after the system's own: how a master starts a slave
+     * (`manager.modules.<language>.manager_cmd`, a script it may write into [directory]), where modules are found.
+     * [shared] is the file those lines will be in.
      */
     fun sharedLines(directory: Path, shared: Path): List<String>
 

@@ -1,38 +1,40 @@
 package org.rtcoord.idl
 
-import org.junit.jupiter.api.Assertions.assertEquals
-import org.junit.jupiter.api.Assertions.assertTrue
-import org.junit.jupiter.api.Test
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
 import java.util.concurrent.TimeUnit
 import kotlin.streams.asSequence
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
 
 /**
- * Our IDL declares every type exactly as the reference IDL shipped with rtctree-aist does: repository
- * ids, enumerators, members, inheritance and operation signatures. Both are parsed by omniidl and
- * printed by our `canon` back end, then compared declaration by declaration.
+ * Our IDL declares every type exactly as the reference IDL shipped with rtctree-aist does: repository ids, enumerators,
+ * members, inheritance and operation signatures. Both are parsed by omniidl and printed by our `canon` back end, then
+ * compared declaration by declaration.
  */
 class IdlConformanceTest {
     private val root: Path = Paths.get(System.getProperty("rtcoord.root") ?: "..").toAbsolutePath().normalize()
     private val work: Path = Files.createDirectories(Paths.get("target", "idl-conformance").toAbsolutePath())
 
     /**
-     * Declared by OpenRTM-aist but not in rtctree's older IDL: the OpenRTM flavour of the observer (stock
-     * components accept it) and the quaternion of OpenRTM-aist 2.0's ExtendedDataTypes.
+     * Declared by OpenRTM-aist but not in rtctree's older IDL: the OpenRTM flavour of the observer (stock components
+     * accept it) and the quaternion of OpenRTM-aist 2.0's ExtendedDataTypes.
      */
-    private val newerThanReference = setOf("OpenRTM::ComponentObserver", "OpenRTM::StatusKind", "RTC::Quaternion", "RTC::TimedQuaternion")
+    private val newerThanReference =
+        setOf("OpenRTM::ComponentObserver", "OpenRTM::StatusKind", "RTC::Quaternion", "RTC::TimedQuaternion")
 
     /**
-     * Where OpenRTM-aist 2.0 (C++ and Python alike) corrected InterfaceDataTypes after rtctree's copy was
-     * taken; we follow OpenRTM-aist. The bytes on the wire are the same (three or six doubles; a name).
+     * Where OpenRTM-aist 2.0 (C++ and Python alike) corrected InterfaceDataTypes after rtctree's copy was taken; we
+     * follow OpenRTM-aist. The bytes on the wire are the same (three or six doubles; a name).
      */
-    private val correctedSinceReference = setOf(
-        "RTC::IntensityData: member 1: `RTC::IntensityList intensities` differs from the reference `RTC::IntensityList ranges`",
-        "RTC::Waypoint2D: member 4: `RTC::Velocity2D maxSpeed` differs from the reference `RTC::Pose2D maxSpeed`",
-        "RTC::Waypoint3D: member 4: `RTC::Velocity3D maxSpeed` differs from the reference `RTC::Pose3D maxSpeed`",
-    )
+    private val correctedSinceReference =
+        setOf(
+            "RTC::IntensityData: member 1: `RTC::IntensityList intensities` differs from the reference `RTC::IntensityList ranges`",
+            "RTC::Waypoint2D: member 4: `RTC::Velocity2D maxSpeed` differs from the reference `RTC::Pose2D maxSpeed`",
+            "RTC::Waypoint3D: member 4: `RTC::Velocity3D maxSpeed` differs from the reference `RTC::Pose3D maxSpeed`",
+        )
 
     @Test
     fun `our declarations match the reference IDL`() {
@@ -50,13 +52,20 @@ class IdlConformanceTest {
         val dataTypes = listOf("BasicDataType.idl", "ExtendedDataTypes.idl", "InterfaceDataTypes.idl")
         val reference = listing(referenceIdl(), only = dataTypes).declarations.keys
         assertTrue(reference.size >= 140, "only ${reference.size} reference data types listed")
-        assertEquals(emptyList<String>(), (reference - ours).toList(), "data types the reference declares and ours do not")
+        assertEquals(
+            emptyList<String>(),
+            (reference - ours).toList(),
+            "data types the reference declares and ours do not",
+        )
     }
 
     @Test
     fun `the OpenRTM observer is declared as stock components expect it`() {
         val observer = listing(Paths.get("src/main/idl")).declarations
-        assertEquals("IDL:OpenRTM/ComponentObserver:1.0", observer.getValue("OpenRTM::ComponentObserver")["repository id"])
+        assertEquals(
+            "IDL:OpenRTM/ComponentObserver:1.0",
+            observer.getValue("OpenRTM::ComponentObserver")["repository id"],
+        )
         assertEquals("SDOPackage::SDOService", observer.getValue("OpenRTM::ComponentObserver")["inherits"])
         assertEquals(
             "oneway void(in OpenRTM::StatusKind, in string)",
@@ -72,8 +81,18 @@ class IdlConformanceTest {
     private fun referenceIdl(): Path {
         val venv = work.resolve("reference-venv")
         if (!Files.exists(venv.resolve("bin/pip"))) run(Peers.tool("python").toString(), "-m", "venv", venv.toString())
-        val pinned = Files.readAllLines(root.resolve("scripts/peers-requirements.txt")).single { it.startsWith("rtctree-aist==") }
-        run(venv.resolve("bin/pip").toString(), "install", "--quiet", "--disable-pip-version-check", "--no-deps", pinned)
+        val pinned =
+            Files.readAllLines(root.resolve("scripts/peers-requirements.txt")).single {
+                it.startsWith("rtctree-aist==")
+            }
+        run(
+            venv.resolve("bin/pip").toString(),
+            "install",
+            "--quiet",
+            "--disable-pip-version-check",
+            "--no-deps",
+            pinned,
+        )
         return Files.walk(venv).use { paths ->
             paths.asSequence().single { it.endsWith("rtctree/data/idl") && Files.isDirectory(it) }
         }
@@ -82,13 +101,26 @@ class IdlConformanceTest {
     /** The declarations of the IDL files in [idlDirectory] ([only] those named, if given) and of what they include. */
     private fun listing(idlDirectory: Path, only: List<String>? = null): IdlListing {
         val includes = stubIncludes()
-        val files = Files.list(idlDirectory).use { paths ->
-            paths.asSequence().filter { it.toString().endsWith(".idl") && (only == null || it.fileName.toString() in only) }.sorted().toList()
-        }
+        val files =
+            Files.list(idlDirectory).use { paths ->
+                paths
+                    .asSequence()
+                    .filter { it.toString().endsWith(".idl") && (only == null || it.fileName.toString() in only) }
+                    .sorted()
+                    .toList()
+            }
         assertTrue(files.isNotEmpty(), "no IDL in $idlDirectory")
         val lines = files.flatMap { file ->
-            run(Peers.tool("omniidl").toString(), "-p", Paths.get("src/test/omniidl").toAbsolutePath().toString(), "-b", "canon",
-                "-I$includes", "-I$idlDirectory", file.toString())
+            run(
+                Peers.tool("omniidl").toString(),
+                "-p",
+                Paths.get("src/test/omniidl").toAbsolutePath().toString(),
+                "-b",
+                "canon",
+                "-I$includes",
+                "-I$idlDirectory",
+                file.toString(),
+            )
         }
         return IdlListing.parse(lines.distinct().filterNot { it.startsWith("CosNotifyComm::") })
     }

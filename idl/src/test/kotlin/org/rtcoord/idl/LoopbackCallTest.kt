@@ -21,49 +21,79 @@ import org.junit.jupiter.api.Test
 import org.omg.CORBA.Any
 
 /**
- * The generated bindings work on JacORB over real IIOP: the servant lives in one ORB, the client in
- * another, so every call is marshalled and sent over loopback.
+ * The generated bindings work on JacORB over real IIOP: the servant lives in one ORB, the client in another, so every
+ * call is marshalled and sent over loopback.
  */
 class LoopbackCallTest {
     private class RateContext : ExecutionContextServicePOA() {
         var rate = 1000.0
-        override fun get_profile() = ExecutionContextProfile(ExecutionKind.PERIODIC, rate, null, emptyArray(), emptyArray())
+
+        override fun get_profile() =
+            ExecutionContextProfile(ExecutionKind.PERIODIC, rate, null, emptyArray(), emptyArray())
+
         override fun is_running() = true
+
         override fun start() = ReturnCode_t.PRECONDITION_NOT_MET
+
         override fun stop() = ReturnCode_t.RTC_OK
+
         override fun get_rate() = rate
+
         override fun set_rate(rate: Double): ReturnCode_t {
             if (rate <= 0.0) return ReturnCode_t.BAD_PARAMETER
             this.rate = rate
             return ReturnCode_t.RTC_OK
         }
+
         override fun add_component(comp: LightweightRTObject?) = ReturnCode_t.RTC_OK
+
         override fun remove_component(comp: LightweightRTObject?) = ReturnCode_t.RTC_OK
+
         override fun activate_component(comp: LightweightRTObject?) = ReturnCode_t.RTC_OK
+
         override fun deactivate_component(comp: LightweightRTObject?) = ReturnCode_t.RTC_OK
+
         override fun reset_component(comp: LightweightRTObject?) = ReturnCode_t.RTC_OK
+
         override fun get_component_state(comp: LightweightRTObject?) = LifeCycleState.INACTIVE_STATE
+
         override fun get_kind() = ExecutionKind.PERIODIC
     }
 
     /** Rejects every set: enough to see a user exception of the SDO module cross the wire. */
     private class RejectingConfiguration : ConfigurationPOA() {
         private fun reject(what: String): Nothing = throw InvalidParameter("no $what here")
+
         override fun set_device_profile(profile: _SDOPackage.DeviceProfile?) = reject("device profile")
+
         override fun add_service_profile(profile: ServiceProfile?) = reject("service")
+
         override fun add_organization(member_of: Organization?) = reject("organization")
+
         override fun remove_service_profile(id: String?) = reject("service $id")
+
         override fun remove_organization(id: String?) = reject("organization $id")
+
         override fun get_configuration_parameters() = emptyArray<_SDOPackage.Parameter>()
+
         override fun get_configuration_parameter_values() = emptyArray<NameValue>()
+
         override fun get_configuration_parameter_value(name: String?): Any = reject("parameter $name")
+
         override fun set_configuration_parameter(name: String?, value: Any?) = reject("parameter $name")
+
         override fun get_configuration_sets() = emptyArray<ConfigurationSet>()
+
         override fun get_configuration_set(id: String?) = reject("set $id")
+
         override fun set_configuration_set_values(set: ConfigurationSet?) = reject("set ${set?.id}")
+
         override fun get_active_configuration_set() = ConfigurationSet("default", "", emptyArray())
+
         override fun add_configuration_set(set: ConfigurationSet?) = reject("set ${set?.id}")
+
         override fun remove_configuration_set(id: String?) = reject("set $id")
+
         override fun activate_configuration_set(id: String?) = reject("set $id")
     }
 
@@ -93,7 +123,8 @@ class LoopbackCallTest {
                 val ior = server.orb.object_to_string(server.poa.servant_to_reference(RejectingConfiguration()))
                 val configuration = ConfigurationHelper.narrow(client.orb.string_to_object(ior))
 
-                val error = assertThrows(InvalidParameter::class.java) { configuration.activate_configuration_set("fast") }
+                val error =
+                    assertThrows(InvalidParameter::class.java) { configuration.activate_configuration_set("fast") }
                 assertEquals("no set fast here", error.description)
                 assertEquals("default", configuration.get_active_configuration_set().id)
             }

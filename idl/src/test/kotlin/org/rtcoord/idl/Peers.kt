@@ -1,18 +1,23 @@
 package org.rtcoord.idl
 
-import org.junit.jupiter.api.Assertions.fail
-import org.junit.jupiter.api.Assumptions.assumeTrue
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
+import org.junit.jupiter.api.Assertions.fail
+import org.junit.jupiter.api.Assumptions.assumeTrue
 
 /**
- * The peer tools `scripts/peers.sh` installs. A missing tool fails the test in CI and skips it, with the
- * command that installs it, elsewhere.
+ * The peer tools `scripts/peers.sh` installs. A missing tool fails the test in CI and skips it, with the command that
+ * installs it, elsewhere.
  */
 internal object Peers {
-    private val home: Path = System.getenv("RTCOORD_PEERS")?.let { Paths.get(it) }
-        ?: Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord", "peers")
+    private val home: Path =
+        System.getenv("RTCOORD_PEERS")?.let { Paths.get(it) }
+            ?: Paths.get(
+                System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache",
+                "rtcoord",
+                "peers",
+            )
 
     fun tool(name: String): Path {
         val path = home.resolve("bin").resolve(name)

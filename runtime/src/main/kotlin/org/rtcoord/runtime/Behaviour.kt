@@ -1,14 +1,17 @@
 package org.rtcoord.runtime
 
 /**
- * What a component does on its execution context, in the spirit of OpenRTM's `onExecute` and friends.
- * Each callback returns true on success; false (or a thrown exception) sends the component to ERROR as
- * OpenRTM does. Callbacks of one component run one at a time.
+ * What a component does on its execution context, in the spirit of OpenRTM's `onExecute` and friends. Each callback
+ * returns true on success; false (or a thrown exception) sends the component to ERROR as OpenRTM does. Callbacks of one
+ * component run one at a time.
  */
 public interface Behaviour {
     public fun onActivated(rtc: ComponentContext): Boolean = true
+
     public fun onDeactivated(rtc: ComponentContext): Boolean = true
+
     public fun onExecute(rtc: ComponentContext): Boolean = true
+
     public fun onReset(rtc: ComponentContext): Boolean = true
 
     /** Does nothing, successfully. */
@@ -16,16 +19,17 @@ public interface Behaviour {
 
     public companion object {
         /** Writes `value(tick)` to [port] on every execution. */
-        public fun source(port: String, value: (Long) -> Any): Behaviour = object : Behaviour {
-            override fun onExecute(rtc: ComponentContext): Boolean {
-                rtc.write(port, value(rtc.tick))
-                return true
+        public fun source(port: String, value: (Long) -> Any): Behaviour =
+            object : Behaviour {
+                override fun onExecute(rtc: ComponentContext): Boolean {
+                    rtc.write(port, value(rtc.tick))
+                    return true
+                }
             }
-        }
 
         /**
-         * Writes `combine(inputs)` to [output] whenever an input has a sample newer than the last one
-         * used: a localiser fusing its sensors.
+         * Writes `combine(inputs)` to [output] whenever an input has a sample newer than the last one used: a localiser
+         * fusing its sensors.
          */
         public fun fuse(inputs: List<String>, output: String, combine: (List<Sample?>) -> Any): Behaviour =
             object : Behaviour {

@@ -3,12 +3,14 @@ package org.rtcoord.runtime
 import RTC.ExecutionKind
 
 /**
- * An execution context a component owns: the [kind] its profile reports, its [rate] in Hz and the
- * implementation it is an instance of ([typeName], the profile's `type` property). Whatever the kind, it
- * runs its participants at its rate, as OpenRTM-aist-Python's `EventDrivenExecutionContext` (a
- * `PeriodicExecutionContext` that reports `EVENT_DRIVEN`) does.
+ * An execution context a component owns: the [kind] its profile reports, its [rate] in Hz and the implementation it is
+ * an instance of ([typeName], the profile's `type` property). Whatever the kind, it runs its participants at its rate,
+ * as OpenRTM-aist-Python's `EventDrivenExecutionContext` (a `PeriodicExecutionContext` that reports `EVENT_DRIVEN`)
+ * does.
  */
-public class ContextSpec @JvmOverloads constructor(
+public class ContextSpec
+@JvmOverloads
+constructor(
     public val rate: Double,
     public val kind: Kind = Kind.PERIODIC,
     public val typeName: String = kind.defaultTypeName,

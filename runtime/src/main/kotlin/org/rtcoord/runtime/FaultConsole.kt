@@ -4,9 +4,9 @@ import RTC.ReturnCode_t
 import java.io.PrintStream
 
 /**
- * The commands a runtime process takes on stdin, one a line, to inject faults by hand (`scripts/fixtures`,
- * `rtcoord sim`) into the [components] there are at that moment: each is acknowledged with one line on
- * [out] saying what it did, each mistake with one line on [err], prefixed with [tool].
+ * The commands a runtime process takes on stdin, one a line, to inject faults by hand (`scripts/fixtures`, `rtcoord
+ * sim`) into the [components] there are at that moment: each is acknowledged with one line on [out] saying what it did,
+ * each mistake with one line on [err], prefixed with [tool].
  */
 public class FaultConsole(
     private val components: () -> List<RuntimeComponent>,
@@ -23,12 +23,17 @@ public class FaultConsole(
         if (command !in COMMANDS) return complain("unknown command '$command' ('help' lists them)")
         if (words.size != 2) return complain("$command needs one component name: $command NAME")
         val name = words[1]
-        val component = components().firstOrNull { it.instanceName == name && !it.isExited }
-            ?: return complain("no component '$name' (components: ${components().filterNot { it.isExited }.joinToString { it.instanceName }.ifEmpty { "none" }})")
+        val component =
+            components().firstOrNull { it.instanceName == name && !it.isExited }
+                ?: return complain(
+                    "no component '$name' (components: ${components().filterNot { it.isExited }.joinToString { it.instanceName }.ifEmpty { "none" }})"
+                )
         when (command) {
-            "activate" -> component.activate().let { code ->
-                if (code == ReturnCode_t.RTC_OK) say("activated $name") else complain("activate $name: ${code.value().let(::returnCode)}")
-            }
+            "activate" ->
+                component.activate().let { code ->
+                    if (code == ReturnCode_t.RTC_OK) say("activated $name")
+                    else complain("activate $name: ${code.value().let(::returnCode)}")
+                }
             "fail" -> {
                 component.fail()
                 say("failed $name: its next execution fails into ERROR; a reset recovers it")
@@ -39,13 +44,19 @@ public class FaultConsole(
             }
             "hang" -> {
                 component.hangExecution()
-                val now = if (awaitStuck(component)) "its execution context is stalled in it" else "it is not executing now; its context stalls once it does"
-                say("hung $name: its on_execute never returns ($now): it keeps its state, and activate, deactivate and reset " +
-                    "answer RTC_ERROR after 0.5 s, until 'repair $name'")
+                val now =
+                    if (awaitStuck(component)) "its execution context is stalled in it"
+                    else "it is not executing now; its context stalls once it does"
+                say(
+                    "hung $name: its on_execute never returns ($now): it keeps its state, and activate, deactivate and reset " +
+                        "answer RTC_ERROR after 0.5 s, until 'repair $name'"
+                )
             }
             "freeze" -> {
                 component.freezeOutput()
-                say("froze $name: it stays ${component.state.label()} and executes, but its out-ports publish nothing until 'repair $name'")
+                say(
+                    "froze $name: it stays ${component.state.label()} and executes, but its out-ports publish nothing until 'repair $name'"
+                )
             }
             "repair" -> {
                 component.repair()
@@ -55,7 +66,9 @@ public class FaultConsole(
             }
             "lose-connectors" -> {
                 component.loseConnectors()
-                say("lost the connectors of $name, as an out-port whose peer stopped answering drops them: it runs on, unconnected")
+                say(
+                    "lost the connectors of $name, as an out-port whose peer stopped answering drops them: it runs on, unconnected"
+                )
             }
             "exit" -> {
                 component.exit()
@@ -65,8 +78,8 @@ public class FaultConsole(
     }
 
     /**
-     * Whether [component]'s context reaches its hung execution within two periods and a second: at once
-     * if it is ACTIVE (the next tick runs it), never if it is not executing.
+     * Whether [component]'s context reaches its hung execution within two periods and a second: at once if it is ACTIVE
+     * (the next tick runs it), never if it is not executing.
      */
     private fun awaitStuck(component: RuntimeComponent): Boolean {
         if (component.state != RTC.LifeCycleState.ACTIVE_STATE) return false
@@ -88,19 +101,22 @@ public class FaultConsole(
     public companion object {
         private val COMMANDS = setOf("activate", "fail", "break", "hang", "freeze", "repair", "lose-connectors", "exit")
 
-        private val RETURN_CODES = listOf("RTC_OK", "RTC_ERROR", "BAD_PARAMETER", "UNSUPPORTED", "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET")
+        private val RETURN_CODES =
+            listOf("RTC_OK", "RTC_ERROR", "BAD_PARAMETER", "UNSUPPORTED", "OUT_OF_RESOURCES", "PRECONDITION_NOT_MET")
 
-        private fun RTC.LifeCycleState.label(): String = when (value()) {
-            RTC.LifeCycleState._ACTIVE_STATE -> "ACTIVE"
-            RTC.LifeCycleState._INACTIVE_STATE -> "INACTIVE"
-            RTC.LifeCycleState._ERROR_STATE -> "ERROR"
-            else -> "CREATED"
-        }
+        private fun RTC.LifeCycleState.label(): String =
+            when (value()) {
+                RTC.LifeCycleState._ACTIVE_STATE -> "ACTIVE"
+                RTC.LifeCycleState._INACTIVE_STATE -> "INACTIVE"
+                RTC.LifeCycleState._ERROR_STATE -> "ERROR"
+                else -> "CREATED"
+            }
 
         private fun returnCode(value: Int): String = RETURN_CODES.getOrElse(value) { "return code $value" }
 
         /** What `help` prints, and the process's usage ends with. */
-        public val HELP: String = """
+        public val HELP: String =
+            """
             Commands on stdin, one a line; each is answered with a line saying what it did:
               activate NAME   activate the component, as rtact does
               fail NAME       its next execution fails: it goes to ERROR; a reset recovers it
@@ -113,6 +129,7 @@ public class FaultConsole(
                               every connector of its ports is lost, as when its peer stops answering: both ends drop it
               exit NAME       the component exits, as rtexit does
               help            this list
-        """.trimIndent()
+            """
+                .trimIndent()
     }
 }

@@ -6,7 +6,8 @@ import java.util.concurrent.CountDownLatch
 internal class Gate {
     @Volatile private var latch: CountDownLatch? = null
 
-    val isClosed: Boolean get() = latch != null
+    val isClosed: Boolean
+        get() = latch != null
 
     fun close() {
         if (latch == null) latch = CountDownLatch(1)

@@ -7,9 +7,9 @@ import kotlinx.coroutines.launch
 import org.slf4j.LoggerFactory
 
 /**
- * Sends an out-port's samples, encoded in its connector's byte order, to one connected in-port, from its
- * own coroutine, keeping only the newest sample when the peer is slower than the writer (OpenRTM's `new`
- * push policy). A slow or dead peer never blocks the writing component.
+ * Sends an out-port's samples, encoded in its connector's byte order, to one connected in-port, from its own coroutine,
+ * keeping only the newest sample when the peer is slower than the writer (OpenRTM's `new` push policy). A slow or dead
+ * peer never blocks the writing component.
  */
 internal class Publisher(
     private val target: InPortCdr,

@@ -8,9 +8,6 @@ import RTC.ExecutionKind
 import RTC.LifeCycleState
 import RTC.LightweightRTObject
 import RTC.ReturnCode_t
-import org.omg.CORBA.portable.InputStream
-import org.omg.CORBA.portable.OutputStream
-import org.omg.CORBA.portable.ResponseHandler
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.ScheduledFuture
@@ -18,28 +15,30 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.milliseconds
+import org.omg.CORBA.portable.InputStream
+import org.omg.CORBA.portable.OutputStream
+import org.omg.CORBA.portable.ResponseHandler
 
 /**
- * An execution context of the kind [spec] says (reported by `get_kind` and its profile), periodic
- * whatever its kind: it holds the lifecycle state of each participant and runs their behaviour at its rate. Transitions follow OpenRTM: activate from INACTIVE, deactivate from ACTIVE,
- * reset from ERROR. As in OpenRTM's state machine, a transition's callbacks and the hints they raise come
- * before the new state shows: a state read meanwhile, which never waits for a transition, finds the old
- * one. A failing `on_execute` aborts the component: `on_deactivated` runs (INACTIVE is announced if it
- * succeeds), then `on_aborting` (ERROR is announced), and the component is in ERROR. What
- * `on_deactivated` returns changes nothing else: a deactivation always ends INACTIVE, announced only
- * when the callback succeeded. A failing `on_activated` sends the component to ERROR. A reset whose
- * `on_reset` fails leaves the component in ERROR, announces nothing and answers `RTC_ERROR` once
- * [transitionTimeout] has passed, as OpenRTM's synchronous reset waits that long for the component to
- * leave ERROR.
+ * An execution context of the kind [spec] says (reported by `get_kind` and its profile), periodic whatever its kind: it
+ * holds the lifecycle state of each participant and runs their behaviour at its rate. Transitions follow OpenRTM:
+ * activate from INACTIVE, deactivate from ACTIVE, reset from ERROR. As in OpenRTM's state machine, a transition's
+ * callbacks and the hints they raise come before the new state shows: a state read meanwhile, which never waits for a
+ * transition, finds the old one. A failing `on_execute` aborts the component: `on_deactivated` runs (INACTIVE is
+ * announced if it succeeds), then `on_aborting` (ERROR is announced), and the component is in ERROR. What
+ * `on_deactivated` returns changes nothing else: a deactivation always ends INACTIVE, announced only when the callback
+ * succeeded. A failing `on_activated` sends the component to ERROR. A reset whose `on_reset` fails leaves the component
+ * in ERROR, announces nothing and answers `RTC_ERROR` once [transitionTimeout] has passed, as OpenRTM's synchronous
+ * reset waits that long for the component to leave ERROR.
  *
- * A participant whose transition callbacks are slow ([RuntimeComponent.slowTransitions]) keeps its old
- * state while they run; a call that outlasts [transitionTimeout] answers `RTC_ERROR`, and the new state
- * shows when the callback returns, as OpenRTM's synchronous transitions do.
+ * A participant whose transition callbacks are slow ([RuntimeComponent.slowTransitions]) keeps its old state while they
+ * run; a call that outlasts [transitionTimeout] answers `RTC_ERROR`, and the new state shows when the callback returns,
+ * as OpenRTM's synchronous transitions do.
  *
- * An ACTIVE participant whose execution hangs ([RuntimeComponent.hangExecution]) holds the context's
- * thread as a hung `on_execute` holds OpenRTM's: no participant executes any more, and a transition
- * asked of the context is never made (OpenRTM's thread makes them), so the call answers `RTC_ERROR`
- * after [transitionTimeout] with the state unchanged. States are still answered at once.
+ * An ACTIVE participant whose execution hangs ([RuntimeComponent.hangExecution]) holds the context's thread as a hung
+ * `on_execute` holds OpenRTM's: no participant executes any more, and a transition asked of the context is never made
+ * (OpenRTM's thread makes them), so the call answers `RTC_ERROR` after [transitionTimeout] with the state unchanged.
+ * States are still answered at once.
  */
 internal class RuntimeExecutionContext(
     private val runtime: RuntimeProcess,
@@ -47,7 +46,8 @@ internal class RuntimeExecutionContext(
     private val spec: ContextSpec,
 ) : ExecutionContextServicePOA() {
     /** The implementation it stands for, as its profile's `type` property names it. */
-    val typeName: String get() = spec.typeName
+    val typeName: String
+        get() = spec.typeName
 
     private class Participant(val component: RuntimeComponent, val handle: Int) {
         @Volatile var state: LifeCycleState = LifeCycleState.INACTIVE_STATE
@@ -67,24 +67,26 @@ internal class RuntimeExecutionContext(
     private var rate = spec.rate
 
     /**
-     * The profile's properties: the options OpenRTM-aist creates a context with
-     * (`RTObject.getInheritedECOptions` then `exec_cxt.periodic.*`, copied by `ExecutionContextBase.init`),
-     * with its default configuration's values, its implementation's name and the rate as the component's
-     * `exec_cxt.periodic.rate` gives it; `set_rate` leaves them as they are, as OpenRTM-aist does.
+     * The profile's properties: the options OpenRTM-aist creates a context with (`RTObject.getInheritedECOptions` then
+     * `exec_cxt.periodic.*`, copied by `ExecutionContextBase.init`), with its default configuration's values, its
+     * implementation's name and the rate as the component's `exec_cxt.periodic.rate` gives it; `set_rate` leaves them
+     * as they are, as OpenRTM-aist does.
      */
-    private val properties = linkedMapOf(
-        "sync_transition" to "YES",
-        "transition_timeout" to "0.5",
-        "type" to spec.typeName,
-        "rate" to spec.rate.toString(),
-    )
+    private val properties =
+        linkedMapOf(
+            "sync_transition" to "YES",
+            "transition_timeout" to "0.5",
+            "type" to spec.typeName,
+            "rate" to spec.rate.toString(),
+        )
     private var ticker: ScheduledFuture<*>? = null
 
     /** The participant whose execution has not returned: the context's thread is stuck in it. */
     private var stuckIn: RuntimeComponent? = null
 
     /** Whether the thread is stuck in a participant's hung execution. */
-    val isStuck: Boolean get() = synchronized(lock) { stuckIn != null }
+    val isStuck: Boolean
+        get() = synchronized(lock) { stuckIn != null }
 
     /** How many periods the context has run so far, stuck ones included. */
     @Volatile
@@ -99,27 +101,32 @@ internal class RuntimeExecutionContext(
     }
 
     /** Makes [component] a participant known to it as [handle], INACTIVE. */
-    fun join(component: RuntimeComponent, handle: Int) = synchronized(lock) {
-        val participant = Participant(component, handle)
-        participants[component] = participant
-        byIdentity[component.identity] = participant
-    }
+    fun join(component: RuntimeComponent, handle: Int) =
+        synchronized(lock) {
+            val participant = Participant(component, handle)
+            participants[component] = participant
+            byIdentity[component.identity] = participant
+        }
 
     /** Drops [component] whatever its state: it is exiting. */
-    fun leave(component: RuntimeComponent) = synchronized(lock) {
-        if (stuckIn === component) stuckIn = null
-        byIdentity.remove(component.identity)
-        participants.remove(component)?.takeIf { it.state == LifeCycleState.ACTIVE_STATE }?.let {
-            component.perform(it.handle) { rtc -> onDeactivated(rtc) }
+    fun leave(component: RuntimeComponent) =
+        synchronized(lock) {
+            if (stuckIn === component) stuckIn = null
+            byIdentity.remove(component.identity)
+            participants
+                .remove(component)
+                ?.takeIf { it.state == LifeCycleState.ACTIVE_STATE }
+                ?.let {
+                    component.perform(it.handle) { rtc -> onDeactivated(rtc) }
+                }
         }
-    }
 
-    fun stateOf(component: RuntimeComponent): LifeCycleState = byIdentity[component.identity]?.state ?: LifeCycleState.CREATED_STATE
+    fun stateOf(component: RuntimeComponent): LifeCycleState =
+        byIdentity[component.identity]?.state ?: LifeCycleState.CREATED_STATE
 
     /**
-     * The participant [comp] refers to. Only this context's participants are looked at, as OpenRTM's
-     * contexts do: a search through every component of the process made listing a 1000-component
-     * system quadratic in the runtime.
+     * The participant [comp] refers to. Only this context's participants are looked at, as OpenRTM's contexts do: a
+     * search through every component of the process made listing a 1000-component system quadratic in the runtime.
      */
     private fun participantOf(comp: LightweightRTObject?): Participant? = comp?.identity()?.let(byIdentity::get)
 
@@ -130,30 +137,36 @@ internal class RuntimeExecutionContext(
 
     override fun is_running(): Boolean = synchronized(lock) { ticker != null }
 
-    override fun start(): ReturnCode_t = synchronized(lock) {
-        if (ticker != null) return ReturnCode_t.PRECONDITION_NOT_MET
-        schedule()
-        announce { "STARTUP:${it.handle}" }
-        ReturnCode_t.RTC_OK
-    }
+    override fun start(): ReturnCode_t =
+        synchronized(lock) {
+            if (ticker != null) return ReturnCode_t.PRECONDITION_NOT_MET
+            schedule()
+            announce { "STARTUP:${it.handle}" }
+            ReturnCode_t.RTC_OK
+        }
 
-    override fun stop(): ReturnCode_t = synchronized(lock) {
-        val running = ticker ?: return ReturnCode_t.PRECONDITION_NOT_MET
-        running.cancel(false)
-        ticker = null
-        announce { "SHUTDOWN:${it.handle}" }
-        ReturnCode_t.RTC_OK
-    }
+    override fun stop(): ReturnCode_t =
+        synchronized(lock) {
+            val running = ticker ?: return ReturnCode_t.PRECONDITION_NOT_MET
+            running.cancel(false)
+            ticker = null
+            announce { "SHUTDOWN:${it.handle}" }
+            ReturnCode_t.RTC_OK
+        }
 
     override fun get_rate(): Double = synchronized(lock) { rate }
 
-    override fun set_rate(rate: Double): ReturnCode_t = synchronized(lock) {
-        if (!(rate > 0.0)) return ReturnCode_t.BAD_PARAMETER
-        this.rate = rate
-        ticker?.let { it.cancel(false); schedule() }
-        announce { "RATE_CHANGED:${it.handle}" }
-        ReturnCode_t.RTC_OK
-    }
+    override fun set_rate(rate: Double): ReturnCode_t =
+        synchronized(lock) {
+            if (!(rate > 0.0)) return ReturnCode_t.BAD_PARAMETER
+            this.rate = rate
+            ticker?.let {
+                it.cancel(false)
+                schedule()
+            }
+            announce { "RATE_CHANGED:${it.handle}" }
+            ReturnCode_t.RTC_OK
+        }
 
     override fun add_component(comp: LightweightRTObject?): ReturnCode_t {
         val component = runtime.componentOf(comp) ?: return ReturnCode_t.BAD_PARAMETER
@@ -166,12 +179,14 @@ internal class RuntimeExecutionContext(
 
     override fun remove_component(comp: LightweightRTObject?): ReturnCode_t {
         val component = participantOf(comp)?.component ?: return ReturnCode_t.BAD_PARAMETER
-        val participant = synchronized(lock) {
-            val participant = participants[component] ?: return ReturnCode_t.BAD_PARAMETER
-            if (participant.state == LifeCycleState.ACTIVE_STATE || component === owner) return ReturnCode_t.PRECONDITION_NOT_MET
-            byIdentity.remove(component.identity)
-            participants.remove(component)
-        }
+        val participant =
+            synchronized(lock) {
+                val participant = participants[component] ?: return ReturnCode_t.BAD_PARAMETER
+                if (participant.state == LifeCycleState.ACTIVE_STATE || component === owner)
+                    return ReturnCode_t.PRECONDITION_NOT_MET
+                byIdentity.remove(component.identity)
+                participants.remove(component)
+            }
         component.detach(participant!!.handle)
         component.observers.raise(StatusKind.EC_STATUS, "DETACHED:${participant.handle}")
         return ReturnCode_t.RTC_OK
@@ -186,10 +201,14 @@ internal class RuntimeExecutionContext(
     override fun reset_component(comp: LightweightRTObject?): ReturnCode_t {
         val component = participantOf(comp)?.component
         var resetFailed = false
-        val code = transition(comp, from = LifeCycleState.ERROR_STATE, to = LifeCycleState.INACTIVE_STATE) { rtc ->
-            // The fault is over once a reset succeeds, however long after the call answered.
-            (component?.isBroken != true && onReset(rtc)).also { resetFailed = !it; if (it) component?.clearFailure() }
-        }
+        val code =
+            transition(comp, from = LifeCycleState.ERROR_STATE, to = LifeCycleState.INACTIVE_STATE) { rtc ->
+                // The fault is over once a reset succeeds, however long after the call answered.
+                (component?.isBroken != true && onReset(rtc)).also {
+                    resetFailed = !it
+                    if (it) component?.clearFailure()
+                }
+            }
         // Outside the lock: the context keeps running its other participants meanwhile.
         if (resetFailed) Thread.sleep(transitionTimeout.inWholeMilliseconds)
         return code
@@ -201,21 +220,23 @@ internal class RuntimeExecutionContext(
 
     override fun get_kind(): ExecutionKind = spec.kind.idl
 
-    override fun get_profile(): ExecutionContextProfile = synchronized(lock) {
-        ExecutionContextProfile(
-            spec.kind.idl,
-            rate,
-            owner.ref,
-            participants.keys.map { it.ref }.toTypedArray(),
-            properties.map { (name, value) -> owner.nameValue(name, value) }.toTypedArray(),
-        )
-    }
+    override fun get_profile(): ExecutionContextProfile =
+        synchronized(lock) {
+            ExecutionContextProfile(
+                spec.kind.idl,
+                rate,
+                owner.ref,
+                participants.keys.map { it.ref }.toTypedArray(),
+                properties.map { (name, value) -> owner.nameValue(name, value) }.toTypedArray(),
+            )
+        }
 
     /** Stops ticking; the owner is exiting. */
-    fun shutdown() = synchronized(lock) {
-        ticker?.cancel(false)
-        ticker = null
-    }
+    fun shutdown() =
+        synchronized(lock) {
+            ticker?.cancel(false)
+            ticker = null
+        }
 
     private fun transition(
         comp: LightweightRTObject?,
@@ -250,32 +271,33 @@ internal class RuntimeExecutionContext(
         to: LifeCycleState,
         action: Behaviour.(ComponentContext) -> Boolean,
     ): ReturnCode_t {
-        val code = synchronized(lock) {
-            val participant = participants[component] ?: return ReturnCode_t.BAD_PARAMETER
-            if (participant.state != from) return ReturnCode_t.PRECONDITION_NOT_MET
-            // The thread that would make the transition is stuck: the request waits for it in vain.
-            if (stuckIn != null) return@synchronized null
-            // OpenRTM's on_activated updates the configuration before the component's onActivated.
-            if (to == LifeCycleState.ACTIVE_STATE) component.updateConfiguration()
-            val succeeded = component.perform(participant.handle, action)
-            when {
-                to == LifeCycleState.INACTIVE_STATE && from == LifeCycleState.ACTIVE_STATE -> {
-                    enter(participant, to, announced = succeeded)
-                    return@synchronized ReturnCode_t.RTC_OK
+        val code =
+            synchronized(lock) {
+                val participant = participants[component] ?: return ReturnCode_t.BAD_PARAMETER
+                if (participant.state != from) return ReturnCode_t.PRECONDITION_NOT_MET
+                // The thread that would make the transition is stuck: the request waits for it in vain.
+                if (stuckIn != null) return@synchronized null
+                // OpenRTM's on_activated updates the configuration before the component's onActivated.
+                if (to == LifeCycleState.ACTIVE_STATE) component.updateConfiguration()
+                val succeeded = component.perform(participant.handle, action)
+                when {
+                    to == LifeCycleState.INACTIVE_STATE && from == LifeCycleState.ACTIVE_STATE -> {
+                        enter(participant, to, announced = succeeded)
+                        return@synchronized ReturnCode_t.RTC_OK
+                    }
+                    succeeded -> enter(participant, to)
+                    from == LifeCycleState.ERROR_STATE -> Unit
+                    else -> enter(participant, LifeCycleState.ERROR_STATE)
                 }
-                succeeded -> enter(participant, to)
-                from == LifeCycleState.ERROR_STATE -> Unit
-                else -> enter(participant, LifeCycleState.ERROR_STATE)
+                if (succeeded) ReturnCode_t.RTC_OK else ReturnCode_t.RTC_ERROR
             }
-            if (succeeded) ReturnCode_t.RTC_OK else ReturnCode_t.RTC_ERROR
-        }
         return code ?: ReturnCode_t.RTC_ERROR.also { Thread.sleep(transitionTimeout.inWholeMilliseconds) }
     }
 
     /**
-     * Moves [participant] to [state], announcing it unless the callback that made the move failed
-     * ([announced] false: OpenRTM's observer tells only of callbacks that succeeded), and only then
-     * updating the state, as OpenRTM's state machine does once the actions are done.
+     * Moves [participant] to [state], announcing it unless the callback that made the move failed ([announced] false:
+     * OpenRTM's observer tells only of callbacks that succeeded), and only then updating the state, as OpenRTM's state
+     * machine does once the actions are done.
      */
     private fun enter(participant: Participant, state: LifeCycleState, announced: Boolean = true) {
         val before = participant.state
@@ -316,9 +338,11 @@ internal class RuntimeExecutionContext(
                     return
                 }
                 when (participant.state) {
-                    // on_state_update follows a successful on_execute; on_error runs each period in ERROR: both update the configuration.
+                    // on_state_update follows a successful on_execute; on_error runs each period in ERROR: both update
+                    // the configuration.
                     LifeCycleState.ACTIVE_STATE ->
-                        if (component.execute(participant.handle)) component.updateConfiguration() else abort(participant)
+                        if (component.execute(participant.handle)) component.updateConfiguration()
+                        else abort(participant)
                     LifeCycleState.ERROR_STATE -> component.updateConfiguration()
                     else -> Unit
                 }

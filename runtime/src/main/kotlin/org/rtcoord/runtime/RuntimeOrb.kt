@@ -1,26 +1,33 @@
 package org.rtcoord.runtime
 
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.seconds
 import org.omg.CORBA.ORB
 import org.omg.PortableServer.POA
 import org.omg.PortableServer.POAHelper
 import org.omg.PortableServer.Servant
 import org.rtcoord.idl.OrbRecipe
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * One runtime "process": a JacORB ORB listening on [host] (loopback by default) and [port], with its
- * root POA active. Outgoing calls (to peer ports, observers, the naming service) have a deadline of
- * [callTimeout], so a dead peer never stalls a component.
+ * One runtime "process": a JacORB ORB listening on [host] (loopback by default) and [port], with its root POA active.
+ * Outgoing calls (to peer ports, observers, the naming service) have a deadline of [callTimeout], so a dead peer never
+ * stalls a component.
  */
-public class RuntimeOrb private constructor(
+public class RuntimeOrb
+private constructor(
     public val orb: ORB,
     public val poa: POA,
     public val host: String,
 ) : AutoCloseable {
     /** The port the ORB listens on (the one asked for, or the one the system chose for port 0). */
-    public val port: Int = (orb as org.jacorb.orb.ORB).basicAdapter.endpointProfiles
-        .filterIsInstance<org.jacorb.orb.iiop.IIOPProfile>().first().address.let { (it as org.jacorb.orb.iiop.IIOPAddress).port }
+    public val port: Int =
+        (orb as org.jacorb.orb.ORB)
+            .basicAdapter
+            .endpointProfiles
+            .filterIsInstance<org.jacorb.orb.iiop.IIOPProfile>()
+            .first()
+            .address
+            .let { (it as org.jacorb.orb.iiop.IIOPAddress).port }
 
     @Volatile private var closed = false
 

@@ -10,20 +10,20 @@ import RTC.PortServiceHelper
 import RTC.PortServicePOA
 import RTC.ReturnCode_t
 import _SDOPackage.NameValue
-import org.omg.CORBA.portable.InputStream
-import org.rtcoord.datatypes.DataTypeName
-import org.omg.CORBA.portable.OutputStream
-import org.omg.CORBA.portable.ResponseHandler
-import org.slf4j.LoggerFactory
 import java.util.UUID
 import java.util.concurrent.ConcurrentHashMap
+import org.omg.CORBA.portable.InputStream
+import org.omg.CORBA.portable.OutputStream
+import org.omg.CORBA.portable.ResponseHandler
+import org.rtcoord.datatypes.DataTypeName
+import org.slf4j.LoggerFactory
 
 /**
- * A component's port. `connect` follows OpenRTM's handshake: the connecting port fills in an empty
- * connector id (an id it holds already is refused) and calls `notify_connect` on the first port of the
- * profile; each port refuses a peer it is connected to already (unless the connector says
- * `dataport.allow_dup_connection=YES`), publishes its endpoint, passes the profile on to the next port,
- * subscribes to what the others published, and records the connector. Disconnecting walks the same chain, from its first port that answers.
+ * A component's port. `connect` follows OpenRTM's handshake: the connecting port fills in an empty connector id (an id
+ * it holds already is refused) and calls `notify_connect` on the first port of the profile; each port refuses a peer it
+ * is connected to already (unless the connector says `dataport.allow_dup_connection=YES`), publishes its endpoint,
+ * passes the profile on to the next port, subscribes to what the others published, and records the connector.
+ * Disconnecting walks the same chain, from its first port that answers.
  */
 internal class RuntimePort(val spec: PortSpec, private val component: RuntimeComponent) : PortServicePOA() {
     private val log = LoggerFactory.getLogger(RuntimePort::class.java)
@@ -36,7 +36,8 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
     val fullName: String = "${component.instanceName}.${spec.name}"
 
     /** A service port's interfaces, published and subscribed as OpenRTM-aist's `CorbaPort` does. */
-    private val service: ServiceInterfaces? = (spec as? PortSpec.Service)?.let { ServiceInterfaces(component.instanceName, it) }
+    private val service: ServiceInterfaces? =
+        (spec as? PortSpec.Service)?.let { ServiceInterfaces(component.instanceName, it) }
 
     lateinit var ref: PortService
         private set
@@ -59,8 +60,8 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
     fun latest(): Sample? = latestSample
 
     /**
-     * Pushes [value] to every connected in-port, encoded once for each byte order its connectors
-     * negotiated, unless the component's output is frozen or the type's IDL is not known.
+     * Pushes [value] to every connected in-port, encoded once for each byte order its connectors negotiated, unless the
+     * component's output is frozen or the type's IDL is not known.
      */
     fun write(value: Any) {
         val type = (spec as PortSpec.DataOut).dataType
@@ -68,7 +69,9 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         val time = System.currentTimeMillis() * 1_000_000
         val encoded = HashMap<Boolean, ByteArray>(2)
         for (publisher in publishers.values) {
-            publisher.offer(encoded.getOrPut(publisher.littleEndian) { type.encode(value, time, publisher.littleEndian) })
+            publisher.offer(
+                encoded.getOrPut(publisher.littleEndian) { type.encode(value, time, publisher.littleEndian) }
+            )
         }
         component.observers.raiseTraffic(fullName, outgoing = true)
     }
@@ -78,14 +81,15 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         return super._invoke(method, input, handler)
     }
 
-    override fun get_port_profile(): PortProfile = PortProfile(
-        fullName,
-        interfaces(),
-        ref,
-        get_connector_profiles(),
-        component.ref,
-        properties().map { (name, value) -> component.nameValue(name, value) }.toTypedArray(),
-    )
+    override fun get_port_profile(): PortProfile =
+        PortProfile(
+            fullName,
+            interfaces(),
+            ref,
+            get_connector_profiles(),
+            component.ref,
+            properties().map { (name, value) -> component.nameValue(name, value) }.toTypedArray(),
+        )
 
     override fun get_connector_profiles(): Array<ConnectorProfile> = connectors.values.toTypedArray()
 
@@ -96,7 +100,8 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         val ports = profile.value.ports
         if (ports.isEmpty()) return ReturnCode_t.BAD_PARAMETER
         val id = profile.value.connector_id
-        if (id.isNullOrEmpty()) profile.value.connector_id = UUID.randomUUID().toString() else if (connectors.containsKey(id)) return ReturnCode_t.PRECONDITION_NOT_MET
+        if (id.isNullOrEmpty()) profile.value.connector_id = UUID.randomUUID().toString()
+        else if (connectors.containsKey(id)) return ReturnCode_t.PRECONDITION_NOT_MET
         // As OutPortBase.connect and InPortBase.connect: offer both byte orders unless the caller chose.
         if (spec !is PortSpec.Service && profile.value.properties.none { it.name == ENDIAN }) {
             profile.value.properties += component.nameValue(ENDIAN, "little,big")
@@ -112,22 +117,30 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         val me = connector.ports.indexOfFirst { it._is_equivalent(ref) }
         if (me < 0 || connectors.containsKey(connector.connector_id)) return ReturnCode_t.BAD_PARAMETER
         val requested = connector.properties.associate { it.name to it.stringValue() }
-        if (requested["dataport.allow_dup_connection"]?.uppercase() != "YES" && connector.ports.any { !it._is_equivalent(ref) && connectedTo(it) }) {
+        if (
+            requested["dataport.allow_dup_connection"]?.uppercase() != "YES" &&
+                connector.ports.any { !it._is_equivalent(ref) && connectedTo(it) }
+        ) {
             return ReturnCode_t.PRECONDITION_NOT_MET
         }
         if (!accepts(requested)) return ReturnCode_t.BAD_PARAMETER
-        val littleEndian = if (spec is PortSpec.Service) true else littleEndian(requested) ?: return ReturnCode_t.UNSUPPORTED
+        val littleEndian =
+            if (spec is PortSpec.Service) true else littleEndian(requested) ?: return ReturnCode_t.UNSUPPORTED
 
         if (spec is PortSpec.DataIn) {
-            val inlet = InPortServant(spec.dataType, littleEndian) { sample ->
-                latestSample = sample
-                component.observers.raiseTraffic(fullName, outgoing = false)
-            }
+            val inlet =
+                InPortServant(spec.dataType, littleEndian) { sample ->
+                    latestSample = sample
+                    component.observers.raiseTraffic(fullName, outgoing = false)
+                }
             inlet.ref = OpenRTM.InPortCdrHelper.narrow(component.orb.activate(inlet))
             inlets[connector.connector_id] = inlet
-            connector.properties += component.nameValue("dataport.corba_cdr.inport_ior", component.orb.orb.object_to_string(inlet.ref))
+            connector.properties +=
+                component.nameValue("dataport.corba_cdr.inport_ior", component.orb.orb.object_to_string(inlet.ref))
         }
-        service?.let { connector.properties += it.published().map { (name, value) -> component.nameValue(name, value) } }
+        service?.let {
+            connector.properties += it.published().map { (name, value) -> component.nameValue(name, value) }
+        }
         if (me + 1 < connector.ports.size) {
             val next = connector.ports[me + 1].notify_connect(profile)
             if (next != ReturnCode_t.RTC_OK) {
@@ -139,11 +152,16 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         // As PortBase.notify_connect: the connector is recorded even when subscribing failed, then the error answered.
         val subscribed = service?.subscribes(settled.properties.associate { it.name to it.stringValue() }) ?: true
         if (spec is PortSpec.DataOut) {
-            val inPort = settled.properties.firstOrNull { it.name == "dataport.corba_cdr.inport_ior" }?.stringValue()
-                ?: return ReturnCode_t.BAD_PARAMETER
-            publishers[settled.connector_id] = Publisher(
-                OpenRTM.InPortCdrHelper.narrow(component.orb.orb.string_to_object(inPort)), component, fullName, littleEndian,
-            )
+            val inPort =
+                settled.properties.firstOrNull { it.name == "dataport.corba_cdr.inport_ior" }?.stringValue()
+                    ?: return ReturnCode_t.BAD_PARAMETER
+            publishers[settled.connector_id] =
+                Publisher(
+                    OpenRTM.InPortCdrHelper.narrow(component.orb.orb.string_to_object(inPort)),
+                    component,
+                    fullName,
+                    littleEndian,
+                )
         }
         connectors[settled.connector_id] = settled
         component.observers.raise(StatusKind.PORT_PROFILE, "CONNECT:$fullName")
@@ -184,21 +202,24 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
     }
 
     /** Whether a connector of this port has [other] among its ports, as `CORBA_RTCUtil.already_connected` asks. */
-    private fun connectedTo(other: PortService): Boolean = connectors.values.any { connector -> connector.ports.any { it._is_equivalent(other) } }
+    private fun connectedTo(other: PortService): Boolean =
+        connectors.values.any { connector -> connector.ports.any { it._is_equivalent(other) } }
 
-    private fun properties(): Map<String, String> = when (spec) {
-        is PortSpec.DataIn -> dataPortProperties("DataInPort", spec.dataType)
-        is PortSpec.DataOut -> dataPortProperties("DataOutPort", spec.dataType)
-        is PortSpec.Service -> mapOf("port.port_type" to "CorbaPort")
-    }
+    private fun properties(): Map<String, String> =
+        when (spec) {
+            is PortSpec.DataIn -> dataPortProperties("DataInPort", spec.dataType)
+            is PortSpec.DataOut -> dataPortProperties("DataOutPort", spec.dataType)
+            is PortSpec.Service -> mapOf("port.port_type" to "CorbaPort")
+        }
 
-    private fun dataPortProperties(portType: String, dataType: DataType) = linkedMapOf(
-        "port.port_type" to portType,
-        "dataport.data_type" to dataType.repositoryId,
-        "dataport.dataflow_type" to "push",
-        "dataport.interface_type" to "corba_cdr",
-        "dataport.subscription_type" to "flush,new,periodic",
-    )
+    private fun dataPortProperties(portType: String, dataType: DataType) =
+        linkedMapOf(
+            "port.port_type" to portType,
+            "dataport.data_type" to dataType.repositoryId,
+            "dataport.dataflow_type" to "push",
+            "dataport.interface_type" to "corba_cdr",
+            "dataport.subscription_type" to "flush,new,periodic",
+        )
 
     /** Whether this port supports every connector property it advertises options for. */
     private fun accepts(requested: Map<String, String>): Boolean {
@@ -213,21 +234,26 @@ internal class RuntimePort(val spec: PortSpec, private val component: RuntimeCom
         }
     }
 
-    private fun interfaces(): Array<PortInterfaceProfile> = when (spec) {
-        is PortSpec.Service -> spec.interfaces.map { service ->
-            val polarity = if (service.polarity == ServiceInterface.Polarity.PROVIDED) PortInterfacePolarity.PROVIDED else PortInterfacePolarity.REQUIRED
-            PortInterfaceProfile(service.instanceName, service.typeName, polarity)
-        }.toTypedArray()
-        else -> emptyArray()
-    }
+    private fun interfaces(): Array<PortInterfaceProfile> =
+        when (spec) {
+            is PortSpec.Service ->
+                spec.interfaces
+                    .map { service ->
+                        val polarity =
+                            if (service.polarity == ServiceInterface.Polarity.PROVIDED) PortInterfacePolarity.PROVIDED
+                            else PortInterfacePolarity.REQUIRED
+                        PortInterfaceProfile(service.instanceName, service.typeName, polarity)
+                    }
+                    .toTypedArray()
+            else -> emptyArray()
+        }
 }
 
 private const val ENDIAN = "dataport.serializer.cdr.endian"
 
 /**
- * The byte order a connector's `dataport.serializer.cdr.endian` chose, as OutPortBase.checkEndian reads it:
- * its first entry; little when the connector names no serializer at all (an old peer); null when the
- * first entry is neither.
+ * The byte order a connector's `dataport.serializer.cdr.endian` chose, as OutPortBase.checkEndian reads it: its first
+ * entry; little when the connector names no serializer at all (an old peer); null when the first entry is neither.
  */
 private fun littleEndian(requested: Map<String, String>): Boolean? {
     if (requested.keys.none { it.startsWith("dataport.serializer") }) return true

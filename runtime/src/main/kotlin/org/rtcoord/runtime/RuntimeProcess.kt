@@ -2,6 +2,14 @@ package org.rtcoord.runtime
 
 import RTC.ExecutionContext
 import RTC.LightweightRTObject
+import java.net.InetAddress
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.Executors
+import java.util.concurrent.ScheduledExecutorService
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
@@ -12,40 +20,37 @@ import org.omg.CosNaming.NamingContextExtHelper
 import org.omg.CosNaming.NamingContextPackage.AlreadyBound
 import org.omg.CosNaming.NamingContextPackage.NotFound
 import org.slf4j.LoggerFactory
-import java.net.InetAddress
-import java.util.concurrent.CopyOnWriteArrayList
-import java.util.concurrent.Executors
-import java.util.concurrent.ScheduledExecutorService
-import java.util.concurrent.TimeUnit
-import java.util.concurrent.atomic.AtomicInteger
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * One "process", like an OpenRTM-aist executable: an ORB, the components it hosts, their
- * execution contexts' scheduler, and their registration in a naming service under [contexts]
- * (`<host>.host_cxt` by default).
+ * One "process", like an OpenRTM-aist executable: an ORB, the components it hosts, their execution contexts' scheduler,
+ * and their registration in a naming service under [contexts] (`<host>.host_cxt` by default).
  */
-public class RuntimeProcess private constructor(
+public class RuntimeProcess
+private constructor(
     public val orb: RuntimeOrb,
     namingAddress: String?,
     public val contexts: List<String>,
 ) : AutoCloseable {
     private val log = LoggerFactory.getLogger(RuntimeProcess::class.java)
     private val hosted = CopyOnWriteArrayList<RuntimeComponent>()
-    private val naming: NamingContextExt? = namingAddress?.let { NamingContextExtHelper.narrow(orb.orb.string_to_object(it)) }
-
-    internal val scheduler: ScheduledExecutorService = Executors.newScheduledThreadPool(2) { task ->
-        Thread(task, "runtime-ec-${threads.incrementAndGet()}").apply { isDaemon = true }
+    private val naming: NamingContextExt? = namingAddress?.let {
+        NamingContextExtHelper.narrow(orb.orb.string_to_object(it))
     }
-    internal val scope = CoroutineScope(SupervisorJob() + Dispatchers.IO.limitedParallelism(16) + CoroutineName("runtime-process"))
+
+    internal val scheduler: ScheduledExecutorService =
+        Executors.newScheduledThreadPool(2) { task ->
+            Thread(task, "runtime-ec-${threads.incrementAndGet()}").apply { isDaemon = true }
+        }
+    internal val scope =
+        CoroutineScope(SupervisorJob() + Dispatchers.IO.limitedParallelism(16) + CoroutineName("runtime-process"))
 
     /** The components this runtime hosts, in creation order. */
-    public val components: List<RuntimeComponent> get() = ArrayList(hosted)
+    public val components: List<RuntimeComponent>
+        get() = ArrayList(hosted)
 
     /**
-     * Creates and starts an instance of [type] named [instanceName] (by default the type name plus the
-     * lowest free index, as OpenRTM names them), and binds it in the naming service when [bind] is set.
+     * Creates and starts an instance of [type] named [instanceName] (by default the type name plus the lowest free
+     * index, as OpenRTM names them), and binds it in the naming service when [bind] is set.
      */
     public fun create(
         type: ComponentType,
@@ -63,7 +68,8 @@ public class RuntimeProcess private constructor(
 
     /** The hosted component named [instanceName]. */
     public fun component(instanceName: String): RuntimeComponent =
-        hosted.firstOrNull { it.instanceName == instanceName } ?: throw IllegalArgumentException("no component $instanceName")
+        hosted.firstOrNull { it.instanceName == instanceName }
+            ?: throw IllegalArgumentException("no component $instanceName")
 
     /** The name OpenRTM would give the next instance of [typeName]: `typeName` plus the lowest free index. */
     public fun nextName(typeName: String): String =
@@ -75,11 +81,12 @@ public class RuntimeProcess private constructor(
         var context: org.omg.CosNaming.NamingContext = root
         for (segment in contexts) {
             val path = root.to_name(segment)
-            context = try {
-                context.bind_new_context(path)
-            } catch (e: AlreadyBound) {
-                org.omg.CosNaming.NamingContextHelper.narrow(context.resolve(path))
-            }
+            context =
+                try {
+                    context.bind_new_context(path)
+                } catch (e: AlreadyBound) {
+                    org.omg.CosNaming.NamingContextHelper.narrow(context.resolve(path))
+                }
         }
         context.rebind(root.to_name(name), target)
     }
@@ -101,9 +108,9 @@ public class RuntimeProcess private constructor(
     }
 
     /**
-     * How long after a component exits its manager unregisters it and unbinds its name, as OpenRTM-aist's
-     * periodic `Manager.cleanupComponents` does (every second in OpenRTM-aist-Python; about 0.3 s was
-     * observed). Meanwhile its name resolves to a dead object and its manager still lists it.
+     * How long after a component exits its manager unregisters it and unbinds its name, as OpenRTM-aist's periodic
+     * `Manager.cleanupComponents` does (every second in OpenRTM-aist-Python; about 0.3 s was observed). Meanwhile its
+     * name resolves to a dead object and its manager still lists it.
      */
     @Volatile public var cleanupDelay: Duration = 300.milliseconds
 
@@ -129,8 +136,9 @@ public class RuntimeProcess private constructor(
     internal fun componentOf(ref: LightweightRTObject?): RuntimeComponent? =
         ref?.identity()?.let { target -> everywhere().flatMap { it.hosted }.firstOrNull { it.identity == target } }
 
-    internal fun executionContextOf(ref: ExecutionContext?): RuntimeExecutionContext? =
-        ref?.let { target -> everywhere().flatMap { it.hosted }.firstNotNullOfOrNull { it.ownedContextIf(target) } }
+    internal fun executionContextOf(ref: ExecutionContext?): RuntimeExecutionContext? = ref?.let { target ->
+        everywhere().flatMap { it.hosted }.firstNotNullOfOrNull { it.ownedContextIf(target) }
+    }
 
     /** Exits every component and stops the ORB. */
     override fun close() {
@@ -144,12 +152,13 @@ public class RuntimeProcess private constructor(
     @Volatile private var killed = false
 
     /** Whether [kill] ended it. */
-    public val isKilled: Boolean get() = killed
+    public val isKilled: Boolean
+        get() = killed
 
     /**
-     * Ends the process as `kill -9` ends an OpenRTM-aist executable: its ORB stops answering at once, its
-     * components stop executing and tell nobody, and every name it bound stays bound (a dead reference),
-     * since only a clean shutdown unbinds (`Manager.shutdownNaming`). Closing it later changes nothing.
+     * Ends the process as `kill -9` ends an OpenRTM-aist executable: its ORB stops answering at once, its components
+     * stop executing and tell nobody, and every name it bound stays bound (a dead reference), since only a clean
+     * shutdown unbinds (`Manager.shutdownNaming`). Closing it later changes nothing.
      */
     public fun kill() {
         if (!runtimes.remove(this)) return
@@ -166,13 +175,18 @@ public class RuntimeProcess private constructor(
         private val runtimes = CopyOnWriteArrayList<RuntimeProcess>()
 
         /** The context OpenRTM binds components in by default: `<hostname>.host_cxt`. */
-        public val hostContext: String = "${runCatching { InetAddress.getLocalHost().hostName }.getOrDefault("localhost")}.host_cxt"
+        public val hostContext: String =
+            "${runCatching { InetAddress.getLocalHost().hostName }.getOrDefault("localhost")}.host_cxt"
 
         /**
-         * Starts a runtime whose ORB listens on [host]:[port] (0: any free port) and registers its
-         * components with the naming service at [naming] (a `corbaloc:` address; null: none).
+         * Starts a runtime whose ORB listens on [host]:[port] (0: any free port) and registers its components with the
+         * naming service at [naming] (a `corbaloc:` address; null: none).
          */
-        public fun start(naming: String?, contexts: List<String> = listOf(hostContext), port: Int = 0, host: String = "127.0.0.1"): RuntimeProcess =
-            RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts).also { runtimes += it }
+        public fun start(
+            naming: String?,
+            contexts: List<String> = listOf(hostContext),
+            port: Int = 0,
+            host: String = "127.0.0.1",
+        ): RuntimeProcess = RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts).also { runtimes += it }
     }
 }

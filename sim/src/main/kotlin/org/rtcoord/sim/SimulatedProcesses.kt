@@ -1,17 +1,18 @@
 package org.rtcoord.sim
 
+import java.util.concurrent.CopyOnWriteArrayList
 import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.RuntimeManager
 import org.rtcoord.runtime.RuntimeModule
 import org.rtcoord.runtime.RuntimeProcess
-import java.util.concurrent.CopyOnWriteArrayList
 
 /**
- * The processes of a simulated system, as [ManagerTopology] lays them out: the master manager's (with the
- * components it hosts), one per slave (a slave and its components die together), one for the components
- * no recorded manager hosts, and the slaves the master starts later with its command.
+ * The processes of a simulated system, as [ManagerTopology] lays them out: the master manager's (with the components it
+ * hosts), one per slave (a slave and its components die together), one for the components no recorded manager hosts,
+ * and the slaves the master starts later with its command.
  */
-internal class SimulatedProcesses private constructor(
+internal class SimulatedProcesses
+private constructor(
     private val naming: String,
     private val host: String,
     val master: SimulatedManager?,
@@ -22,14 +23,17 @@ internal class SimulatedProcesses private constructor(
     private val slaveList = CopyOnWriteArrayList(slaves)
 
     /** The slaves, those the master started included, in the order they joined. */
-    val slaves: List<SimulatedManager> get() = slaveList.toList()
+    val slaves: List<SimulatedManager>
+        get() = slaveList.toList()
 
     /** Every process, live or killed. */
-    val all: List<RuntimeProcess> get() = listOfNotNull(master?.process, loose) + slaveList.map { it.process }
+    val all: List<RuntimeProcess>
+        get() = listOfNotNull(master?.process, loose) + slaveList.map { it.process }
 
     /** The process the profile placed [instanceName] in: its manager's, or the one no manager owns. */
     fun processFor(instanceName: String): RuntimeProcess =
-        (listOfNotNull(master) + slaveList).firstOrNull { instanceName in it.hosts }?.process ?: checkNotNull(loose) { "no process hosts $instanceName" }
+        (listOfNotNull(master) + slaveList).firstOrNull { instanceName in it.hosts }?.process
+            ?: checkNotNull(loose) { "no process hosts $instanceName" }
 
     /**
      * Makes the master start a slave when none of its slaves can create a type, as OpenRTM-aist's runs its
@@ -52,9 +56,9 @@ internal class SimulatedProcesses private constructor(
 
     companion object {
         /**
-         * Starts the processes of [topology] on the naming service at [naming], their ORBs on [host]: each
-         * slave can create the types it lists (looked up in [types]), those of the components it hosts
-         * ([instances] says which) loaded from the start.
+         * Starts the processes of [topology] on the naming service at [naming], their ORBs on [host]: each slave can
+         * create the types it lists (looked up in [types]), those of the components it hosts ([instances] says which)
+         * loaded from the start.
          */
         fun start(
             naming: String,
@@ -65,17 +69,28 @@ internal class SimulatedProcesses private constructor(
         ): SimulatedProcesses {
             val started = mutableListOf<RuntimeProcess>()
             try {
-                val master = topology.masterPath?.let { path ->
-                    val process = RuntimeProcess.start(naming, contexts = path.dropLast(1), host = host).also(started::add)
-                    SimulatedManager(RuntimeManager(process, isMaster = true, name = topology.masterName!!), process, topology.masterComponents)
-                }
-                val slaves = topology.slaves.map { slave ->
-                    val loaded = (slave.types + slave.components.mapNotNull { instances[it]?.typeName }).toSet()
-                    val known = (loaded + slave.loadable).mapNotNull(types::get)
-                    SimulatedManager.start(naming, host, slave.name, known, loaded, slave.components).also { started += it.process }
-                }
+                val master =
+                    topology.masterPath?.let { path ->
+                        val process =
+                            RuntimeProcess.start(naming, contexts = path.dropLast(1), host = host).also(started::add)
+                        SimulatedManager(
+                            RuntimeManager(process, isMaster = true, name = topology.masterName!!),
+                            process,
+                            topology.masterComponents,
+                        )
+                    }
+                val slaves =
+                    topology.slaves.map { slave ->
+                        val loaded = (slave.types + slave.components.mapNotNull { instances[it]?.typeName }).toSet()
+                        val known = (loaded + slave.loadable).mapNotNull(types::get)
+                        SimulatedManager.start(naming, host, slave.name, known, loaded, slave.components).also {
+                            started += it.process
+                        }
+                    }
                 slaves.forEach { master?.manager?.adopt(it.manager) }
-                val loose = if (topology.unhosted.isEmpty() && master != null) null else RuntimeProcess.start(naming, host = host)
+                val loose =
+                    if (topology.unhosted.isEmpty() && master != null) null
+                    else RuntimeProcess.start(naming, host = host)
                 return SimulatedProcesses(naming, host, master, slaves, loose)
             } catch (e: Exception) {
                 started.forEach(RuntimeProcess::close)
@@ -87,19 +102,31 @@ internal class SimulatedProcesses private constructor(
 
 /** A manager of a simulated system and the process it lives in: [hosts] are the components the profile placed there. */
 internal class SimulatedManager(val manager: RuntimeManager, val process: RuntimeProcess, val hosts: List<String>) {
-    val name: String get() = manager.name
+    val name: String
+        get() = manager.name
 
     companion object {
         /**
-         * Starts a slave [name] in a process of its own, hosting [hosts], with a module `<type>.so` for each
-         * of [types], of which those [loaded] names are loaded.
+         * Starts a slave [name] in a process of its own, hosting [hosts], with a module `<type>.so` for each of
+         * [types], of which those [loaded] names are loaded.
          */
-        fun start(naming: String, host: String, name: String, types: Collection<ComponentType>, loaded: Set<String>, hosts: List<String>): SimulatedManager {
+        fun start(
+            naming: String,
+            host: String,
+            name: String,
+            types: Collection<ComponentType>,
+            loaded: Set<String>,
+            hosts: List<String>,
+        ): SimulatedManager {
             val modules = types.map { RuntimeModule("${it.typeName}.so", listOf(it)) }
             val preloaded = modules.filter { it.types.single().typeName in loaded }.map { it.fileName }
             val process = RuntimeProcess.start(naming, host = host)
             return try {
-                SimulatedManager(RuntimeManager(process, isMaster = false, name = name, modules = modules, preloaded = preloaded), process, hosts)
+                SimulatedManager(
+                    RuntimeManager(process, isMaster = false, name = name, modules = modules, preloaded = preloaded),
+                    process,
+                    hosts,
+                )
             } catch (e: Exception) {
                 process.close()
                 throw e

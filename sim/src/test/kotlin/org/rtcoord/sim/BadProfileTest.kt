@@ -16,15 +16,17 @@ class BadProfileTest {
         val xml = RtsProfiles.write(saved, ProfileFormat.XML)
         val gyro = xml.substringAfter("rts:instanceName=\"gyro0\"").substringBefore("</rts:Components>")
         val doubled = gyro.substringAfter(">").substringBefore("<rts:ConfigurationSets").trim()
-        val broken = RtsProfiles.parse(
-            xml.replace(gyro, gyro.replace(doubled, "$doubled\n$doubled"))
-                .replace("rts:portName=\"laser_localise0.odo\"", "rts:portName=\"laser_localise0.odometry\""),
-            ProfileFormat.XML,
-        )
-        val profile = broken.withProperties(
-            "rtcoord.slave.2.components" to "laser_localise0,map_client0,planner0,laser0,ghost0",
-            "rtcoord.slave.3.types" to "laser",
-        )
+        val broken =
+            RtsProfiles.parse(
+                xml.replace(gyro, gyro.replace(doubled, "$doubled\n$doubled"))
+                    .replace("rts:portName=\"laser_localise0.odo\"", "rts:portName=\"laser_localise0.odometry\""),
+                ProfileFormat.XML,
+            )
+        val profile =
+            broken.withProperties(
+                "rtcoord.slave.2.components" to "laser_localise0,map_client0,planner0,laser0,ghost0",
+                "rtcoord.slave.3.types" to "laser",
+            )
         SimulatedSystem.start(profile).use { sim ->
             assertEquals(
                 listOf(
@@ -37,11 +39,17 @@ class BadProfileTest {
                 sim.warnings,
             )
             assertEquals(listOf(noPorts("gyro"), noPorts("odo_localise")), sim.notes)
-            assertEquals(listOf("laser0", "odometry0", "map_server0", "laser_localise0", "map_client0", "planner0").sorted(), sim.components.map { it.instanceName }.sorted())
+            assertEquals(
+                listOf("laser0", "odometry0", "map_server0", "laser_localise0", "map_client0", "planner0").sorted(),
+                sim.components.map { it.instanceName }.sorted(),
+            )
             sim.components.forEach { assertEquals(LifeCycleState.ACTIVE_STATE, it.state, it.instanceName) }
             assertEquals(listOf("sensors", "localisation"), sim.slaves.map { it.name })
             sim.killManager("sensors")
-            assertEquals(listOf("laser_localise0", "map_client0", "planner0"), sim.components.map { it.instanceName }.sorted())
+            assertEquals(
+                listOf("laser_localise0", "map_client0", "planner0"),
+                sim.components.map { it.instanceName }.sorted(),
+            )
         }
     }
 
@@ -64,5 +72,6 @@ class BadProfileTest {
     private fun noPorts(type: String) =
         "type $type, which the manager can create, has no instance and no rtcoord.type.$type.port.PORT properties in the profile: its instances have no ports"
 
-    private fun RtsProfile.withProperties(vararg properties: Pair<String, String>): RtsProfile = withExt(ext.withProperties(ext.properties + properties))
+    private fun RtsProfile.withProperties(vararg properties: Pair<String, String>): RtsProfile =
+        withExt(ext.withProperties(ext.properties + properties))
 }

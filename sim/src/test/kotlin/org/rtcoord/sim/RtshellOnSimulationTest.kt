@@ -8,7 +8,9 @@ import org.rtcoord.fixtures.await
 import org.rtcoord.fixtures.runPeer
 import org.rtcoord.runtime.RuntimeProcess
 
-/** rtshell drives a system simulated from a saved profile as it drives the fixtures: rtls, rtact, rtdeact, rtcon, rtdis. */
+/**
+ * rtshell drives a system simulated from a saved profile as it drives the fixtures: rtls, rtact, rtdeact, rtcon, rtdis.
+ */
 class RtshellOnSimulationTest {
     @Test
     fun `rtls lists the simulated components, rtdeact and rtact change them, rtdis and rtcon connect them`() {
@@ -27,10 +29,18 @@ class RtshellOnSimulationTest {
 
             val localiser = sim.component("laser_localise0")
             runPeer("rtdis", "$host/laser0.rtc:laser", "$host/laser_localise0.rtc:laser").ok()
-            assertTrue(localiser.ref.get_ports().first { it.get_port_profile().name == "laser_localise0.laser" }.get_connector_profiles().isEmpty())
+            assertTrue(
+                localiser.ref
+                    .get_ports()
+                    .first { it.get_port_profile().name == "laser_localise0.laser" }
+                    .get_connector_profiles()
+                    .isEmpty()
+            )
             runPeer("rtcon", "$host/laser0.rtc:laser", "$host/laser_localise0.rtc:laser").ok()
             val before = localiser.latest("laser")?.timeNanos ?: 0
-            await("laser data at the localiser through rtcon's connection") { (localiser.latest("laser")?.timeNanos ?: 0) > before }
+            await("laser data at the localiser through rtcon's connection") {
+                (localiser.latest("laser")?.timeNanos ?: 0) > before
+            }
         }
     }
 }

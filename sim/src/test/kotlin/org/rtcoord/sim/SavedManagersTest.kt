@@ -16,7 +16,10 @@ class SavedManagersTest {
     @Test
     fun `profile save records the master, each slave, what each hosts and can create`() {
         val saved = TwoSlaveSystem.start().use { it.save() }.ext.properties
-        assertEquals("${RuntimeProcess.hostContext}/manager.mgr", saved.getValue(ProfileKeys.MANAGER).substringAfter('/'))
+        assertEquals(
+            "${RuntimeProcess.hostContext}/manager.mgr",
+            saved.getValue(ProfileKeys.MANAGER).substringAfter('/'),
+        )
         val slaves = saved.filterKeys { it.startsWith(ProfileKeys.SLAVE_PREFIX) }
         assertEquals(
             mapOf(
@@ -31,7 +34,10 @@ class SavedManagersTest {
             ),
             slaves,
         )
-        assertEquals("laser,gyro,odometry,map_server,laser_localise,map_client,planner,odo_localise", saved[ProfileKeys.MANAGER_TYPES])
+        assertEquals(
+            "laser,gyro,odometry,map_server,laser_localise,map_client,planner,odo_localise",
+            saved[ProfileKeys.MANAGER_TYPES],
+        )
         assertNull(saved[ProfileKeys.MANAGER_COMPONENTS], "the master hosts nothing itself")
     }
 
@@ -46,7 +52,11 @@ class SavedManagersTest {
             faults.killManager("localisation")
 
             assertEquals(listOf("laser0", "gyro0", "odometry0", "map_server0"), sim.components.map { it.instanceName })
-            assertEquals(2, master.get_slave_managers().size, "the master lists the dead slave until a call to it fails")
+            assertEquals(
+                2,
+                master.get_slave_managers().size,
+                "the master lists the dead slave until a call to it fails",
+            )
             val hosted = master.get_components().map { it.get_component_profile().instance_name }
             assertEquals(listOf("laser0", "gyro0", "odometry0", "map_server0"), hosted)
             assertEquals(1, master.get_slave_managers().size, "get_components failed on the dead slave: dropped")
@@ -69,7 +79,10 @@ class SavedManagersTest {
     @Test
     fun `a master whose profile records a command starts a slave for a type no live slave can create`() {
         val saved = TwoSlaveSystem.start().use { it.save() }
-        val profile = saved.withExt(saved.ext.withProperties(saved.ext.properties + (ProfileKeys.MANAGER_COMMAND to "rtcd_python")))
+        val profile =
+            saved.withExt(
+                saved.ext.withProperties(saved.ext.properties + (ProfileKeys.MANAGER_COMMAND to "rtcd_python"))
+            )
         SimulatedSystem.start(profile).use { sim ->
             sim.killManager("localisation")
             val created = checkNotNull(sim.manager).ref.create_component("laser_localise")
@@ -82,7 +95,10 @@ class SavedManagersTest {
     @Test
     fun `a profile that records a master but no slave still simulates with one slave hosting everything`() {
         val saved = TwoSlaveSystem.start().use { it.save() }
-        val old = saved.withExt(saved.ext.withProperties(saved.ext.properties.filterKeys { !it.startsWith(ProfileKeys.SLAVE_PREFIX) }))
+        val old =
+            saved.withExt(
+                saved.ext.withProperties(saved.ext.properties.filterKeys { !it.startsWith(ProfileKeys.SLAVE_PREFIX) })
+            )
         SimulatedSystem.start(old).use { sim ->
             assertEquals(listOf(ManagerTopology.DEFAULT_SLAVE), sim.slaves.map { it.name })
             assertEquals(7, sim.slaves.single().runtime.components.size)

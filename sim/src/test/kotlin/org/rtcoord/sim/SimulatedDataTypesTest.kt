@@ -5,12 +5,13 @@ import RTC.ConnectorProfileHolder
 import RTC.LifeCycleState
 import RTC.ReturnCode_t
 import _SDOPackage.NameValue
-import org.junit.jupiter.api.Assertions.assertEquals
-import org.junit.jupiter.api.Assertions.assertTrue
-import org.junit.jupiter.api.Test
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
 import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.StructuredData
@@ -22,7 +23,6 @@ import org.rtcoord.dsl.Coordinator
 import org.rtcoord.fixtures.await
 import org.rtcoord.runtime.RuntimeComponent
 import org.rtcoord.runtime.Sample
-import kotlin.time.Duration.Companion.seconds
 
 /** Ports of OpenRTM-aist's device types and of a user's own IDL, simulated, connected and sending. */
 class SimulatedDataTypesTest {
@@ -33,7 +33,7 @@ class SimulatedDataTypesTest {
             assertEquals(
                 listOf(
                     "mystery0.blob: sends no data: its data type IDL:Mystery/Blob:1.0 is not one of OpenRTM-aist's and no IDL " +
-                        "given declares it (give the directory of its IDL: rtcoord sim --idl DIR, or idl(\"DIR\") in a test)",
+                        "given declares it (give the directory of its IDL: rtcoord sim --idl DIR, or idl(\"DIR\") in a test)"
                 ),
                 sim.warnings,
             )
@@ -65,10 +65,17 @@ class SimulatedDataTypesTest {
     fun `a malformed IDL file is a warning naming it, the types of the others are simulated`() {
         val broken = kotlin.io.path.createTempDirectory("rtcoord-broken-idl")
         try {
-            kotlin.io.path.Path(broken.toString(), "Broken.idl").toFile().writeText("module Broken {\n  struct Half { doubel y; };\n};\n")
-            SimulatedSystem.start(TypedSystem.profile(), idlDirectories = listOf(broken, TypedSystem.acmeIdl)).use { sim ->
+            kotlin.io.path
+                .Path(broken.toString(), "Broken.idl")
+                .toFile()
+                .writeText("module Broken {\n  struct Half { doubel y; };\n};\n")
+            SimulatedSystem.start(TypedSystem.profile(), idlDirectories = listOf(broken, TypedSystem.acmeIdl)).use { sim
+                ->
                 val first = sim.warnings.first()
-                assertTrue(first.startsWith("$broken/Broken.idl:2: ") && first.contains("doubel") && '\n' !in first, first)
+                assertTrue(
+                    first.startsWith("$broken/Broken.idl:2: ") && first.contains("doubel") && '\n' !in first,
+                    first,
+                )
                 assertEquals(2, sim.warnings.size, sim.warnings.toString())
             }
         } finally {
@@ -84,16 +91,25 @@ class SimulatedDataTypesTest {
             val target = viewer.ref.get_ports().first { it.get_port_profile().name == "viewer0.pose" }
             assertEquals(ReturnCode_t.RTC_OK, source.disconnect_all())
             val orb = org.omg.CORBA.ORB.init()
-            val properties = mapOf(
-                "dataport.dataflow_type" to "push", "dataport.interface_type" to "corba_cdr", "dataport.subscription_type" to "new",
-                "dataport.data_type" to "IDL:RTC/TimedPose2D:1.0", "dataport.serializer.cdr.endian" to "big,little",
-            ).map { (name, value) -> NameValue(name, orb.create_any().apply { insert_string(value) }) }
-            val holder = ConnectorProfileHolder(ConnectorProfile("big", "", arrayOf(source, target), properties.toTypedArray()))
+            val properties =
+                mapOf(
+                        "dataport.dataflow_type" to "push",
+                        "dataport.interface_type" to "corba_cdr",
+                        "dataport.subscription_type" to "new",
+                        "dataport.data_type" to "IDL:RTC/TimedPose2D:1.0",
+                        "dataport.serializer.cdr.endian" to "big,little",
+                    )
+                    .map { (name, value) -> NameValue(name, orb.create_any().apply { insert_string(value) }) }
+            val holder =
+                ConnectorProfileHolder(ConnectorProfile("big", "", arrayOf(source, target), properties.toTypedArray()))
             val before = viewer.latest("pose")
             assertEquals(ReturnCode_t.RTC_OK, source.connect(holder))
             val sample = awaitSample(viewer, "pose", after = before)
             val now = System.currentTimeMillis() * 1_000_000
-            assertTrue(sample.timeNanos in now - 10_000_000_000..now, "a time stamp read in the right order: ${sample.timeNanos}")
+            assertTrue(
+                sample.timeNanos in now - 10_000_000_000..now,
+                "a time stamp read in the right order: ${sample.timeNanos}",
+            )
         }
     }
 
@@ -104,10 +120,11 @@ class SimulatedDataTypesTest {
             RtcTree(config).use { tree ->
                 val scans = Channel<StructuredData>(Channel.UNLIMITED)
                 val poses = Channel<TimedPose2D>(Channel.UNLIMITED)
-                val coordination = Coordination(emptyList(), config).apply {
-                    on(port("ranger0.rtc:range")).data<StructuredData> { scans.trySend(it) }
-                    on(port("odometry0.rtc:odo")).data<TimedPose2D> { poses.trySend(it) }
-                }
+                val coordination =
+                    Coordination(emptyList(), config).apply {
+                        on(port("ranger0.rtc:range")).data<StructuredData> { scans.trySend(it) }
+                        on(port("odometry0.rtc:odo")).data<TimedPose2D> { poses.trySend(it) }
+                    }
                 Coordinator(tree, coordination, EventOptions(WatchMode.PUSH)).use { coordinator ->
                     coordinator.start()
                     withTimeout(20.seconds) {

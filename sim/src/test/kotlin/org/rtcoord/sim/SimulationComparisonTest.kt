@@ -9,7 +9,10 @@ import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
 import org.rtcoord.runtime.RuntimeProcess
 
-/** A simulation compared with the live system it was saved from: nothing when faithful, one line per difference when not. */
+/**
+ * A simulation compared with the live system it was saved from: nothing when faithful, one line per difference when
+ * not.
+ */
 class SimulationComparisonTest {
     @Test
     fun `the comparison with the live system finds no difference, and names each one it finds`() = runBlocking {
@@ -47,16 +50,25 @@ class SimulationComparisonTest {
         val xml = RtsProfiles.write(saved, ProfileFormat.XML)
         val laser = xml.substringAfter("rts:instanceName=\"laser0\"").substringBefore("</rts:Components>")
         val planner = xml.substringAfter("rts:instanceName=\"planner0\"").substringBefore("</rts:Components>")
-        val text = xml
-            .replace(laser, laser.replace("rts:rate=\"100.0\"", "rts:rate=\"50.0\""))
-            .replace(planner, planner.replace("rts:name=\"horizon\" rts:data=\"3\"", "rts:name=\"horizon\" rts:data=\"4\""))
-            .replace("rtsExt:value=\"MapServer::Map\"/>\n        </rts:ServicePorts>", "rtsExt:value=\"MapServer::Atlas\"/>\n        </rts:ServicePorts>")
+        val text =
+            xml.replace(laser, laser.replace("rts:rate=\"100.0\"", "rts:rate=\"50.0\""))
+                .replace(
+                    planner,
+                    planner.replace("rts:name=\"horizon\" rts:data=\"3\"", "rts:name=\"horizon\" rts:data=\"4\""),
+                )
+                .replace(
+                    "rtsExt:value=\"MapServer::Map\"/>\n        </rts:ServicePorts>",
+                    "rtsExt:value=\"MapServer::Atlas\"/>\n        </rts:ServicePorts>",
+                )
         val profile = RtsProfiles.parse(text, ProfileFormat.XML)
-        val properties = profile.ext.properties + mapOf(
-            "rtcoord.slave.1.components" to "laser0,gyro0,odometry0,map_server0,planner0",
-            "rtcoord.slave.2.components" to "laser_localise0,map_client0",
-        )
-        return profile.withExt(profile.ext.withProperties(properties))
+        val properties =
+            profile.ext.properties +
+                mapOf(
+                    "rtcoord.slave.1.components" to "laser0,gyro0,odometry0,map_server0,planner0",
+                    "rtcoord.slave.2.components" to "laser_localise0,map_client0",
+                )
+        return profile
+            .withExt(profile.ext.withProperties(properties))
             .withDataPortConnectors(profile.dataPortConnectors.filter { it.target.portName != "laser_localise0.odo" })
     }
 }

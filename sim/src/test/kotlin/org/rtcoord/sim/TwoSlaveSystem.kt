@@ -21,12 +21,11 @@ import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.naming.NamingService
 
 /**
- * A "live" system on the runtime shaped as real robots are: a master `manager.mgr` with two slaves, each
- * in a process of its own. `sensors` hosts `laser0`, `gyro0`, `odometry0` and `map_server0` (a service
- * port providing `map`); `localisation` hosts `laser_localise0`, `map_client0` (requiring `map`) and
- * `planner0` (a periodic and an event-driven context, a numeric constraint, a hidden widget set), and can
- * load `odo_localise`. The laser and odometry feed the localiser, the map server serves the client; all
- * active.
+ * A "live" system on the runtime shaped as real robots are: a master `manager.mgr` with two slaves, each in a process
+ * of its own. `sensors` hosts `laser0`, `gyro0`, `odometry0` and `map_server0` (a service port providing `map`);
+ * `localisation` hosts `laser_localise0`, `map_client0` (requiring `map`) and `planner0` (a periodic and an
+ * event-driven context, a numeric constraint, a hidden widget set), and can load `odo_localise`. The laser and odometry
+ * feed the localiser, the map server serves the client; all active.
  */
 class TwoSlaveSystem private constructor(private val naming: NamingService) : AutoCloseable {
     private val master = RuntimeProcess.start(naming.corbaloc)
@@ -34,28 +33,64 @@ class TwoSlaveSystem private constructor(private val naming: NamingService) : Au
     private val localisation = RuntimeProcess.start(naming.corbaloc)
 
     /** The naming service's `host:port`. */
-    val address: String get() = naming.address
+    val address: String
+        get() = naming.address
 
     /** The master manager. */
     val manager = RuntimeManager(master, isMaster = true)
 
     init {
-        manager.adopt(RuntimeManager(sensors, isMaster = false, name = "sensors", modules = listOf(RuntimeModule("sensors.so", listOf(Scenarios.laser, Scenarios.gyro, Scenarios.odometry, mapServer)))))
-        val modules = listOf(
-            RuntimeModule("localisers.so", listOf(Scenarios.laserLocalise, mapClient, planner)),
-            RuntimeModule("odo_localise.so", listOf(Scenarios.odoLocalise)),
+        manager.adopt(
+            RuntimeManager(
+                sensors,
+                isMaster = false,
+                name = "sensors",
+                modules =
+                    listOf(
+                        RuntimeModule(
+                            "sensors.so",
+                            listOf(Scenarios.laser, Scenarios.gyro, Scenarios.odometry, mapServer),
+                        )
+                    ),
+            )
         )
-        manager.adopt(RuntimeManager(localisation, isMaster = false, name = "localisation", modules = modules, preloaded = listOf("localisers.so")))
+        val modules =
+            listOf(
+                RuntimeModule("localisers.so", listOf(Scenarios.laserLocalise, mapClient, planner)),
+                RuntimeModule("odo_localise.so", listOf(Scenarios.odoLocalise)),
+            )
+        manager.adopt(
+            RuntimeManager(
+                localisation,
+                isMaster = false,
+                name = "localisation",
+                modules = modules,
+                preloaded = listOf("localisers.so"),
+            )
+        )
         listOf(Scenarios.laser, Scenarios.gyro, Scenarios.odometry, mapServer).forEach { sensors.create(it) }
         listOf(Scenarios.laserLocalise, mapClient, planner).forEach { localisation.create(it) }
-        connect("laser0:laser", "laser_localise0:laser", "dataport.dataflow_type" to "push", "dataport.interface_type" to "corba_cdr", "dataport.subscription_type" to "new")
-        connect("odometry0:odo", "laser_localise0:odo", "dataport.dataflow_type" to "push", "dataport.interface_type" to "corba_cdr", "dataport.subscription_type" to "flush")
+        connect(
+            "laser0:laser",
+            "laser_localise0:laser",
+            "dataport.dataflow_type" to "push",
+            "dataport.interface_type" to "corba_cdr",
+            "dataport.subscription_type" to "new",
+        )
+        connect(
+            "odometry0:odo",
+            "laser_localise0:odo",
+            "dataport.dataflow_type" to "push",
+            "dataport.interface_type" to "corba_cdr",
+            "dataport.subscription_type" to "flush",
+        )
         connect("map_server0:map", "map_client0:map")
         components.forEach { it.activateEverywhere() }
     }
 
     /** Every component, the sensors' then the localisation's. */
-    val components: List<RuntimeComponent> get() = sensors.components + localisation.components
+    val components: List<RuntimeComponent>
+        get() = sensors.components + localisation.components
 
     /** Saves the system as `rtcoord profile save` does. */
     fun save(): RtsProfile = runBlocking { tree().use { SystemProfiles(it).save() } }
@@ -64,13 +99,19 @@ class TwoSlaveSystem private constructor(private val naming: NamingService) : Au
     fun tree(): RtcTree = RtcTree(TreeConfig(nameServers = listOf(address)))
 
     private fun connect(from: String, to: String, vararg properties: Pair<String, String>) {
-        val ports = listOf(from, to).map { address ->
-            val (instance, port) = address.split(':')
-            components.single { it.instanceName == instance }.ref.get_ports().single { it.get_port_profile().name == "$instance.$port" }
-        }
+        val ports =
+            listOf(from, to).map { address ->
+                val (instance, port) = address.split(':')
+                components
+                    .single { it.instanceName == instance }
+                    .ref
+                    .get_ports()
+                    .single { it.get_port_profile().name == "$instance.$port" }
+            }
         val orb = sensors.orb.orb
         val values = properties.map { (key, value) -> NameValue(key, orb.create_any().apply { insert_string(value) }) }
-        val holder = ConnectorProfileHolder(ConnectorProfile("${from}_$to", "", ports.toTypedArray(), values.toTypedArray()))
+        val holder =
+            ConnectorProfileHolder(ConnectorProfile("${from}_$to", "", ports.toTypedArray(), values.toTypedArray()))
         check(ports[0].connect(holder) == ReturnCode_t.RTC_OK) { "connecting $from to $to" }
     }
 
@@ -84,19 +125,29 @@ class TwoSlaveSystem private constructor(private val naming: NamingService) : Au
         val mapServer: ComponentType = Scenarios.mapServer
 
         /** A map client: service port `map` requiring `map` (`MapServer::Map`). */
-        val mapClient = ComponentType("map_client", listOf(PortSpec.Service("map", required = mapOf("map" to "MapServer::Map"))), rate = 10.0)
+        val mapClient =
+            ComponentType(
+                "map_client",
+                listOf(PortSpec.Service("map", required = mapOf("map" to "MapServer::Map"))),
+                rate = 10.0,
+            )
 
-        /** A planner with a periodic context at 20 Hz and an event-driven one at 5 Hz, and constrained, hidden and extra configuration. */
-        val planner = ComponentType(
-            "planner",
-            parameters = listOf(ParameterSpec.integer("horizon", 10), ParameterSpec("mode", "safe")),
-            configurationSets = mapOf(
-                "fast" to mapOf("horizon" to "3"),
-                "__constraints__" to mapOf("horizon" to "0<=x<=100", "mode" to "(safe,fast)"),
-                "__widget__" to mapOf("horizon" to "slider.1", "mode" to "radio"),
-            ),
-            contexts = listOf(ContextSpec(20.0), ContextSpec(5.0, ContextSpec.Kind.EVENT_DRIVEN)),
-        )
+        /**
+         * A planner with a periodic context at 20 Hz and an event-driven one at 5 Hz, and constrained, hidden and extra
+         * configuration.
+         */
+        val planner =
+            ComponentType(
+                "planner",
+                parameters = listOf(ParameterSpec.integer("horizon", 10), ParameterSpec("mode", "safe")),
+                configurationSets =
+                    mapOf(
+                        "fast" to mapOf("horizon" to "3"),
+                        "__constraints__" to mapOf("horizon" to "0<=x<=100", "mode" to "(safe,fast)"),
+                        "__widget__" to mapOf("horizon" to "slider.1", "mode" to "radio"),
+                    ),
+                contexts = listOf(ContextSpec(20.0), ContextSpec(5.0, ContextSpec.Kind.EVENT_DRIVEN)),
+            )
 
         /** Starts it on a naming service of its own. */
         fun start(): TwoSlaveSystem {

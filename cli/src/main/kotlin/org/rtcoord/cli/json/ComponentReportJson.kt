@@ -3,12 +3,13 @@ package org.rtcoord.cli.json
 import kotlinx.serialization.Serializable
 
 /**
- * A component as `cat --json` and the live view's `GET /api/component` give it: its profile, its
- * place among composites, its state (a LifeCycle name) and FSM, its execution contexts, its ports and,
- * when asked for, its configuration (hidden sets left out).
+ * A component as `cat --json` and the live view's `GET /api/component` give it: its profile, its place among
+ * composites, its state (a LifeCycle name) and FSM, its execution contexts, its ports and, when asked for, its
+ * configuration (hidden sets left out).
  */
 @Serializable
-internal class ComponentReportJson private constructor(
+internal class ComponentReportJson
+private constructor(
     val path: String,
     /** Always `component`. */
     val kind: String,
@@ -46,12 +47,29 @@ internal class ComponentReportJson private constructor(
         ports: List<PortJson>,
         configuration: ConfigurationJson?,
     ) : this(
-        path, "component", instanceName, typeName, version, vendor, category, description, parent, type, state, fsm, properties, contexts,
-        ports, configuration,
+        path,
+        "component",
+        instanceName,
+        typeName,
+        version,
+        vendor,
+        category,
+        description,
+        parent,
+        type,
+        state,
+        fsm,
+        properties,
+        contexts,
+        ports,
+        configuration,
     )
 }
 
-/** One of a component's execution contexts: whether it owns it, its kind, rate (Hz), whether it runs, the component's state in it. */
+/**
+ * One of a component's execution contexts: whether it owns it, its kind, rate (Hz), whether it runs, the component's
+ * state in it.
+ */
 @Serializable
 internal class ContextJson(
     val handle: Int,

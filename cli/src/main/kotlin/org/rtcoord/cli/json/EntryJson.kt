@@ -18,8 +18,12 @@ internal class EntryJson(
 
 /** A component's ports counted: all of them, in-ports, out-ports and service ports. */
 @Serializable
-internal class PortCountsJson(val all: PortCountJson, val `in`: PortCountJson, val out: PortCountJson, val service: PortCountJson)
+internal class PortCountsJson(
+    val all: PortCountJson,
+    val `in`: PortCountJson,
+    val out: PortCountJson,
+    val service: PortCountJson,
+)
 
 /** How many ports there are, and how many of them have a connection. */
-@Serializable
-internal class PortCountJson(val total: Int, val connected: Int)
+@Serializable internal class PortCountJson(val total: Int, val connected: Int)

@@ -30,8 +30,8 @@ import org.rtcoord.StateChanged
 import org.rtcoord.WatchMethodChanged
 
 /**
- * An event's own fields, beside its time and path in [EventJson]; each class is named as the event
- * (`event` in the JSON). Lifecycle states are [LifeCycle] names; a field that may be unknown is null.
+ * An event's own fields, beside its time and path in [EventJson]; each class is named as the event (`event` in the
+ * JSON). Lifecycle states are [LifeCycle] names; a field that may be unknown is null.
  */
 @Serializable
 internal sealed class EventDetail {
@@ -41,13 +41,16 @@ internal sealed class EventDetail {
 
     @Serializable class FsmStateChanged(val old: String?, val new: String) : EventDetail()
 
-    @Serializable class PortConnected(val port: String, val connector: String, val connectorName: String) : EventDetail()
+    @Serializable
+    class PortConnected(val port: String, val connector: String, val connectorName: String) : EventDetail()
 
-    @Serializable class PortDisconnected(val port: String, val connector: String, val connectorName: String) : EventDetail()
+    @Serializable
+    class PortDisconnected(val port: String, val connector: String, val connectorName: String) : EventDetail()
 
     @Serializable class PortTraffic(val port: String, val outgoing: Boolean) : EventDetail()
 
-    @Serializable class ParameterChanged(val set: String, val name: String, val old: String?, val new: String?) : EventDetail()
+    @Serializable
+    class ParameterChanged(val set: String, val name: String, val old: String?, val new: String?) : EventDetail()
 
     @Serializable class ConfigurationSetActivated(val old: String?, val new: String?) : EventDetail()
 
@@ -70,7 +73,8 @@ internal sealed class EventDetail {
 
     /** A [child] appeared; a component's [state] and [connections] (connectors by port) when it was read. */
     @Serializable
-    class NodeAppeared(val child: String, val state: String? = null, val connections: Map<String, Int>? = null) : EventDetail()
+    class NodeAppeared(val child: String, val state: String? = null, val connections: Map<String, Int>? = null) :
+        EventDetail()
 
     @Serializable class NodeVanished(val child: String) : EventDetail()
 
@@ -93,11 +97,16 @@ internal sealed class EventDetail {
     @Serializable class NameServerReturned(val downMillis: Long) : EventDetail()
 
     /**
-     * A component as `watch` finds it when it starts: its [state], its [connections] when it was read,
-     * its FSM when it has one, whether it is [alive]; how it is watched is spread beside.
+     * A component as `watch` finds it when it starts: its [state], its [connections] when it was read, its FSM when it
+     * has one, whether it is [alive]; how it is watched is spread beside.
      */
     @Serializable
-    class Present(val state: String, val connections: Map<String, Int>? = null, val fsm: FsmJson? = null, val alive: Boolean) : EventDetail()
+    class Present(
+        val state: String,
+        val connections: Map<String, Int>? = null,
+        val fsm: FsmJson? = null,
+        val alive: Boolean,
+    ) : EventDetail()
 
     /** An out-port's [rate] in samples per second over the last period (`watch --data`). */
     @Serializable class DataRate(@Serializable(with = FiniteDouble::class) val rate: Double) : EventDetail()
@@ -110,29 +119,35 @@ internal sealed class EventDetail {
 }
 
 /** [event]'s own fields. */
-internal fun eventDetail(event: RtcEvent): EventDetail = when (event) {
-    is StateChanged -> EventDetail.StateChanged(event.handle, event.old.name, event.new.name)
-    is ComponentFinalized -> EventDetail.ComponentFinalized
-    is FsmStateChanged -> EventDetail.FsmStateChanged(event.old, event.new)
-    is PortConnected -> EventDetail.PortConnected(event.port, event.connector.id, event.connector.name)
-    is PortDisconnected -> EventDetail.PortDisconnected(event.port, event.connector.id, event.connector.name)
-    is PortTraffic -> EventDetail.PortTraffic(event.port, event.outgoing)
-    is ParameterChanged -> EventDetail.ParameterChanged(event.set, event.name, event.old, event.new)
-    is ConfigurationSetActivated -> EventDetail.ConfigurationSetActivated(event.old, event.new)
-    is ConfigurationSetAdded -> EventDetail.ConfigurationSetAdded(event.id)
-    is ConfigurationSetRemoved -> EventDetail.ConfigurationSetRemoved(event.id)
-    is ContextRateChanged -> EventDetail.ContextRateChanged(event.handle, event.old, event.new)
-    is ContextRunningChanged -> EventDetail.ContextRunningChanged(event.handle, event.running)
-    is ContextAttachmentChanged -> EventDetail.ContextAttachmentChanged(event.handle, event.attached)
-    is ManagerComponentChanged -> EventDetail.ManagerComponentChanged(event.instanceName, event.created)
-    is NodeAppeared -> EventDetail.NodeAppeared(event.child.path.toString(), event.snapshot?.state?.name, event.snapshot?.let { EventDetail.connections(it) })
-    is NodeVanished -> EventDetail.NodeVanished(event.child.toString())
-    is HeartbeatLost -> EventDetail.HeartbeatLost(event.silentMillis)
-    is BecameZombie -> EventDetail.BecameZombie(event.cause.message)
-    is Recovered -> EventDetail.Recovered
-    is WatchMethodChanged -> EventDetail.WatchMethodChanged(event.old?.let { WatchMethodJson.of(it).method })
-    is ManagerDied -> EventDetail.ManagerDied(event.components.map { it.name }, event.cause.message)
-    is ManagerReturned -> EventDetail.ManagerReturned
-    is NameServerLost -> EventDetail.NameServerLost(event.cause.message)
-    is NameServerReturned -> EventDetail.NameServerReturned(event.downMillis)
-}
+internal fun eventDetail(event: RtcEvent): EventDetail =
+    when (event) {
+        is StateChanged -> EventDetail.StateChanged(event.handle, event.old.name, event.new.name)
+        is ComponentFinalized -> EventDetail.ComponentFinalized
+        is FsmStateChanged -> EventDetail.FsmStateChanged(event.old, event.new)
+        is PortConnected -> EventDetail.PortConnected(event.port, event.connector.id, event.connector.name)
+        is PortDisconnected -> EventDetail.PortDisconnected(event.port, event.connector.id, event.connector.name)
+        is PortTraffic -> EventDetail.PortTraffic(event.port, event.outgoing)
+        is ParameterChanged -> EventDetail.ParameterChanged(event.set, event.name, event.old, event.new)
+        is ConfigurationSetActivated -> EventDetail.ConfigurationSetActivated(event.old, event.new)
+        is ConfigurationSetAdded -> EventDetail.ConfigurationSetAdded(event.id)
+        is ConfigurationSetRemoved -> EventDetail.ConfigurationSetRemoved(event.id)
+        is ContextRateChanged -> EventDetail.ContextRateChanged(event.handle, event.old, event.new)
+        is ContextRunningChanged -> EventDetail.ContextRunningChanged(event.handle, event.running)
+        is ContextAttachmentChanged -> EventDetail.ContextAttachmentChanged(event.handle, event.attached)
+        is ManagerComponentChanged -> EventDetail.ManagerComponentChanged(event.instanceName, event.created)
+        is NodeAppeared ->
+            EventDetail.NodeAppeared(
+                event.child.path.toString(),
+                event.snapshot?.state?.name,
+                event.snapshot?.let { EventDetail.connections(it) },
+            )
+        is NodeVanished -> EventDetail.NodeVanished(event.child.toString())
+        is HeartbeatLost -> EventDetail.HeartbeatLost(event.silentMillis)
+        is BecameZombie -> EventDetail.BecameZombie(event.cause.message)
+        is Recovered -> EventDetail.Recovered
+        is WatchMethodChanged -> EventDetail.WatchMethodChanged(event.old?.let { WatchMethodJson.of(it).method })
+        is ManagerDied -> EventDetail.ManagerDied(event.components.map { it.name }, event.cause.message)
+        is ManagerReturned -> EventDetail.ManagerReturned
+        is NameServerLost -> EventDetail.NameServerLost(event.cause.message)
+        is NameServerReturned -> EventDetail.NameServerReturned(event.downMillis)
+    }

@@ -1,18 +1,18 @@
 package org.rtcoord.cli.json
 
+import java.time.Instant
 import kotlinx.serialization.ExperimentalSerializationApi
 import kotlinx.serialization.KeepGeneratedSerializer
 import kotlinx.serialization.Serializable
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcPath
 import org.rtcoord.WatchMethodChanged
-import java.time.Instant
 
 /**
- * An event as `watch --json` prints it (one a line) and the live view's timeline carries it: one flat
- * object, when and where first, then the [detail]'s fields and, for events about it, the [watch]
- * method's. Also what `watch` finds present when it starts (`Present`, `NameServerLost`,
- * `ManagerDied`) and the data rates of `watch --data` (`DataRate`).
+ * An event as `watch --json` prints it (one a line) and the live view's timeline carries it: one flat object, when and
+ * where first, then the [detail]'s fields and, for events about it, the [watch] method's. Also what `watch` finds
+ * present when it starts (`Present`, `NameServerLost`, `ManagerDied`) and the data rates of `watch --data`
+ * (`DataRate`).
  */
 @OptIn(ExperimentalSerializationApi::class)
 @KeepGeneratedSerializer
@@ -43,9 +43,14 @@ internal class EventJson(
             EventJson(time(millis), path.toString(), detail.javaClass.simpleName, detail = detail, watch = watch)
 
         /** [event] as the JSON gives it, with how its component is watched now when that is what changed. */
-        fun of(event: RtcEvent): EventJson = EventJson(
-            time(event.noticedAt), event.path.toString(), event.javaClass.simpleName, event.sequence, eventDetail(event),
-            (event as? WatchMethodChanged)?.let { WatchMethodJson.of(it.new) },
-        )
+        fun of(event: RtcEvent): EventJson =
+            EventJson(
+                time(event.noticedAt),
+                event.path.toString(),
+                event.javaClass.simpleName,
+                event.sequence,
+                eventDetail(event),
+                (event as? WatchMethodChanged)?.let { WatchMethodJson.of(it.new) },
+            )
     }
 }

@@ -4,7 +4,8 @@ import kotlinx.serialization.Serializable
 
 /** A manager as `cat --json` gives it: master or slave, its profile, its modules and its factories' profiles. */
 @Serializable
-internal class ManagerReportJson private constructor(
+internal class ManagerReportJson
+private constructor(
     val path: String,
     /** Always `manager`. */
     val kind: String,

@@ -3,5 +3,4 @@ package org.rtcoord.cli.json
 import kotlinx.serialization.Serializable
 
 /** One configuration parameter as `conf get --json` gives it: its [set], [name] and [value]. */
-@Serializable
-internal class ParameterJson(val set: String, val name: String, val value: String)
+@Serializable internal class ParameterJson(val set: String, val name: String, val value: String)

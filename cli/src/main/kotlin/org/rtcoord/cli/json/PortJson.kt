@@ -3,8 +3,8 @@ package org.rtcoord.cli.json
 import kotlinx.serialization.Serializable
 
 /**
- * A port as `cat --json` gives it, alone (with its [path]) or in its component's report: its kind
- * (OpenRTM's `port.port_type`), data type, service interfaces, properties and connections.
+ * A port as `cat --json` gives it, alone (with its [path]) or in its component's report: its kind (OpenRTM's
+ * `port.port_type`), data type, service interfaces, properties and connections.
  */
 @Serializable
 internal class PortJson(
@@ -20,13 +20,16 @@ internal class PortJson(
 )
 
 /** A service port's interface; [polarity] is `PROVIDED` or `REQUIRED`. */
-@Serializable
-internal class InterfaceJson(val instanceName: String, val typeName: String, val polarity: String)
+@Serializable internal class InterfaceJson(val instanceName: String, val typeName: String, val polarity: String)
 
 /** A port's connection: its connector's [id] and [name], the [ports] it joins and its [properties]. */
 @Serializable
-internal class ConnectionJson(val id: String, val name: String, val ports: List<ConnectionEndJson>, val properties: Map<String, String>)
+internal class ConnectionJson(
+    val id: String,
+    val name: String,
+    val ports: List<ConnectionEndJson>,
+    val properties: Map<String, String>,
+)
 
 /** A connected port: OpenRTM's full [name], and its [path] in the tree (null when the tree does not know it). */
-@Serializable
-internal class ConnectionEndJson(val name: String, val path: String?)
+@Serializable internal class ConnectionEndJson(val name: String, val path: String?)

@@ -3,10 +3,12 @@ package org.rtcoord.cli.json
 import kotlinx.serialization.Serializable
 
 /** A difference `profile check --json` found between the profile and the running system. */
-@Serializable
-internal class DifferenceJson(val subject: String, val expected: String, val actual: String)
+@Serializable internal class DifferenceJson(val subject: String, val expected: String, val actual: String)
 
-/** A step of `profile start|stop --dry-run --json`: its [sequence], the [component], its [context]'s id and when it may run. */
+/**
+ * A step of `profile start|stop --dry-run --json`: its [sequence], the [component], its [context]'s id and when it may
+ * run.
+ */
 @Serializable
 internal class PlannedStepJson(val sequence: Int, val component: String, val context: Int, val condition: String)
 

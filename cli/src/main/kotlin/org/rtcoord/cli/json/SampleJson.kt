@@ -10,6 +10,9 @@ internal class SampleJson(
     val time: String?,
     /** Its type: OpenRTM's simple name for known types, the repository id for others. */
     val type: String,
-    /** A structure's members as an object, a sequence as an array, an unknown type's bytes in hex, else the value as text. */
+    /**
+     * A structure's members as an object, a sequence as an array, an unknown type's bytes in hex, else the value as
+     * text.
+     */
     val value: JsonElement,
 )

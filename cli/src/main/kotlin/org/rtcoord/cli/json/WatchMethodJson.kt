@@ -11,19 +11,25 @@ internal sealed class WatchMethodJson {
 
     /** Events pushed by the component's [observer] (its repository id), with a heartbeat and, when set, polling too. */
     @Serializable
-    class Pushed private constructor(
+    class Pushed
+    private constructor(
         override val method: String,
         val observer: String,
         val heartbeatMillis: Long,
         /** How often it is also polled; null when it is not. */
         val pollPeriodMillis: Long?,
     ) : WatchMethodJson() {
-        constructor(observer: String, heartbeatMillis: Long, pollPeriodMillis: Long?) : this("pushed", observer, heartbeatMillis, pollPeriodMillis)
+        constructor(
+            observer: String,
+            heartbeatMillis: Long,
+            pollPeriodMillis: Long?,
+        ) : this("pushed", observer, heartbeatMillis, pollPeriodMillis)
     }
 
     /** Polled every [pollPeriodMillis], for [reason]. */
     @Serializable
-    class Polled private constructor(override val method: String, val pollPeriodMillis: Long, val reason: String) : WatchMethodJson() {
+    class Polled private constructor(override val method: String, val pollPeriodMillis: Long, val reason: String) :
+        WatchMethodJson() {
         constructor(pollPeriodMillis: Long, reason: String) : this("polled", pollPeriodMillis, reason)
     }
 
@@ -35,10 +41,16 @@ internal sealed class WatchMethodJson {
 
     companion object {
         /** [method] as the JSON gives it. */
-        fun of(method: WatchMethod): WatchMethodJson = when (method) {
-            is WatchMethod.Pushed -> Pushed(method.flavour.repositoryId, method.heartbeat.inWholeMilliseconds, method.pollPeriod?.inWholeMilliseconds)
-            is WatchMethod.Polled -> Polled(method.period.inWholeMilliseconds, method.reason)
-            is WatchMethod.Unwatched -> Unwatched(method.reason)
-        }
+        fun of(method: WatchMethod): WatchMethodJson =
+            when (method) {
+                is WatchMethod.Pushed ->
+                    Pushed(
+                        method.flavour.repositoryId,
+                        method.heartbeat.inWholeMilliseconds,
+                        method.pollPeriod?.inWholeMilliseconds,
+                    )
+                is WatchMethod.Polled -> Polled(method.period.inWholeMilliseconds, method.reason)
+                is WatchMethod.Unwatched -> Unwatched(method.reason)
+            }
     }
 }

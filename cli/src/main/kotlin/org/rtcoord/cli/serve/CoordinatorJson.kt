@@ -3,8 +3,8 @@ package org.rtcoord.cli.serve
 import kotlinx.serialization.Serializable
 
 /**
- * A running coordinator as the page shows it ([CoordinatorView] makes it): its handler [failures],
- * its rules, mode machines and supervisors. Times are ISO-8601 in UTC.
+ * A running coordinator as the page shows it ([CoordinatorView] makes it): its handler [failures], its rules, mode
+ * machines and supervisors. Times are ISO-8601 in UTC.
  */
 @Serializable
 internal data class CoordinatorJson(
@@ -36,14 +36,14 @@ internal data class MachineJson(
 )
 
 /** A mode by its [path] (names joined by `/`), with its [parent]'s path. */
-@Serializable
-internal data class ModeJson(val path: String, val name: String, val parent: String?)
+@Serializable internal data class ModeJson(val path: String, val name: String, val parent: String?)
 
 /** A transition from [from] (null at the start) to [to], on [trigger], [at] a time. */
-@Serializable
-internal data class ModeMoveJson(val from: String?, val to: String, val trigger: String, val at: String)
+@Serializable internal data class ModeMoveJson(val from: String?, val to: String, val trigger: String, val at: String)
 
-/** A supervisor: its children's paths, its restarts, the back-off it waits out, and why it gave up once it escalated. */
+/**
+ * A supervisor: its children's paths, its restarts, the back-off it waits out, and why it gave up once it escalated.
+ */
 @Serializable
 internal data class SupervisorJson(
     val name: String,

@@ -6,11 +6,11 @@ import org.rtcoord.RtcTree
 import org.rtcoord.dsl.Coordinator
 
 /**
- * A page served by a [LiveServer], as `serve` and `run --serve` start it: of a [LiveView] of [Node]s
- * below a top node (recorded too, when the settings say so), or of a [Recording] replayed; [url] is
- * where the page is.
+ * A page served by a [LiveServer], as `serve` and `run --serve` start it: of a [LiveView] of [Node]s below a top node
+ * (recorded too, when the settings say so), or of a [Recording] replayed; [url] is where the page is.
  */
-internal class LiveService private constructor(
+internal class LiveService
+private constructor(
     private val view: LiveView?,
     private val recorder: LiveRecorder?,
     private val server: LiveServer,
@@ -30,8 +30,8 @@ internal class LiveService private constructor(
 
     companion object {
         /**
-         * Reads the system below [top], starts following it (and [coordinator], if any) with [events],
-         * and serves the page as [options] say. [log] receives each operation done from the page.
+         * Reads the system below [top], starts following it (and [coordinator], if any) with [events], and serves the
+         * page as [options] say. [log] receives each operation done from the page.
          */
         suspend fun start(
             tree: RtcTree,
@@ -63,11 +63,15 @@ internal class LiveService private constructor(
 
         /** Starts [server] where [options] say; returns the page's address. */
         private suspend fun listen(server: LiveServer, options: ServeSettings): String {
-            val port = try {
-                server.start(options.address, options.port)
-            } catch (e: Exception) {
-                throw IllegalArgumentException("cannot serve on ${options.address}:${options.port}: ${e.message ?: e}", e)
-            }
+            val port =
+                try {
+                    server.start(options.address, options.port)
+                } catch (e: Exception) {
+                    throw IllegalArgumentException(
+                        "cannot serve on ${options.address}:${options.port}: ${e.message ?: e}",
+                        e,
+                    )
+                }
             val host = if (':' in options.address) "[${options.address}]" else options.address
             return "http://$host:$port/" + (options.token?.let { "?token=$it" } ?: "")
         }

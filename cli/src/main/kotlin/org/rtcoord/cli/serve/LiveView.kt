@@ -1,5 +1,9 @@
 package org.rtcoord.cli.serve
 
+import java.time.Instant
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
@@ -53,16 +57,11 @@ import org.rtcoord.cli.json.FsmJson
 import org.rtcoord.cli.json.OneLineJson
 import org.rtcoord.cli.what
 import org.rtcoord.dsl.Coordinator
-import java.time.Instant
-import java.util.concurrent.CopyOnWriteArrayList
-import java.util.concurrent.atomic.AtomicLong
-import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * The live state the page shows, derived from the tree's events below [top] and, when there is one,
- * the [coordinator]'s observable state: a snapshot for a page that (re)connects, then [updates]:
- * `event` for each event and log line, `network` when the network's shape may have changed,
- * `coordinator` when the coordinator's state did.
+ * The live state the page shows, derived from the tree's events below [top] and, when there is one, the [coordinator]'s
+ * observable state: a snapshot for a page that (re)connects, then [updates]: `event` for each event and log line,
+ * `network` when the network's shape may have changed, `coordinator` when the coordinator's state did.
  */
 internal class LiveView(
     private val tree: RtcTree,
@@ -78,7 +77,8 @@ internal class LiveView(
     }
 
     private val scope = CoroutineScope(SupervisorJob() + Dispatchers.Default + CoroutineName("live-view"))
-    private val broadcast = MutableSharedFlow<Update>(extraBufferCapacity = BUFFERED, onBufferOverflow = BufferOverflow.DROP_OLDEST)
+    private val broadcast =
+        MutableSharedFlow<Update>(extraBufferCapacity = BUFFERED, onBufferOverflow = BufferOverflow.DROP_OLDEST)
     private val recent = ArrayDeque<TimelineEntryJson>()
     private val sequence = AtomicLong()
     private val reshaped = Channel<Unit>(Channel.CONFLATED)
@@ -93,7 +93,15 @@ internal class LiveView(
     suspend fun start() {
         discover(top, null)
         val watched = if (top is RootNode) tree.nameServers else listOf(top)
-        subscriptions += tree.follow(watched, setOf(RtcEvent::class.java), options, start = { model -> network = NetworkView(top, model).toJson() }) { publish(it) }
+        subscriptions +=
+            tree.follow(
+                watched,
+                setOf(RtcEvent::class.java),
+                options,
+                start = { model -> network = NetworkView(top, model).toJson() },
+            ) {
+                publish(it)
+            }
         scope.launch {
             for (signal in reshaped) {
                 // Changes come in bursts (a component appears with its ports and connections): one read for all.
@@ -105,25 +113,30 @@ internal class LiveView(
     }
 
     /**
-     * Everything a page starts from: the network with the states the tree's model holds now (the page
-     * then skips the state events up to its sequence), the coordinator, the recent events, what it may do.
+     * Everything a page starts from: the network with the states the tree's model holds now (the page then skips the
+     * state events up to its sequence), the coordinator, the recent events, what it may do.
      */
-    fun snapshot(): LiveSnapshotJson = LiveSnapshotJson(
-        network?.let { withStates(it, tree.snapshot()) },
-        coordinatorState,
-        synchronized(recent) { recent.toList() },
-        operable,
-        Instant.now().toString(),
-    )
+    fun snapshot(): LiveSnapshotJson =
+        LiveSnapshotJson(
+            network?.let { withStates(it, tree.snapshot()) },
+            coordinatorState,
+            synchronized(recent) { recent.toList() },
+            operable,
+            Instant.now().toString(),
+        )
 
     /** Adds a line from the coordinator or the server to the timeline. */
     fun log(source: String, line: String) {
-        record { seq, sentAt -> TimelineEntryJson(seq, sentAt, kind = "log", source = source, text = line, time = Instant.now().toString()) }
+        record { seq, sentAt ->
+            TimelineEntryJson(seq, sentAt, kind = "log", source = source, text = line, time = Instant.now().toString())
+        }
     }
 
     private suspend fun publish(event: RtcEvent) {
         val json = EventJson.of(event)
-        record { seq, sentAt -> TimelineEntryJson(seq, sentAt, json, kindOf(event), event.path.toString(), event.what(), event.noticedAt) }
+        record { seq, sentAt ->
+            TimelineEntryJson(seq, sentAt, json, kindOf(event), event.path.toString(), event.what(), event.noticedAt)
+        }
         // The page applies state changes itself; anything else may change what is drawn.
         if (event !is StateChanged && event !is FsmStateChanged) reshaped.trySend(Unit)
     }
@@ -171,9 +184,12 @@ internal class LiveView(
         /** [network] with each component's state and FSM state as [model] holds them, and [model]'s sequence. */
         fun withStates(network: NetworkJson, model: SystemSnapshot): NetworkJson {
             val entries = model.components.flatMap { entry -> entry.paths.map { it.toString() to entry } }.toMap()
-            val components = network.components.map { component ->
-                entries[component.id]?.let { component.copy(state = it.overallState.name, fsm = it.fsm?.let(FsmJson::of)) } ?: component
-            }
+            val components =
+                network.components.map { component ->
+                    entries[component.id]?.let {
+                        component.copy(state = it.overallState.name, fsm = it.fsm?.let(FsmJson::of))
+                    } ?: component
+                }
             return network.copy(components = components, sequence = model.sequence)
         }
 
@@ -182,14 +198,32 @@ internal class LiveView(
         val RESHAPE_SETTLE = 150.milliseconds
 
         /** The timeline's filter groups: state, port, configuration, liveness, manager, structure. */
-        fun kindOf(event: RtcEvent): String = when (event) {
-            is StateChanged, is ContextRunningChanged, is ContextRateChanged, is ContextAttachmentChanged, is ComponentFinalized, is FsmStateChanged -> "state"
-            is PortConnected, is PortDisconnected, is PortTraffic -> "port"
-            is ParameterChanged, is ConfigurationSetActivated, is ConfigurationSetAdded, is ConfigurationSetRemoved -> "configuration"
-            is HeartbeatLost, is BecameZombie, is Recovered, is WatchMethodChanged -> "liveness"
-            is ManagerComponentChanged, is ManagerDied, is ManagerReturned -> "manager"
-            is NameServerLost, is NameServerReturned -> "liveness"
-            is NodeAppeared, is NodeVanished -> "structure"
-        }
+        fun kindOf(event: RtcEvent): String =
+            when (event) {
+                is StateChanged,
+                is ContextRunningChanged,
+                is ContextRateChanged,
+                is ContextAttachmentChanged,
+                is ComponentFinalized,
+                is FsmStateChanged -> "state"
+                is PortConnected,
+                is PortDisconnected,
+                is PortTraffic -> "port"
+                is ParameterChanged,
+                is ConfigurationSetActivated,
+                is ConfigurationSetAdded,
+                is ConfigurationSetRemoved -> "configuration"
+                is HeartbeatLost,
+                is BecameZombie,
+                is Recovered,
+                is WatchMethodChanged -> "liveness"
+                is ManagerComponentChanged,
+                is ManagerDied,
+                is ManagerReturned -> "manager"
+                is NameServerLost,
+                is NameServerReturned -> "liveness"
+                is NodeAppeared,
+                is NodeVanished -> "structure"
+            }
     }
 }

@@ -8,8 +8,8 @@ import org.rtcoord.cli.json.Spread
 import org.rtcoord.cli.json.SpreadingSerializer
 
 /**
- * A line of the page's timeline, numbered [seq] in the order the server sent them: an event (its
- * fields spread in, as `watch --json` gives them) or a log line from the coordinator or the server.
+ * A line of the page's timeline, numbered [seq] in the order the server sent them: an event (its fields spread in, as
+ * `watch --json` gives them) or a log line from the coordinator or the server.
  */
 @OptIn(ExperimentalSerializationApi::class)
 @KeepGeneratedSerializer

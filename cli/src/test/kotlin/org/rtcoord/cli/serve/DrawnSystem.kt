@@ -7,9 +7,9 @@ import kotlinx.serialization.json.jsonPrimitive
 import org.rtcoord.RtcTree
 
 /**
- * What the page in [browser] draws, read from its Cytoscape graph: each component's drawn state, and
- * what is wrong with the drawing: a connection or hosting without an edge, an edge without a rendered
- * box, two node boxes that overlap, a port off its component's edge.
+ * What the page in [browser] draws, read from its Cytoscape graph: each component's drawn state, and what is wrong with
+ * the drawing: a connection or hosting without an edge, an edge without a rendered box, two node boxes that overlap, a
+ * port off its component's edge.
  */
 class DrawnSystem private constructor(val states: Map<String, String>, val problems: List<String>) {
     /** Reading a drawing, and the tree's states to compare it with. */
@@ -24,20 +24,27 @@ class DrawnSystem private constructor(val states: Map<String, String>, val probl
         }
 
         /**
-         * What differs between the drawn states and those [tree]'s model holds now: a component drawn in
-         * another state, or one the tree holds that is not drawn at any of its paths. Empty when they agree.
+         * What differs between the drawn states and those [tree]'s model holds now: a component drawn in another state,
+         * or one the tree holds that is not drawn at any of its paths. Empty when they agree.
          */
-        fun stateDifferences(drawn: DrawnSystem, tree: RtcTree): List<String> = tree.snapshot().components.mapNotNull { entry ->
-            val path = entry.paths.map { it.toString() }.firstOrNull { it in drawn.states }
-            when {
-                path == null -> "${entry.path} (${entry.overallState}) is not drawn"
-                drawn.states[path] != entry.overallState.name -> "$path is drawn ${drawn.states[path]}, the tree holds ${entry.overallState}"
-                else -> null
-            }
-        } + drawn.states.keys.filter { path -> tree.snapshot().components.none { entry -> entry.paths.any { it.toString() == path } } }
-            .map { "$it is drawn, but the tree holds no such component" }
+        fun stateDifferences(drawn: DrawnSystem, tree: RtcTree): List<String> =
+            tree.snapshot().components.mapNotNull { entry ->
+                val path = entry.paths.map { it.toString() }.firstOrNull { it in drawn.states }
+                when {
+                    path == null -> "${entry.path} (${entry.overallState}) is not drawn"
+                    drawn.states[path] != entry.overallState.name ->
+                        "$path is drawn ${drawn.states[path]}, the tree holds ${entry.overallState}"
+                    else -> null
+                }
+            } +
+                drawn.states.keys
+                    .filter { path ->
+                        tree.snapshot().components.none { entry -> entry.paths.any { it.toString() == path } }
+                    }
+                    .map { "$it is drawn, but the tree holds no such component" }
 
-        private val CHECK = """
+        private val CHECK =
+            """
             (() => {
               const cy = rtcoord.cy, network = rtcoord.network, problems = [];
               const box = b => '[' + [b.x1, b.y1, b.x2, b.y2].map(Math.round).join(', ') + ']';
@@ -76,6 +83,7 @@ class DrawnSystem private constructor(val states: Map<String, String>, val probl
               cy.nodes('.component').filter(n => n.data('state') !== 'ZOMBIE').forEach(n => { states[n.id()] = n.data('state'); });
               return JSON.stringify({ problems, states });
             })()
-        """.trimIndent()
+            """
+                .trimIndent()
     }
 }

@@ -1,17 +1,5 @@
 package org.rtcoord.cli.serve
 
-import kotlinx.serialization.json.Json
-import kotlinx.serialization.json.JsonElement
-import kotlinx.serialization.json.JsonObject
-import kotlinx.serialization.json.buildJsonObject
-import kotlinx.serialization.json.int
-import kotlinx.serialization.json.jsonArray
-import kotlinx.serialization.json.jsonObject
-import kotlinx.serialization.json.jsonPrimitive
-import kotlinx.serialization.json.put
-import org.junit.jupiter.api.Assertions.fail
-import org.junit.jupiter.api.Assumptions.assumeTrue
-import org.rtcoord.fixtures.awaitValue
 import java.net.URI
 import java.net.http.HttpClient
 import java.net.http.HttpRequest
@@ -27,14 +15,31 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
+import kotlinx.serialization.json.Json
+import kotlinx.serialization.json.JsonElement
+import kotlinx.serialization.json.JsonObject
+import kotlinx.serialization.json.buildJsonObject
+import kotlinx.serialization.json.int
+import kotlinx.serialization.json.jsonArray
+import kotlinx.serialization.json.jsonObject
+import kotlinx.serialization.json.jsonPrimitive
+import kotlinx.serialization.json.put
+import org.junit.jupiter.api.Assertions.fail
+import org.junit.jupiter.api.Assumptions.assumeTrue
+import org.rtcoord.fixtures.awaitValue
 
 /**
  * Chromium (found as [Chromium] finds it), headless, driven over the Chrome DevTools Protocol on one page: navigate,
- * evaluate JavaScript, take screenshots. Its DevTools port is chosen by Chromium and listens on
- * loopback. Missing Chromium skips the test outside CI and fails it in CI, as missing peers do.
+ * evaluate JavaScript, take screenshots. Its DevTools port is chosen by Chromium and listens on loopback. Missing
+ * Chromium skips the test outside CI and fails it in CI, as missing peers do.
  */
-class HeadlessChromium private constructor(private val process: Process, private val profile: Path, private val socket: WebSocket, private val replies: Replies) :
-    AutoCloseable {
+class HeadlessChromium
+private constructor(
+    private val process: Process,
+    private val profile: Path,
+    private val socket: WebSocket,
+    private val replies: Replies,
+) : AutoCloseable {
     private val ids = AtomicInteger()
 
     /** Answers to commands by id, put together from the socket's text frames. */
@@ -59,7 +64,17 @@ class HeadlessChromium private constructor(private val process: Process, private
         val id = ids.incrementAndGet()
         val reply = CompletableFuture<JsonObject>()
         replies.pending[id] = reply
-        socket.sendText(buildJsonObject { put("id", id); put("method", method); put("params", params) }.toString(), true).join()
+        socket
+            .sendText(
+                buildJsonObject {
+                    put("id", id)
+                    put("method", method)
+                    put("params", params)
+                }
+                    .toString(),
+                true,
+            )
+            .join()
         val message = reply.get(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS)
         message["error"]?.let { fail<Unit>("$method: $it") }
         return message["result"]!!.jsonObject
@@ -72,31 +87,37 @@ class HeadlessChromium private constructor(private val process: Process, private
 
     /** The value of [expression] (awaited when it is a promise), as JSON. */
     fun evaluate(expression: String): JsonElement {
-        val result = send(
-            "Runtime.evaluate",
-            buildJsonObject {
-                put("expression", expression)
-                put("returnByValue", true)
-                put("awaitPromise", true)
-            },
-        )
+        val result =
+            send(
+                "Runtime.evaluate",
+                buildJsonObject {
+                    put("expression", expression)
+                    put("returnByValue", true)
+                    put("awaitPromise", true)
+                },
+            )
         result["exceptionDetails"]?.let { fail<Unit>("$expression: $it") }
         return result["result"]!!.jsonObject["value"] ?: JsonObject(emptyMap())
     }
 
     /**
-     * Waits until [expression] is true in the page, failing after [timeout] with [what]. It may throw
-     * meanwhile (the page is still loading): that counts as false.
+     * Waits until [expression] is true in the page, failing after [timeout] with [what]. It may throw meanwhile (the
+     * page is still loading): that counts as false.
      */
     fun await(what: String, timeout: Duration = 60.seconds, expression: String) {
         awaitValue(what, timeout) {
-            evaluate("(() => { try { return Boolean($expression); } catch (e) { return false; } })()").jsonPrimitive.content.toBooleanStrict().takeIf { it }
+            evaluate("(() => { try { return Boolean($expression); } catch (e) { return false; } })()")
+                .jsonPrimitive
+                .content
+                .toBooleanStrict()
+                .takeIf { it }
         }
     }
 
     /** Saves a PNG of the page to [file]. */
     fun screenshot(file: Path) {
-        val data = send("Page.captureScreenshot", buildJsonObject { put("format", "png") })["data"]!!.jsonPrimitive.content
+        val data =
+            send("Page.captureScreenshot", buildJsonObject { put("format", "png") })["data"]!!.jsonPrimitive.content
         Files.createDirectories(file.parent)
         Files.write(file, Base64.getDecoder().decode(data))
     }
@@ -118,24 +139,47 @@ class HeadlessChromium private constructor(private val process: Process, private
             assumeInstalled()
             val executable = Chromium.executable()!!
             val profile = Files.createTempDirectory("rtcoord-chromium")
-            val process = ProcessBuilder(
-                listOf(executable.toString()) + Chromium.headlessFlags(profile) + listOf(
-                    "--remote-debugging-address=127.0.0.1", "--remote-debugging-port=0", "--window-size=$width,$height", "about:blank",
-                ),
-            ).redirectErrorStream(true).redirectOutput(profile.resolve("chromium.log").toFile()).start()
+            val process =
+                ProcessBuilder(
+                        listOf(executable.toString()) +
+                            Chromium.headlessFlags(profile) +
+                            listOf(
+                                "--remote-debugging-address=127.0.0.1",
+                                "--remote-debugging-port=0",
+                                "--window-size=$width,$height",
+                                "about:blank",
+                            )
+                    )
+                    .redirectErrorStream(true)
+                    .redirectOutput(profile.resolve("chromium.log").toFile())
+                    .start()
             try {
                 val active = profile.resolve("DevToolsActivePort")
-                val port = awaitValue("Chromium's DevTools port", 60.seconds) {
-                    runCatching { Files.readAllLines(active).firstOrNull()?.toIntOrNull() }.getOrNull()
-                }
+                val port =
+                    awaitValue("Chromium's DevTools port", 60.seconds) {
+                        runCatching { Files.readAllLines(active).firstOrNull()?.toIntOrNull() }.getOrNull()
+                    }
                 val http = HttpClient.newHttpClient()
-                val pageSocket = awaitValue("Chromium's page", 60.seconds) {
-                    val list = runCatching {
-                        http.send(HttpRequest.newBuilder(URI("http://127.0.0.1:$port/json/list")).build(), HttpResponse.BodyHandlers.ofString()).body()
-                    }.getOrNull() ?: return@awaitValue null
-                    Json.parseToJsonElement(list).jsonArray.map { it.jsonObject }.firstOrNull { it["type"]?.jsonPrimitive?.content == "page" }
-                        ?.get("webSocketDebuggerUrl")?.jsonPrimitive?.content
-                }
+                val pageSocket =
+                    awaitValue("Chromium's page", 60.seconds) {
+                        val list =
+                            runCatching {
+                                http
+                                    .send(
+                                        HttpRequest.newBuilder(URI("http://127.0.0.1:$port/json/list")).build(),
+                                        HttpResponse.BodyHandlers.ofString(),
+                                    )
+                                    .body()
+                            }
+                                .getOrNull() ?: return@awaitValue null
+                        Json.parseToJsonElement(list)
+                            .jsonArray
+                            .map { it.jsonObject }
+                            .firstOrNull { it["type"]?.jsonPrimitive?.content == "page" }
+                            ?.get("webSocketDebuggerUrl")
+                            ?.jsonPrimitive
+                            ?.content
+                    }
                 val replies = Replies()
                 val socket = http.newWebSocketBuilder().buildAsync(URI(pageSocket), replies).get(60, TimeUnit.SECONDS)
                 return HeadlessChromium(process, profile, socket, replies).also { it.send("Page.enable") }
@@ -149,13 +193,13 @@ class HeadlessChromium private constructor(private val process: Process, private
 
         /** Skips the test when Chromium is not installed, outside CI; fails it in CI. */
         fun assumeInstalled() {
-            if (Chromium.executable() == null) missing("chromium is not installed (apt-get install chromium; .ci/run does it)")
+            if (Chromium.executable() == null)
+                missing("chromium is not installed (apt-get install chromium; .ci/run does it)")
         }
 
         private fun missing(why: String): Nothing {
             if (System.getenv("CI") != null) fail<Unit>(why) else assumeTrue(false, why)
             throw IllegalStateException(why)
         }
-
     }
 }

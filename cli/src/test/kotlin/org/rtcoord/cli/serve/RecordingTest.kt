@@ -1,5 +1,8 @@
 package org.rtcoord.cli.serve
 
+import java.nio.file.Files
+import java.nio.file.Path
+import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.serialization.json.Json
 import kotlinx.serialization.json.JsonArray
 import kotlinx.serialization.json.JsonElement
@@ -21,21 +24,23 @@ import org.rtcoord.cli.json.OneLineJson
 import org.rtcoord.cli.ok
 import org.rtcoord.cli.runRtcoord
 import org.rtcoord.cli.usageError
-import java.nio.file.Files
-import java.nio.file.Path
-import kotlin.time.Duration.Companion.milliseconds
 
-/** `rtcoord record`, and reading a recording: what serve --replay accepts, and the one line that says why it refuses the rest. */
+/**
+ * `rtcoord record`, and reading a recording: what serve --replay accepts, and the one line that says why it refuses the
+ * rest.
+ */
 class RecordingTest {
-    @TempDir
-    lateinit var directory: Path
+    @TempDir lateinit var directory: Path
 
-    private fun line(kind: String, at: Long, json: String): String = Recording.line(kind, at, Json.parseToJsonElement(json))
+    private fun line(kind: String, at: Long, json: String): String =
+        Recording.line(kind, at, Json.parseToJsonElement(json))
 
     private fun refusal(vararg lines: String): String {
         val file = directory.resolve("run.jsonl")
         Files.write(file, lines.toList())
-        return assertThrows<IllegalArgumentException> { Recording.read(file) }.message!!.replace(file.toString(), "FILE")
+        return assertThrows<IllegalArgumentException> { Recording.read(file) }
+            .message!!
+            .replace(file.toString(), "FILE")
     }
 
     @Test
@@ -43,7 +48,10 @@ class RecordingTest {
         val file = directory.resolve("run.jsonl")
         Files.write(file, listOf(line("snapshot", 1, "{\"network\":{}}"), line("event", 2, "{\"seq\":1}")))
         val recording = Recording.read(file)
-        assertEquals("""[{"kind":"snapshot","at":1,"data":{"network":{}}},{"kind":"event","at":2,"data":{"seq":1}}]""", recording.toJson())
+        assertEquals(
+            """[{"kind":"snapshot","at":1,"data":{"network":{}}},{"kind":"event","at":2,"data":{"seq":1}}]""",
+            recording.toJson(),
+        )
         assertEquals("""{"network":{}}""", recording.snapshot())
         assertEquals(1.milliseconds, recording.length)
     }
@@ -52,7 +60,10 @@ class RecordingTest {
     fun `serve --at picks a moment of a replayed recording, one within it`() {
         val file = directory.resolve("short.jsonl")
         Files.write(file, listOf(line("snapshot", 1_000, "{\"network\":{}}"), line("event", 3_500, "{\"seq\":1}")))
-        assertEquals("rtcoord: $file lasts 2.5s: it has no moment 12.5s after its start", runRtcoord("serve", "--replay", file.toString(), "--at", "12.5s").failure())
+        assertEquals(
+            "rtcoord: $file lasts 2.5s: it has no moment 12.5s after its start",
+            runRtcoord("serve", "--replay", file.toString(), "--at", "12.5s").failure(),
+        )
         assertTrue("--at is a moment of a recording" in runRtcoord("serve", "--at", "1s").usageError())
     }
 
@@ -60,7 +71,10 @@ class RecordingTest {
     fun `rtcoord record writes a recording that serve --replay reads`() {
         Localisation().use { localisation ->
             val file = directory.resolve("recorded.jsonl")
-            assertEquals("recording ${localisation.host} to $file\n", runRtcoord("record", file.toString(), localisation.host, "--for", "1s").ok())
+            assertEquals(
+                "recording ${localisation.host} to $file\n",
+                runRtcoord("record", file.toString(), localisation.host, "--for", "1s").ok(),
+            )
             val snapshot = Recording.read(file).snapshot()
             assertTrue(localisation.path("laser0.rtc") in snapshot, snapshot.take(200))
         }
@@ -70,7 +84,10 @@ class RecordingTest {
     fun `what is not a recording is refused with the line that says why`() {
         assertEquals("FILE is empty: a recording starts with a snapshot line", refusal())
         assertEquals("FILE:1: a recording starts with a snapshot line, not event", refusal(line("event", 1, "{}")))
-        assertEquals("FILE:2: not a recording line (written by serve --record): hello", refusal(line("snapshot", 1, "{}"), "hello"))
+        assertEquals(
+            "FILE:2: not a recording line (written by serve --record): hello",
+            refusal(line("snapshot", 1, "{}"), "hello"),
+        )
         assertEquals("FILE:2: a second snapshot line", refusal(line("snapshot", 1, "{}"), line("snapshot", 2, "{}")))
     }
 
@@ -83,20 +100,39 @@ class RecordingTest {
         val unknown = """{"kind":"sound","at":2,"data":{}}"""
         assertEquals("FILE:2: not a recording line (written by serve --record): $unknown", refusal(snapshot, unknown))
         val notAnObject = """{"kind":"event","at":2,"data":[1]}"""
-        assertEquals("FILE:2: not a recording line (written by serve --record): $notAnObject", refusal(snapshot, notAnObject))
+        assertEquals(
+            "FILE:2: not a recording line (written by serve --record): $notAnObject",
+            refusal(snapshot, notAnObject),
+        )
         val noTime = """{"kind":"event","data":{}}"""
         assertEquals("FILE:2: not a recording line (written by serve --record): $noTime", refusal(snapshot, noTime))
     }
 
     @Test
     fun `what the view sends is replayed as it was sent`() {
-        val event = EventJson("2026-11-29T00:00:00.999Z", "/localhost/laser0.rtc", "StateChanged", 5, EventDetail.StateChanged(0, "INACTIVE", "ACTIVE"))
-        val entry = OneLineJson.encodeToJsonElement(TimelineEntryJson(7, 1_000, event, "state", event.path, "state in context 0: INACTIVE -> ACTIVE", 999))
-        val snapshot = OneLineJson.encodeToJsonElement(LiveSnapshotJson(null, null, listOf(), operable = false, serverTime = "2026-11-29T00:00:00Z"))
+        val event =
+            EventJson(
+                "2026-11-29T00:00:00.999Z",
+                "/localhost/laser0.rtc",
+                "StateChanged",
+                5,
+                EventDetail.StateChanged(0, "INACTIVE", "ACTIVE"),
+            )
+        val entry =
+            OneLineJson.encodeToJsonElement(
+                TimelineEntryJson(7, 1_000, event, "state", event.path, "state in context 0: INACTIVE -> ACTIVE", 999)
+            )
+        val snapshot =
+            OneLineJson.encodeToJsonElement(
+                LiveSnapshotJson(null, null, listOf(), operable = false, serverTime = "2026-11-29T00:00:00Z")
+            )
         val file = directory.resolve("typed.jsonl")
         Files.write(file, listOf(Recording.line("snapshot", 1_000, snapshot), Recording.line("event", 1_250, entry)))
         val recording = Recording.read(file)
-        assertEquals(JsonArray(listOf(recorded("snapshot", 1_000, snapshot), recorded("event", 1_250, entry))), Json.parseToJsonElement(recording.toJson()))
+        assertEquals(
+            JsonArray(listOf(recorded("snapshot", 1_000, snapshot), recorded("event", 1_250, entry))),
+            Json.parseToJsonElement(recording.toJson()),
+        )
         assertEquals(snapshot, Json.parseToJsonElement(recording.snapshot()))
         assertEquals(250.milliseconds, recording.length)
         assertEquals("StateChanged", entry.jsonObject.getValue("event").jsonPrimitive.content)

@@ -1,5 +1,8 @@
 package org.rtcoord.cli.serve
 
+import java.nio.file.Path
+import java.nio.file.Paths
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import kotlinx.serialization.json.jsonPrimitive
 import kotlinx.serialization.json.long
@@ -11,17 +14,14 @@ import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.cli.Localisation
-import org.rtcoord.fixtures.await
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
-import java.nio.file.Path
-import java.nio.file.Paths
-import kotlin.time.Duration.Companion.seconds
+import org.rtcoord.fixtures.await
 
 /**
  * The page in a real browser (headless Chromium) on the paper's localisation system coordinated by
- * `examples/localisation.coord.kts`: drawn whole, then live as the laser fails and the coordinator
- * reacts, and through a restart of the server.
+ * `examples/localisation.coord.kts`: drawn whole, then live as the laser fails and the coordinator reacts, and through
+ * a restart of the server.
  */
 class ServeBrowserTest {
     private val localisation = Localisation()
@@ -39,7 +39,8 @@ class ServeBrowserTest {
     private fun <T : AutoCloseable> T.closedAfter(): T = also { closing += it }
 
     private fun coordinator(): Coordinator = runBlocking {
-        val script = Paths.get(System.getProperty("rtcoord.root", ".."), "examples", "localisation.coord.kts").toAbsolutePath()
+        val script =
+            Paths.get(System.getProperty("rtcoord.root", ".."), "examples", "localisation.coord.kts").toAbsolutePath()
         val coordination = ScriptHost().load(script, host = TreeConfig(listOf(localisation.naming.address), 3.seconds))
         Coordinator(tree, coordination, EventOptions()).closedAfter().also { it.start() }
     }
@@ -56,17 +57,24 @@ class ServeBrowserTest {
         val service = serve(coordinator).closedAfter()
         val browser = HeadlessChromium.start().closedAfter()
         browser.navigate(service.url)
-        browser.await("the network drawn", expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4")
+        browser.await(
+            "the network drawn",
+            expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4",
+        )
         browser.screenshot(SCREENSHOTS.resolve("localisation.png"))
 
         // Every component is in the graph, inside the view, in its state, and listed with it.
         for (name in components) {
             val path = localisation.path("$name.rtc")
-            val drawn = browser.evaluate(
-                """(() => { const n = rtcoord.cy.getElementById(${js(path)}); const b = n.renderedBoundingBox();
+            val drawn =
+                browser
+                    .evaluate(
+                        """(() => { const n = rtcoord.cy.getElementById(${js(path)}); const b = n.renderedBoundingBox();
                    const li = document.querySelector('#components li[data-component="' + CSS.escape(${js(path)}) + '"]');
-                   return n.data('state') + ' ' + (b.x1 >= 0 && b.y1 >= 0 && b.x2 <= rtcoord.cy.width() && b.y2 <= rtcoord.cy.height()) + ' ' + (li && li.dataset.state); })()""",
-            ).jsonPrimitive.content
+                   return n.data('state') + ' ' + (b.x1 >= 0 && b.y1 >= 0 && b.x2 <= rtcoord.cy.width() && b.y2 <= rtcoord.cy.height()) + ' ' + (li && li.dataset.state); })()"""
+                    )
+                    .jsonPrimitive
+                    .content
             assertEquals("ACTIVE true ACTIVE", drawn, name)
         }
         val loadedAt = browser.evaluate("rtcoord.loadedAt").jsonPrimitive.long
@@ -74,26 +82,48 @@ class ServeBrowserTest {
         val laser = localisation.path("laser0.rtc")
         val failedAt = System.currentTimeMillis()
         localisation.system.component("laser0").fail()
-        browser.await("laser0 shown in ERROR", expression = "rtcoord.shown[${js(laser)}] && rtcoord.shown[${js(laser)}].noticedAt && " +
-            "['ERROR', 'INACTIVE'].includes(rtcoord.shown[${js(laser)}].state)")
-        // The page's clock and the tree's are the same machine's: how long from the tree noticing it to the page showing it.
+        browser.await(
+            "laser0 shown in ERROR",
+            expression =
+                "rtcoord.shown[${js(laser)}] && rtcoord.shown[${js(laser)}].noticedAt && " +
+                    "['ERROR', 'INACTIVE'].includes(rtcoord.shown[${js(laser)}].state)",
+        )
+        // The page's clock and the tree's are the same machine's: how long from the tree noticing it to the page
+        // showing it.
         val shownAt = browser.evaluate("rtcoord.shown[${js(laser)}].at").jsonPrimitive.long
         val noticedAt = browser.evaluate("rtcoord.shown[${js(laser)}].noticedAt").jsonPrimitive.long
-        browser.await("the timeline to list laser0's ERROR", expression = "[...document.querySelectorAll('#timeline li[data-kind=state]')]" +
-            ".some(li => li.dataset.source === ${js(laser)} && li.textContent.includes('-> ERROR'))")
+        browser.await(
+            "the timeline to list laser0's ERROR",
+            expression =
+                "[...document.querySelectorAll('#timeline li[data-kind=state]')]" +
+                    ".some(li => li.dataset.source === ${js(laser)} && li.textContent.includes('-> ERROR'))",
+        )
 
         // The coordinator's rule fired, the page says so; its reaction reshapes the graph.
         val rule = coordinator.rules.single().description
-        browser.await("the rule's firing shown", expression = "document.querySelector('.rule[data-firings=\"1\"]') !== null")
-        val firedAt = browser.evaluate("Date.parse(rtcoord.coordinatorShownAt[${js(rule)}].lastFired)").jsonPrimitive.long
+        browser.await(
+            "the rule's firing shown",
+            expression = "document.querySelector('.rule[data-firings=\"1\"]') !== null",
+        )
+        val firedAt =
+            browser.evaluate("Date.parse(rtcoord.coordinatorShownAt[${js(rule)}].lastFired)").jsonPrimitive.long
         val ruleShownAt = browser.evaluate("rtcoord.coordinatorShownAt[${js(rule)}].at").jsonPrimitive.long
         val odo = localisation.path("odo_localise0.rtc")
-        browser.await("odo_localise0 drawn ACTIVE", expression = "rtcoord.cy.getElementById(${js(odo)}).data('state') === 'ACTIVE'")
-        browser.await("laser_localise0 drawn INACTIVE", expression = "rtcoord.cy.getElementById(${js(localisation.path("laser_localise0.rtc"))}).data('state') === 'INACTIVE'")
+        browser.await(
+            "odo_localise0 drawn ACTIVE",
+            expression = "rtcoord.cy.getElementById(${js(odo)}).data('state') === 'ACTIVE'",
+        )
+        browser.await(
+            "laser_localise0 drawn INACTIVE",
+            expression =
+                "rtcoord.cy.getElementById(${js(localisation.path("laser_localise0.rtc"))}).data('state') === 'INACTIVE'",
+        )
         browser.screenshot(SCREENSHOTS.resolve("localisation-recovered.png"))
 
-        println("serve: laser0 ERROR shown ${shownAt - noticedAt} ms after the tree noticed it, ${shownAt - failedAt} ms after it failed; " +
-            "rule firing shown ${ruleShownAt - firedAt} ms after it fired")
+        println(
+            "serve: laser0 ERROR shown ${shownAt - noticedAt} ms after the tree noticed it, ${shownAt - failedAt} ms after it failed; " +
+                "rule firing shown ${ruleShownAt - firedAt} ms after it fired"
+        )
         assertTrue(shownAt - noticedAt < 1000, "ERROR shown ${shownAt - noticedAt} ms after it was noticed")
         assertTrue(ruleShownAt - firedAt < 1000, "firing shown ${ruleShownAt - firedAt} ms after it fired")
         assertEquals(loadedAt, browser.evaluate("rtcoord.loadedAt").jsonPrimitive.long, "the page was reloaded")
@@ -103,17 +133,29 @@ class ServeBrowserTest {
     @Test
     fun `a page opened after states changed draws every component in the state the tree holds`() {
         val service = serve(null).closedAfter()
-        // Changed while the server follows the system, before any page is open: the page must not start from an old picture.
+        // Changed while the server follows the system, before any page is open: the page must not start from an old
+        // picture.
         runBlocking { tree.component(localisation.path("gyro0.rtc")).deactivate() }
         localisation.system.component("laser0").fail()
-        val expected = mapOf("gyro0" to "INACTIVE", "laser0" to "ERROR", "odometry0" to "ACTIVE", "laser_localise0" to "ACTIVE")
-        await("the tree to hold both changes") { tree.snapshot().components.associate { it.node.name.removeSuffix(".rtc") to it.overallState.name } == expected }
+        val expected =
+            mapOf("gyro0" to "INACTIVE", "laser0" to "ERROR", "odometry0" to "ACTIVE", "laser_localise0" to "ACTIVE")
+        await("the tree to hold both changes") {
+            tree.snapshot().components.associate { it.node.name.removeSuffix(".rtc") to it.overallState.name } ==
+                expected
+        }
 
         val browser = HeadlessChromium.start().closedAfter()
         browser.navigate(service.url)
-        browser.await("the network drawn", expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4")
+        browser.await(
+            "the network drawn",
+            expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4",
+        )
         for (entry in tree.snapshot().components) {
-            val drawn = browser.evaluate("rtcoord.cy.getElementById(${js(entry.path.toString())}).data('state')").jsonPrimitive.content
+            val drawn =
+                browser
+                    .evaluate("rtcoord.cy.getElementById(${js(entry.path.toString())}).data('state')")
+                    .jsonPrimitive
+                    .content
             assertEquals(entry.overallState.name, drawn, entry.path.toString())
             assertEquals(runBlocking { entry.node.state() }.name, drawn, "${entry.path} as read now")
         }
@@ -125,13 +167,23 @@ class ServeBrowserTest {
         val port = service.url.substringAfterLast(':').trimEnd('/').toInt()
         val browser = HeadlessChromium.start().closedAfter()
         browser.navigate(service.url)
-        browser.await("the network drawn", expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4")
+        browser.await(
+            "the network drawn",
+            expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4",
+        )
         val loadedAt = browser.evaluate("rtcoord.loadedAt").jsonPrimitive.long
 
         service.close()
-        browser.await("the page to notice", expression = "document.getElementById('connection').dataset.connected === 'false'")
+        browser.await(
+            "the page to notice",
+            expression = "document.getElementById('connection').dataset.connected === 'false'",
+        )
         service = serve(null, port).closedAfter()
-        browser.await("the page to reconnect", expression = "rtcoord.snapshots === 2 && document.getElementById('connection').dataset.connected === 'true'")
+        browser.await(
+            "the page to reconnect",
+            expression =
+                "rtcoord.snapshots === 2 && document.getElementById('connection').dataset.connected === 'true'",
+        )
 
         val manager = runBlocking { tree.manager(localisation.path("manager.mgr")) }
         runBlocking { manager.create("odo_localise") }

@@ -1,5 +1,8 @@
 package org.rtcoord.cli.serve
 
+import java.nio.file.Files
+import java.nio.file.Path
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import kotlinx.serialization.json.jsonPrimitive
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -11,18 +14,13 @@ import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
 import org.rtcoord.cli.Localisation
 import org.rtcoord.fixtures.await
-import java.nio.file.Files
-import java.nio.file.Path
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * A run recorded with `serve --record` while the laser fails, then replayed in Chromium: the replayed
- * page at the end of the recording draws the states the tree held when the recording ended, and at its
- * start the states it began with.
+ * A run recorded with `serve --record` while the laser fails, then replayed in Chromium: the replayed page at the end
+ * of the recording draws the states the tree held when the recording ended, and at its start the states it began with.
  */
 class ServeReplayTest {
-    @TempDir
-    lateinit var directory: Path
+    @TempDir lateinit var directory: Path
 
     @Test
     fun `a recorded run with a laser failure replays to the states the tree held`() {
@@ -32,39 +30,66 @@ class ServeReplayTest {
         Localisation().use { localisation ->
             RtcTree(TreeConfig(listOf(localisation.naming.address), 3.seconds)).use { tree ->
                 val top = runBlocking { tree.node("/${localisation.naming.address}") }
-                runBlocking { LiveService.start(tree, top, null, EventOptions(), ServeSettings(record = file)) {} }.use {
-                    started = states(tree)
-                    localisation.system.component("laser0").fail()
-                    await("the tree to hold laser0 in ERROR") { states(tree)[localisation.path("laser0.rtc")] == "ERROR" }
-                    await("the recording to hold laser0's ERROR") { Files.readString(file).contains("\"new\":\"ERROR\"") }
-                    recorded = states(tree)
-                }
+                runBlocking { LiveService.start(tree, top, null, EventOptions(), ServeSettings(record = file)) {} }
+                    .use {
+                        started = states(tree)
+                        localisation.system.component("laser0").fail()
+                        await("the tree to hold laser0 in ERROR") {
+                            states(tree)[localisation.path("laser0.rtc")] == "ERROR"
+                        }
+                        await("the recording to hold laser0's ERROR") {
+                            Files.readString(file).contains("\"new\":\"ERROR\"")
+                        }
+                        recorded = states(tree)
+                    }
             }
         }
         val lines = Files.readAllLines(file)
         assertTrue(lines.first().startsWith("{\"kind\":\"snapshot\","), lines.first().take(80))
-        assertTrue(lines.drop(1).all { it.startsWith("{\"kind\":\"event\",") || it.startsWith("{\"kind\":\"network\",") }, "the lines after the snapshot")
+        assertTrue(
+            lines.drop(1).all { it.startsWith("{\"kind\":\"event\",") || it.startsWith("{\"kind\":\"network\",") },
+            "the lines after the snapshot",
+        )
 
-        runBlocking { LiveService.replay(Recording.read(file), ServeSettings()) }.use { service ->
-            HeadlessChromium.start().use { browser ->
-                browser.navigate(service.url)
-                browser.await("the replay loaded", expression = "rtcoord.replay !== null && document.body.dataset.rendered === 'true'")
-                assertEquals(started, DrawnSystem.of(browser).states, "the states drawn at the start of the replay")
-                browser.evaluate("seek(rtcoord.replay.end)")
-                val end = DrawnSystem.of(browser)
-                assertEquals(recorded, end.states, "the states drawn at the end of the replay")
-                assertEquals(emptyList<String>(), end.problems, "the replayed drawing")
-                browser.evaluate("seek(rtcoord.replay.start)")
-                assertEquals(started, DrawnSystem.of(browser).states, "the states drawn after going back to the start")
-                assertEquals("replay", browser.evaluate("document.getElementById('connection').textContent").jsonPrimitive.content)
-                // serve --replay --at: the page opens at that moment.
-                browser.navigate(service.url + "?at=" + Recording.read(file).length.inWholeMilliseconds / 1000.0)
-                browser.await("the replay loaded at its end", expression = "rtcoord.replay !== null && rtcoord.replay.at === rtcoord.replay.end")
-                assertEquals(recorded, DrawnSystem.of(browser).states, "the states drawn when the page opens at the end")
+        runBlocking { LiveService.replay(Recording.read(file), ServeSettings()) }
+            .use { service ->
+                HeadlessChromium.start().use { browser ->
+                    browser.navigate(service.url)
+                    browser.await(
+                        "the replay loaded",
+                        expression = "rtcoord.replay !== null && document.body.dataset.rendered === 'true'",
+                    )
+                    assertEquals(started, DrawnSystem.of(browser).states, "the states drawn at the start of the replay")
+                    browser.evaluate("seek(rtcoord.replay.end)")
+                    val end = DrawnSystem.of(browser)
+                    assertEquals(recorded, end.states, "the states drawn at the end of the replay")
+                    assertEquals(emptyList<String>(), end.problems, "the replayed drawing")
+                    browser.evaluate("seek(rtcoord.replay.start)")
+                    assertEquals(
+                        started,
+                        DrawnSystem.of(browser).states,
+                        "the states drawn after going back to the start",
+                    )
+                    assertEquals(
+                        "replay",
+                        browser.evaluate("document.getElementById('connection').textContent").jsonPrimitive.content,
+                    )
+                    // serve --replay --at: the page opens at that moment.
+                    browser.navigate(service.url + "?at=" + Recording.read(file).length.inWholeMilliseconds / 1000.0)
+                    browser.await(
+                        "the replay loaded at its end",
+                        expression = "rtcoord.replay !== null && rtcoord.replay.at === rtcoord.replay.end",
+                    )
+                    assertEquals(
+                        recorded,
+                        DrawnSystem.of(browser).states,
+                        "the states drawn when the page opens at the end",
+                    )
+                }
             }
-        }
     }
 
     /** Each component's state as the tree's model holds it, by its naming path. */
-    private fun states(tree: RtcTree): Map<String, String> = tree.snapshot().components.associate { it.path.toString() to it.overallState.name }
+    private fun states(tree: RtcTree): Map<String, String> =
+        tree.snapshot().components.associate { it.path.toString() to it.overallState.name }
 }

@@ -6,6 +6,8 @@ import RTC.ConnectorProfile
 import RTC.ConnectorProfileHolder
 import RTC.PortService
 import _SDOPackage.NameValue
+import java.util.UUID
+import java.util.concurrent.CopyOnWriteArrayList
 import org.rtcoord.BadParameterException
 import org.rtcoord.DataListener
 import org.rtcoord.Port
@@ -17,17 +19,14 @@ import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.orFail
 import org.rtcoord.internal.toMap
 import org.slf4j.LoggerFactory
-import java.util.UUID
-import java.util.concurrent.CopyOnWriteArrayList
 
 /**
- * The tree's subscription to one out-port's data, as a connected in-port has it: an `InPortCdr`
- * endpoint and a [TapPort] served by [host], connected to the port with OpenRTM's push handshake. The
- * connector holds the out-port and the tap's port, and names the endpoint in
- * `dataport.corba_cdr.inport_ior`, which the out-port's `InPortCorbaCdrConsumer` subscribes to
- * (OpenRTM-aist's `subscribeFromIor`). Its id and name start
- * with [PREFIX], so a later tree can remove the connectors of trees that died (see [removeStaleTaps]).
- * Each sample is decoded once, in the byte order the connector negotiated, and handed to every listener.
+ * The tree's subscription to one out-port's data, as a connected in-port has it: an `InPortCdr` endpoint and a
+ * [TapPort] served by [host], connected to the port with OpenRTM's push handshake. The connector holds the out-port and
+ * the tap's port, and names the endpoint in `dataport.corba_cdr.inport_ior`, which the out-port's
+ * `InPortCorbaCdrConsumer` subscribes to (OpenRTM-aist's `subscribeFromIor`). Its id and name start with [PREFIX], so a
+ * later tree can remove the connectors of trees that died (see [removeStaleTaps]). Each sample is decoded once, in the
+ * byte order the connector negotiated, and handed to every listener.
  */
 internal class DataTap(private val core: TreeCore, private val port: Port, private val host: TapHost) {
     private val log = LoggerFactory.getLogger(DataTap::class.java)
@@ -38,7 +37,8 @@ internal class DataTap(private val core: TreeCore, private val port: Port, priva
     @Volatile private var decoder = DataDecoder("", littleEndian = true)
 
     /** The connector's id once connected. */
-    @Volatile var connectorId: String? = null
+    @Volatile
+    var connectorId: String? = null
         private set
 
     fun add(listener: DataListener) {
@@ -55,34 +55,52 @@ internal class DataTap(private val core: TreeCore, private val port: Port, priva
     suspend fun connect() {
         val snapshot = port.snapshot()
         if (snapshot.kind != PortKind.DATA_OUT) {
-            throw BadParameterException(subject, "tap", "only an out-port's data can be tapped (this is a ${snapshot.kind.name.lowercase().replace('_', ' ')} port)")
+            throw BadParameterException(
+                subject,
+                "tap",
+                "only an out-port's data can be tapped (this is a ${snapshot.kind.name.lowercase().replace('_', ' ')} port)",
+            )
         }
         val target = port.reference()
         removeStaleTaps(core, subject, target)
         decoder = DataDecoder(snapshot.dataType.orEmpty(), littleEndian = true)
-        val inlet = host.serve(object : InPortCdrPOA() {
-            override fun put(data: ByteArray): PortStatus = receive(data)
-        })
+        val inlet =
+            host.serve(
+                object : InPortCdrPOA() {
+                    override fun put(data: ByteArray): PortStatus = receive(data)
+                }
+            )
         val tapPort = TapPort(core.orb.orb, "rtcoord_tap.${snapshot.fullName}", snapshot.dataType.orEmpty())
         val portEndpoint = host.serve(tapPort)
         tapPort.reference = RTC.PortServiceHelper.narrow(portEndpoint.reference)
         val served = listOf(inlet, portEndpoint)
-        val holder = ConnectorProfileHolder(
-            ConnectorProfile(
-                "$PREFIX${snapshot.fullName}",
-                PREFIX + UUID.randomUUID(),
-                arrayOf(target, tapPort.reference),
-                properties(snapshot, inlet.ior).map { (key, value) -> NameValue(key, core.orb.orb.create_any().apply { insert_string(value) }) }.toTypedArray(),
-            ),
-        )
+        val holder =
+            ConnectorProfileHolder(
+                ConnectorProfile(
+                    "$PREFIX${snapshot.fullName}",
+                    PREFIX + UUID.randomUUID(),
+                    arrayOf(target, tapPort.reference),
+                    properties(snapshot, inlet.ior)
+                        .map { (key, value) ->
+                            NameValue(key, core.orb.orb.create_any().apply { insert_string(value) })
+                        }
+                        .toTypedArray(),
+                )
+            )
         try {
-            core.remote.call(subject, "connect") { target.connect(holder) }.orFail(subject, "connect", "the tree's data tap")
+            core.remote
+                .call(subject, "connect") { target.connect(holder) }
+                .orFail(subject, "connect", "the tree's data tap")
         } catch (e: RtcException) {
             served.forEach(TapHost.Endpoint::close)
             throw e
         }
         val made = holder.value.properties.toMap()
-        decoder = DataDecoder(made["dataport.data_type"] ?: snapshot.dataType.orEmpty(), littleEndian(made["dataport.serializer.cdr.endian"]))
+        decoder =
+            DataDecoder(
+                made["dataport.data_type"] ?: snapshot.dataType.orEmpty(),
+                littleEndian(made["dataport.serializer.cdr.endian"]),
+            )
         endpoints = served
         reference = target
         connectorId = holder.value.connector_id
@@ -94,7 +112,9 @@ internal class DataTap(private val core: TreeCore, private val port: Port, priva
         val id = connectorId ?: return
         val target = reference ?: return
         try {
-            core.remote.call(subject, "disconnect") { target.disconnect(id) }.orFail(subject, "disconnect", "the tree's data tap $id")
+            core.remote
+                .call(subject, "disconnect") { target.disconnect(id) }
+                .orFail(subject, "disconnect", "the tree's data tap $id")
         } finally {
             forget()
         }
@@ -131,7 +151,8 @@ internal class DataTap(private val core: TreeCore, private val port: Port, priva
     }
 
     private fun properties(snapshot: PortSnapshot, ior: String): Map<String, String> {
-        val offered = snapshot.properties["dataport.subscription_type"]?.split(',')?.map { it.trim().lowercase() }.orEmpty()
+        val offered =
+            snapshot.properties["dataport.subscription_type"]?.split(',')?.map { it.trim().lowercase() }.orEmpty()
         return buildMap {
             put("dataport.dataflow_type", "push")
             put("dataport.interface_type", "corba_cdr")
@@ -148,7 +169,9 @@ internal class DataTap(private val core: TreeCore, private val port: Port, priva
         /** Every tap connector's id and name start with it. */
         const val PREFIX = "rtcoord-tap-"
 
-        /** The byte order a connector's `dataport.serializer.cdr.endian` settled on: its first entry, little by default. */
+        /**
+         * The byte order a connector's `dataport.serializer.cdr.endian` settled on: its first entry, little by default.
+         */
         fun littleEndian(endian: String?): Boolean = endian?.split(',')?.firstOrNull()?.trim()?.lowercase() != "big"
     }
 }

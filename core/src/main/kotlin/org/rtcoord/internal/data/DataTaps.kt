@@ -1,5 +1,6 @@
 package org.rtcoord.internal.data
 
+import java.util.concurrent.atomic.AtomicBoolean
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
@@ -10,11 +11,10 @@ import org.rtcoord.Subscription
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
-import java.util.concurrent.atomic.AtomicBoolean
 
 /**
- * The tree's data taps: one per out-port, shared by every listener of that port, connected with the
- * first and removed with the last, and every one removed when the tree closes.
+ * The tree's data taps: one per out-port, shared by every listener of that port, connected with the first and removed
+ * with the last, and every one removed when the tree closes.
  */
 internal class DataTaps(private val core: TreeCore) {
     private val log = LoggerFactory.getLogger(DataTaps::class.java)
@@ -28,10 +28,12 @@ internal class DataTaps(private val core: TreeCore) {
         val key = port.component.component to port.name
         changes.withLock {
             check(!closed.get()) { "the tree is closed" }
-            val tap = synchronized(taps) { taps[key] } ?: DataTap(core, port, host).also {
-                it.connect()
-                synchronized(taps) { taps[key] = it }
-            }
+            val tap =
+                synchronized(taps) { taps[key] }
+                    ?: DataTap(core, port, host).also {
+                        it.connect()
+                        synchronized(taps) { taps[key] = it }
+                    }
             tap.add(listener)
         }
         val cancelled = AtomicBoolean()

@@ -9,26 +9,34 @@ import _SDOPackage.NameValue
 import org.omg.CORBA.ORB
 
 /**
- * The in-port side of a tap's connector, as rtshell and other tools see it: a `PortService` named
- * [name], without an owning component, that takes part in the out-port's connect and disconnect chain
- * (OpenRTM's `notify_connect` and `notify_disconnect`) and holds the connector while it exists. The data
- * itself goes to the tap's `InPortCdr`. Tools cannot connect it to anything else.
+ * The in-port side of a tap's connector, as rtshell and other tools see it: a `PortService` named [name], without an
+ * owning component, that takes part in the out-port's connect and disconnect chain (OpenRTM's `notify_connect` and
+ * `notify_disconnect`) and holds the connector while it exists. The data itself goes to the tap's `InPortCdr`. Tools
+ * cannot connect it to anything else.
  */
-internal class TapPort(private val orb: ORB, private val name: String, private val dataType: String) : PortServicePOA() {
+internal class TapPort(private val orb: ORB, private val name: String, private val dataType: String) :
+    PortServicePOA() {
     @Volatile private var connector: ConnectorProfile? = null
 
     /** This port's reference, set once it is served. */
     lateinit var reference: RTC.PortService
 
-    override fun get_port_profile(): PortProfile = PortProfile(
-        name,
-        emptyArray(),
-        reference,
-        get_connector_profiles(),
-        null,
-        mapOf("port.port_type" to "DataInPort", "dataport.data_type" to dataType, "dataport.dataflow_type" to "push", "dataport.interface_type" to "corba_cdr")
-            .map { (key, value) -> NameValue(key, orb.create_any().apply { insert_string(value) }) }.toTypedArray(),
-    )
+    override fun get_port_profile(): PortProfile =
+        PortProfile(
+            name,
+            emptyArray(),
+            reference,
+            get_connector_profiles(),
+            null,
+            mapOf(
+                    "port.port_type" to "DataInPort",
+                    "dataport.data_type" to dataType,
+                    "dataport.dataflow_type" to "push",
+                    "dataport.interface_type" to "corba_cdr",
+                )
+                .map { (key, value) -> NameValue(key, orb.create_any().apply { insert_string(value) }) }
+                .toTypedArray(),
+        )
 
     override fun get_connector_profiles(): Array<ConnectorProfile> = listOfNotNull(connector).toTypedArray()
 

@@ -1,12 +1,11 @@
 package org.rtcoord.internal.events
 
 /**
- * Whether one watched component answers, decided from signs of life (hints and heartbeats, a read that
- * brings it back), the silence of a component whose observer should send heartbeats, and calls that fail.
- * A read that succeeds is not a sign of its observer's life: a component whose observer went quiet is
- * lost at the limit even while it answers, and its observer is attached anew. Pure: the monitor
- * feeds it what happened and when (in milliseconds of any monotonic clock), and publishes the [Change]s
- * it returns.
+ * Whether one watched component answers, decided from signs of life (hints and heartbeats, a read that brings it back),
+ * the silence of a component whose observer should send heartbeats, and calls that fail. A read that succeeds is not a
+ * sign of its observer's life: a component whose observer went quiet is lost at the limit even while it answers, and
+ * its observer is attached anew. Pure: the monitor feeds it what happened and when (in milliseconds of any monotonic
+ * clock), and publishes the [Change]s it returns.
  *
  * ```
  * ANSWERING --silent past the limit--> SILENT --a call fails--> UNREACHABLE
@@ -57,7 +56,10 @@ internal class ComponentLiveness(now: Long) {
     var lastHeard: Long = now
         private set
 
-    /** A hint arrived at [now] (a time earlier than the last sign changes nothing): the component lives, though only a read can bring it back from [State.UNREACHABLE]. */
+    /**
+     * A hint arrived at [now] (a time earlier than the last sign changes nothing): the component lives, though only a
+     * read can bring it back from [State.UNREACHABLE].
+     */
     fun hinted(now: Long, finalize: Boolean = false) {
         lastHeard = maxOf(lastHeard, now)
         if (finalize) finalizing = true
@@ -73,8 +75,8 @@ internal class ComponentLiveness(now: Long) {
     }
 
     /**
-     * The watchdog's check at [now]; [limitMillis] is how long its observer may stay silent, null when no
-     * observer is expected to speak. Returns the loss when it goes silent now.
+     * The watchdog's check at [now]; [limitMillis] is how long its observer may stay silent, null when no observer is
+     * expected to speak. Returns the loss when it goes silent now.
      */
     fun checked(now: Long, limitMillis: Long?): Change.Lost? {
         if (state != State.ANSWERING || limitMillis == null || now - lastHeard <= limitMillis) return null
@@ -83,22 +85,23 @@ internal class ComponentLiveness(now: Long) {
     }
 
     /**
-     * A call failed at [now]: [gone] when its object no longer exists (`OBJECT_NOT_EXIST`), else
-     * [unreachable] when it could not be reached at all (rather than answering too late). Its silence is
-     * told too when it lasted at least [beatMillis], the interval it should speak at (null: none).
+     * A call failed at [now]: [gone] when its object no longer exists (`OBJECT_NOT_EXIST`), else [unreachable] when it
+     * could not be reached at all (rather than answering too late). Its silence is told too when it lasted at least
+     * [beatMillis], the interval it should speak at (null: none).
      */
-    fun failed(now: Long, gone: Boolean, unreachable: Boolean, beatMillis: Long?): List<Change> = when {
-        state == State.FINALIZED -> emptyList()
-        gone || finalizing && unreachable -> {
-            state = State.FINALIZED
-            listOf(Change.Finalized)
+    fun failed(now: Long, gone: Boolean, unreachable: Boolean, beatMillis: Long?): List<Change> =
+        when {
+            state == State.FINALIZED -> emptyList()
+            gone || finalizing && unreachable -> {
+                state = State.FINALIZED
+                listOf(Change.Finalized)
+            }
+            state == State.UNREACHABLE -> emptyList()
+            else -> {
+                val silent = beatMillis != null && now - lastHeard >= beatMillis
+                val lost = if (state == State.SILENT || !silent) emptyList() else listOf(Change.Lost(now - lastHeard))
+                state = State.UNREACHABLE
+                lost + Change.Unreachable
+            }
         }
-        state == State.UNREACHABLE -> emptyList()
-        else -> {
-            val silent = beatMillis != null && now - lastHeard >= beatMillis
-            val lost = if (state == State.SILENT || !silent) emptyList() else listOf(Change.Lost(now - lastHeard))
-            state = State.UNREACHABLE
-            lost + Change.Unreachable
-        }
-    }
 }

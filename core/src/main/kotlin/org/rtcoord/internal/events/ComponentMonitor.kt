@@ -1,5 +1,11 @@
 package org.rtcoord.internal.events
 
+import java.util.EnumMap
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.Future
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.TimeoutException
+import kotlin.time.Duration
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.async
@@ -17,20 +23,14 @@ import org.rtcoord.WatchMethod
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.toLifeCycle
 import org.slf4j.LoggerFactory
-import java.util.EnumMap
-import java.util.concurrent.CompletableFuture
-import java.util.concurrent.Future
-import java.util.concurrent.TimeUnit
-import java.util.concurrent.TimeoutException
-import kotlin.time.Duration
 
 /**
- * Watches one component for every registration interested in it: the shell around its [ComponentWatch],
- * which decides everything. One coroutine takes what happened (hints, ticks, timers, markers, watchdog
- * checks, registrations changed) in batches, in order, asks the machine what to do, and carries out each
- * step it returns (a CORBA read, attaching or detaching the observer), the events to publish and the
- * timers to set; so the component's events come out in the order they happened, and delivery to handlers
- * is the sinks' job. Its observer is [ObserverLink]'s, its tick and watchdog [MonitorTimers]'.
+ * Watches one component for every registration interested in it: the shell around its [ComponentWatch], which decides
+ * everything. One coroutine takes what happened (hints, ticks, timers, markers, watchdog checks, registrations changed)
+ * in batches, in order, asks the machine what to do, and carries out each step it returns (a CORBA read, attaching or
+ * detaching the observer), the events to publish and the timers to set; so the component's events come out in the order
+ * they happened, and delivery to handlers is the sinks' job. Its observer is [ObserverLink]'s, its tick and watchdog
+ * [MonitorTimers]'.
  */
 internal class ComponentMonitor(
     private val core: TreeCore,
@@ -39,14 +39,21 @@ internal class ComponentMonitor(
     private val ended: (ComponentMonitor) -> Unit,
 ) {
     /** What the coroutine takes: an input for the machine, with what must be told once it is served. */
-    private class Work(val input: WatchInput, val done: (() -> Unit)? = null, val ready: CompletableDeferred<Unit>? = null)
+    private class Work(
+        val input: WatchInput,
+        val done: (() -> Unit)? = null,
+        val ready: CompletableDeferred<Unit>? = null,
+    )
 
     private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
     private val subject = node.path.toString()
     private val registrations = MonitorRegistrations()
     private val work = Channel<Work>(Channel.UNLIMITED)
 
-    /** How the component is watched, as its machine last decided and the reports were told; set through [WatchReports.announce]. */
+    /**
+     * How the component is watched, as its machine last decided and the reports were told; set through
+     * [WatchReports.announce].
+     */
     @Volatile var method: WatchMethod? = null
 
     // Owned by the worker coroutine.
@@ -57,15 +64,27 @@ internal class ComponentMonitor(
     /** Work that arrived during a read and was not taken with it: the next batch's. */
     private val carried = ArrayList<Work>()
     private val fsm = ObservedFsmState(node)
-    private val probe: StateProbe? = core.requests.takeIf { it.supports(node.component.ref) }?.let { requests ->
-        StateProbe(requests, node.component.ref, node.component::stamp, { timers.heard() }) { outcome ->
-            val input = if (outcome is StateProbe.Outcome.Changed) WatchInput.Probed(outcome.states, outcome.epoch, outcome.stamp) else WatchInput.Unsettled
-            if (!work.trySend(Work(input, outcome.done)).isSuccess) outcome.done()
+    private val probe: StateProbe? =
+        core.requests
+            .takeIf { it.supports(node.component.ref) }
+            ?.let { requests ->
+                StateProbe(requests, node.component.ref, node.component::stamp, { timers.heard() }) { outcome ->
+                    val input =
+                        if (outcome is StateProbe.Outcome.Changed)
+                            WatchInput.Probed(outcome.states, outcome.epoch, outcome.stamp)
+                        else WatchInput.Unsettled
+                    if (!work.trySend(Work(input, outcome.done)).isSuccess) outcome.done()
+                }
+            }
+    private val timers =
+        MonitorTimers(
+            core,
+            probe,
+            core.clock,
+            { done -> if (!work.trySend(Work(WatchInput.Ticked, done)).isSuccess) done() },
+        ) { heardAt ->
+            work.trySend(Work(WatchInput.Overdue(heardAt)))
         }
-    }
-    private val timers = MonitorTimers(core, probe, core.clock, { done -> if (!work.trySend(Work(WatchInput.Ticked, done)).isSuccess) done() }) { heardAt ->
-        work.trySend(Work(WatchInput.Overdue(heardAt)))
-    }
 
     init {
         // On the dispatcher of remote calls, which its reads then make without changing threads.
@@ -97,12 +116,13 @@ internal class ComponentMonitor(
     }
 
     /**
-     * Waits, at most [timeout], until the monitor's coroutine has finished (its observer detached), on
-     * the calling thread: the tree is closing. Call [stop] first.
+     * Waits, at most [timeout], until the monitor's coroutine has finished (its observer detached), on the calling
+     * thread: the tree is closing. Call [stop] first.
      */
     fun awaitStopped(timeout: Duration) {
         val done = runCatching { stopped.get(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS) }
-        if (done.exceptionOrNull() is TimeoutException) log.warn("{}: observer not detached within {}", subject, timeout)
+        if (done.exceptionOrNull() is TimeoutException)
+            log.warn("{}: observer not detached within {}", subject, timeout)
     }
 
     /** Where the registrations' events go. */
@@ -136,8 +156,15 @@ internal class ComponentMonitor(
             perform(decision.step)
         } finally {
             // Before the ticks are done: the probe of the next one expects what this batch found.
-            probe?.expect(watch.last?.takeIf { watch.settled }?.let { StateProbe.Expectation.of(it, node.component.contexts, watch.epoch) })
-            batch.forEach { it.ready?.complete(Unit); it.done?.invoke() }
+            probe?.expect(
+                watch.last
+                    ?.takeIf { watch.settled }
+                    ?.let { StateProbe.Expectation.of(it, node.component.contexts, watch.epoch) }
+            )
+            batch.forEach {
+                it.ready?.complete(Unit)
+                it.done?.invoke()
+            }
         }
     }
 
@@ -171,40 +198,49 @@ internal class ComponentMonitor(
     private suspend fun readStates(handles: Set<Int>) {
         val contexts = node.component.contexts
         if (handles.any { it !in contexts }) return readAndPublish()
-        suspend fun state(handle: Int) = core.remote.call(subject, "get_component_state") { contexts.getValue(handle).get_component_state(node.component.ref) }.toLifeCycle()
+        suspend fun state(handle: Int) =
+            core.remote
+                .call(subject, "get_component_state") {
+                    contexts.getValue(handle).get_component_state(node.component.ref)
+                }
+                .toLifeCycle()
         val stamp = node.component.stamp()
-        val states = try {
-            // One context, the common case, is read without a coroutine per read.
-            handles.singleOrNull()?.let { mapOf(it to state(it)) }
-                ?: coroutineScope { handles.associateWith { async { state(it) } }.mapValues { it.value.await() } }
-        } catch (e: RtcException) {
-            return carryOut(watch.failed(e, now()))
-        }
+        val states =
+            try {
+                // One context, the common case, is read without a coroutine per read.
+                handles.singleOrNull()?.let { mapOf(it to state(it)) }
+                    ?: coroutineScope { handles.associateWith { async { state(it) } }.mapValues { it.value.await() } }
+            } catch (e: RtcException) {
+                return carryOut(watch.failed(e, now()))
+            }
         takeStates(states, stamp)
     }
 
-    /** Hands [states], read by the read stamped [stamp], to the component (for reads after writes) and to the machine. */
+    /**
+     * Hands [states], read by the read stamped [stamp], to the component (for reads after writes) and to the machine.
+     */
     private suspend fun takeStates(states: Map<Int, LifeCycle>, stamp: Long) {
         node.component.publishStates(states, stamp)
         carryOut(watch.statesRead(states, now(), lateHints()))
     }
 
     private suspend fun readAndPublish() {
-        val snapshot = try {
-            node.component.refresh(subject)
-            if (registrations.configuration && node.component.snapshot.value?.configuration == null) {
-                node.component.loadConfiguration(subject)
+        val snapshot =
+            try {
+                node.component.refresh(subject)
+                if (registrations.configuration && node.component.snapshot.value?.configuration == null) {
+                    node.component.loadConfiguration(subject)
+                }
+                node.component.snapshot.value!!
+            } catch (e: RtcException) {
+                return carryOut(watch.failed(e, now()))
             }
-            node.component.snapshot.value!!
-        } catch (e: RtcException) {
-            return carryOut(watch.failed(e, now()))
-        }
         carryOut(watch.read(snapshot, now(), lateHints()))
     }
 
     /**
-     * The hints that arrived while the component was being read, for the machine to take before it
-     * reconciles: they tell of changes made before it answered. Everything else waits for the next batch.
+     * The hints that arrived while the component was being read, for the machine to take before it reconciles: they
+     * tell of changes made before it answered. Everything else waits for the next batch.
      */
     private fun lateHints(): List<WatchInput.Hinted> {
         val hints = ArrayList<WatchInput.Hinted>()
@@ -219,14 +255,20 @@ internal class ComponentMonitor(
         carried += outcome.untaken.map { Work(it) }
         if (outcome.readAgain) carried += Work(WatchInput.ReadWanted)
         outcome.marker?.let(link::sendMarker)
-        // Each fires when the clock reads its time, not a millisecond later as a delay may; one armed anew replaces its kind's.
+        // Each fires when the clock reads its time, not a millisecond later as a delay may; one armed anew replaces its
+        // kind's.
         for ((timer, at) in outcome.timers) {
             core.at(at) { work.trySend(Work(WatchInput.Fired(timer, at))) }?.let { armed.put(timer, it)?.cancel(false) }
         }
         for (change in outcome.changes) {
             when (change) {
                 ComponentLiveness.Change.Finalized -> log.info("{}: finalized", subject)
-                ComponentLiveness.Change.Unreachable -> log.info("{}: {}; probing until it answers again", subject, outcome.events.filterIsInstance<BecameZombie>().firstOrNull()?.cause?.reason)
+                ComponentLiveness.Change.Unreachable ->
+                    log.info(
+                        "{}: {}; probing until it answers again",
+                        subject,
+                        outcome.events.filterIsInstance<BecameZombie>().firstOrNull()?.cause?.reason,
+                    )
                 ComponentLiveness.Change.Recovered -> log.info("{}: answers again", subject)
                 is ComponentLiveness.Change.Lost -> Unit
             }
@@ -246,17 +288,27 @@ internal class ComponentMonitor(
     }
 
     /**
-     * What the observer received, on the ORB's thread. A heartbeat only says when (see [MonitorTimers]);
-     * data flowing and FSM states entered change nothing a read would show, and go straight to the
-     * registrations ([PortTraffic] to those that asked for it).
+     * What the observer received, on the ORB's thread. A heartbeat only says when (see [MonitorTimers]); data flowing
+     * and FSM states entered change nothing a read would show, and go straight to the registrations ([PortTraffic] to
+     * those that asked for it).
      */
     private fun received(hint: Hint) {
         val traffic = hint.traffic()
         when {
-            hint.kind == HintKind.OTHER && hint.text.startsWith(ComponentWatch.MARKER_PREFIX) -> work.trySend(Work(WatchInput.MarkerBack(hint.text)))
+            hint.kind == HintKind.OTHER && hint.text.startsWith(ComponentWatch.MARKER_PREFIX) ->
+                work.trySend(Work(WatchInput.MarkerBack(hint.text)))
             hint.isHeartbeat -> timers.heard()
-            traffic != null -> timers.heard().also { core.model.publish(listOf(PortTraffic(node, traffic.first, traffic.second)), deliver = registrations::offerTraffic) }
-            hint.kind == HintKind.FSM_STATUS -> timers.heard().also { fsm.changedBy(hint)?.let { core.model.publish(listOf(it), deliver = registrations::offer) } }
+            traffic != null ->
+                timers.heard().also {
+                    core.model.publish(
+                        listOf(PortTraffic(node, traffic.first, traffic.second)),
+                        deliver = registrations::offerTraffic,
+                    )
+                }
+            hint.kind == HintKind.FSM_STATUS ->
+                timers.heard().also {
+                    fsm.changedBy(hint)?.let { core.model.publish(listOf(it), deliver = registrations::offer) }
+                }
             else -> work.trySend(Work(WatchInput.Hinted(hint, now())))
         }
     }

@@ -1,5 +1,6 @@
 package org.rtcoord.internal.events
 
+import java.util.EnumMap
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
@@ -10,40 +11,39 @@ import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.UnreachableException
-import java.util.EnumMap
 
 /**
- * What the tree believes of one watched component, when it says so and how it watches it: a pure state
- * machine with no clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks,
- * timers, markers, watchdog checks, registrations changed; then [read], [statesRead] or [failed] with what
- * the read it asked for found, [attached] and [detached] with how the observer's went), each with the time
- * `now` in milliseconds of one monotonic clock, and carries out what it returns, deciding nothing itself:
- * the read or the observer's attachment to make ([WatchStep]), the events to publish, the [Timer]s to arm
- * (each for the time it fires at, on the same clock), the marker to send, the timers and the method of its
- * watching ([WatchOutcome]). How it is watched is its [WatchArrangement]'s.
+ * What the tree believes of one watched component, when it says so and how it watches it: a pure state machine with no
+ * clock and no I/O. Its [ComponentMonitor] feeds it what happened ([decide]: hints, ticks, timers, markers, watchdog
+ * checks, registrations changed; then [read], [statesRead] or [failed] with what the read it asked for found,
+ * [attached] and [detached] with how the observer's went), each with the time `now` in milliseconds of one monotonic
+ * clock, and carries out what it returns, deciding nothing itself: the read or the observer's attachment to make
+ * ([WatchStep]), the events to publish, the [Timer]s to arm (each for the time it fires at, on the same clock), the
+ * marker to send, the timers and the method of its watching ([WatchOutcome]). How it is watched is its
+ * [WatchArrangement]'s.
  *
- * Its lifecycle states, per execution context, are reconciled by [ContextStates], each context's by a
- * [StateTracker] standing in a [ContextPhase]; whether it answers by [ComponentLiveness]. The phases, what
- * takes a context out of each, and the timers they arm:
+ * Its lifecycle states, per execution context, are reconciled by [ContextStates], each context's by a [StateTracker]
+ * standing in a [ContextPhase]; whether it answers by [ComponentLiveness]. The phases, what takes a context out of
+ * each, and the timers they arm:
  *
- * | phase | hints and reads | leaves when | to |
- * |---|---|---|---|
- * | [Agreed][ContextPhase.Agreed] | the last read found where the hints lead; a lifecycle hint taken since asks for its context's state | a read finds where the hints lead: a hinted deactivation (ACTIVE to INACTIVE) is held, anything else published; a read finds elsewhere | Held or Agreed; Leading (hints taken) or Disagreeing (none) |
- * | [Leading][ContextPhase.Leading]`(since)` | hints lead to a state the reads since `since` did not find (OpenRTM-aist hints before the state shows) | [Timer.RECHECK] after 1, 2, 4... ms up to the grace period: a read finds where they lead; [Timer.GRACE] at `since` + the grace period: a read decides | Held or Agreed; Agreed |
- * | [Disagreeing][ContextPhase.Disagreeing]`(since)` | the read at `since` found what no hint announced | a hint, which may announce it; a read finds the state published; [Timer.GRACE]: a read decides | Leading; Agreed; Agreed |
- * | [Held][ContextPhase.Held]`(since, flushed)` | a read confirmed a deactivation hinted at `since`, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in; `flushed` once the marker sent after that read is back | the ERROR hint: a read confirms the abort (or finds the state not shown yet); [Timer.SETTLED] at `since` + [Timing.settleMillis], flushed: it is published as the confirming read found it ([settle]), hints come since taken first; [Timer.HOLD_LIMIT] at `since` + the hold limit: a read decides | Agreed (or Leading); Agreed; Agreed |
+ * |phase                                           |hints and reads                                                                                                                                                                                  |leaves when                                                                                                                                                                                                                                                                                        |to                                                         |
+ * |------------------------------------------------|-------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------|---------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------|-----------------------------------------------------------|
+ * |[Agreed][ContextPhase.Agreed]                   |the last read found where the hints lead; a lifecycle hint taken since asks for its context's state                                                                                              |a read finds where the hints lead: a hinted deactivation (ACTIVE to INACTIVE) is held, anything else published; a read finds elsewhere                                                                                                                                                             |Held or Agreed; Leading (hints taken) or Disagreeing (none)|
+ * |[Leading][ContextPhase.Leading]`(since)`        |hints lead to a state the reads since `since` did not find (OpenRTM-aist hints before the state shows)                                                                                           |[Timer.RECHECK] after 1, 2, 4... ms up to the grace period: a read finds where they lead; [Timer.GRACE] at `since` + the grace period: a read decides                                                                                                                                              |Held or Agreed; Agreed                                     |
+ * |[Disagreeing][ContextPhase.Disagreeing]`(since)`|the read at `since` found what no hint announced                                                                                                                                                 |a hint, which may announce it; a read finds the state published; [Timer.GRACE]: a read decides                                                                                                                                                                                                     |Leading; Agreed; Agreed                                    |
+ * |[Held][ContextPhase.Held]`(since, flushed)`     |a read confirmed a deactivation hinted at `since`, which an abort (INACTIVE then ERROR hinted) would look like until its ERROR hint is in; `flushed` once the marker sent after that read is back|the ERROR hint: a read confirms the abort (or finds the state not shown yet); [Timer.SETTLED] at `since` + [Timing.settleMillis], flushed: it is published as the confirming read found it ([settle]), hints come since taken first; [Timer.HOLD_LIMIT] at `since` + the hold limit: a read decides|Agreed (or Leading); Agreed; Agreed                        |
  *
- * An abort's ERROR hint leaves the component before the read that overtook it answered, on the connection
- * its INACTIVE hint came by: when the read is taken, it is already in this host's socket, waiting for the
- * ORB's thread that reads that connection, which under load may not get a core for milliseconds. So the
- * marker goes out after the read, once the ORB has handed on every message in its sockets, and through
- * the ORB like a hint, so it comes back after them: it waits as long as the ORB's threads are late,
- * where a fixed time would not. A hold lasts at least [Timing.settleMillis] from the INACTIVE hint's arrival
- * besides, for a component on another host, whose two connections are two flows.
+ * An abort's ERROR hint leaves the component before the read that overtook it answered, on the connection its INACTIVE
+ * hint came by: when the read is taken, it is already in this host's socket, waiting for the ORB's thread that reads
+ * that connection, which under load may not get a core for milliseconds. So the marker goes out after the read, once
+ * the ORB has handed on every message in its sockets, and through the ORB like a hint, so it comes back after them: it
+ * waits as long as the ORB's threads are late, where a fixed time would not. A hold lasts at least
+ * [Timing.settleMillis] from the INACTIVE hint's arrival besides, for a component on another host, whose two
+ * connections are two flows.
  *
- * One timer of each kind is pending at a time; a timer that fires is reported by [WatchInput.Fired], with
- * the time it was armed for. A hold's timers are forgotten when the hold ends: one of them firing later is
- * ignored, and the next hold arms its own, so an earlier hold's limit never cuts a later hold short.
+ * One timer of each kind is pending at a time; a timer that fires is reported by [WatchInput.Fired], with the time it
+ * was armed for. A hold's timers are forgotten when the hold ends: one of them firing later is ignored, and the next
+ * hold arms its own, so an earlier hold's limit never cuts a later hold short.
  */
 internal class ComponentWatch(private val node: ComponentNode, now: Long, private val timing: Timing = Timing()) {
     /** The machine's durations, in milliseconds. */
@@ -59,7 +59,12 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     )
 
     /** The timers the monitor arms for the machine. */
-    enum class Timer { RECHECK, GRACE, SETTLED, HOLD_LIMIT }
+    enum class Timer {
+        RECHECK,
+        GRACE,
+        SETTLED,
+        HOLD_LIMIT,
+    }
 
     private val states = ContextStates(node, timing.holdLimitMillis, timing.settleMillis)
     private val liveness = ComponentLiveness(now)
@@ -85,7 +90,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     var needs: WatchNeeds by arrangement::needs
 
     /** The states as the published events tell them, by context handle. */
-    val published: Map<Int, LifeCycle> get() = states.published
+    val published: Map<Int, LifeCycle>
+        get() = states.published
 
     /** Whether what the last read found is what a poll probe should expect: hints and reads agree, nothing held. */
     val settled: Boolean
@@ -101,40 +107,48 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val events = ArrayList<RtcEvent>()
         val every = last?.contexts?.map { it.handle }.orEmpty()
         fun tick() {
-            if (needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && every.isNotEmpty()) handles += every else readAll = true
+            if (needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && every.isNotEmpty())
+                handles += every
+            else readAll = true
         }
         for (input in inputs) {
             when (input) {
                 is WatchInput.Hinted -> readAll = take(input, now, handles) || readAll
                 WatchInput.ReadWanted -> readAll = true
-                WatchInput.Ticked, WatchInput.Unsettled -> tick()
+                WatchInput.Ticked,
+                WatchInput.Unsettled -> tick()
                 is WatchInput.Probed -> if (input.epoch == epoch) probed = input else tick()
                 // A timer no longer waited for (an ended hold's) tells nothing.
-                is WatchInput.Fired -> if (deadlines.remove(input.timer, input.at)) {
-                    when (input.timer) {
-                        Timer.RECHECK -> handles += every
-                        Timer.GRACE -> if (states.disagreedSince != null) readAll = true
-                        Timer.SETTLED -> settle = settle || (states.held.isNotEmpty() && marker == null)
-                        Timer.HOLD_LIMIT -> if (states.held.isNotEmpty()) readAll = true
+                is WatchInput.Fired ->
+                    if (deadlines.remove(input.timer, input.at)) {
+                        when (input.timer) {
+                            Timer.RECHECK -> handles += every
+                            Timer.GRACE -> if (states.disagreedSince != null) readAll = true
+                            Timer.SETTLED -> settle = settle || (states.held.isNotEmpty() && marker == null)
+                            Timer.HOLD_LIMIT -> if (states.held.isNotEmpty()) readAll = true
+                        }
                     }
-                }
-                is WatchInput.MarkerBack -> if (input.marker == marker) {
-                    marker = null
-                    states.flushed()
-                    settle = settle || states.held.any { now - it.since >= timing.settleMillis }
-                }
+                is WatchInput.MarkerBack ->
+                    if (input.marker == marker) {
+                        marker = null
+                        states.flushed()
+                        settle = settle || states.held.any { now - it.since >= timing.settleMillis }
+                    }
                 is WatchInput.Overdue -> readAll = overdue(input, now, events) || readAll
                 WatchInput.Reconfigured -> reconfigure = true
             }
         }
-        val step = when {
-            liveness.state == ComponentLiveness.State.FINALIZED -> WatchStep.Idle
-            reconfigure -> arrangement.reconfigured()
-            readAll -> WatchStep.ReadAll
-            handles.isNotEmpty() -> if (last == null || liveness.state != ComponentLiveness.State.ANSWERING) WatchStep.ReadAll else WatchStep.ReadStates(handles)
-            settle -> WatchStep.Settle
-            else -> probed?.let { WatchStep.TakeStates(it.states, it.stamp) } ?: WatchStep.Idle
-        }
+        val step =
+            when {
+                liveness.state == ComponentLiveness.State.FINALIZED -> WatchStep.Idle
+                reconfigure -> arrangement.reconfigured()
+                readAll -> WatchStep.ReadAll
+                handles.isNotEmpty() ->
+                    if (last == null || liveness.state != ComponentLiveness.State.ANSWERING) WatchStep.ReadAll
+                    else WatchStep.ReadStates(handles)
+                settle -> WatchStep.Settle
+                else -> probed?.let { WatchStep.TakeStates(it.states, it.stamp) } ?: WatchStep.Idle
+            }
         return WatchDecision(step, events)
     }
 
@@ -153,7 +167,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val changes = liveness.answered(now)
         val recovered = ComponentLiveness.Change.Recovered in changes
         if (recovered) events += Recovered(node)
-        // Before reconciling: a component back may have dropped its observer, and until one is attached anew no hint announces what this read finds.
+        // Before reconciling: a component back may have dropped its observer, and until one is attached anew no hint
+        // announces what this read finds.
         val arranged = arrangement.answered(recovered, liveness.state, snapshot.advertised)
         val previous = last
         val reconciled = reconcile(previous, snapshot, now, late)
@@ -161,23 +176,37 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         if (previous != null) events += differences(node, previous, snapshot)
         last = snapshot
         epoch++
-        return WatchOutcome(events, reconciled.timers, reconciled.untaken, reconciled.readAgain, changes, reconciled.marker, arranged)
+        return WatchOutcome(
+            events,
+            reconciled.timers,
+            reconciled.untaken,
+            reconciled.readAgain,
+            changes,
+            reconciled.marker,
+            arranged,
+        )
     }
 
     /** A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile. */
     fun statesRead(found: Map<Int, LifeCycle>, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val previous = last ?: return WatchOutcome(untaken = late)
         liveness.answered(now)
-        val snapshot = previous.copy(contexts = previous.contexts.map { context -> found[context.handle]?.let { context.copy(state = it) } ?: context })
+        val snapshot =
+            previous.copy(
+                contexts =
+                    previous.contexts.map { context ->
+                        found[context.handle]?.let { context.copy(state = it) } ?: context
+                    }
+            )
         last = snapshot
         epoch++
         return reconcile(snapshot, snapshot, now, late)
     }
 
     /**
-     * Reconciles again at [now] with what the last read found, [late] hints first: a held deactivation
-     * that has settled is published without reading again, as the hold waited for hints, not for the
-     * component, and a hint come meanwhile (an abort's ERROR) is taken before.
+     * Reconciles again at [now] with what the last read found, [late] hints first: a held deactivation that has settled
+     * is published without reading again, as the hold waited for hints, not for the component, and a hint come
+     * meanwhile (an abort's ERROR) is taken before.
      */
     fun settle(now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
         val snapshot = last ?: return WatchOutcome(untaken = late)
@@ -189,18 +218,28 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         epoch++
         val unreachable = cause is UnreachableException
         val beatMillis = arrangement.expectedInterval?.inWholeMilliseconds
-        val changes = liveness.failed(now, gone = unreachable && cause.cause is org.omg.CORBA.OBJECT_NOT_EXIST, unreachable = unreachable, beatMillis)
-        val events = if (ComponentLiveness.Change.Finalized in changes) {
-            listOf(ComponentFinalized(node))
-        } else {
-            changes.map { change -> if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis) else BecameZombie(node, cause) }
-        }
+        val changes =
+            liveness.failed(
+                now,
+                gone = unreachable && cause.cause is org.omg.CORBA.OBJECT_NOT_EXIST,
+                unreachable = unreachable,
+                beatMillis,
+            )
+        val events =
+            if (ComponentLiveness.Change.Finalized in changes) {
+                listOf(ComponentFinalized(node))
+            } else {
+                changes.map { change ->
+                    if (change is ComponentLiveness.Change.Lost) HeartbeatLost(node, change.silentMillis)
+                    else BecameZombie(node, cause)
+                }
+            }
         return WatchOutcome(events, changes = changes, arranged = arrangement.failed(changes, liveness.state))
     }
 
     /**
-     * Takes a hint in at [now]. A lifecycle hint adds its context's handle to [handles] (reading that state
-     * is enough); returns whether anything else calls for reading the whole component.
+     * Takes a hint in at [now]. A lifecycle hint adds its context's handle to [handles] (reading that state is enough);
+     * returns whether anything else calls for reading the whole component.
      */
     private fun take(hinted: WatchInput.Hinted, now: Long, handles: MutableSet<Int>): Boolean {
         val hint = hinted.hint
@@ -217,16 +256,26 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     /** The watchdog's check: a read probes a component whose beat is overdue, and one silent past the limit is lost. */
     private fun overdue(input: WatchInput.Overdue, now: Long, events: MutableList<RtcEvent>): Boolean {
         liveness.hinted(input.heardAt)
-        if (liveness.state != ComponentLiveness.State.ANSWERING) return liveness.state == ComponentLiveness.State.UNREACHABLE
+        if (liveness.state != ComponentLiveness.State.ANSWERING)
+            return liveness.state == ComponentLiveness.State.UNREACHABLE
         val beating = arrangement.beating
-        liveness.checked(now, beating?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })?.let { events += HeartbeatLost(node, it.silentMillis) }
+        liveness.checked(now, beating?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })?.let {
+            events += HeartbeatLost(node, it.silentMillis)
+        }
         // A process that died refuses the read at once: that is known a beat after its last, not at the limit.
         val beat = beating?.heartbeat?.inWholeMilliseconds ?: return false
         return now - liveness.lastHeard >= beat + beat / OVERDUE_FRACTION
     }
 
-    /** Reconciles each context's state in [snapshot] with the hints, [late] ones first; arms what the phases call for. */
-    private fun reconcile(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
+    /**
+     * Reconciles each context's state in [snapshot] with the hints, [late] ones first; arms what the phases call for.
+     */
+    private fun reconcile(
+        previous: ComponentSnapshot?,
+        snapshot: ComponentSnapshot,
+        now: Long,
+        late: List<WatchInput.Hinted>,
+    ): WatchOutcome {
         val untaken = ArrayList<WatchInput.Hinted>()
         var taken = false
         for (hinted in late) {
@@ -249,7 +298,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         }
         // A late hint may lead past what the read found: read again now rather than after the grace period.
         val readAgain = taken && states.disagreedSince != null
-        // One grace read at a time: disagreements that began later end later, and the read deciding the oldest arms the next.
+        // One grace read at a time: disagreements that began later end later, and the read deciding the oldest arms the
+        // next.
         states.disagreedSince?.let { arm(Timer.GRACE, it + timing.graceMillis - now) }
         recheckIfHintsLead(::arm)
         val held = states.held
@@ -262,14 +312,21 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             arm(Timer.HOLD_LIMIT, since + timing.holdLimitMillis - now)
             arm(Timer.SETTLED, since + timing.settleMillis - now)
         }
-        // Each read that leaves a hold waiting for its hints sends a marker of its own: an older one tells nothing of what came since.
-        return WatchOutcome(events, timers, untaken, readAgain, marker = if (held.any { !it.flushed }) newMarker() else null)
+        // Each read that leaves a hold waiting for its hints sends a marker of its own: an older one tells nothing of
+        // what came since.
+        return WatchOutcome(
+            events,
+            timers,
+            untaken,
+            readAgain,
+            marker = if (held.any { !it.flushed }) newMarker() else null,
+        )
     }
 
     /**
-     * Reads the states again soon while hints lead the read, at growing intervals up to the grace period:
-     * OpenRTM-aist sends a transition's hints before its new state shows (its state machine updates the
-     * state once the actions that send them are done), so a read made at once may find the old one.
+     * Reads the states again soon while hints lead the read, at growing intervals up to the grace period: OpenRTM-aist
+     * sends a transition's hints before its new state shows (its state machine updates the state once the actions that
+     * send them are done), so a read made at once may find the old one.
      */
     private fun recheckIfHintsLead(arm: (Timer, Long) -> Unit) {
         if (!states.hintsLead) {
@@ -277,7 +334,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             return
         }
         if (Timer.RECHECK in deadlines) return
-        recheckDelay = if (recheckDelay == 0L) timing.firstRecheckMillis else minOf(recheckDelay * 2, timing.graceMillis)
+        recheckDelay =
+            if (recheckDelay == 0L) timing.firstRecheckMillis else minOf(recheckDelay * 2, timing.graceMillis)
         arm(Timer.RECHECK, recheckDelay)
     }
 
@@ -285,7 +343,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     private fun newMarker(): String = "$MARKER_PREFIX${++markers}".also { marker = it }
 
     /** The services the component offers observers, as it lists them. */
-    private val ComponentSnapshot.advertised: String? get() = properties["sdo.service.consumer.available_services"]
+    private val ComponentSnapshot.advertised: String?
+        get() = properties["sdo.service.consumer.available_services"]
 
     companion object {
         /** What every marker begins with: a hint that does is a marker, and nothing else. */

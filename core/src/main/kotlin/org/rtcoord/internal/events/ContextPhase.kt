@@ -1,9 +1,9 @@
 package org.rtcoord.internal.events
 
 /**
- * Where the reconciliation of one execution context's lifecycle hints and reads stands: the phase of
- * its [StateTracker]. How each phase is entered and left, and which of [ComponentWatch]'s timers it
- * arms, is the table in [ComponentWatch]'s KDoc.
+ * Where the reconciliation of one execution context's lifecycle hints and reads stands: the phase of its
+ * [StateTracker]. How each phase is entered and left, and which of [ComponentWatch]'s timers it arms, is the table in
+ * [ComponentWatch]'s KDoc.
  */
 internal sealed interface ContextPhase {
     /** The last read found where the hints lead; hints taken since wait for the read they asked for. */
@@ -21,9 +21,9 @@ internal sealed interface ContextPhase {
     data class Disagreeing(override val since: Long) : Unconfirmed
 
     /**
-     * A read confirmed a deactivation hinted at [since], which an abort (INACTIVE then ERROR hinted) would
-     * look like until its ERROR hint is in; [flushed] once the marker sent after that read came back, so
-     * every hint sent before it has been taken.
+     * A read confirmed a deactivation hinted at [since], which an abort (INACTIVE then ERROR hinted) would look like
+     * until its ERROR hint is in; [flushed] once the marker sent after that read came back, so every hint sent before
+     * it has been taken.
      */
     data class Held(val since: Long, val flushed: Boolean) : ContextPhase
 }

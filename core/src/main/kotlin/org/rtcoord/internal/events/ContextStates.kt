@@ -6,26 +6,35 @@ import org.rtcoord.LifeCycle
 import org.rtcoord.StateChanged
 
 /**
- * One watched component's lifecycle in each of its execution contexts: a [StateTracker] per context
- * handle, fed the lifecycle hints and the reads, and the [StateChanged] events they agree on.
+ * One watched component's lifecycle in each of its execution contexts: a [StateTracker] per context handle, fed the
+ * lifecycle hints and the reads, and the [StateChanged] events they agree on.
  */
-internal class ContextStates(private val node: ComponentNode, private val holdLimitMillis: Long, private val settleMillis: Long) {
+internal class ContextStates(
+    private val node: ComponentNode,
+    private val holdLimitMillis: Long,
+    private val settleMillis: Long,
+) {
     private val trackers = HashMap<Int, StateTracker>()
 
     /** The state in each context as the published events tell it, by handle. */
-    val published: Map<Int, LifeCycle> get() = trackers.mapValues { it.value.confirmed }
+    val published: Map<Int, LifeCycle>
+        get() = trackers.mapValues { it.value.confirmed }
 
     /** When the oldest disagreement between hints and reads began; null when they agree in every context. */
-    val disagreedSince: Long? get() = trackers.values.mapNotNull { (it.phase as? ContextPhase.Unconfirmed)?.since }.minOrNull()
+    val disagreedSince: Long?
+        get() = trackers.values.mapNotNull { (it.phase as? ContextPhase.Unconfirmed)?.since }.minOrNull()
 
     /** Whether, somewhere, hints lead to a state the reads have not found yet. */
-    val hintsLead: Boolean get() = trackers.values.any { it.phase is ContextPhase.Leading }
+    val hintsLead: Boolean
+        get() = trackers.values.any { it.phase is ContextPhase.Leading }
 
     /** The deactivations held, one per context that holds one. */
-    val held: List<ContextPhase.Held> get() = trackers.values.mapNotNull { it.phase as? ContextPhase.Held }
+    val held: List<ContextPhase.Held>
+        get() = trackers.values.mapNotNull { it.phase as? ContextPhase.Held }
 
     /** Whether hints and reads agree in every context, and nothing is held. */
-    val agreed: Boolean get() = trackers.values.all { it.phase == ContextPhase.Agreed }
+    val agreed: Boolean
+        get() = trackers.values.all { it.phase == ContextPhase.Agreed }
 
     /** The hints sent before the latest marker have all been taken: held deactivations end once settled. */
     fun flushed() {
@@ -33,9 +42,9 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
     }
 
     /**
-     * Takes an RTC_STATUS [hint] that came at [at]; returns the handle of the context whose state is
-     * then worth reading, or null when the hint names no state or a context the component is not known to
-     * be in: only reading the whole component tells what, if anything, happened.
+     * Takes an RTC_STATUS [hint] that came at [at]; returns the handle of the context whose state is then worth
+     * reading, or null when the hint names no state or a context the component is not known to be in: only reading the
+     * whole component tells what, if anything, happened.
      */
     fun hinted(hint: Hint, at: Long): Int? {
         val (state, handle) = hint.lifeCycle() ?: return null
@@ -44,12 +53,29 @@ internal class ContextStates(private val node: ComponentNode, private val holdLi
         return handle
     }
 
-    /** Reconciles each context's state in [snapshot] (read after [previous]) with the hints: the transitions to publish. */
-    fun read(previous: ComponentSnapshot?, snapshot: ComponentSnapshot, now: Long, graceMillis: Long, hintsExpected: Boolean): List<StateChanged> {
+    /**
+     * Reconciles each context's state in [snapshot] (read after [previous]) with the hints: the transitions to publish.
+     */
+    fun read(
+        previous: ComponentSnapshot?,
+        snapshot: ComponentSnapshot,
+        now: Long,
+        graceMillis: Long,
+        hintsExpected: Boolean,
+    ): List<StateChanged> {
         val events = mutableListOf<StateChanged>()
         for (context in snapshot.contexts) {
-            val tracker = trackers.getOrPut(context.handle) { StateTracker(previous?.context(context.handle)?.state ?: context.state, holdLimitMillis, settleMillis) }
-            tracker.reconcile(context.state, now, graceMillis, hintsExpected).forEach { (from, to) -> events += StateChanged(node, context.handle, from, to) }
+            val tracker =
+                trackers.getOrPut(context.handle) {
+                    StateTracker(
+                        previous?.context(context.handle)?.state ?: context.state,
+                        holdLimitMillis,
+                        settleMillis,
+                    )
+                }
+            tracker.reconcile(context.state, now, graceMillis, hintsExpected).forEach { (from, to) ->
+                events += StateChanged(node, context.handle, from, to)
+            }
         }
         trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
         return events

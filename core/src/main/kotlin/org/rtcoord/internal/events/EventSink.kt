@@ -8,10 +8,10 @@ import org.rtcoord.Overlap
 import org.rtcoord.RtcEvent
 
 /**
- * One registration's delivery: events wait in a channel shaped by its [Overlap] policy and its handler
- * runs in a coroutine of its own, never on the monitor that produced the event, so a handler may call
- * back into the source node, and a slow or failing handler delays nobody else. What a handler throws goes
- * to the tree's [ListenerFailures], found in [scope]'s context.
+ * One registration's delivery: events wait in a channel shaped by its [Overlap] policy and its handler runs in a
+ * coroutine of its own, never on the monitor that produced the event, so a handler may call back into the source node,
+ * and a slow or failing handler delays nobody else. What a handler throws goes to the tree's [ListenerFailures], found
+ * in [scope]'s context.
  */
 internal class EventSink(
     scope: CoroutineScope,
@@ -19,16 +19,18 @@ internal class EventSink(
     overlap: Overlap,
     private val handler: suspend (RtcEvent) -> Unit,
 ) {
-    private val failures = checkNotNull(scope.coroutineContext[ListenerFailures]) { "event sinks deliver in a tree's scope" }
+    private val failures =
+        checkNotNull(scope.coroutineContext[ListenerFailures]) { "event sinks deliver in a tree's scope" }
     private val listener: Any = (handler as? StandIn)?.listener ?: handler
-    private val pending = Channel<RtcEvent>(
-        when (overlap) {
-            Overlap.QUEUE -> Channel.UNLIMITED
-            Overlap.LATEST -> Channel.CONFLATED
-            // Only a handler waiting for its next event takes one; while it runs, offers fail.
-            Overlap.SKIP -> Channel.RENDEZVOUS
-        },
-    )
+    private val pending =
+        Channel<RtcEvent>(
+            when (overlap) {
+                Overlap.QUEUE -> Channel.UNLIMITED
+                Overlap.LATEST -> Channel.CONFLATED
+                // Only a handler waiting for its next event takes one; while it runs, offers fail.
+                Overlap.SKIP -> Channel.RENDEZVOUS
+            }
+        )
     private val delivery = scope.launch {
         for (event in pending) {
             try {

@@ -1,14 +1,14 @@
 package org.rtcoord.internal.events
 
+import kotlin.coroutines.AbstractCoroutineContextElement
+import kotlin.coroutines.CoroutineContext
 import org.rtcoord.ListenerFailure
 import org.rtcoord.ListenerFailureHandler
 import org.slf4j.LoggerFactory
-import kotlin.coroutines.AbstractCoroutineContextElement
-import kotlin.coroutines.CoroutineContext
 
 /**
- * The tree's [ListenerFailureHandler], in the context of the tree's scope: every [EventSink] delivers in
- * that scope and finds it there, whoever created the sink.
+ * The tree's [ListenerFailureHandler], in the context of the tree's scope: every [EventSink] delivers in that scope and
+ * finds it there, whoever created the sink.
  */
 internal class ListenerFailures(private val handler: ListenerFailureHandler) : AbstractCoroutineContextElement(Key) {
     /** Tells the handler that [listener] threw [error] on [event]; if the handler throws too, both are logged. */
@@ -28,8 +28,8 @@ internal class ListenerFailures(private val handler: ListenerFailureHandler) : A
 }
 
 /**
- * A handler that calls a listener registered in another form (a Java [org.rtcoord.EventListener] on its
- * executor): failures name [listener], not the handler.
+ * A handler that calls a listener registered in another form (a Java [org.rtcoord.EventListener] on its executor):
+ * failures name [listener], not the handler.
  */
 internal interface StandIn {
     /** The listener as it was registered. */

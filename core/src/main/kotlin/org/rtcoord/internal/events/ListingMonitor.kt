@@ -1,5 +1,7 @@
 package org.rtcoord.internal.events
 
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.isActive
@@ -15,13 +17,11 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
-import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.time.Duration
 
 /**
- * Watches a directory's children by listing them again at the shortest period its registrations ask
- * for (naming services and managers push nothing): a naming context reports nodes appearing and
- * vanishing, a manager reports components it created and deleted.
+ * Watches a directory's children by listing them again at the shortest period its registrations ask for (naming
+ * services and managers push nothing): a naming context reports nodes appearing and vanishing, a manager reports
+ * components it created and deleted.
  */
 internal class ListingMonitor(private val core: TreeCore, private val directory: DirectoryNode) {
     /** [appeared] starts watching a new child; its events are offered once it returns. */
@@ -57,15 +57,16 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
                 var failing = false
                 while (isActive) {
                     delay(every)
-                    val after = try {
-                        directory.relist()
-                    } catch (e: RtcException) {
-                        if (!failing) log.info("{}; listing it again every {}", e.message, every)
-                        // Every time: a server shutting down first answers wrongly, and only then not at all.
-                        core.watcher.outages.listingFailed(directory, e, every)
-                        failing = true
-                        continue
-                    }
+                    val after =
+                        try {
+                            directory.relist()
+                        } catch (e: RtcException) {
+                            if (!failing) log.info("{}; listing it again every {}", e.message, every)
+                            // Every time: a server shutting down first answers wrongly, and only then not at all.
+                            core.watcher.outages.listingFailed(directory, e, every)
+                            failing = true
+                            continue
+                        }
                     if (failing) log.info("{}: listed again", directory.path)
                     failing = false
                     // Never listed before: the first listing failed, and all it finds now is news.
@@ -84,12 +85,18 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
         // Watched before announced: a handler acting on a new node misses none of its events, and what
         // happened to a component before it was found is in the snapshot its appearance carries.
         for (registration in registrations) appeared.forEach { registration.appeared(it) }
-        val events: List<RtcEvent> = if (directory is ManagerNode) {
-            appeared.filterIsInstance<ComponentNode>().map { ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = true) } +
-                vanished.filterIsInstance<ComponentNode>().map { ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = false) }
-        } else {
-            appeared.map { NodeAppeared(directory, it, (it as? ComponentNode)?.snapshots?.value) } + vanished.map { NodeVanished(directory, it.path) }
-        }
+        val events: List<RtcEvent> =
+            if (directory is ManagerNode) {
+                appeared.filterIsInstance<ComponentNode>().map {
+                    ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = true)
+                } +
+                    vanished.filterIsInstance<ComponentNode>().map {
+                        ManagerComponentChanged(directory, it.name.removeSuffix(".rtc"), created = false)
+                    }
+            } else {
+                appeared.map { NodeAppeared(directory, it, (it as? ComponentNode)?.snapshots?.value) } +
+                    vanished.map { NodeVanished(directory, it.path) }
+            }
         core.model.publish(events) { event -> registrations.forEach { it.sink.offer(event) } }
     }
 

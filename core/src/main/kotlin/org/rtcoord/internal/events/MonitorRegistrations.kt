@@ -1,8 +1,8 @@
 package org.rtcoord.internal.events
 
+import java.util.concurrent.CopyOnWriteArrayList
 import org.rtcoord.RtcEvent
 import org.rtcoord.WatchMode
-import java.util.concurrent.CopyOnWriteArrayList
 
 /** The registrations one [ComponentMonitor] serves, and what they ask of it together. */
 internal class MonitorRegistrations : Iterable<MonitorRegistration> {
@@ -31,12 +31,21 @@ internal class MonitorRegistrations : Iterable<MonitorRegistration> {
     }
 
     /** Whether any wants the configuration read with the component. */
-    val configuration: Boolean get() = all.any { it.configuration }
+    val configuration: Boolean
+        get() = all.any { it.configuration }
 
-    /** What they ask of the watching now; the shortest traffic interval a push registration that wants traffic asks for is the observer's. */
+    /**
+     * What they ask of the watching now; the shortest traffic interval a push registration that wants traffic asks for
+     * is the observer's.
+     */
     fun needs(): WatchNeeds {
         val now = all.toList()
-        val traffic = now.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval }
-        return WatchNeeds(now.map { it.options }, statesOnly = now.isNotEmpty() && now.all { it.statesOnly }, traffic = traffic ?: WatchNeeds.NO_TRAFFIC)
+        val traffic =
+            now.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval }
+        return WatchNeeds(
+            now.map { it.options },
+            statesOnly = now.isNotEmpty() && now.all { it.statesOnly },
+            traffic = traffic ?: WatchNeeds.NO_TRAFFIC,
+        )
     }
 }

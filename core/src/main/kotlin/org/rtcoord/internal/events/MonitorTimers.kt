@@ -1,14 +1,13 @@
 package org.rtcoord.internal.events
 
-import org.rtcoord.internal.TreeCore
 import kotlin.time.Duration
+import org.rtcoord.internal.TreeCore
 
 /**
- * The timers of one component's monitor: its membership of the tree's poll schedule, and the watchdog
- * of its observer's heartbeats, which only posts work to the monitor ([check], a liveness check, with when
- * the last sign of life came). A sign
- * of life (a heartbeat, a poll read that found nothing new) only records when it came ([heard]), on the
- * ORB's thread, and wakes the monitor only once a beat is overdue.
+ * The timers of one component's monitor: its membership of the tree's poll schedule, and the watchdog of its observer's
+ * heartbeats, which only posts work to the monitor ([check], a liveness check, with when the last sign of life came). A
+ * sign of life (a heartbeat, a poll read that found nothing new) only records when it came ([heard]), on the ORB's
+ * thread, and wakes the monitor only once a beat is overdue.
  */
 internal class MonitorTimers(
     private val core: TreeCore,
@@ -18,15 +17,16 @@ internal class MonitorTimers(
     private val check: (heardAt: Long) -> Unit,
 ) {
     /** Its place in the poll schedule: a tick is sent as a [probe] when it can go without the monitor. */
-    private val member = object : PollSchedule.Member {
-        override fun tick(done: () -> Unit) = this@MonitorTimers.tick(done)
+    private val member =
+        object : PollSchedule.Member {
+            override fun tick(done: () -> Unit) = this@MonitorTimers.tick(done)
 
-        override fun probe(done: () -> Unit): Boolean = probe?.send(done) ?: false
+            override fun probe(done: () -> Unit): Boolean = probe?.send(done) ?: false
 
-        override fun late() {
-            probe?.late()
+            override fun late() {
+                probe?.late()
+            }
         }
-    }
 
     /** The period it is polled at, or null. */
     private var pollPeriod: Duration? = null
@@ -50,8 +50,8 @@ internal class MonitorTimers(
     }
 
     /**
-     * Checks, every tenth of [heartbeat], whether a beat is overdue; no more when null. A check costs a
-     * comparison, and a process that died is found out within a tenth of a beat of its beat being overdue.
+     * Checks, every tenth of [heartbeat], whether a beat is overdue; no more when null. A check costs a comparison, and
+     * a process that died is found out within a tenth of a beat of its beat being overdue.
      */
     fun watch(heartbeat: Duration?) {
         watchdog?.let { (period, overdue) -> core.watcher.watchdogs.remove(period, overdue) }

@@ -4,9 +4,9 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.FsmStateChanged
 
 /**
- * The state a component's FSM last entered, as its FSM4RTC observer told it since it was attached.
- * Nothing reads it back (OpenRTM-aist's `ExtendedFsmService` answers `""`), so the hints alone say it,
- * in the order the one ORB thread that takes them received them.
+ * The state a component's FSM last entered, as its FSM4RTC observer told it since it was attached. Nothing reads it
+ * back (OpenRTM-aist's `ExtendedFsmService` answers `""`), so the hints alone say it, in the order the one ORB thread
+ * that takes them received them.
  */
 internal class ObservedFsmState(private val node: ComponentNode) {
     @Volatile private var state: String? = null

@@ -1,5 +1,7 @@
 package org.rtcoord.internal.events
 
+import java.util.concurrent.ConcurrentHashMap
+import kotlin.time.Duration
 import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
@@ -12,19 +14,17 @@ import org.rtcoord.TimedOutException
 import org.rtcoord.UnreachableException
 import org.rtcoord.internal.TreeCore
 import org.slf4j.LoggerFactory
-import java.util.concurrent.ConcurrentHashMap
-import kotlin.time.Duration
 
 /**
- * Says once that a process everything else depends on stopped answering (a manager, a name server),
- * instead of leaving it to each thing below it failing on its own: when something it stands behind fails,
- * [probe] asks it; if it does not answer either, one [lost] event goes to [sinksOf] it (whoever watches
- * something behind it, and whoever wants every report), and it is asked again every period until it
- * answers ([back], with how long it was gone) or nobody is left to tell.
+ * Says once that a process everything else depends on stopped answering (a manager, a name server), instead of leaving
+ * it to each thing below it failing on its own: when something it stands behind fails, [probe] asks it; if it does not
+ * answer either, one [lost] event goes to [sinksOf] it (whoever watches something behind it, and whoever wants every
+ * report), and it is asked again every period until it answers ([back], with how long it was gone) or nobody is left to
+ * tell.
  *
- * When a manager's process dies its components vanish with it, and a master drops the manager from its
- * slaves only at its next failed call to it (OpenRTM-aist's `ManagerServant`): asking the manager itself
- * is the only prompt way to tell. A name server's outage makes every listing below it fail at once.
+ * When a manager's process dies its components vanish with it, and a master drops the manager from its slaves only at
+ * its next failed call to it (OpenRTM-aist's `ManagerServant`): asking the manager itself is the only prompt way to
+ * tell. A name server's outage makes every listing below it fail at once.
  */
 internal class Outages<T : Node>(
     private val core: TreeCore,
@@ -42,7 +42,9 @@ internal class Outages<T : Node>(
 
     /** Something behind [node] failed: asks [node], unless that is under way or it is known lost. */
     fun suspect(node: T, period: Duration) {
-        checks.computeIfAbsent(node.path) { core.scope.launch(start = CoroutineStart.LAZY) { check(node, period) } }.start()
+        checks
+            .computeIfAbsent(node.path) { core.scope.launch(start = CoroutineStart.LAZY) { check(node, period) } }
+            .start()
     }
 
     private suspend fun check(node: T, period: Duration) {
@@ -68,17 +70,18 @@ internal class Outages<T : Node>(
     }
 
     /** Why [node] does not answer; null when it does, even wrongly (the next failure behind it asks again). */
-    private suspend fun failureOf(node: T): RtcException? = try {
-        probe(node)
-        null
-    } catch (e: UnreachableException) {
-        e
-    } catch (e: TimedOutException) {
-        e
-    } catch (e: RtcException) {
-        log.debug("{}: answered the check with {}", node.path, e.reason)
-        null
-    }
+    private suspend fun failureOf(node: T): RtcException? =
+        try {
+            probe(node)
+            null
+        } catch (e: UnreachableException) {
+            e
+        } catch (e: TimedOutException) {
+            e
+        } catch (e: RtcException) {
+            log.debug("{}: answered the check with {}", node.path, e.reason)
+            null
+        }
 
     private fun publish(node: T, event: RtcEvent) {
         val sinks = sinksOf(node)

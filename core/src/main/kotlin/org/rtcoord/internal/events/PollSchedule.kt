@@ -1,12 +1,5 @@
 package org.rtcoord.internal.events
 
-import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.Job
-import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.delay
-import kotlinx.coroutines.isActive
-import kotlinx.coroutines.launch
-import kotlinx.coroutines.sync.Semaphore
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicBoolean
 import kotlin.coroutines.CoroutineContext
@@ -16,19 +9,24 @@ import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.DurationUnit
 import kotlin.time.TimeMark
 import kotlin.time.TimeSource
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.isActive
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.sync.Semaphore
 
 /**
- * Every component of a tree polled at one [period], on one schedule: each round reads every member once,
- * their reads spread over the period (member i of n at i/n of it; those due within a [slice] of each
- * other leave together, one wake-up for several reads rather than one each). A member's read is a
- * [Member.probe] when it can make one (no thread waits for the reply; at most [PROBES_IN_FLIGHT]
- * pending), else a [Member.tick] (at most [inFlight] pending: each holds a thread). When the reads cannot
- * keep up, a round simply takes longer: every member is then read at the same, lower rate, and [slow] is
- * told once (after [SLOW_ROUNDS] slow rounds in a row) what that rate is. Ticks a round could not serve
- * in time count as [missed] (a member whose previous read still waits, a hung component, is passed over
- * in that round rather than holding the others up, and told it is [Member.late]).
- * Its rounds run in [context]: on the dispatcher the members read on, a tick and its read pass from one
- * to the other without waking a thread.
+ * Every component of a tree polled at one [period], on one schedule: each round reads every member once, their reads
+ * spread over the period (member i of n at i/n of it; those due within a [slice] of each other leave together, one
+ * wake-up for several reads rather than one each). A member's read is a [Member.probe] when it can make one (no thread
+ * waits for the reply; at most [PROBES_IN_FLIGHT] pending), else a [Member.tick] (at most [inFlight] pending: each
+ * holds a thread). When the reads cannot keep up, a round simply takes longer: every member is then read at the same,
+ * lower rate, and [slow] is told once (after [SLOW_ROUNDS] slow rounds in a row) what that rate is. Ticks a round could
+ * not serve in time count as [missed] (a member whose previous read still waits, a hung component, is passed over in
+ * that round rather than holding the others up, and told it is [Member.late]). Its rounds run in [context]: on the
+ * dispatcher the members read on, a tick and its read pass from one to the other without waking a thread.
  */
 internal class PollSchedule(
     scope: CoroutineScope,
@@ -44,7 +42,10 @@ internal class PollSchedule(
         /** Reads the member. */
         fun tick(done: () -> Unit)
 
-        /** Sends a read whose reply no thread waits for, if the member can now; false when it cannot, and [tick] is asked instead. */
+        /**
+         * Sends a read whose reply no thread waits for, if the member can now; false when it cannot, and [tick] is
+         * asked instead.
+         */
         fun probe(done: () -> Unit): Boolean = false
 
         /** Its turn came while its previous read was still pending. */
@@ -68,19 +69,20 @@ internal class PollSchedule(
     private var slowTime = Duration.ZERO
     private var lastMembers = 0
 
-    private val rounds: Job = scope.launch(context) {
-        val origin = time.markNow()
-        var due = Duration.ZERO
-        while (isActive) {
-            val members = slots.toList()
-            if (members.isEmpty()) {
-                joined.receive()
-                due = origin.elapsedNow()
-                continue
+    private val rounds: Job =
+        scope.launch(context) {
+            val origin = time.markNow()
+            var due = Duration.ZERO
+            while (isActive) {
+                val members = slots.toList()
+                if (members.isEmpty()) {
+                    joined.receive()
+                    due = origin.elapsedNow()
+                    continue
+                }
+                due = round(members, origin, due)
             }
-            due = round(members, origin, due)
         }
-    }
 
     /** Adds [member]; it is read from the next round on. */
     fun add(member: Member) {
@@ -99,9 +101,9 @@ internal class PollSchedule(
     }
 
     /**
-     * Reads every member once, spread over the period that begins [due] after [origin]; returns when the
-     * next round is due. Rounds keep to one timeline: a round that starts late catches up, and only a
-     * schedule a whole period behind gives up the ticks it owes, and goes on from now.
+     * Reads every member once, spread over the period that begins [due] after [origin]; returns when the next round is
+     * due. Rounds keep to one timeline: a round that starts late catches up, and only a schedule a whole period behind
+     * gives up the ticks it owes, and goes on from now.
      */
     private suspend fun round(members: List<Slot>, origin: TimeMark, due: Duration): Duration {
         val start = origin.elapsedNow()
@@ -170,11 +172,11 @@ internal class PollSchedule(
 
     private companion object {
         /**
-         * Probes pending at once. A probe holds no thread here, but each holds one of the answering ORB's
-         * request threads while it is served: a JacORB peer made from rtcoord's recipe has 64 (OrbRecipe)
-         * for every call the tree makes, and requests beyond them queue and make it warn. Polling 1000
-         * components at 10 Hz sends 50 in a slice, answered within a slice: this limit only slows a round
-         * down when the components answer more slowly than that.
+         * Probes pending at once. A probe holds no thread here, but each holds one of the answering ORB's request
+         * threads while it is served: a JacORB peer made from rtcoord's recipe has 64 (OrbRecipe) for every call the
+         * tree makes, and requests beyond them queue and make it warn. Polling 1000 components at 10 Hz sends 50 in a
+         * slice, answered within a slice: this limit only slows a round down when the components answer more slowly
+         * than that.
          */
         const val PROBES_IN_FLIGHT = 32
 
@@ -187,7 +189,10 @@ internal class PollSchedule(
         /** How much longer than its period a round may take before the schedule says it cannot keep up. */
         const val SLOW = 1.2
 
-        /** Slow rounds in a row that make it say so: a few slow rounds are a hiccup (a collection, the JIT warming up), and the rate said is their mean. */
+        /**
+         * Slow rounds in a row that make it say so: a few slow rounds are a hiccup (a collection, the JIT warming up),
+         * and the rate said is their mean.
+         */
         const val SLOW_ROUNDS = 10
     }
 }

@@ -4,28 +4,30 @@ import RTC.ExecutionContext
 import RTC.LifeCycleStateHelper
 import RTC.LightweightRTObjectHelper
 import RTC.RTObject
+import java.util.concurrent.atomic.AtomicBoolean
+import java.util.concurrent.atomic.AtomicInteger
+import java.util.concurrent.atomic.AtomicIntegerArray
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.LifeCycle
 import org.rtcoord.internal.AsyncRequests
 import org.rtcoord.internal.toLifeCycle
-import java.util.concurrent.atomic.AtomicBoolean
-import java.util.concurrent.atomic.AtomicInteger
-import java.util.concurrent.atomic.AtomicIntegerArray
 
 /**
- * The poll read of a component whose registrations want its states alone, made without its monitor: a
- * tick sends `get_component_state` to each of its contexts ([AsyncRequests]) and, when the replies find
- * the states the monitor expects ([expect]), ends there, on the ORB's reader thread, waking nothing.
- * Polling a thousand components, that is nearly every read. Anything else goes to the monitor, whose
- * own read or reconciliation decides: states that differ ([Outcome.Changed]), a request that failed or
- * whose reply has not come by the component's next tick ([Outcome.Unsettled]).
+ * The poll read of a component whose registrations want its states alone, made without its monitor: a tick sends
+ * `get_component_state` to each of its contexts ([AsyncRequests]) and, when the replies find the states the monitor
+ * expects ([expect]), ends there, on the ORB's reader thread, waking nothing. Polling a thousand components, that is
+ * nearly every read. Anything else goes to the monitor, whose own read or reconciliation decides: states that differ
+ * ([Outcome.Changed]), a request that failed or whose reply has not come by the component's next tick
+ * ([Outcome.Unsettled]).
  *
  * One read at a time (its poll schedule ticks a component only once the previous tick is done).
  */
 internal class StateProbe(
     private val requests: AsyncRequests,
     private val component: RTObject,
-    /** The stamp of a read of the component's states starting now (see [org.rtcoord.internal.ComponentObject.stamp]). */
+    /**
+     * The stamp of a read of the component's states starting now (see [org.rtcoord.internal.ComponentObject.stamp]).
+     */
     private val nextStamp: () -> Long,
     private val answered: () -> Unit,
     private val handOver: (Outcome) -> Unit,
@@ -33,18 +35,29 @@ internal class StateProbe(
     /** What the monitor believes: each context's [states], as of its read number [epoch]. */
     class Expectation(val contexts: List<Pair<Int, ExecutionContext>>, val states: List<LifeCycle>, val epoch: Long) {
         companion object {
-            /** The states of [snapshot], read number [epoch], in [contexts] by handle; null when it is in none, or in one not among them. */
+            /**
+             * The states of [snapshot], read number [epoch], in [contexts] by handle; null when it is in none, or in
+             * one not among them.
+             */
             fun of(snapshot: ComponentSnapshot, contexts: Map<Int, ExecutionContext>, epoch: Long): Expectation? {
                 if (snapshot.contexts.isEmpty() || snapshot.contexts.any { it.handle !in contexts }) return null
-                return Expectation(snapshot.contexts.map { it.handle to contexts.getValue(it.handle) }, snapshot.contexts.map { it.state }, epoch)
+                return Expectation(
+                    snapshot.contexts.map { it.handle to contexts.getValue(it.handle) },
+                    snapshot.contexts.map { it.state },
+                    epoch,
+                )
             }
         }
     }
 
     /** How a probe the monitor must finish ended; [done] tells the poll schedule once it has. */
     sealed class Outcome(val done: () -> Unit) {
-        /** The replies found [states] (by context handle), other than expected as of read [epoch], in the read stamped [stamp]. */
-        class Changed(val states: Map<Int, LifeCycle>, val epoch: Long, val stamp: Long, done: () -> Unit) : Outcome(done)
+        /**
+         * The replies found [states] (by context handle), other than expected as of read [epoch], in the read stamped
+         * [stamp].
+         */
+        class Changed(val states: Map<Int, LifeCycle>, val epoch: Long, val stamp: Long, done: () -> Unit) :
+            Outcome(done)
 
         /** No answer to go by: the monitor reads the component itself. */
         class Unsettled(done: () -> Unit) : Outcome(done)
@@ -52,7 +65,8 @@ internal class StateProbe(
 
     private inner class Round(val expectation: Expectation, val done: () -> Unit) {
         val stamp = nextStamp()
-        val ids = AtomicIntegerArray(expectation.contexts.size).also { ids -> repeat(ids.length()) { ids[it] = NO_REQUEST } }
+        val ids =
+            AtomicIntegerArray(expectation.contexts.size).also { ids -> repeat(ids.length()) { ids[it] = NO_REQUEST } }
         val states = arrayOfNulls<LifeCycle>(expectation.contexts.size)
         val remaining = AtomicInteger(expectation.contexts.size)
         val finished = AtomicBoolean()
@@ -62,8 +76,8 @@ internal class StateProbe(
     @Volatile private var round: Round? = null
 
     /**
-     * Where the replies for each context go: one handler per context, so a reply is told apart by its
-     * request id on that context's connection.
+     * Where the replies for each context go: one handler per context, so a reply is told apart by its request id on
+     * that context's connection.
      */
     private inner class ContextReplies(val index: Int) {
         val replies = requests.Replies({ id, result -> received(this, id, result) }, { failed(this) })
@@ -149,8 +163,8 @@ internal class StateProbe(
     }
 
     /**
-     * Gives [round] up to the monitor. Its channels are retired if a reply may still come: on another
-     * connection after a reconnection, a request id may be used again.
+     * Gives [round] up to the monitor. Its channels are retired if a reply may still come: on another connection after
+     * a reconnection, a request id may be used again.
      */
     private fun unsettle(round: Round) {
         if (!round.finished.compareAndSet(false, true)) return

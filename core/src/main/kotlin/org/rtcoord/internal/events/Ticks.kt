@@ -1,16 +1,16 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
-import kotlin.time.Duration
-import kotlin.time.TimeSource
 
 /**
- * Calls [tick] every [period] until the returned job is cancelled, at a fixed rate: a tick whose work
- * queues up behind a slow read does not push the next one back.
+ * Calls [tick] every [period] until the returned job is cancelled, at a fixed rate: a tick whose work queues up behind
+ * a slow read does not push the next one back.
  */
 internal fun CoroutineScope.launchTicks(period: Duration, tick: () -> Unit): Job = launch {
     val start = TimeSource.Monotonic.markNow()

@@ -1,32 +1,34 @@
 package org.rtcoord.internal.events
 
-import org.rtcoord.EventOptions
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
+import org.rtcoord.EventOptions
 
 /**
- * How one component is watched: the part of its [ComponentWatch] that decides whether an observer is
- * attached, detached or attached anew, at which period the component is polled (and probed while it does
- * not answer), whose heartbeats the watchdog expects, and the [org.rtcoord.WatchMethod] that says so.
- * Pure: the machine tells it what the reads and attachments found, and returns what it decides as
- * [Arranged] for the monitor to carry out.
+ * How one component is watched: the part of its [ComponentWatch] that decides whether an observer is attached, detached
+ * or attached anew, at which period the component is polled (and probed while it does not answer), whose heartbeats the
+ * watchdog expects, and the [org.rtcoord.WatchMethod] that says so. Pure: the machine tells it what the reads and
+ * attachments found, and returns what it decides as [Arranged] for the monitor to carry out.
  *
  * It arranges in stages, each ending in a step the monitor carries out at once:
  *
- * | stage | entered when | next step | then |
- * |---|---|---|---|
- * | OBSERVE | the registrations changed, after a whole read ([reconfigured]); a read brought the component back ([answered]): it may have dropped its observer, or restarted without it | [WatchStep.Detach] an observer that is stale or sends other traffic than asked for; else [WatchStep.Attach] one if a push registration wants it and the component answers; else settle | OBSERVE after detaching, REREAD after attaching one |
- * | REREAD | an observer was attached ([attached]) | [WatchStep.ReadAll]: a change between the last read and the attachment sent its hint to nobody | settle |
- * | none | settled, or the component is finalized | nothing: reads arrange nothing more | |
+ * |stage  |entered when                                                                                                                                                             |next step                                                                                                                                                                             |then                                               |
+ * |-------|-------------------------------------------------------------------------------------------------------------------------------------------------------------------------|--------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------|---------------------------------------------------|
+ * |OBSERVE|the registrations changed, after a whole read ([reconfigured]); a read brought the component back ([answered]): it may have dropped its observer, or restarted without it|[WatchStep.Detach] an observer that is stale or sends other traffic than asked for; else [WatchStep.Attach] one if a push registration wants it and the component answers; else settle|OBSERVE after detaching, REREAD after attaching one|
+ * |REREAD |an observer was attached ([attached])                                                                                                                                    |[WatchStep.ReadAll]: a change between the last read and the attachment sent its hint to nobody                                                                                        |settle                                             |
+ * |none   |settled, or the component is finalized                                                                                                                                   |nothing: reads arrange nothing more                                                                                                                                                   |                                                   |
  *
- * Settling decides the method ([decideWatchMethod]), the poll period and the heartbeat watched
- * ([WatchSchedule]), and ends the stages. Whatever the stage: a component found unreachable is probed
- * at its heartbeat if nothing polls it, and the managers hosting it are asked
- * ([Arranged.askManagersEvery]); a finalized one has its observer dropped ([WatchStep.Drop]) and its
- * timers stopped; one that nobody watches any more has its observer detached and its timers stopped.
+ * Settling decides the method ([decideWatchMethod]), the poll period and the heartbeat watched ([WatchSchedule]), and
+ * ends the stages. Whatever the stage: a component found unreachable is probed at its heartbeat if nothing polls it,
+ * and the managers hosting it are asked ([Arranged.askManagersEvery]); a finalized one has its observer dropped
+ * ([WatchStep.Drop]) and its timers stopped; one that nobody watches any more has its observer detached and its timers
+ * stopped.
  */
 internal class WatchArrangement {
-    private enum class Stage { OBSERVE, REREAD }
+    private enum class Stage {
+        OBSERVE,
+        REREAD,
+    }
 
     /** What the registrations ask for, as the monitor last found them. */
     var needs: WatchNeeds = WatchNeeds.NONE
@@ -44,13 +46,16 @@ internal class WatchArrangement {
     private var schedule = WatchSchedule.OFF
 
     /** Whether an observer announces the component's changes, so that its hints are awaited. */
-    val observed: Boolean get() = observer != null && !stale
+    val observed: Boolean
+        get() = observer != null && !stale
 
     /** The options whose heartbeats the attached observer sends; null when none is attached or none pushes. */
-    val beating: EventOptions? get() = needs.push?.takeIf { observer != null }
+    val beating: EventOptions?
+        get() = needs.push?.takeIf { observer != null }
 
     /** How often the component should give a sign of life: its heartbeat when observed, else its poll period. */
-    val expectedInterval: Duration? get() = beating?.heartbeat ?: schedule.pollPeriod
+    val expectedInterval: Duration?
+        get() = beating?.heartbeat ?: schedule.pollPeriod
 
     /** The registrations changed: the step that starts arranging anew. */
     fun reconfigured(): WatchStep {
@@ -63,8 +68,8 @@ internal class WatchArrangement {
     }
 
     /**
-     * A whole read answered, the component standing at [answers] after it; [recovered] when it brought the
-     * component back; [advertised] is its `sdo.service.consumer.available_services`.
+     * A whole read answered, the component standing at [answers] after it; [recovered] when it brought the component
+     * back; [advertised] is its `sdo.service.consumer.available_services`.
      */
     fun answered(recovered: Boolean, answers: ComponentLiveness.State, advertised: String?): Arranged {
         if (recovered) {

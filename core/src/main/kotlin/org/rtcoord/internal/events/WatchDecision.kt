@@ -25,19 +25,20 @@ internal sealed interface Attachment {
 
 /** Why a component whose attachment ended so is not pushed to; null when it is. */
 internal val Attachment.whyNotPushed: String?
-    get() = when (this) {
-        Attachment.NotTried -> "no observer was tried"
-        is Attachment.Attached -> null
-        is Attachment.NotOffered ->
-            "it offers no ComponentObserver (sdo.service.consumer.available_services: ${advertised.joinToString().ifEmpty { "none" }})"
-        is Attachment.Refused -> "it refused the ${flavours.joinToString(" and the ") { it.label }}"
-        is Attachment.Failed -> "attaching an observer failed: $failure"
-    }
+    get() =
+        when (this) {
+            Attachment.NotTried -> "no observer was tried"
+            is Attachment.Attached -> null
+            is Attachment.NotOffered ->
+                "it offers no ComponentObserver (sdo.service.consumer.available_services: ${advertised.joinToString().ifEmpty { "none" }})"
+            is Attachment.Refused -> "it refused the ${flavours.joinToString(" and the ") { it.label }}"
+            is Attachment.Failed -> "attaching an observer failed: $failure"
+        }
 
 /**
- * How a component watched by registrations with [options] is watched, after [attachment]; null when
- * nothing asks for it. Registrations in [WatchMode.POLL] are polled, those in [WatchMode.AUTO] polled
- * unless an observer was attached, at the shortest period asked for.
+ * How a component watched by registrations with [options] is watched, after [attachment]; null when nothing asks for
+ * it. Registrations in [WatchMode.POLL] are polled, those in [WatchMode.AUTO] polled unless an observer was attached,
+ * at the shortest period asked for.
  */
 internal fun decideWatchMethod(options: List<EventOptions>, attachment: Attachment): WatchMethod? {
     if (options.isEmpty()) return null
@@ -57,8 +58,9 @@ private const val ASKED = "polling was asked for"
 
 /** How often the component is read again, whatever else watches it. */
 internal val WatchMethod.pollPeriod: kotlin.time.Duration?
-    get() = when (this) {
-        is WatchMethod.Pushed -> pollPeriod
-        is WatchMethod.Polled -> period
-        is WatchMethod.Unwatched -> null
-    }
+    get() =
+        when (this) {
+            is WatchMethod.Pushed -> pollPeriod
+            is WatchMethod.Polled -> period
+            is WatchMethod.Unwatched -> null
+        }

@@ -2,7 +2,9 @@ package org.rtcoord.internal.events
 
 import org.rtcoord.LifeCycle
 
-/** What happened to a watched component, as its [ComponentMonitor] tells its [ComponentWatch], in the order it took it. */
+/**
+ * What happened to a watched component, as its [ComponentMonitor] tells its [ComponentWatch], in the order it took it.
+ */
 internal sealed interface WatchInput {
     /** A hint from the observer, received at [at]: a lifecycle hint, or one that something else changed. */
     class Hinted(val hint: Hint, val at: Long) : WatchInput

@@ -1,21 +1,26 @@
 package org.rtcoord.internal.events
 
-import org.rtcoord.EventOptions
-import org.rtcoord.WatchMode
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.hours
+import org.rtcoord.EventOptions
+import org.rtcoord.WatchMode
 
 /**
- * What the registrations of one component ask of its watching together, as its monitor found them at
- * the start of a batch: their [options], whether every one wants states alone ([statesOnly]: then a tick
- * reads states only), and the traffic interval its observer is asked for ([traffic]).
+ * What the registrations of one component ask of its watching together, as its monitor found them at the start of a
+ * batch: their [options], whether every one wants states alone ([statesOnly]: then a tick reads states only), and the
+ * traffic interval its observer is asked for ([traffic]).
  */
 internal class WatchNeeds(val options: List<EventOptions>, val statesOnly: Boolean, val traffic: Duration) {
-    /** The options of the push registration with the shortest heartbeat, which the observer serves; null when none pushes. */
+    /**
+     * The options of the push registration with the shortest heartbeat, which the observer serves; null when none
+     * pushes.
+     */
     val push: EventOptions? = options.filter { it.mode != WatchMode.POLL }.minByOrNull { it.heartbeat }
 
     companion object {
-        /** The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default. */
+        /**
+         * The traffic interval asked for when nobody wants traffic: OpenRTM sends data hints every second by default.
+         */
         val NO_TRAFFIC: Duration = 1.hours
 
         /** No registration: nothing is watched. */

@@ -1,9 +1,9 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration
 import org.rtcoord.LifeCycle
 import org.rtcoord.RtcEvent
 import org.rtcoord.WatchMethod
-import kotlin.time.Duration
 
 /** What a [ComponentWatch] asks its monitor to read, or do, next. */
 internal sealed interface WatchStep {
@@ -16,7 +16,10 @@ internal sealed interface WatchStep {
     /** Read the states of the contexts [handles]. */
     class ReadStates(val handles: Set<Int>) : WatchStep
 
-    /** Publish the held deactivation the last read confirmed, taking the hints come since first: see [ComponentWatch.settle]. */
+    /**
+     * Publish the held deactivation the last read confirmed, taking the hints come since first: see
+     * [ComponentWatch.settle].
+     */
     object Settle : WatchStep
 
     /** Take [states], which a probe read in read [stamp]. */
@@ -24,7 +27,8 @@ internal sealed interface WatchStep {
 
     /**
      * Attach an observer of a flavour among [advertised] (the component's `sdo.service.consumer.available_services`)
-     * that sends heartbeats every [heartbeat] and traffic hints at most every [traffic]; then tell [ComponentWatch.attached].
+     * that sends heartbeats every [heartbeat] and traffic hints at most every [traffic]; then tell
+     * [ComponentWatch.attached].
      */
     class Attach(val advertised: String?, val heartbeat: Duration, val traffic: Duration) : WatchStep
 
@@ -63,7 +67,10 @@ internal data class Arranged(
     val schedule: WatchSchedule? = null,
     /** How the component is watched, when that was decided: told to whoever has not been told yet. */
     val method: WatchMethod? = null,
-    /** It stopped answering: the managers hosting it are asked whether they still answer, every [askManagersEvery] once found dead. */
+    /**
+     * It stopped answering: the managers hosting it are asked whether they still answer, every [askManagersEvery] once
+     * found dead.
+     */
     val askManagersEvery: Duration? = null,
 ) {
     companion object {

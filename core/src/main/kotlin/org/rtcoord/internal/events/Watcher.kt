@@ -1,5 +1,6 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CompletableDeferred
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
@@ -29,12 +30,11 @@ import org.rtcoord.WrongKindException
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.label
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * The tree's registrations: one [ComponentMonitor] per component and one [ListingMonitor] per directory,
- * shared by every registration that needs them and stopped with the last one. What the monitors share
- * is its parts': the [polls], the [watchdogs], the [reports] and the [outages].
+ * The tree's registrations: one [ComponentMonitor] per component and one [ListingMonitor] per directory, shared by
+ * every registration that needs them and stopped with the last one. What the monitors share is its parts': the [polls],
+ * the [watchdogs], the [reports] and the [outages].
  */
 internal class Watcher(private val core: TreeCore) {
     private val host by lazy { ObserverHost(core.orb.orb, core.orb.inbound, core::execute) }
@@ -53,15 +53,31 @@ internal class Watcher(private val core: TreeCore) {
     val reports = WatchReports(core)
 
     /** The outages of the managers and name servers watched components stand behind. */
-    val outages = ProcessOutages(core, reports, { synchronized(components) { HashMap(components) } }, { synchronized(listings) { HashMap(listings) } })
+    val outages =
+        ProcessOutages(
+            core,
+            reports,
+            { synchronized(components) { HashMap(components) } },
+            { synchronized(listings) { HashMap(listings) } },
+        )
 
     /**
-     * Delivers the events of [types] (all when null) from [target] to [handler]: a component's own
-     * events, or for a directory its listing's events and those of every component below it, including
-     * components that appear later.
+     * Delivers the events of [types] (all when null) from [target] to [handler]: a component's own events, or for a
+     * directory its listing's events and those of every component below it, including components that appear later.
      */
-    suspend fun watch(target: Node, types: Set<Class<out RtcEvent>>?, options: EventOptions, handler: suspend (RtcEvent) -> Unit): Subscription {
-        val sink = EventSink(core.scope, { event -> types == null || types.any { it.isInstance(event) } }, options.overlap, handler)
+    suspend fun watch(
+        target: Node,
+        types: Set<Class<out RtcEvent>>?,
+        options: EventOptions,
+        handler: suspend (RtcEvent) -> Unit,
+    ): Subscription {
+        val sink =
+            EventSink(
+                core.scope,
+                { event -> types == null || types.any { it.isInstance(event) } },
+                options.overlap,
+                handler,
+            )
         val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
         val traffic = types != null && PortTraffic::class.java in types
@@ -80,34 +96,48 @@ internal class Watcher(private val core: TreeCore) {
                     try {
                         // Its events name it at its canonical path, whichever path led here first.
                         val registration = MonitorRegistration(sink, options, configuration, statesOnly, traffic)
-                        val monitor = synchronized(components) { components.getOrPut(node.component) { ComponentMonitor(core, host, node.canonical, ::ended).also { live += it } } }
+                        val monitor =
+                            synchronized(components) {
+                                components.getOrPut(node.component) {
+                                    ComponentMonitor(core, host, node.canonical, ::ended).also { live += it }
+                                }
+                            }
                         monitor.add(registration)
                         synchronized(releases) { releases += { release(node.component, monitor, registration) } }
                     } finally {
                         inclusion.complete(Unit)
                     }
                 }
-                is DirectoryNode -> synchronized(watched) { watched.add(node.path) }.takeIf { it }?.let {
-                    var failure: RtcException? = null
-                    val children = try {
-                        node.children()
-                    } catch (e: RtcException) {
-                        failure = e
-                        emptyList()
-                    }
-                    // Managers listed first, down to their slaves: a component that dies before the walk
-                    // reaches its manager is still known as that manager's, and the manager's death told.
-                    children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
-                    val registration = ListingMonitor.Registration(sink, options.pollPeriod) { child -> include(child) }
-                    val monitor = synchronized(listings) { listings.getOrPut(node.path) { ListingMonitor(core, node) } }
-                    monitor.add(registration)
-                    synchronized(releases) { releases += { release(node, monitor, registration) } }
-                    // Said once this registration is there to hear it: a name server found down at once is reported to it.
-                    failure?.let { outages.listingFailed(node, it, options.pollPeriod) }
-                    // Components in naming contexts first, so a monitor's paths are the ones users know.
-                    children.sortedBy { it is ManagerNode }.forEach { include(it) }
-                }
-                else -> if (node === target) throw WrongKindException(node.path.toString(), "component or directory", node.kind.label())
+                is DirectoryNode ->
+                    synchronized(watched) { watched.add(node.path) }
+                        .takeIf { it }
+                        ?.let {
+                            var failure: RtcException? = null
+                            val children =
+                                try {
+                                    node.children()
+                                } catch (e: RtcException) {
+                                    failure = e
+                                    emptyList()
+                                }
+                            // Managers listed first, down to their slaves: a component that dies before the walk
+                            // reaches its manager is still known as that manager's, and the manager's death told.
+                            children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
+                            val registration =
+                                ListingMonitor.Registration(sink, options.pollPeriod) { child -> include(child) }
+                            val monitor =
+                                synchronized(listings) { listings.getOrPut(node.path) { ListingMonitor(core, node) } }
+                            monitor.add(registration)
+                            synchronized(releases) { releases += { release(node, monitor, registration) } }
+                            // Said once this registration is there to hear it: a name server found down at once is
+                            // reported to it.
+                            failure?.let { outages.listingFailed(node, it, options.pollPeriod) }
+                            // Components in naming contexts first, so a monitor's paths are the ones users know.
+                            children.sortedBy { it is ManagerNode }.forEach { include(it) }
+                        }
+                else ->
+                    if (node === target)
+                        throw WrongKindException(node.path.toString(), "component or directory", node.kind.label())
             }
         }
 
@@ -119,15 +149,20 @@ internal class Watcher(private val core: TreeCore) {
     }
 
     /**
-     * Delivers to [handler] how each watched component is watched (now, and again when it changes) and
-     * which managers and name servers watched components stand behind stop or resume answering, whoever
-     * asked for the watching.
+     * Delivers to [handler] how each watched component is watched (now, and again when it changes) and which managers
+     * and name servers watched components stand behind stop or resume answering, whoever asked for the watching.
      */
-    fun report(handler: suspend (RtcEvent) -> Unit): Subscription = reports.add(handler, live, outages::checkNameServers)
+    fun report(handler: suspend (RtcEvent) -> Unit): Subscription =
+        reports.add(handler, live, outages::checkNameServers)
 
     /** Lists [manager] and its slaves (once: listings are cached), each recording the components it hosts. */
     private suspend fun listManagers(manager: ManagerNode) {
-        val children = try { manager.children() } catch (e: RtcException) { return }
+        val children =
+            try {
+                manager.children()
+            } catch (e: RtcException) {
+                return
+            }
         children.filterIsInstance<ManagerNode>().forEach { listManagers(it) }
     }
 
@@ -155,9 +190,8 @@ internal class Watcher(private val core: TreeCore) {
     }
 
     /**
-     * Stops every monitor, including those already stopping, and returns once each has detached its
-     * observer (or a call deadline and a second have passed for the slowest): the tree's scope and ORB
-     * must outlive the detaching.
+     * Stops every monitor, including those already stopping, and returns once each has detached its observer (or a call
+     * deadline and a second have passed for the slowest): the tree's scope and ORB must outlive the detaching.
      */
     fun close() {
         synchronized(components) { components.clear() }
@@ -165,7 +199,10 @@ internal class Watcher(private val core: TreeCore) {
         val stopping = ArrayList(live)
         stopping.forEach(ComponentMonitor::stop)
         stopping.forEach { it.awaitStopped(core.config.callTimeout + 1.seconds) }
-        synchronized(listings) { listings.values.forEach(ListingMonitor::stop); listings.clear() }
+        synchronized(listings) {
+            listings.values.forEach(ListingMonitor::stop)
+            listings.clear()
+        }
         polls.close()
         watchdogs.close()
         reports.close()
@@ -173,16 +210,28 @@ internal class Watcher(private val core: TreeCore) {
 
     private companion object {
         /** Events a read of the lifecycle states alone can produce. */
-        val STATE_EVENTS = setOf(
-            StateChanged::class.java, HeartbeatLost::class.java, BecameZombie::class.java,
-            Recovered::class.java, ComponentFinalized::class.java, WatchMethodChanged::class.java,
-            ManagerDied::class.java, ManagerReturned::class.java, PortTraffic::class.java,
-            NameServerLost::class.java, NameServerReturned::class.java,
-        )
+        val STATE_EVENTS =
+            setOf(
+                StateChanged::class.java,
+                HeartbeatLost::class.java,
+                BecameZombie::class.java,
+                Recovered::class.java,
+                ComponentFinalized::class.java,
+                WatchMethodChanged::class.java,
+                ManagerDied::class.java,
+                ManagerReturned::class.java,
+                PortTraffic::class.java,
+                NameServerLost::class.java,
+                NameServerReturned::class.java,
+            )
 
-        val CONFIGURATION_EVENTS = setOf(
-            ParameterChanged::class.java, ConfigurationSetActivated::class.java,
-            ConfigurationSetAdded::class.java, ConfigurationSetRemoved::class.java, RtcEvent::class.java,
-        )
+        val CONFIGURATION_EVENTS =
+            setOf(
+                ParameterChanged::class.java,
+                ConfigurationSetActivated::class.java,
+                ConfigurationSetAdded::class.java,
+                ConfigurationSetRemoved::class.java,
+                RtcEvent::class.java,
+            )
     }
 }

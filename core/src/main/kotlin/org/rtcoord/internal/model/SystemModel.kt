@@ -28,17 +28,16 @@ import org.rtcoord.internal.componentsListed
 import org.rtcoord.internal.unknownFsmStatus
 
 /**
- * The tree's one truth about the live system: what its events have told, numbered. Every event the tree
- * publishes passes through [publish], which gives it the next sequence number, applies it to the model
- * and hands it to its sinks in one step; [snapshot] reads the model in a step of the same lock. So a
- * snapshot at N holds exactly the events up to N, and a sink registered before it gets every later one.
+ * The tree's one truth about the live system: what its events have told, numbered. Every event the tree publishes
+ * passes through [publish], which gives it the next sequence number, applies it to the model and hands it to its sinks
+ * in one step; [snapshot] reads the model in a step of the same lock. So a snapshot at N holds exactly the events up to
+ * N, and a sink registered before it gets every later one.
  *
- * The model keeps what no node keeps: the states as the events told them (a watched component's read may
- * run ahead of its events while a deactivation is held), name servers that do not answer and managers
- * found dead. Structure (which nodes exist) stays with the nodes' listings, walked here without a call
- * ([componentsListed]). A component nobody watches has no events: its states are its latest read, taken
- * here and nowhere else, so that no view chooses between the model and a read (see the owners' table
- * in docs/architecture.md).
+ * The model keeps what no node keeps: the states as the events told them (a watched component's read may run ahead of
+ * its events while a deactivation is held), name servers that do not answer and managers found dead. Structure (which
+ * nodes exist) stays with the nodes' listings, walked here without a call ([componentsListed]). A component nobody
+ * watches has no events: its states are its latest read, taken here and nowhere else, so that no view chooses between
+ * the model and a read (see the owners' table in docs/architecture.md).
  */
 internal class SystemModel(private val nameServers: () -> List<NameServerNode>) {
     private class Outage(val since: Long, val cause: RtcException)
@@ -54,10 +53,15 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
     private val managerOutages = LinkedHashMap<RtcPath, ManagerDied>()
 
     /**
-     * Numbers [events], applies them and hands each to [deliver], in order; [deliver] must not wait. For a
-     * watched [component], [published] are its states by handle as its events tell them after [events].
+     * Numbers [events], applies them and hands each to [deliver], in order; [deliver] must not wait. For a watched
+     * [component], [published] are its states by handle as its events tell them after [events].
      */
-    fun publish(events: List<RtcEvent>, component: ComponentObject? = null, published: Map<Int, LifeCycle>? = null, deliver: (RtcEvent) -> Unit) {
+    fun publish(
+        events: List<RtcEvent>,
+        component: ComponentObject? = null,
+        published: Map<Int, LifeCycle>? = null,
+        deliver: (RtcEvent) -> Unit,
+    ) {
         synchronized(this) {
             if (component != null && published != null) states[component] = published
             for (event in events) {
@@ -78,32 +82,45 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
     }
 
     /** When [server] was lost and why; null while it answers. */
-    fun outageOf(server: NameServerNode): Pair<Long, RtcException>? = synchronized(this) { outages[server.path]?.let { it.since to it.cause } }
+    fun outageOf(server: NameServerNode): Pair<Long, RtcException>? =
+        synchronized(this) { outages[server.path]?.let { it.since to it.cause } }
 
     /** The model now: every component the listings found, at its canonical path, with its states as told. */
-    fun snapshot(root: DirectoryNode): SystemSnapshot = synchronized(this) {
-        val components = componentsListed(listOf(root)).map { node ->
-            val component = node.component
-            val told = states[component] ?: node.snapshots.value?.contexts?.associate { it.handle to it.state }.orEmpty()
-            val method = methods[component]
-            val fsm = fsmStates[component]?.let { FsmStatusImpl(it, null) }
-                ?: unknownFsmStatus(method).takeIf { node.snapshots.value?.offersFsmService == true }
-            ComponentEntryImpl(node, told, alive = component !in dead, watchMethod = method, fsm = fsm)
+    fun snapshot(root: DirectoryNode): SystemSnapshot =
+        synchronized(this) {
+            val components =
+                componentsListed(listOf(root)).map { node ->
+                    val component = node.component
+                    val told =
+                        states[component]
+                            ?: node.snapshots.value?.contexts?.associate { it.handle to it.state }.orEmpty()
+                    val method = methods[component]
+                    val fsm =
+                        fsmStates[component]?.let { FsmStatusImpl(it, null) }
+                            ?: unknownFsmStatus(method).takeIf { node.snapshots.value?.offersFsmService == true }
+                    ComponentEntryImpl(node, told, alive = component !in dead, watchMethod = method, fsm = fsm)
+                }
+            val servers =
+                nameServers().map { server ->
+                    outages[server.path].let { NameServerEntryImpl(server, it?.since, it?.cause) }
+                }
+            SystemSnapshotImpl(sequence, components, servers, managerOutages.values.toList())
         }
-        val servers = nameServers().map { server -> outages[server.path].let { NameServerEntryImpl(server, it?.since, it?.cause) } }
-        SystemSnapshotImpl(sequence, components, servers, managerOutages.values.toList())
-    }
 
     private fun apply(event: RtcEvent) {
         when (event) {
-            is StateChanged -> states[event.source.component]?.let { states[event.source.component] = it + (event.handle to event.new) }
+            is StateChanged ->
+                states[event.source.component]?.let {
+                    states[event.source.component] = it + (event.handle to event.new)
+                }
             is BecameZombie -> dead += event.source.component
             is ComponentFinalized -> dead += event.source.component
             is Recovered -> dead -= event.source.component
             is WatchMethodChanged -> {
                 methods[event.source.component] = event.new
                 // Only an FSM4RTC observer hears the machine: watched otherwise, its state is no longer known.
-                if ((event.new as? WatchMethod.Pushed)?.flavour != ObserverFlavour.OMG) fsmStates.remove(event.source.component)
+                if ((event.new as? WatchMethod.Pushed)?.flavour != ObserverFlavour.OMG)
+                    fsmStates.remove(event.source.component)
             }
             is FsmStateChanged -> fsmStates[event.source.component] = event.new
             is ManagerDied -> managerOutages[event.source.path] = event

@@ -1,5 +1,8 @@
 package org.rtcoord.profile.internal
 
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.CoroutineName
@@ -23,19 +26,28 @@ import org.rtcoord.profile.ProfileRefusedException
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.StepOutcome
 import org.rtcoord.profile.TargetComponent
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeSource
 
 /** Plans and runs an ordered start or stop. */
 internal class SystemOrdering(private val tree: RtcTree) {
     fun plan(profile: RtsProfile, action: OrderedAction): List<PlannedStep> {
-        val targets = profile.orderings[action.ordering]?.targets
-            ?: profile.components.map { OrderedTarget(0, TargetComponent(it.id, it.instanceName, contextId = "0")) }
-        return targets.sortedBy { it.sequence }.map { t ->
-            val component = profile.component(t.target) ?: throw ProfileRefusedException("${action.ordering.xmlName} names ${t.target.instanceName}, which the profile does not have")
-            PlannedStep(t.sequence, "/" + component.pathUri.removePrefix("/"), t.target.contextId?.toIntOrNull() ?: 0, t.condition)
-        }
+        val targets =
+            profile.orderings[action.ordering]?.targets
+                ?: profile.components.map { OrderedTarget(0, TargetComponent(it.id, it.instanceName, contextId = "0")) }
+        return targets
+            .sortedBy { it.sequence }
+            .map { t ->
+                val component =
+                    profile.component(t.target)
+                        ?: throw ProfileRefusedException(
+                            "${action.ordering.xmlName} names ${t.target.instanceName}, which the profile does not have"
+                        )
+                PlannedStep(
+                    t.sequence,
+                    "/" + component.pathUri.removePrefix("/"),
+                    t.target.contextId?.toIntOrNull() ?: 0,
+                    t.condition,
+                )
+            }
     }
 
     suspend fun run(profile: RtsProfile, action: OrderedAction, stepDeadline: Duration): List<StepOutcome> {
@@ -51,23 +63,37 @@ internal class SystemOrdering(private val tree: RtcTree) {
                 // Earlier sequences' time is theirs: a step's deadline starts once they are done.
                 val failed = steps.filter { it.sequence < step.sequence }.firstOrNull { !finished.getValue(it).await() }
                 var slow = ""
-                val outcome = if (failed != null) "not done: ${failed.component} before it was not done" else try {
-                    withTimeout(stepDeadline + conditionTime(step.condition)) {
-                        when (val c = step.condition) {
-                            is Condition.WaitTime -> delay(c.milliseconds.milliseconds)
-                            is Condition.Preceding -> awaitPreceding(c, action, steps, byInstance, nodes, issued, finished)?.let { return@withTimeout it }
-                            Condition.None -> Unit
+                val outcome =
+                    if (failed != null) "not done: ${failed.component} before it was not done"
+                    else
+                        try {
+                            withTimeout(stepDeadline + conditionTime(step.condition)) {
+                                when (val c = step.condition) {
+                                    is Condition.WaitTime -> delay(c.milliseconds.milliseconds)
+                                    is Condition.Preceding ->
+                                        awaitPreceding(c, action, steps, byInstance, nodes, issued, finished)?.let {
+                                            return@withTimeout it
+                                        }
+                                    Condition.None -> Unit
+                                }
+                                issued.getValue(step).complete(true)
+                                act(
+                                        nodes.getValue(step.component),
+                                        ContextSelector.Handle(step.contextId),
+                                        action,
+                                        stepDeadline,
+                                    )
+                                    ?.takeIf { it.slow }
+                                    ?.let { slow = "slow: $it" }
+                                null
+                            }
+                        } catch (e: TimeoutCancellationException) {
+                            "no result within its deadline"
+                        } catch (e: RtcException) {
+                            e.message ?: e.reason
                         }
-                        issued.getValue(step).complete(true)
-                        act(nodes.getValue(step.component), ContextSelector.Handle(step.contextId), action, stepDeadline)?.takeIf { it.slow }?.let { slow = "slow: $it" }
-                        null
-                    }
-                } catch (e: TimeoutCancellationException) {
-                    "no result within its deadline"
-                } catch (e: RtcException) {
-                    e.message ?: e.reason
-                }
-                outcomes[step] = StepOutcome(step, outcome == null, start.elapsedNow().inWholeMilliseconds, outcome ?: slow)
+                outcomes[step] =
+                    StepOutcome(step, outcome == null, start.elapsedNow().inWholeMilliseconds, outcome ?: slow)
                 issued.getValue(step).complete(false)
                 finished.getValue(step).complete(outcome == null)
             }
@@ -77,17 +103,23 @@ internal class SystemOrdering(private val tree: RtcTree) {
 
     /**
      * Brings [node]'s context to [action]'s state, unless it is there (then null). The calls run in the tree's scope:
-     * one blocked in a socket read does not give way to cancellation, and the step's deadline must end
-     * the wait for it, not the ORB's; abandoned, it ends there within the tree's call deadline.
+     * one blocked in a socket read does not give way to cancellation, and the step's deadline must end the wait for it,
+     * not the ORB's; abandoned, it ends there within the tree's call deadline.
      */
-    private suspend fun act(node: ComponentNode, selector: ContextSelector, action: OrderedAction, deadline: Duration): TransitionOutcome? {
-        val call = tree.core.scope.async(CoroutineName("${action.name.lowercase()} ${node.path}")) {
-            when {
-                node.state(selector) == action.reaches -> null
-                action == OrderedAction.START -> node.activate(selector, deadline)
-                else -> node.deactivate(selector, deadline)
+    private suspend fun act(
+        node: ComponentNode,
+        selector: ContextSelector,
+        action: OrderedAction,
+        deadline: Duration,
+    ): TransitionOutcome? {
+        val call =
+            tree.core.scope.async(CoroutineName("${action.name.lowercase()} ${node.path}")) {
+                when {
+                    node.state(selector) == action.reaches -> null
+                    action == OrderedAction.START -> node.activate(selector, deadline)
+                    else -> node.deactivate(selector, deadline)
+                }
             }
-        }
         return try {
             call.await()
         } catch (e: CancellationException) {
@@ -108,11 +140,14 @@ internal class SystemOrdering(private val tree: RtcTree) {
     ): String? {
         suspend fun wait(): String? {
             for (target in condition.components) {
-                val path = byInstance[target.instanceName] ?: return "preceding ${target.instanceName} is not in the profile"
+                val path =
+                    byInstance[target.instanceName] ?: return "preceding ${target.instanceName} is not in the profile"
                 val step = steps.firstOrNull { it.component == path }
                 // SYNC waits for the preceding component's transition, ASYNC only for its action to be sent.
                 if (step != null) {
-                    val ok = if (condition.sendingTiming.equals("SYNC", ignoreCase = true)) finished.getValue(step).await() else issued.getValue(step).await()
+                    val ok =
+                        if (condition.sendingTiming.equals("SYNC", ignoreCase = true)) finished.getValue(step).await()
+                        else issued.getValue(step).await()
                     if (!ok) return "preceding $path was not done"
                 } else {
                     val node = nodes[path] ?: tree.component(path)
@@ -130,9 +165,10 @@ internal class SystemOrdering(private val tree: RtcTree) {
         }
     }
 
-    private fun conditionTime(condition: Condition): Duration = when (condition) {
-        is Condition.WaitTime -> condition.milliseconds.milliseconds
-        is Condition.Preceding -> condition.timeoutMillis.milliseconds
-        Condition.None -> Duration.ZERO
-    }
+    private fun conditionTime(condition: Condition): Duration =
+        when (condition) {
+            is Condition.WaitTime -> condition.milliseconds.milliseconds
+            is Condition.Preceding -> condition.timeoutMillis.milliseconds
+            Condition.None -> Duration.ZERO
+        }
 }

@@ -18,37 +18,52 @@ import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.TargetComponent
 
 /**
- * A profile's components resolved on the live system, each read afresh: a tree that has lived a while
- * (a coordinator's) may hold snapshots older than the system, and a restore or check must not go by them.
+ * A profile's components resolved on the live system, each read afresh: a tree that has lived a while (a coordinator's)
+ * may hold snapshots older than the system, and a restore or check must not go by them.
  */
-internal class ResolvedSystem(val profile: RtsProfile, val nodes: Map<String, ComponentNode>, val missing: List<ProfileComponent>) {
+internal class ResolvedSystem(
+    val profile: RtsProfile,
+    val nodes: Map<String, ComponentNode>,
+    val missing: List<ProfileComponent>,
+) {
     fun node(target: TargetComponent): ComponentNode? = profile.component(target)?.let { nodes[it.instanceName] }
 
     companion object {
         suspend fun of(tree: RtcTree, profile: RtsProfile): ResolvedSystem = coroutineScope {
             val found = profile.components.map { c -> async { c to find(tree, c) } }.awaitAll()
-            ResolvedSystem(profile, found.mapNotNull { (c, n) -> n?.let { c.instanceName to it } }.toMap(), found.filter { it.second == null }.map { it.first })
+            ResolvedSystem(
+                profile,
+                found.mapNotNull { (c, n) -> n?.let { c.instanceName to it } }.toMap(),
+                found.filter { it.second == null }.map { it.first },
+            )
         }
 
-        private suspend fun find(tree: RtcTree, c: ProfileComponent): ComponentNode? = try {
-            tree.component("/" + c.pathUri.removePrefix("/")).also { it.refresh() }
-        } catch (e: NotFoundException) {
-            null
-        } catch (e: RtcException) {
-            // A dead registration is as good as missing: there is no component to restore onto.
-            if (runCatching { tree.node("/" + c.pathUri.removePrefix("/")) }.getOrNull() is ZombieNode) null else throw e
-        }
+        private suspend fun find(tree: RtcTree, c: ProfileComponent): ComponentNode? =
+            try {
+                tree.component("/" + c.pathUri.removePrefix("/")).also { it.refresh() }
+            } catch (e: NotFoundException) {
+                null
+            } catch (e: RtcException) {
+                // A dead registration is as good as missing: there is no component to restore onto.
+                if (runCatching { tree.node("/" + c.pathUri.removePrefix("/")) }.getOrNull() is ZombieNode) null
+                else throw e
+            }
     }
 }
 
 /** Restores a profile onto the running system: checks everything first, then changes what differs. */
 internal class SystemRestore(private val tree: RtcTree) {
-    private class PlannedConnection(val connector: PortConnector, val from: Port, val to: Port, val properties: Map<String, String>)
+    private class PlannedConnection(
+        val connector: PortConnector,
+        val from: Port,
+        val to: Port,
+        val properties: Map<String, String>,
+    )
 
     /**
-     * Restores [profile]; with [createMissing], its missing components are created first, and deleted
-     * again if the restore is then refused, so that a refusal still leaves the system as it was. With
-     * [strict], a value outside its constraint refuses the restore; without, it is a warning.
+     * Restores [profile]; with [createMissing], its missing components are created first, and deleted again if the
+     * restore is then refused, so that a refusal still leaves the system as it was. With [strict], a value outside its
+     * constraint refuses the restore; without, it is a warning.
      */
     suspend fun restore(profile: RtsProfile, createMissing: Boolean, strict: Boolean): RestoreReport {
         val found = ResolvedSystem.of(tree, profile)
@@ -65,26 +80,48 @@ internal class SystemRestore(private val tree: RtcTree) {
             val report = restore(ResolvedSystem.of(tree, profile), lines, strict)
             return report.created(made.map { it.path })
         } catch (e: ProfileRefusedException) {
-            val undone = made.reversed().mapNotNull { p -> try { creation.delete(p); null } catch (d: RtcException) { "${p.path} (${d.reason})" } }
-            val after = if (undone.isEmpty()) "the components created for it were deleted again" else "could not delete again ${undone.joinToString()}"
+            val undone =
+                made.reversed().mapNotNull { p ->
+                    try {
+                        creation.delete(p)
+                        null
+                    } catch (d: RtcException) {
+                        "${p.path} (${d.reason})"
+                    }
+                }
+            val after =
+                if (undone.isEmpty()) "the components created for it were deleted again"
+                else "could not delete again ${undone.joinToString()}"
             throw ProfileRefusedException(if (made.isEmpty()) e.reason else "${e.reason}; $after")
         }
     }
 
     private suspend fun restore(system: ResolvedSystem, created: List<String>, strict: Boolean): RestoreReport {
         val profile = system.profile
-        system.missing.firstOrNull { it.isRequired }?.let { throw ProfileRefusedException("required component /${it.pathUri.removePrefix("/")} is not running") }
+        system.missing
+            .firstOrNull { it.isRequired }
+            ?.let {
+                throw ProfileRefusedException("required component /${it.pathUri.removePrefix("/")} is not running")
+            }
         val kept = mutableListOf<String>()
-        val connections = (profile.dataPortConnectors + profile.servicePortConnectors).mapNotNull { plan(system, it, kept) }
+        val connections =
+            (profile.dataPortConnectors + profile.servicePortConnectors).mapNotNull { plan(system, it, kept) }
         val warnings = mutableListOf<String>()
         for (c in profile.components) {
             val node = system.nodes[c.instanceName] ?: continue
             val configuration = node.configuration()
-            ConfigurationRestore.problem(c, configuration, strict)?.let { throw ProfileRefusedException("${node.path}: $it") }
+            ConfigurationRestore.problem(c, configuration, strict)?.let {
+                throw ProfileRefusedException("${node.path}: $it")
+            }
             warnings += ConfigurationRestore.constraintWarnings(c, configuration).map { "${node.path}: $it" }
             for (ec in c.executionContexts) {
-                val handle = ec.id.toIntOrNull() ?: throw ProfileRefusedException("${node.path}: execution context id '${ec.id}' is not a number")
-                if (node.snapshot().context(handle) == null) throw ProfileRefusedException("${node.path}: no execution context $handle")
+                val handle =
+                    ec.id.toIntOrNull()
+                        ?: throw ProfileRefusedException(
+                            "${node.path}: execution context id '${ec.id}' is not a number"
+                        )
+                if (node.snapshot().context(handle) == null)
+                    throw ProfileRefusedException("${node.path}: no execution context $handle")
             }
         }
         val done = created.toMutableList()
@@ -107,34 +144,51 @@ internal class SystemRestore(private val tree: RtcTree) {
     }
 
     /** The connection to make, null when it is there already or an end is an optional missing component. */
-    private suspend fun plan(system: ResolvedSystem, connector: PortConnector, kept: MutableList<String>): PlannedConnection? {
+    private suspend fun plan(
+        system: ResolvedSystem,
+        connector: PortConnector,
+        kept: MutableList<String>,
+    ): PlannedConnection? {
         val fromNode = system.node(connector.source)
         val toNode = system.node(connector.target)
         if (fromNode == null || toNode == null) {
             val missing = listOf(connector.source, connector.target).first { system.node(it) == null }
-            if (system.profile.component(missing)?.isRequired != false) throw ProfileRefusedException("connector '${connector.name}': no component ${missing.instanceName}")
+            if (system.profile.component(missing)?.isRequired != false)
+                throw ProfileRefusedException("connector '${connector.name}': no component ${missing.instanceName}")
             return null
         }
         val from = port(fromNode, connector.source)
         val to = port(toNode, connector.target)
         val wanted = connector.connectionProperties()
         val existing = from.connections()
-        val same = existing.firstOrNull { c -> c.ports.any { it.fullName == "${toNode.snapshot().instanceName}.${to.name}" } }
-        val clash = existing.firstOrNull { it.id == connector.connectorId && connector.connectorId.isNotEmpty() && it !== same }
-        if (clash != null) throw ProfileRefusedException("${from.path}: connector id '${connector.connectorId}' is already used by another connection")
+        val same = existing.firstOrNull { c ->
+            c.ports.any { it.fullName == "${toNode.snapshot().instanceName}.${to.name}" }
+        }
+        val clash = existing.firstOrNull {
+            it.id == connector.connectorId && connector.connectorId.isNotEmpty() && it !== same
+        }
+        if (clash != null)
+            throw ProfileRefusedException(
+                "${from.path}: connector id '${connector.connectorId}' is already used by another connection"
+            )
         if (same != null) {
-            val differs = wanted.filter { (k, v) -> k.startsWith("dataport.") && same.properties[k] != null && same.properties[k] != v }
+            val differs = wanted.filter { (k, v) ->
+                k.startsWith("dataport.") && same.properties[k] != null && same.properties[k] != v
+            }
             if (differs.isNotEmpty()) {
-                throw ProfileRefusedException("${from.path} and ${to.path} are connected with ${differs.keys.joinToString { "$it=${same.properties[it]}" }}, the profile wants ${differs.entries.joinToString { "${it.key}=${it.value}" }}")
+                throw ProfileRefusedException(
+                    "${from.path} and ${to.path} are connected with ${differs.keys.joinToString { "$it=${same.properties[it]}" }}, the profile wants ${differs.entries.joinToString { "${it.key}=${it.value}" }}"
+                )
             }
             kept += "${from.path} to ${to.path}"
             return null
         }
-        val properties = try {
-            from.connectable(listOf(to), wanted)
-        } catch (e: RtcException) {
-            throw ProfileRefusedException("cannot connect ${from.path} to ${to.path}: ${e.reason}")
-        }
+        val properties =
+            try {
+                from.connectable(listOf(to), wanted)
+            } catch (e: RtcException) {
+                throw ProfileRefusedException("cannot connect ${from.path} to ${to.path}: ${e.reason}")
+            }
         return PlannedConnection(connector, from, to, properties)
     }
 

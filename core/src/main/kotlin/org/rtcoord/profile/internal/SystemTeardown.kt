@@ -13,10 +13,14 @@ internal class SystemTeardown(private val tree: RtcTree) {
             val to = system.node(connector.target) ?: continue
             val port = connector.source.shortPortName?.takeIf { from.snapshot().port(it) != null } ?: continue
             val toName = "${to.snapshot().instanceName}.${connector.target.shortPortName}"
-            from.port(port).connections().filter { c -> c.ports.any { it.fullName == toName } }.forEach { c ->
-                from.port(port).disconnect(c.id)
-                done += "disconnected ${from.path}:$port from ${to.path}:${connector.target.shortPortName}"
-            }
+            from
+                .port(port)
+                .connections()
+                .filter { c -> c.ports.any { it.fullName == toName } }
+                .forEach { c ->
+                    from.port(port).disconnect(c.id)
+                    done += "disconnected ${from.path}:$port from ${to.path}:${connector.target.shortPortName}"
+                }
         }
         return done
     }

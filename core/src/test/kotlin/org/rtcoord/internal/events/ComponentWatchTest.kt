@@ -1,5 +1,6 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -31,13 +32,11 @@ import org.rtcoord.internal.events.ComponentLiveness.Change.Lost
 import org.rtcoord.internal.events.ComponentLiveness.Change.Recovered
 import org.rtcoord.internal.events.ComponentLiveness.Change.Unreachable
 import org.rtcoord.internal.events.ComponentWatch.Timer
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * The component monitor's machine, step by step on a clock the test turns (milliseconds): the timing
- * bugs fixed in the monitor, replayed as the exact sequences that showed them, and the orderings
- * OpenRTM-aist produces (see the fixtures' fidelity table). A real component gives the events their
- * source and the reads their shape; nothing here waits.
+ * The component monitor's machine, step by step on a clock the test turns (milliseconds): the timing bugs fixed in the
+ * monitor, replayed as the exact sequences that showed them, and the orderings OpenRTM-aist produces (see the fixtures'
+ * fidelity table). A real component gives the events their source and the reads their shape; nothing here waits.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class ComponentWatchTest {
@@ -45,40 +44,47 @@ class ComponentWatchTest {
     private val node: ComponentNode = runBlocking { localisation.tree.component(localisation.path("laser0.rtc")) }
     private val base: ComponentSnapshot = runBlocking { node.snapshot() }
 
-    @AfterAll
-    fun stop() = localisation.close()
+    @AfterAll fun stop() = localisation.close()
 
-    private fun found(state: LifeCycle) = base.copy(contexts = base.contexts.take(1).map { it.copy(handle = 0, state = state) })
+    private fun found(state: LifeCycle) =
+        base.copy(contexts = base.contexts.take(1).map { it.copy(handle = 0, state = state) })
 
     /** A lifecycle hint that came at [at]. */
     private fun lifecycle(text: String, at: Long) = WatchInput.Hinted(Hint(HintKind.RTC_STATUS, text), at)
 
-    private fun changed(vararg pairs: Pair<LifeCycle, LifeCycle>): List<RtcEvent> = pairs.map { (from, to) -> StateChanged(node, 0, from, to) }
+    private fun changed(vararg pairs: Pair<LifeCycle, LifeCycle>): List<RtcEvent> = pairs.map { (from, to) ->
+        StateChanged(node, 0, from, to)
+    }
 
     private fun stateEvents(events: List<RtcEvent>) = events.filterIsInstance<StateChanged>()
 
     /** Pushed, with a heartbeat every second and three beats missed at most. */
     private val pushed = EventOptions(WatchMode.PUSH, heartbeat = 1.seconds, missedBeats = 3)
 
-    private fun asking(options: EventOptions, statesOnly: Boolean = true) = WatchNeeds(listOf(options), statesOnly, WatchNeeds.NO_TRAFFIC)
+    private fun asking(options: EventOptions, statesOnly: Boolean = true) =
+        WatchNeeds(listOf(options), statesOnly, WatchNeeds.NO_TRAFFIC)
 
     /** A machine that read the component [state] at 0 ms, observed (hints expected) or polled, watched for states. */
-    private fun watching(state: LifeCycle, observed: Boolean = true): ComponentWatch = ComponentWatch(node, 0).apply {
-        needs = asking(if (observed) pushed else EventOptions(WatchMode.POLL))
-        decide(listOf(WatchInput.Reconfigured), 0)
-        read(found(state), 0, emptyList())
-        if (observed) {
-            attached(Attachment.Attached(ObserverFlavour.OPENRTM), 0)
+    private fun watching(state: LifeCycle, observed: Boolean = true): ComponentWatch =
+        ComponentWatch(node, 0).apply {
+            needs = asking(if (observed) pushed else EventOptions(WatchMode.POLL))
+            decide(listOf(WatchInput.Reconfigured), 0)
             read(found(state), 0, emptyList())
+            if (observed) {
+                attached(Attachment.Attached(ObserverFlavour.OPENRTM), 0)
+                read(found(state), 0, emptyList())
+            }
         }
-    }
 
     @Test
     fun `an activation is published at the read its hint asks for`() {
         val watch = watching(INACTIVE)
         val decision = watch.decide(listOf(lifecycle("ACTIVE:0", 10)), 10)
         assertEquals(setOf(0), (decision.step as WatchStep.ReadStates).handles)
-        assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 11, emptyList()).events))
+        assertEquals(
+            changed(INACTIVE to ACTIVE),
+            stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 11, emptyList()).events),
+        )
     }
 
     @Test
@@ -91,15 +97,29 @@ class ComponentWatchTest {
         assertEquals(listOf(Timer.RECHECK to 2L, Timer.GRACE to 501L).toSet(), first.timers.toSet())
         // A hint-driven read meanwhile arms no second recheck (4452470).
         watch.decide(listOf(WatchInput.Hinted(Hint(HintKind.CONFIGURATION, "UPDATE_CONFIGSET:default"), 1)), 1)
-        assertEquals(emptyList<Pair<Timer, Long>>(), watch.read(found(INACTIVE), 1, emptyList()).timers, "no second recheck, no second grace read")
+        assertEquals(
+            emptyList<Pair<Timer, Long>>(),
+            watch.read(found(INACTIVE), 1, emptyList()).timers,
+            "no second recheck, no second grace read",
+        )
 
-        assertInstanceOf(WatchStep.ReadStates::class.java, watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 2)), 2).step)
+        assertInstanceOf(
+            WatchStep.ReadStates::class.java,
+            watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 2)), 2).step,
+        )
         assertEquals(listOf(Timer.RECHECK to 4L), watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).timers)
         watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 4)), 4)
         assertEquals(listOf(Timer.RECHECK to 8L), watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList()).timers)
         watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 8)), 8)
-        assertEquals(changed(INACTIVE to ACTIVE), stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 8, emptyList()).events))
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.GRACE, 501)), 501).step, "a grace read when they agree reads nothing")
+        assertEquals(
+            changed(INACTIVE to ACTIVE),
+            stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 8, emptyList()).events),
+        )
+        assertEquals(
+            WatchStep.Idle,
+            watch.decide(listOf(WatchInput.Fired(Timer.GRACE, 501)), 501).step,
+            "a grace read when they agree reads nothing",
+        )
     }
 
     @Test
@@ -130,7 +150,10 @@ class ComponentWatchTest {
         val watch = watching(ACTIVE)
         watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val late = listOf(lifecycle("ERROR:0", 1), lifecycle("INACTIVE:0", 1))
-        assertEquals(changed(ACTIVE to ERROR, ERROR to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 1, late).events))
+        assertEquals(
+            changed(ACTIVE to ERROR, ERROR to INACTIVE),
+            stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 1, late).events),
+        )
     }
 
     @Test
@@ -142,20 +165,42 @@ class ComponentWatchTest {
         assertEquals(setOf(Timer.SETTLED to 2L, Timer.HOLD_LIMIT to 500L), held.timers.toSet())
         val marker = held.marker
         assertNotNull(marker, "the read that holds sends a marker")
-        val decision = watch.decide(listOf(lifecycle("ERROR:0", 2), lifecycle("INACTIVE:0", 2), WatchInput.MarkerBack(marker!!)), 2)
+        val decision =
+            watch.decide(
+                listOf(lifecycle("ERROR:0", 2), lifecycle("INACTIVE:0", 2), WatchInput.MarkerBack(marker!!)),
+                2,
+            )
         assertInstanceOf(WatchStep.ReadStates::class.java, decision.step)
-        assertEquals(changed(ACTIVE to ERROR, ERROR to INACTIVE), stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).events))
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 3).step, "the hold's timer ended with it")
+        assertEquals(
+            changed(ACTIVE to ERROR, ERROR to INACTIVE),
+            stateEvents(watch.statesRead(mapOf(0 to INACTIVE), 2, emptyList()).events),
+        )
+        assertEquals(
+            WatchStep.Idle,
+            watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 3).step,
+            "the hold's timer ended with it",
+        )
     }
 
     @Test
     fun `a deactivation is held until it settled, counted from its hint, and the marker sent after its read is back`() {
         val watch = watching(ACTIVE)
-        assertEquals(setOf(0), (watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0).step as WatchStep.ReadStates).handles)
+        assertEquals(
+            setOf(0),
+            (watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0).step as WatchStep.ReadStates).handles,
+        )
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
         assertTrue(held.events.none { it is StateChanged })
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 2).step, "settled, but its marker is not back")
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 3).step, "settled and back: published without reading again")
+        assertEquals(
+            WatchStep.Idle,
+            watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 2).step,
+            "settled, but its marker is not back",
+        )
+        assertEquals(
+            WatchStep.Settle,
+            watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 3).step,
+            "settled and back: published without reading again",
+        )
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(3, emptyList()).events))
     }
 
@@ -164,7 +209,11 @@ class ComponentWatchTest {
         val watch = watching(ACTIVE)
         watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 1).step, "back, but not settled yet")
+        assertEquals(
+            WatchStep.Idle,
+            watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 1).step,
+            "back, but not settled yet",
+        )
         assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.Fired(Timer.SETTLED, 2)), 2).step)
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(2, emptyList()).events))
     }
@@ -174,9 +223,16 @@ class ComponentWatchTest {
         val watch = watching(ACTIVE)
         watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!), WatchInput.Fired(Timer.SETTLED, 2)), 2).step)
+        assertEquals(
+            WatchStep.Settle,
+            watch.decide(listOf(WatchInput.MarkerBack(held.marker!!), WatchInput.Fired(Timer.SETTLED, 2)), 2).step,
+        )
         val settling = watch.settle(2, listOf(lifecycle("ERROR:0", 2)))
-        assertEquals(emptyList<StateChanged>(), stateEvents(settling.events), "no deactivation once its ERROR hint is in")
+        assertEquals(
+            emptyList<StateChanged>(),
+            stateEvents(settling.events),
+            "no deactivation once its ERROR hint is in",
+        )
         assertTrue(settling.readAgain, "the hints lead past the last read: read again now")
         assertEquals(changed(ACTIVE to ERROR), stateEvents(watch.statesRead(mapOf(0 to ERROR), 3, emptyList()).events))
     }
@@ -189,7 +245,11 @@ class ComponentWatchTest {
         assertNull(watch.statesRead(mapOf(0 to ACTIVE), 1, emptyList()).marker)
         watch.decide(listOf(WatchInput.Fired(Timer.RECHECK, 2)), 4)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList())
-        assertEquals(emptyList<StateChanged>(), stateEvents(held.events), "settled, but the hints before the read are not known to be in")
+        assertEquals(
+            emptyList<StateChanged>(),
+            stateEvents(held.events),
+            "settled, but the hints before the read are not known to be in",
+        )
         assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 5).step)
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(5, emptyList()).events))
     }
@@ -208,7 +268,11 @@ class ComponentWatchTest {
         watch.decide(listOf(lifecycle("INACTIVE:0", 520)), 520)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 521, emptyList())
         assertTrue(held.events.none { it is StateChanged })
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 530).step, "settled and back: published at once")
+        assertEquals(
+            WatchStep.Settle,
+            watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 530).step,
+            "settled and back: published at once",
+        )
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(530, emptyList()).events))
     }
 
@@ -219,15 +283,31 @@ class ComponentWatchTest {
         val watch = watching(ACTIVE)
         watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 0)
         val first = watch.statesRead(mapOf(0 to INACTIVE), 1, emptyList())
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(first.marker!!), WatchInput.Fired(Timer.SETTLED, 2)), 2).step)
+        assertEquals(
+            WatchStep.Settle,
+            watch.decide(listOf(WatchInput.MarkerBack(first.marker!!), WatchInput.Fired(Timer.SETTLED, 2)), 2).step,
+        )
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(2, emptyList()).events))
         watch.decide(listOf(lifecycle("ACTIVE:0", 300)), 300)
         watch.statesRead(mapOf(0 to ACTIVE), 301, emptyList())
         watch.decide(listOf(lifecycle("INACTIVE:0", 499)), 499)
         val second = watch.statesRead(mapOf(0 to INACTIVE), 500, emptyList())
-        assertEquals(setOf(Timer.SETTLED to 501L, Timer.HOLD_LIMIT to 999L), second.timers.toSet(), "the second hold's own timers")
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT, 500)), 500).step, "the first hold's limit tells nothing")
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(second.marker!!), WatchInput.Fired(Timer.SETTLED, 501)), 501).step)
+        assertEquals(
+            setOf(Timer.SETTLED to 501L, Timer.HOLD_LIMIT to 999L),
+            second.timers.toSet(),
+            "the second hold's own timers",
+        )
+        assertEquals(
+            WatchStep.Idle,
+            watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT, 500)), 500).step,
+            "the first hold's limit tells nothing",
+        )
+        assertEquals(
+            WatchStep.Settle,
+            watch
+                .decide(listOf(WatchInput.MarkerBack(second.marker!!), WatchInput.Fired(Timer.SETTLED, 501)), 501)
+                .step,
+        )
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(501, emptyList()).events))
     }
 
@@ -238,7 +318,11 @@ class ComponentWatchTest {
         watch.decide(listOf(lifecycle("INACTIVE:0", 0)), 3)
         val held = watch.statesRead(mapOf(0 to INACTIVE), 4, emptyList())
         assertTrue(held.events.none { it is StateChanged }, "held for its marker")
-        assertEquals(WatchStep.Settle, watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 4).step, "settled 2 ms after the hint came: published once back")
+        assertEquals(
+            WatchStep.Settle,
+            watch.decide(listOf(WatchInput.MarkerBack(held.marker!!)), 4).step,
+            "settled 2 ms after the hint came: published once back",
+        )
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.settle(4, emptyList()).events))
     }
 
@@ -250,7 +334,11 @@ class ComponentWatchTest {
         // Read again while held (a grace read, say): the hints before this read are what the hold waits for now.
         val second = watch.statesRead(mapOf(0 to INACTIVE), 3, emptyList()).marker!!
         assertTrue(first != second)
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.MarkerBack(first), WatchInput.Fired(Timer.SETTLED, 2)), 10).step, "the first marker tells nothing of what came before the second read")
+        assertEquals(
+            WatchStep.Idle,
+            watch.decide(listOf(WatchInput.MarkerBack(first), WatchInput.Fired(Timer.SETTLED, 2)), 10).step,
+            "the first marker tells nothing of what came before the second read",
+        )
         assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.HOLD_LIMIT, 500)), 500).step)
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 500, emptyList()).events))
     }
@@ -265,7 +353,10 @@ class ComponentWatchTest {
     fun `a failing on_activated is announced as ERROR alone, from INACTIVE`() {
         val watch = watching(INACTIVE)
         watch.decide(listOf(lifecycle("ERROR:0", 0)), 0)
-        assertEquals(changed(INACTIVE to ERROR), stateEvents(watch.statesRead(mapOf(0 to ERROR), 1, emptyList()).events))
+        assertEquals(
+            changed(INACTIVE to ERROR),
+            stateEvents(watch.statesRead(mapOf(0 to ERROR), 1, emptyList()).events),
+        )
     }
 
     @Test
@@ -292,7 +383,11 @@ class ComponentWatchTest {
         val lost = overdue(3200)
         assertEquals(listOf(HeartbeatLost(node, 3200)), lost.events)
         assertEquals(WatchStep.ReadAll, lost.step)
-        assertEquals(listOf(Recovered), watch.read(found(ACTIVE), 3201, emptyList()).changes, "answering again: its observer is attached anew")
+        assertEquals(
+            listOf(Recovered),
+            watch.read(found(ACTIVE), 3201, emptyList()).changes,
+            "answering again: its observer is attached anew",
+        )
     }
 
     @Test
@@ -308,7 +403,11 @@ class ComponentWatchTest {
         suspected.decide(listOf(lifecycle("ACTIVE:0", 500)), 500)
         assertEquals(listOf(BecameZombie(node, refused)), suspected.failed(refused, 501).events)
         assertEquals(emptyList<RtcEvent>(), suspected.failed(refused, 700).events, "probes that fail are no news")
-        assertEquals(WatchStep.ReadAll, suspected.decide(listOf(lifecycle("ACTIVE:0", 800)), 800).step, "a hint does not bring it back: a whole read does")
+        assertEquals(
+            WatchStep.ReadAll,
+            suspected.decide(listOf(lifecycle("ACTIVE:0", 800)), 800).step,
+            "a hint does not bring it back: a whole read does",
+        )
     }
 
     @Test
@@ -317,7 +416,11 @@ class ComponentWatchTest {
         watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT()), 100)
         val back = watch.read(found(INACTIVE), 200, emptyList())
         assertEquals(listOf(Recovered), back.changes)
-        assertEquals(WatchStep.Detach, back.arranged.next, "a component back may have dropped its observer: it is attached anew")
+        assertEquals(
+            WatchStep.Detach,
+            back.arranged.next,
+            "a component back may have dropped its observer: it is attached anew",
+        )
         assertEquals(changed(ACTIVE to INACTIVE), stateEvents(back.events))
     }
 
@@ -329,7 +432,11 @@ class ComponentWatchTest {
         assertEquals(listOf(ComponentFinalized(node)), outcome.events)
         assertEquals(listOf(Finalized), outcome.changes)
         assertEquals(Arranged(WatchStep.Drop, WatchSchedule.OFF), outcome.arranged)
-        assertEquals(WatchStep.Idle, watch.decide(listOf(WatchInput.Ticked), 12).step, "nothing is read once it is gone")
+        assertEquals(
+            WatchStep.Idle,
+            watch.decide(listOf(WatchInput.Ticked), 12).step,
+            "nothing is read once it is gone",
+        )
     }
 
     @Test

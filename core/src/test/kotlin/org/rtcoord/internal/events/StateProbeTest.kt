@@ -2,6 +2,10 @@ package org.rtcoord.internal.events
 
 import RTC.RTObject
 import RTC.RTObjectHelper
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.LinkedBlockingQueue
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicInteger
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
@@ -19,10 +23,6 @@ import org.rtcoord.runtime.RuntimeOrb
 import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
 import org.rtcoord.runtime.naming.NamingService
-import java.util.concurrent.CompletableFuture
-import java.util.concurrent.LinkedBlockingQueue
-import java.util.concurrent.TimeUnit
-import java.util.concurrent.atomic.AtomicInteger
 
 /** The poll read that needs no thread and no monitor, over real IIOP to a fixture component. */
 class StateProbeTest {
@@ -33,7 +33,8 @@ class StateProbeTest {
     private val requests = AsyncRequests(client.orb, scope)
 
     private val fixture: RuntimeComponent = runtime.create(Scenarios.relay, "subject0").also { it.activate() }
-    private val component: RTObject = RTObjectHelper.narrow(client.orb.string_to_object(client.orb.object_to_string(fixture.ref)))
+    private val component: RTObject =
+        RTObjectHelper.narrow(client.orb.string_to_object(client.orb.object_to_string(fixture.ref)))
     private val context = component.get_owned_contexts().single()
 
     private val answered = AtomicInteger()
@@ -49,7 +50,8 @@ class StateProbeTest {
         naming.close()
     }
 
-    private fun expect(state: LifeCycle, epoch: Long = 1) = probe.expect(StateProbe.Expectation(listOf(0 to context), listOf(state), epoch))
+    private fun expect(state: LifeCycle, epoch: Long = 1) =
+        probe.expect(StateProbe.Expectation(listOf(0 to context), listOf(state), epoch))
 
     /** Sends a probe and returns what ends it. */
     private fun send(): CompletableFuture<Unit> {

@@ -1,5 +1,9 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.hours
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertNull
@@ -13,15 +17,11 @@ import org.rtcoord.internal.events.ComponentLiveness.Change
 import org.rtcoord.internal.events.ComponentLiveness.State.ANSWERING
 import org.rtcoord.internal.events.ComponentLiveness.State.FINALIZED
 import org.rtcoord.internal.events.ComponentLiveness.State.UNREACHABLE
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.hours
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /**
- * How a component is watched, step by step as its monitor carries the steps out: attaching, detaching
- * and attaching its observer anew, probing it while it does not answer, and the method that says so.
- * Each step is what the machine returns; the test plays the monitor, and nothing here waits.
+ * How a component is watched, step by step as its monitor carries the steps out: attaching, detaching and attaching its
+ * observer anew, probing it while it does not answer, and the method that says so. Each step is what the machine
+ * returns; the test plays the monitor, and nothing here waits.
  */
 class WatchArrangementTest {
     private val push = EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds)
@@ -29,16 +29,18 @@ class WatchArrangementTest {
     private val attached = Attachment.Attached(ObserverFlavour.OPENRTM)
     private val services = "IDL:OpenRTM/ComponentObserver:1.0"
 
-    private fun asking(vararg options: EventOptions, traffic: Duration = 1.hours) = WatchNeeds(options.toList(), statesOnly = true, traffic = traffic)
+    private fun asking(vararg options: EventOptions, traffic: Duration = 1.hours) =
+        WatchNeeds(options.toList(), statesOnly = true, traffic = traffic)
 
     /** An arrangement whose registrations ask for [options], carried through to its observer attached. */
-    private fun observing(vararg options: EventOptions): WatchArrangement = WatchArrangement().apply {
-        needs = asking(*options)
-        reconfigured()
-        answered(recovered = false, ANSWERING, services)
-        attached(attached, ANSWERING)
-        answered(recovered = false, ANSWERING, services)
-    }
+    private fun observing(vararg options: EventOptions): WatchArrangement =
+        WatchArrangement().apply {
+            needs = asking(*options)
+            reconfigured()
+            answered(recovered = false, ANSWERING, services)
+            attached(attached, ANSWERING)
+            answered(recovered = false, ANSWERING, services)
+        }
 
     @Test
     fun `a push registration attaches an observer after a whole read, reads again, and then says it is pushed`() {
@@ -50,13 +52,21 @@ class WatchArrangementTest {
         assertEquals(200.milliseconds, attach.heartbeat)
         assertEquals(1.hours, attach.traffic, "no registration asked for traffic")
         assertFalse(arrangement.observed)
-        assertEquals(WatchStep.ReadAll, arrangement.attached(attached, ANSWERING).next, "a change before the attachment sent its hint to nobody")
+        assertEquals(
+            WatchStep.ReadAll,
+            arrangement.attached(attached, ANSWERING).next,
+            "a change before the attachment sent its hint to nobody",
+        )
         assertTrue(arrangement.observed)
         val settled = arrangement.answered(recovered = false, ANSWERING, services)
         assertEquals(WatchStep.Idle, settled.next)
         assertEquals(WatchMethod.Pushed(ObserverFlavour.OPENRTM, 200.milliseconds, null), settled.method)
         assertEquals(WatchSchedule(null, 200.milliseconds), settled.schedule)
-        assertEquals(Arranged.NOTHING, arrangement.answered(recovered = false, ANSWERING, services), "reads after settling arrange nothing")
+        assertEquals(
+            Arranged.NOTHING,
+            arrangement.answered(recovered = false, ANSWERING, services),
+            "reads after settling arrange nothing",
+        )
     }
 
     @Test
@@ -67,7 +77,13 @@ class WatchArrangementTest {
         arrangement.answered(recovered = false, ANSWERING, "")
         val settled = arrangement.attached(Attachment.NotOffered(emptyList()), ANSWERING)
         assertEquals(WatchStep.Idle, settled.next, "nothing attached: nothing to read again")
-        assertEquals(WatchMethod.Polled(500.milliseconds, "it offers no ComponentObserver (sdo.service.consumer.available_services: none)"), settled.method)
+        assertEquals(
+            WatchMethod.Polled(
+                500.milliseconds,
+                "it offers no ComponentObserver (sdo.service.consumer.available_services: none)",
+            ),
+            settled.method,
+        )
         assertEquals(WatchSchedule(500.milliseconds, 1.seconds), settled.schedule)
         assertFalse(arrangement.observed)
     }
@@ -110,7 +126,11 @@ class WatchArrangementTest {
         val settled = arrangement.failed(listOf(Change.Unreachable), UNREACHABLE)
         assertEquals(WatchStep.Idle, settled.next, "no observer is tried on a component that does not answer")
         assertEquals(WatchMethod.Unwatched("attaching an observer failed: it does not answer"), settled.method)
-        assertEquals(WatchSchedule(200.milliseconds, 200.milliseconds), settled.schedule, "probed at its heartbeat until it answers")
+        assertEquals(
+            WatchSchedule(200.milliseconds, 200.milliseconds),
+            settled.schedule,
+            "probed at its heartbeat until it answers",
+        )
         assertEquals(200.milliseconds, settled.askManagersEvery)
     }
 
@@ -123,7 +143,10 @@ class WatchArrangementTest {
         assertEquals(WatchStep.Detach, back.next)
         assertTrue(arrangement.detached(ANSWERING, services).next is WatchStep.Attach)
         assertEquals(WatchStep.ReadAll, arrangement.attached(attached, ANSWERING).next)
-        assertEquals(WatchSchedule(null, 200.milliseconds), arrangement.answered(recovered = false, ANSWERING, services).schedule)
+        assertEquals(
+            WatchSchedule(null, 200.milliseconds),
+            arrangement.answered(recovered = false, ANSWERING, services).schedule,
+        )
     }
 
     @Test
@@ -136,17 +159,27 @@ class WatchArrangementTest {
         assertEquals(WatchStep.Detach, arrangement.answered(recovered = true, ANSWERING, services).next)
         assertTrue(arrangement.detached(ANSWERING, services).next is WatchStep.Attach)
         arrangement.attached(attached, ANSWERING)
-        assertEquals(WatchSchedule(null, 200.milliseconds), arrangement.answered(recovered = false, ANSWERING, services).schedule)
+        assertEquals(
+            WatchSchedule(null, 200.milliseconds),
+            arrangement.answered(recovered = false, ANSWERING, services).schedule,
+        )
         assertTrue(arrangement.observed)
     }
 
     @Test
     fun `a finalized component has its observer dropped and its timers stopped`() {
         val arrangement = observing(push)
-        assertEquals(Arranged(WatchStep.Drop, WatchSchedule.OFF), arrangement.failed(listOf(Change.Finalized), FINALIZED))
+        assertEquals(
+            Arranged(WatchStep.Drop, WatchSchedule.OFF),
+            arrangement.failed(listOf(Change.Finalized), FINALIZED),
+        )
         assertFalse(arrangement.observed)
         arrangement.reconfigured()
-        assertEquals(Arranged.NOTHING, arrangement.failed(emptyList(), FINALIZED), "nothing is arranged for a component that is gone")
+        assertEquals(
+            Arranged.NOTHING,
+            arrangement.failed(emptyList(), FINALIZED),
+            "nothing is arranged for a component that is gone",
+        )
     }
 
     @Test

@@ -1,5 +1,7 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Test
@@ -7,8 +9,6 @@ import org.rtcoord.EventOptions
 import org.rtcoord.ObserverFlavour
 import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMode
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
 
 /** How a component is watched, from what its registrations ask for and how attaching an observer went. */
 class WatchDecisionTest {
@@ -20,29 +20,50 @@ class WatchDecisionTest {
 
     @Test
     fun `an attached observer pushes, at the shortest heartbeat asked for, polled too only where asked`() {
-        assertEquals(WatchMethod.Pushed(ObserverFlavour.OMG, 1.seconds, null), decideWatchMethod(listOf(auto, push), attached))
-        assertEquals(WatchMethod.Pushed(ObserverFlavour.OMG, 2.seconds, 100.milliseconds), decideWatchMethod(listOf(auto, poll), attached))
+        assertEquals(
+            WatchMethod.Pushed(ObserverFlavour.OMG, 1.seconds, null),
+            decideWatchMethod(listOf(auto, push), attached),
+        )
+        assertEquals(
+            WatchMethod.Pushed(ObserverFlavour.OMG, 2.seconds, 100.milliseconds),
+            decideWatchMethod(listOf(auto, poll), attached),
+        )
     }
 
     @Test
     fun `polling asked for says so, whatever the component offers`() {
-        assertEquals(WatchMethod.Polled(100.milliseconds, "polling was asked for"), decideWatchMethod(listOf(poll), Attachment.NotTried))
+        assertEquals(
+            WatchMethod.Polled(100.milliseconds, "polling was asked for"),
+            decideWatchMethod(listOf(poll), Attachment.NotTried),
+        )
         // An observer left attached for a registration that has gone does not count.
-        assertEquals(WatchMethod.Polled(100.milliseconds, "polling was asked for"), decideWatchMethod(listOf(poll), attached))
+        assertEquals(
+            WatchMethod.Polled(100.milliseconds, "polling was asked for"),
+            decideWatchMethod(listOf(poll), attached),
+        )
     }
 
     @Test
     fun `without an observer, automatic registrations are polled and say why`() {
         assertEquals(
-            WatchMethod.Polled(500.milliseconds, "it offers no ComponentObserver (sdo.service.consumer.available_services: none)"),
+            WatchMethod.Polled(
+                500.milliseconds,
+                "it offers no ComponentObserver (sdo.service.consumer.available_services: none)",
+            ),
             decideWatchMethod(listOf(auto), notOffered),
         )
         assertEquals(
-            WatchMethod.Polled(100.milliseconds, "it refused the OpenRTM::ComponentObserver and the RTC::ComponentObserver (FSM4RTC)"),
+            WatchMethod.Polled(
+                100.milliseconds,
+                "it refused the OpenRTM::ComponentObserver and the RTC::ComponentObserver (FSM4RTC)",
+            ),
             decideWatchMethod(listOf(auto, poll), Attachment.Refused(ObserverFlavour.values().toList())),
         )
         assertEquals(
-            WatchMethod.Polled(500.milliseconds, "attaching an observer failed: get_configuration: unreachable (TRANSIENT)"),
+            WatchMethod.Polled(
+                500.milliseconds,
+                "attaching an observer failed: get_configuration: unreachable (TRANSIENT)",
+            ),
             decideWatchMethod(listOf(auto), Attachment.Failed("get_configuration: unreachable (TRANSIENT)")),
         )
     }
@@ -50,7 +71,9 @@ class WatchDecisionTest {
     @Test
     fun `push alone without an observer watches nothing, and says why`() {
         assertEquals(
-            WatchMethod.Unwatched("it offers no ComponentObserver (sdo.service.consumer.available_services: IDL:other/Service:1.0)"),
+            WatchMethod.Unwatched(
+                "it offers no ComponentObserver (sdo.service.consumer.available_services: IDL:other/Service:1.0)"
+            ),
             decideWatchMethod(listOf(push), Attachment.NotOffered(listOf("IDL:other/Service:1.0"))),
         )
     }

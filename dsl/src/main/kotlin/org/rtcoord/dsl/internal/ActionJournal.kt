@@ -7,9 +7,9 @@ import kotlin.coroutines.CoroutineContext
 internal typealias Undo = suspend () -> Unit
 
 /**
- * The actions a handler completed so far, in order, each with its [Undo] where it has one: what a
- * [ReactionFailure] reports and undoes. Carried in the handler's coroutine context, so that the actions
- * of references (which know nothing of the handler) record themselves.
+ * The actions a handler completed so far, in order, each with its [Undo] where it has one: what a [ReactionFailure]
+ * reports and undoes. Carried in the handler's coroutine context, so that the actions of references (which know nothing
+ * of the handler) record themselves.
  */
 internal class ActionJournal : AbstractCoroutineContextElement(ActionJournal) {
     /** One completed action: its log line, and how to undo it (null: it cannot be undone). */
@@ -17,7 +17,8 @@ internal class ActionJournal : AbstractCoroutineContextElement(ActionJournal) {
 
     private val entries = java.util.concurrent.CopyOnWriteArrayList<Entry>()
 
-    val done: List<Entry> get() = entries.toList()
+    val done: List<Entry>
+        get() = entries.toList()
 
     fun record(what: String, undo: Undo?) {
         entries += Entry(what, undo)

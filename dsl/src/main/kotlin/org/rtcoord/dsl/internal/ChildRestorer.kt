@@ -10,15 +10,20 @@ import org.rtcoord.RtcTree
 import org.rtcoord.dsl.portOf
 
 /**
- * Brings a supervised component back when it is gone: re-creates it through the managers that hosted
- * it, then restores its configuration set and the connections the [record] holds for it.
+ * Brings a supervised component back when it is gone: re-creates it through the managers that hosted it, then restores
+ * its configuration set and the connections the [record] holds for it.
  */
-internal class ChildRestorer(private val engine: Engine, private val record: SupervisionRecord, private val log: RecoveryLog) {
-    private val tree: RtcTree get() = engine.tree
+internal class ChildRestorer(
+    private val engine: Engine,
+    private val record: SupervisionRecord,
+    private val log: RecoveryLog,
+) {
+    private val tree: RtcTree
+        get() = engine.tree
 
     /**
-     * Re-creates [child] through its managers and makes its names (and so whatever watches them) follow
-     * the new component; returns it, or null if no manager made it. The caller then [restore]s it.
+     * Re-creates [child] through its managers and makes its names (and so whatever watches them) follow the new
+     * component; returns it, or null if no manager made it. The caller then [restore]s it.
      */
     suspend fun recreate(child: SupervisedChild, reason: String): ComponentNode? {
         val old = child.node
@@ -36,9 +41,9 @@ internal class ChildRestorer(private val engine: Engine, private val record: Sup
     }
 
     /**
-     * The component someone else re-created in place of [failed] (by hand, another tool), which [child]'s
-     * name refers to from now on and is recorded as it is; null if its name still refers to [failed] and
-     * nothing replaced it. Asks the run's [Identities], which may have followed it already.
+     * The component someone else re-created in place of [failed] (by hand, another tool), which [child]'s name refers
+     * to from now on and is recorded as it is; null if its name still refers to [failed] and nothing replaced it. Asks
+     * the run's [Identities], which may have followed it already.
      */
     suspend fun replacement(child: SupervisedChild, failed: ComponentNode): ComponentNode? {
         if (child.node.isSameComponent(failed)) engine.identities.successor(child.ref.selector, failed) ?: return null
@@ -85,10 +90,12 @@ internal class ChildRestorer(private val engine: Engine, private val record: Sup
             if (values == null) {
                 node.addConfigurationSet(recorded.set, recorded.values)
             } else {
-                recorded.values.filter { (parameter, value) -> values[parameter] != value }.forEach { (parameter, value) ->
-                    log.line("set ${node.path} parameter $parameter=$value in ${recorded.set}")
-                    node.setParameter(parameter, value, recorded.set)
-                }
+                recorded.values
+                    .filter { (parameter, value) -> values[parameter] != value }
+                    .forEach { (parameter, value) ->
+                        log.line("set ${node.path} parameter $parameter=$value in ${recorded.set}")
+                        node.setParameter(parameter, value, recorded.set)
+                    }
             }
             if (current.activeSet != recorded.set) node.activateConfigurationSet(recorded.set)
         }
@@ -105,17 +112,20 @@ internal class ChildRestorer(private val engine: Engine, private val record: Sup
             log.attempt("reconnect $connection") {
                 val ports = connection.ends.map { portOf(it) }
                 // Live ports still hold the connector to the dead component: it would stay beside the new one.
-                connection.ends.zip(ports).filter { (end, _) -> !(end is RecordedConnection.End.Supervised && end.child === child) }
+                connection.ends
+                    .zip(ports)
+                    .filter { (end, _) -> !(end is RecordedConnection.End.Supervised && end.child === child) }
                     .forEach { (_, port) -> removeStale(port, connection.id) }
                 connection.id = ports.first().connect(ports.drop(1), connection.properties, connection.name).id
             }
         }
     }
 
-    private suspend fun portOf(end: RecordedConnection.End): Port = when (end) {
-        is RecordedConnection.End.Supervised -> end.child.node.port(end.port)
-        is RecordedConnection.End.External -> tree.port(end.path.toString())
-    }
+    private suspend fun portOf(end: RecordedConnection.End): Port =
+        when (end) {
+            is RecordedConnection.End.Supervised -> end.child.node.port(end.port)
+            is RecordedConnection.End.External -> tree.port(end.path.toString())
+        }
 
     private suspend fun removeStale(port: Port, id: String) {
         if (port.connections().none { it.id == id }) return

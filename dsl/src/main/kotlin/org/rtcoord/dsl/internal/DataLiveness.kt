@@ -1,13 +1,17 @@
 package org.rtcoord.dsl.internal
 
 /**
- * Whether a port's data went silent or slow, from the times samples arrived and checks of the
- * component's state (times in milliseconds, from any monotonic clock). Only time while the component
- * is ACTIVE counts: a component not ACTIVE is expected to send nothing, and its silence starts when it
- * is seen ACTIVE again. Each silence or drop is reported once; a sample (or a rate back at its floor)
- * ends it.
+ * Whether a port's data went silent or slow, from the times samples arrived and checks of the component's state (times
+ * in milliseconds, from any monotonic clock). Only time while the component is ACTIVE counts: a component not ACTIVE is
+ * expected to send nothing, and its silence starts when it is seen ACTIVE again. Each silence or drop is reported once;
+ * a sample (or a rate back at its floor) ends it.
  */
-internal class DataLiveness(start: Long, private val silenceMillis: Long?, private val minRate: Double?, private val windowMillis: Long = 1000) {
+internal class DataLiveness(
+    start: Long,
+    private val silenceMillis: Long?,
+    private val minRate: Double?,
+    private val windowMillis: Long = 1000,
+) {
     private var lastSample = start
     private var countingSince = start
     private val arrivals = ArrayDeque<Long>()
@@ -51,7 +55,9 @@ internal class DataLiveness(start: Long, private val silenceMillis: Long?, priva
     /** The outcome of a check. */
     sealed class Finding {
         object NOTHING : Finding()
+
         data class Silent(val millis: Long) : Finding()
+
         data class Slow(val rate: Double) : Finding()
     }
 }

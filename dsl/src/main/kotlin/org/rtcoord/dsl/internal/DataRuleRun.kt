@@ -1,5 +1,6 @@
 package org.rtcoord.dsl.internal
 
+import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.isActive
@@ -13,14 +14,12 @@ import org.rtcoord.RtcException
 import org.rtcoord.Subscription
 import org.rtcoord.dsl.DataRule
 import org.rtcoord.dsl.Reaction
-import kotlin.time.Duration.Companion.milliseconds
 
 /**
- * One run of a [DataRule]: taps the port and hands samples to the handler (the newest waiting while it
- * runs), or watches the port's silence and rate with a [DataLiveness] checked a few times per threshold.
- * The port's component is followed through the engine's [Identities]: when it is re-created, the new
- * one's port is tapped in its place. [fire] runs a handler as the coordinator runs any (counted, logged,
- * its failure contained).
+ * One run of a [DataRule]: taps the port and hands samples to the handler (the newest waiting while it runs), or
+ * watches the port's silence and rate with a [DataLiveness] checked a few times per threshold. The port's component is
+ * followed through the engine's [Identities]: when it is re-created, the new one's port is tapped in its place. [fire]
+ * runs a handler as the coordinator runs any (counted, logged, its failure contained).
  */
 internal class DataRuleRun(
     private val rule: DataRule,
@@ -33,11 +32,18 @@ internal class DataRuleRun(
 
     /** Taps the port; fails as the tap does (no such port, not an out-port). */
     suspend fun start() {
-        val listener = when (rule) {
-            is DataRule.Samples<*> -> samples(rule)
-            is DataRule.Silence, is DataRule.RateBelow -> watchLiveness()
-        }
-        following = engine.identities.listen(rule.port.component.selector, emptySet(), prepare = { node -> tap(node, listener) }) {}
+        val listener =
+            when (rule) {
+                is DataRule.Samples<*> -> samples(rule)
+                is DataRule.Silence,
+                is DataRule.RateBelow -> watchLiveness()
+            }
+        following =
+            engine.identities.listen(
+                rule.port.component.selector,
+                emptySet(),
+                prepare = { node -> tap(node, listener) },
+            ) {}
     }
 
     fun stop() {
@@ -49,17 +55,19 @@ internal class DataRuleRun(
     private suspend fun tap(node: ComponentNode, listener: DataListener) {
         val first = tapped == null
         tapped?.cancel()
-        tapped = try {
-            node.port(rule.port.name).tap(listener)
-        } catch (e: RtcException) {
-            if (first) throw e
-            engine.log("warning: ${rule.description}: could not tap the re-created component: ${e.message}")
-            null
-        }
+        tapped =
+            try {
+                node.port(rule.port.name).tap(listener)
+            } catch (e: RtcException) {
+                if (first) throw e
+                engine.log("warning: ${rule.description}: could not tap the re-created component: ${e.message}")
+                null
+            }
     }
 
     private fun <T : PortData> samples(rule: DataRule.Samples<T>): DataListener {
-        val queue = HandlerQueue<T>(scope, Overlap.LATEST) { sample -> fire(rule.description) { rule.handler(this, sample) } }
+        val queue =
+            HandlerQueue<T>(scope, Overlap.LATEST) { sample -> fire(rule.description) { rule.handler(this, sample) } }
         return DataListener { data -> if (rule.type.isInstance(data)) queue.offer(rule.type.cast(data)) }
     }
 
@@ -72,14 +80,19 @@ internal class DataRuleRun(
         scope.launch {
             while (isActive) {
                 delay(period)
-                val active = try {
-                    rule.port.component.state() == LifeCycle.ACTIVE
-                } catch (e: RtcException) {
-                    false
-                }
+                val active =
+                    try {
+                        rule.port.component.state() == LifeCycle.ACTIVE
+                    } catch (e: RtcException) {
+                        false
+                    }
                 when (val finding = synchronized(liveness) { liveness.check(now(), active) }) {
-                    is DataLiveness.Finding.Silent -> (rule as DataRule.Silence).let { silent -> fire(rule.description) { silent.handler(this) } }
-                    is DataLiveness.Finding.Slow -> (rule as DataRule.RateBelow).let { slow -> fire(rule.description) { slow.handler(this, finding.rate) } }
+                    is DataLiveness.Finding.Silent ->
+                        (rule as DataRule.Silence).let { silent -> fire(rule.description) { silent.handler(this) } }
+                    is DataLiveness.Finding.Slow ->
+                        (rule as DataRule.RateBelow).let { slow ->
+                            fire(rule.description) { slow.handler(this, finding.rate) }
+                        }
                     DataLiveness.Finding.NOTHING -> Unit
                 }
             }

@@ -1,5 +1,6 @@
 package org.rtcoord.dsl.internal
 
+import java.util.concurrent.CopyOnWriteArrayList
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
@@ -11,21 +12,26 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.Recovered
 import org.rtcoord.RtcEvent
 import org.rtcoord.Subscription
-import java.util.concurrent.CopyOnWriteArrayList
 
 /**
- * One name a running coordinator follows: the component it resolves to now ([node]); while anyone
- * listens, one subscription to the tree for it, whose events go to every listener in the order they
- * happened. When the component dies (a zombie, or finalized) its path is read every poll period until
- * another component is registered there; when it is re-created, found so or told to the [owner] by
- * whoever re-created it, the subscription moves to the new component, each listener having read it first.
+ * One name a running coordinator follows: the component it resolves to now ([node]); while anyone listens, one
+ * subscription to the tree for it, whose events go to every listener in the order they happened. When the component
+ * dies (a zombie, or finalized) its path is read every poll period until another component is registered there; when it
+ * is re-created, found so or told to the [owner] by whoever re-created it, the subscription moves to the new component,
+ * each listener having read it first.
  */
-internal class FollowedComponent(val selector: String, initial: ComponentNode, private val owner: Identities) : AutoCloseable {
+internal class FollowedComponent(val selector: String, initial: ComponentNode, private val owner: Identities) :
+    AutoCloseable {
     /** The component the name refers to now. */
-    @Volatile var node: ComponentNode = initial
+    @Volatile
+    var node: ComponentNode = initial
         private set
 
-    private class Listener(val types: Set<Class<out RtcEvent>>, val prepare: suspend (ComponentNode) -> Unit, val deliver: suspend (RtcEvent) -> Unit) {
+    private class Listener(
+        val types: Set<Class<out RtcEvent>>,
+        val prepare: suspend (ComponentNode) -> Unit,
+        val deliver: suspend (RtcEvent) -> Unit,
+    ) {
         fun wants(event: RtcEvent) = types.any { it.isInstance(event) }
     }
 
@@ -39,11 +45,21 @@ internal class FollowedComponent(val selector: String, initial: ComponentNode, p
     private val types: Set<Class<out RtcEvent>> = LIVENESS + (owner.watched[selector] ?: emptySet())
 
     /** Whether it holds a subscription to the tree. */
-    val subscribed: Boolean get() = subscription != null
+    val subscribed: Boolean
+        get() = subscription != null
 
-    /** Hands [deliver] the events of [types] from the component, and from those that replace it, once [prepare] read each. */
-    suspend fun listen(types: Set<Class<out RtcEvent>>, prepare: suspend (ComponentNode) -> Unit, deliver: suspend (RtcEvent) -> Unit): Subscription {
-        check(types.all { wanted -> this.types.any { it.isAssignableFrom(wanted) } }) { "$selector is not watched for ${types.map { it.simpleName }}" }
+    /**
+     * Hands [deliver] the events of [types] from the component, and from those that replace it, once [prepare] read
+     * each.
+     */
+    suspend fun listen(
+        types: Set<Class<out RtcEvent>>,
+        prepare: suspend (ComponentNode) -> Unit,
+        deliver: suspend (RtcEvent) -> Unit,
+    ): Subscription {
+        check(types.all { wanted -> this.types.any { it.isAssignableFrom(wanted) } }) {
+            "$selector is not watched for ${types.map { it.simpleName }}"
+        }
         val listener = Listener(types, prepare, deliver)
         lock.withLock {
             listener.prepare(node)
@@ -72,7 +88,8 @@ internal class FollowedComponent(val selector: String, initial: ComponentNode, p
     private suspend fun subscribe(target: ComponentNode): Subscription =
         owner.tree.on(target, types, owner.options.queued()) { event ->
             when (event) {
-                is BecameZombie, is ComponentFinalized -> searchSuccessor(target)
+                is BecameZombie,
+                is ComponentFinalized -> searchSuccessor(target)
                 is Recovered -> search?.cancel()
                 else -> Unit
             }
@@ -82,12 +99,13 @@ internal class FollowedComponent(val selector: String, initial: ComponentNode, p
     /** Reads [dead]'s path every poll period until another component is registered there, then follows it. */
     private fun searchSuccessor(dead: ComponentNode) {
         if (search?.isActive == true || closed) return
-        search = owner.scope.launch {
-            while (node.isSameComponent(dead)) {
-                delay(owner.options.pollPeriod)
-                owner.successorAt(dead)
+        search =
+            owner.scope.launch {
+                while (node.isSameComponent(dead)) {
+                    delay(owner.options.pollPeriod)
+                    owner.successorAt(dead)
+                }
             }
-        }
     }
 
     private fun unsubscribe() {
@@ -104,6 +122,7 @@ internal class FollowedComponent(val selector: String, initial: ComponentNode, p
     }
 
     private companion object {
-        val LIVENESS: Set<Class<out RtcEvent>> = setOf(BecameZombie::class.java, ComponentFinalized::class.java, Recovered::class.java)
+        val LIVENESS: Set<Class<out RtcEvent>> =
+            setOf(BecameZombie::class.java, ComponentFinalized::class.java, Recovered::class.java)
     }
 }

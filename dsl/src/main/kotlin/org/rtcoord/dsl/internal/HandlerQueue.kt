@@ -8,24 +8,26 @@ import org.rtcoord.Overlap
 import org.slf4j.LoggerFactory
 
 /**
- * Runs [handler] on the events offered to it, one at a time and in order, in a coroutine of [scope]:
- * each listener of a shared subscription gets its own, so a slow handler delays only itself. An event
- * offered while the handler runs is kept or dropped as [overlap] says. A handler that throws is logged
- * and goes on with the next event.
+ * Runs [handler] on the events offered to it, one at a time and in order, in a coroutine of [scope]: each listener of a
+ * shared subscription gets its own, so a slow handler delays only itself. An event offered while the handler runs is
+ * kept or dropped as [overlap] says. A handler that throws is logged and goes on with the next event.
  */
 internal class HandlerQueue<E>(scope: CoroutineScope, overlap: Overlap, private val handler: suspend (E) -> Unit) {
-    private val pending = Channel<E>(
-        when (overlap) {
-            Overlap.QUEUE -> Channel.UNLIMITED
-            Overlap.LATEST -> Channel.CONFLATED
-            Overlap.SKIP -> Channel.RENDEZVOUS
-        },
-    )
+    private val pending =
+        Channel<E>(
+            when (overlap) {
+                Overlap.QUEUE -> Channel.UNLIMITED
+                Overlap.LATEST -> Channel.CONFLATED
+                Overlap.SKIP -> Channel.RENDEZVOUS
+            }
+        )
 
     init {
         scope.launch {
             for (event in pending) {
-                catchFailure({ handler(event) }) { e -> logger.warn("handler failed on {}: {}", event, e.toString(), e) }
+                catchFailure({ handler(event) }) { e ->
+                    logger.warn("handler failed on {}: {}", event, e.toString(), e)
+                }
             }
         }
     }
@@ -41,7 +43,7 @@ internal class HandlerQueue<E>(scope: CoroutineScope, overlap: Overlap, private 
 }
 
 /**
- * These options with every event queued: a subscription shared by several listeners must lose nothing;
- * the listeners that drop events under load do so in their own [HandlerQueue].
+ * These options with every event queued: a subscription shared by several listeners must lose nothing; the listeners
+ * that drop events under load do so in their own [HandlerQueue].
  */
 internal fun EventOptions.queued(): EventOptions = newBuilder().overlap(Overlap.QUEUE).build()

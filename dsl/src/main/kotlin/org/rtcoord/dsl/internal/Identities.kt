@@ -2,6 +2,7 @@
 
 package org.rtcoord.dsl.internal
 
+import java.util.concurrent.ConcurrentHashMap
 import kotlinx.coroutines.CoroutineScope
 import org.rtcoord.AmbiguousNameException
 import org.rtcoord.ComponentNode
@@ -15,19 +16,18 @@ import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
 import org.rtcoord.internal.componentsFound
-import java.util.concurrent.ConcurrentHashMap
 
 /**
- * The one owner of "which component is this" in a running coordinator: resolves what a script names
- * (a path, a name found on any name server, or a pattern that matches one component) and follows each
- * name to the component that replaces it when it is re-created, whoever re-creates it (a supervisor, a
- * handler, someone by hand); a pattern listened to covers every component that matches it, including
- * those that appear later (see [FollowedPattern]). Those who need to know what a name refers to now (a
- * supervisor) ask it and keep no copy. Each name or pattern listened to has one subscription to the tree,
- * shared by every rule, machine and supervisor that listens to it (see [FollowedComponent]).
+ * The one owner of "which component is this" in a running coordinator: resolves what a script names (a path, a name
+ * found on any name server, or a pattern that matches one component) and follows each name to the component that
+ * replaces it when it is re-created, whoever re-creates it (a supervisor, a handler, someone by hand); a pattern
+ * listened to covers every component that matches it, including those that appear later (see [FollowedPattern]). Those
+ * who need to know what a name refers to now (a supervisor) ask it and keep no copy. Each name or pattern listened to
+ * has one subscription to the tree, shared by every rule, machine and supervisor that listens to it (see
+ * [FollowedComponent]).
  *
- * @param watched the events the plan listens to, by name: a name's subscription asks the tree for these
- *   alone, so a component only rules on states watch is read for its states alone.
+ * @param watched the events the plan listens to, by name: a name's subscription asks the tree for these alone, so a
+ *   component only rules on states watch is read for its states alone.
  */
 internal class Identities(
     val tree: RtcTree,
@@ -40,7 +40,8 @@ internal class Identities(
     private val patterns = ConcurrentHashMap<String, FollowedPattern>()
 
     /** How many subscriptions to the tree the followed names and patterns hold now. */
-    val subscriptions: Int get() = names.values.count { it.subscribed } + patterns.values.count { it.subscribed }
+    val subscriptions: Int
+        get() = names.values.count { it.subscribed } + patterns.values.count { it.subscribed }
 
     /** The one component [selector] names, as resolved before or resolved now. */
     suspend fun node(selector: String): ComponentNode = followed(selector).node
@@ -50,9 +51,9 @@ internal class Identities(
         if (isPattern(selector)) matching(selector) else listOf(node(selector))
 
     /**
-     * Calls [listener] with every event of [types] from the component [selector] names, in order, and
-     * then from each component that replaces it. [prepare] reads what the listener follows of a component
-     * before that component's first event reaches it.
+     * Calls [listener] with every event of [types] from the component [selector] names, in order, and then from each
+     * component that replaces it. [prepare] reads what the listener follows of a component before that component's
+     * first event reaches it.
      */
     suspend fun listen(
         selector: String,
@@ -62,11 +63,12 @@ internal class Identities(
     ): Subscription = followed(selector).listen(types, prepare, listener)
 
     /**
-     * Hands the events of [types] from what [selector] names to a listener [made] for each component: the
-     * one a name refers to, followed through re-creation; every one a pattern covers, now and later.
+     * Hands the events of [types] from what [selector] names to a listener [made] for each component: the one a name
+     * refers to, followed through re-creation; every one a pattern covers, now and later.
      */
     suspend fun listen(selector: String, types: Set<Class<out RtcEvent>>, made: () -> NodeListener): Subscription {
-        if (isPattern(selector)) return patterns.computeIfAbsent(selector) { FollowedPattern(it, this) }.listen(types, made)
+        if (isPattern(selector))
+            return patterns.computeIfAbsent(selector) { FollowedPattern(it, this) }.listen(types, made)
         val listener = made()
         return listen(selector, types, listener::prepare, listener::deliver)
     }
@@ -82,30 +84,40 @@ internal class Identities(
     }
 
     /**
-     * The component that replaced [old], which stopped answering, and that [selector] names from now on:
-     * the one bound at [old]'s path now, else the one [selector] finds now; null if neither is another.
+     * The component that replaced [old], which stopped answering, and that [selector] names from now on: the one bound
+     * at [old]'s path now, else the one [selector] finds now; null if neither is another.
      */
     suspend fun successor(selector: String, old: ComponentNode): ComponentNode? {
-        successorAt(old)?.let { return it }
-        val again = try {
-            resolve(selector)
-        } catch (e: RtcException) {
-            return null
+        successorAt(old)?.let {
+            return it
         }
+        val again =
+            try {
+                resolve(selector)
+            } catch (e: RtcException) {
+                return null
+            }
         return again.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
     }
 
-    /** The component registered now where [old] was, if it is another one: [old] was re-created, and its names follow it. */
+    /**
+     * The component registered now where [old] was, if it is another one: [old] was re-created, and its names follow
+     * it.
+     */
     suspend fun successorAt(old: ComponentNode): ComponentNode? =
-        (tree.registeredAt(old.path) as? ComponentNode)?.takeUnless { it.isSameComponent(old) }?.also { follow(old, it) }
+        (tree.registeredAt(old.path) as? ComponentNode)
+            ?.takeUnless { it.isSameComponent(old) }
+            ?.also { follow(old, it) }
 
     /**
-     * Forgets the names of component [instanceName], deleted, so that they resolve afresh when used
-     * again; a name something listens to stays, and follows the component when it is created again.
+     * Forgets the names of component [instanceName], deleted, so that they resolve afresh when used again; a name
+     * something listens to stays, and follows the component when it is created again.
      */
     fun forget(instanceName: String) {
         names.entries.removeIf { (name, followed) ->
-            val gone = (name == instanceName || name.endsWith("/$instanceName.rtc") || name == "$instanceName.rtc") && !followed.subscribed
+            val gone =
+                (name == instanceName || name.endsWith("/$instanceName.rtc") || name == "$instanceName.rtc") &&
+                    !followed.subscribed
             gone.also { if (it) followed.close() }
         }
     }
@@ -117,18 +129,26 @@ internal class Identities(
         patterns.clear()
     }
 
-    /** What [selector] (not a pattern) names, resolved now if it never was: its [FollowedComponent.node] is the component it refers to from then on. */
+    /**
+     * What [selector] (not a pattern) names, resolved now if it never was: its [FollowedComponent.node] is the
+     * component it refers to from then on.
+     */
     suspend fun followed(selector: String): FollowedComponent {
-        names[selector]?.let { return it }
+        names[selector]?.let {
+            return it
+        }
         val node = resolve(selector)
         return names.computeIfAbsent(selector) { FollowedComponent(it, node, this) }
     }
 
-    private suspend fun resolve(selector: String): ComponentNode = when {
-        selector.startsWith("/") || selector.startsWith("corbaloc:") -> tree.component(selector)
-        isPattern(selector) -> matching(selector).singleOrNull() ?: throw AmbiguousNameException(selector, matching(selector).map { it.path.toString() })
-        else -> tree.componentNamed(selector)
-    }
+    private suspend fun resolve(selector: String): ComponentNode =
+        when {
+            selector.startsWith("/") || selector.startsWith("corbaloc:") -> tree.component(selector)
+            isPattern(selector) ->
+                matching(selector).singleOrNull()
+                    ?: throw AmbiguousNameException(selector, matching(selector).map { it.path.toString() })
+            else -> tree.componentNamed(selector)
+        }
 
     /** The components [pattern] matches now, each once however many paths reach it. */
     suspend fun matching(pattern: String): List<ComponentNode> {
@@ -148,11 +168,12 @@ internal class Identities(
     }
 
     /** [node]'s type name; null when it cannot be read (gone as it came). */
-    private suspend fun typeOf(node: ComponentNode): String? = try {
-        node.snapshot().typeName
-    } catch (e: RtcException) {
-        null
-    }
+    private suspend fun typeOf(node: ComponentNode): String? =
+        try {
+            node.snapshot().typeName
+        } catch (e: RtcException) {
+            null
+        }
 
     private companion object {
         fun isPattern(selector: String) = Selectors.isPattern(selector)

@@ -1,5 +1,7 @@
 package org.rtcoord.dsl.internal
 
+import java.time.Instant
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
@@ -21,25 +23,22 @@ import org.rtcoord.dsl.RunningMachine
 import org.rtcoord.dsl.Transition
 import org.rtcoord.dsl.Trigger
 import org.slf4j.LoggerFactory
-import java.time.Instant
-import kotlin.time.TimeSource
 
 /**
- * Runs a [ModeMachine], UML/SCXML style. Inputs (watched events, reconfiguration outcomes, timeouts)
- * queue without limit and are handled one at a time, each to completion: the first transition of the
- * innermost active mode whose trigger matches and whose guards hold is taken (outer modes' transitions
- * apply when no inner one does); exits run innermost first up to the least common ancestor of source
- * and target, then the transition's action, then entries outermost first down to the target and its
- * initial modes. An input no transition takes is counted and logged at debug level, never dropped
- * unseen.
+ * Runs a [ModeMachine], UML/SCXML style. Inputs (watched events, reconfiguration outcomes, timeouts) queue without
+ * limit and are handled one at a time, each to completion: the first transition of the innermost active mode whose
+ * trigger matches and whose guards hold is taken (outer modes' transitions apply when no inner one does); exits run
+ * innermost first up to the least common ancestor of source and target, then the transition's action, then entries
+ * outermost first down to the target and its initial modes. An input no transition takes is counted and logged at debug
+ * level, never dropped unseen.
  *
- * Entering a mode that declares a network brings the system to the merged network of the active modes
- * through the [Configurator], in the background, and queues `done` or `failed`. Leaving or entering a
- * mode that declares one cancels a reconfiguration still under way: its outcome never arrives.
- * A mode's `after` timers start once its entry actions ran and stop when it is left.
+ * Entering a mode that declares a network brings the system to the merged network of the active modes through the
+ * [Configurator], in the background, and queues `done` or `failed`. Leaving or entering a mode that declares one
+ * cancels a reconfiguration still under way: its outcome never arrives. A mode's `after` timers start once its entry
+ * actions ran and stop when it is left.
  *
- * Once a network is done, it is watched while its modes stay active (see [NetworkWatch]): the first
- * breach is logged and raised as `networkBroken`, later ones logged only, until the next network is done.
+ * Once a network is done, it is watched while its modes stay active (see [NetworkWatch]): the first breach is logged
+ * and raised as `networkBroken`, later ones logged only, until the next network is done.
  *
  * Only the machine's own coroutine touches its state; others only queue inputs.
  */
@@ -79,7 +78,10 @@ internal class MachineInterpreter(
     private var established: Established? = null
 
     private class Established(val network: Network, val connectors: Map<Link, List<String>>) {
-        /** Whether a breach was raised already: what follows from the same fault (lost, then unreachable) is logged only. */
+        /**
+         * Whether a breach was raised already: what follows from the same fault (lost, then unreachable) is logged
+         * only.
+         */
         var broken = false
     }
 
@@ -96,9 +98,8 @@ internal class MachineInterpreter(
     }
 
     /**
-     * Queues [event], delivered by the subscription watching for [patterns], if it is one of them. Each
-     * pattern matches it once, here: a pattern that follows a value (a parameter's effective value) must
-     * see each event once, in order.
+     * Queues [event], delivered by the subscription watching for [patterns], if it is one of them. Each pattern matches
+     * it once, here: a pattern that follows a value (a parameter's effective value) must see each event once, in order.
      */
     fun offer(event: RtcEvent, patterns: List<EventPattern<*>>) {
         if (networkWatch.owns(patterns)) {
@@ -115,11 +116,12 @@ internal class MachineInterpreter(
     }
 
     private suspend fun handle(received: Input) {
-        val input = when (received) {
-            is Input.Watched -> breach(received) ?: return
-            is Input.Outcome -> received.also { if (isCurrent(it)) noteOutcome(it) }
-            else -> received
-        }
+        val input =
+            when (received) {
+                is Input.Watched -> breach(received) ?: return
+                is Input.Outcome -> received.also { if (isCurrent(it)) noteOutcome(it) }
+                else -> received
+            }
         val reaction = Reaction(engine, input.event)
         val transition = if (isCurrent(input)) choose(input, reaction) else null
         if (transition == null) {
@@ -150,13 +152,18 @@ internal class MachineInterpreter(
         if (entering.any { it.network != null }) reconfigure()
     }
 
-    /** Whether [input] still concerns the active modes: a timeout of a mode not left since, the latest reconfiguration's outcome. */
-    private fun isCurrent(input: Input): Boolean = when (input) {
-        is Input.Event -> true
-        is Input.Outcome -> input.generation == generation
-        is Input.Broken, is Input.Watched -> true
-        is Input.Timeout -> input.transition.source in active && entries[input.transition.source] == input.entry
-    }
+    /**
+     * Whether [input] still concerns the active modes: a timeout of a mode not left since, the latest reconfiguration's
+     * outcome.
+     */
+    private fun isCurrent(input: Input): Boolean =
+        when (input) {
+            is Input.Event -> true
+            is Input.Outcome -> input.generation == generation
+            is Input.Broken,
+            is Input.Watched -> true
+            is Input.Timeout -> input.transition.source in active && entries[input.transition.source] == input.entry
+        }
 
     private suspend fun choose(input: Input, reaction: Reaction): Transition? {
         for (mode in active.asReversed()) {
@@ -167,15 +174,17 @@ internal class MachineInterpreter(
         return null
     }
 
-    private fun triggers(transition: Transition, input: Input): Boolean = when (val cause = transition.cause) {
-        is Trigger.Event -> input is Input.Event && cause.pattern in input.matched
-        is Trigger.Network -> when (cause.outcome) {
-            NetworkOutcome.DONE -> input is Input.Outcome && input.failure == null
-            NetworkOutcome.FAILED -> input is Input.Outcome && input.failure != null
-            NetworkOutcome.BROKEN -> input is Input.Broken
+    private fun triggers(transition: Transition, input: Input): Boolean =
+        when (val cause = transition.cause) {
+            is Trigger.Event -> input is Input.Event && cause.pattern in input.matched
+            is Trigger.Network ->
+                when (cause.outcome) {
+                    NetworkOutcome.DONE -> input is Input.Outcome && input.failure == null
+                    NetworkOutcome.FAILED -> input is Input.Outcome && input.failure != null
+                    NetworkOutcome.BROKEN -> input is Input.Broken
+                }
+            is Trigger.Timeout -> input is Input.Timeout && input.transition === transition
         }
-        is Trigger.Timeout -> input is Input.Timeout && input.transition === transition
-    }
 
     private suspend fun holds(transition: Transition, reaction: Reaction): Boolean =
         catchFailure({ ScriptCallSite.tracking { transition.guards.all { guard -> reaction.guard() } } }) { e ->
@@ -189,14 +198,15 @@ internal class MachineInterpreter(
             val entry = (entries[mode] ?: 0) + 1
             entries[mode] = entry
             run("entry of ${mode.path}", mode.entryActions, reaction)
-            timers[mode] = mode.transitions.mapNotNull { transition ->
-                (transition.cause as? Trigger.Timeout)?.let { timeout ->
-                    scope.launch {
-                        delay(timeout.delay)
-                        inputs.send(Input.Timeout(transition, entry))
+            timers[mode] =
+                mode.transitions.mapNotNull { transition ->
+                    (transition.cause as? Trigger.Timeout)?.let { timeout ->
+                        scope.launch {
+                            delay(timeout.delay)
+                            inputs.send(Input.Timeout(transition, entry))
+                        }
                     }
                 }
-            }
         }
     }
 
@@ -215,7 +225,8 @@ internal class MachineInterpreter(
     /** [watched] as the breach of the network in force it is, logged; null when it breaks nothing it requires. */
     private fun breach(watched: Input.Watched): Input.Broken? {
         val current = established ?: return null
-        val reason = networkWatch.breach(current.network, current.connectors, watched.event, watched.patterns) ?: return null
+        val reason =
+            networkWatch.breach(current.network, current.connectors, watched.event, watched.patterns) ?: return null
         log("mode ${active.last().path}: network broken: $reason")
         if (current.broken) return null
         current.broken = true
@@ -226,16 +237,21 @@ internal class MachineInterpreter(
         val network = active.mapNotNull { it.network }.reduce(Network::overriddenBy).also { network = it }
         val mode = active.last().path
         val current = generation
-        reconfiguration = scope.launch(CoroutineName("network of $mode")) {
-            log("mode $mode: bringing the system to its network")
-            val started = time.markNow()
-            val outcome = configurator.apply(network)
-            val took = started.elapsedNow().inWholeMilliseconds
-            val failure = (outcome as? Configurator.Outcome.Failed)?.reason
-            val done = outcome as? Configurator.Outcome.Done
-            log("mode $mode: network " + (failure?.let { "failed after $took ms: $it" } ?: "done (${done!!.steps.size} steps in $took ms)"))
-            inputs.send(Input.Outcome(current, failure, done?.connectors))
-        }
+        reconfiguration =
+            scope.launch(CoroutineName("network of $mode")) {
+                log("mode $mode: bringing the system to its network")
+                val started = time.markNow()
+                val outcome = configurator.apply(network)
+                val took = started.elapsedNow().inWholeMilliseconds
+                val failure = (outcome as? Configurator.Outcome.Failed)?.reason
+                val done = outcome as? Configurator.Outcome.Done
+                log(
+                    "mode $mode: network " +
+                        (failure?.let { "failed after $took ms: $it" }
+                            ?: "done (${done!!.steps.size} steps in $took ms)")
+                )
+                inputs.send(Input.Outcome(current, failure, done?.connectors))
+            }
     }
 
     private suspend fun run(what: String, actions: List<suspend Reaction.() -> Unit>, reaction: Reaction) {
@@ -244,24 +260,30 @@ internal class MachineInterpreter(
         }
     }
 
-    private fun describe(input: Input): String = when (input) {
-        is Input.Event -> input.matched.keys.first().description
-        is Input.Outcome -> input.failure?.let { "failed: $it" } ?: "done"
-        is Input.Broken -> "networkBroken: ${input.reason}"
-        is Input.Watched -> "a change of the network"
-        is Input.Timeout -> "${input.transition.trigger} in ${input.transition.source.path}"
-    }
+    private fun describe(input: Input): String =
+        when (input) {
+            is Input.Event -> input.matched.keys.first().description
+            is Input.Outcome -> input.failure?.let { "failed: $it" } ?: "done"
+            is Input.Broken -> "networkBroken: ${input.reason}"
+            is Input.Watched -> "a change of the network"
+            is Input.Timeout -> "${input.transition.trigger} in ${input.transition.source.path}"
+        }
 
-    /** The innermost mode a transition leaves active: the deepest proper ancestor of both ends (the top, for the top's own transitions). */
+    /**
+     * The innermost mode a transition leaves active: the deepest proper ancestor of both ends (the top, for the top's
+     * own transitions).
+     */
     private fun domainOf(source: Mode, target: Mode): Mode =
         if (source.parent == null) source else source.lineage.dropLast(1).last { it in target.lineage.dropLast(1) }
 
     private sealed class Input {
-        open val event: RtcEvent? get() = null
+        open val event: RtcEvent?
+            get() = null
 
         /** An event as each pattern it matched sees it. */
         class Event(val matched: Map<EventPattern<*>, RtcEvent>) : Input() {
-            override val event: RtcEvent get() = matched.values.first()
+            override val event: RtcEvent
+                get() = matched.values.first()
         }
 
         class Outcome(val generation: Int, val failure: String?, val connectors: Map<Link, List<String>>?) : Input()

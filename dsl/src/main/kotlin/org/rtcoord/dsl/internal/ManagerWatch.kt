@@ -1,5 +1,6 @@
 package org.rtcoord.dsl.internal
 
+import java.util.concurrent.ConcurrentHashMap
 import org.rtcoord.EventOptions
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerNode
@@ -8,18 +9,20 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
-import java.util.concurrent.ConcurrentHashMap
 
 /**
- * Says in a running coordinator's log when a manager dies or answers again, as soon as the tree tells,
- * instead of leaving it to the next creation to fail: the managers its script uses, each watched from
- * when the script names it or first uses it on one subscription that covers its slaves too, and those
- * the tree finds dead because they hosted a component it watches. Each death and return is said once,
- * however many of these it concerns: the tree publishes each as one event, with one sequence number,
- * to every subscription it reaches. Whether a manager answers is the tree's to know
- * ([RtcTree.snapshot]'s `deadManagers`), not this log's.
+ * Says in a running coordinator's log when a manager dies or answers again, as soon as the tree tells, instead of
+ * leaving it to the next creation to fail: the managers its script uses, each watched from when the script names it or
+ * first uses it on one subscription that covers its slaves too, and those the tree finds dead because they hosted a
+ * component it watches. Each death and return is said once, however many of these it concerns: the tree publishes each
+ * as one event, with one sequence number, to every subscription it reaches. Whether a manager answers is the tree's to
+ * know ([RtcTree.snapshot]'s `deadManagers`), not this log's.
  */
-internal class ManagerWatch(private val tree: RtcTree, private val options: EventOptions, private val log: (String) -> Unit) : AutoCloseable {
+internal class ManagerWatch(
+    private val tree: RtcTree,
+    private val options: EventOptions,
+    private val log: (String) -> Unit,
+) : AutoCloseable {
     private val watched = ConcurrentHashMap<RtcPath, Subscription>()
     /** The sequence numbers of the deaths and returns said. */
     private val said = ConcurrentHashMap.newKeySet<Long>()
@@ -40,10 +43,13 @@ internal class ManagerWatch(private val tree: RtcTree, private val options: Even
 
     private fun report(event: RtcEvent) {
         when (event) {
-            is ManagerDied -> if (said.add(event.sequence)) {
-                val hosted = if (event.components.isEmpty()) "it hosted no component" else "its components went with it: ${event.components.joinToString { it.name }}"
-                log("${event.source.path} manager stopped answering (${event.cause.reason}); $hosted")
-            }
+            is ManagerDied ->
+                if (said.add(event.sequence)) {
+                    val hosted =
+                        if (event.components.isEmpty()) "it hosted no component"
+                        else "its components went with it: ${event.components.joinToString { it.name }}"
+                    log("${event.source.path} manager stopped answering (${event.cause.reason}); $hosted")
+                }
             is ManagerReturned -> if (said.add(event.sequence)) log("${event.source.path} manager answers again")
             else -> Unit
         }

@@ -1,7 +1,9 @@
 package org.rtcoord.dsl.internal
 
-
-/** A supervisor's log: each line starts with the supervisor's [name]; a recovery step is logged before it runs, and again if it fails. */
+/**
+ * A supervisor's log: each line starts with the supervisor's [name]; a recovery step is logged before it runs, and
+ * again if it fails.
+ */
 internal class RecoveryLog(private val name: String, private val log: (String) -> Unit) {
     /** Logs [text] as the supervisor's. */
     fun line(text: String) = log("$name: $text")

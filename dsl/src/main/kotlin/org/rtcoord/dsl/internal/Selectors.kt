@@ -1,10 +1,9 @@
 package org.rtcoord.dsl.internal
 
 /**
- * The selectors a script names components by: a name or path, a glob (`*_localise?`), or a glob
- * narrowed to one type (`* type=laser`, what `component(type = "laser")` writes): every component of that
- * type, its profile's `type_name`. A glob or a type covers several components, those that appear later
- * included, where a rule's target may.
+ * The selectors a script names components by: a name or path, a glob (`*_localise?`), or a glob narrowed to one type
+ * (`* type=laser`, what `component(type = "laser")` writes): every component of that type, its profile's `type_name`. A
+ * glob or a type covers several components, those that appear later included, where a rule's target may.
  */
 internal object Selectors {
     private const val TYPE = " type="

@@ -9,10 +9,9 @@ import org.rtcoord.dsl.ComponentRef
 import org.rtcoord.dsl.RestartType
 
 /**
- * What a supervisor knows of one of its components: what to re-create it from and the configuration to
- * restore. Where it is now is not its to know: [node] is what its [name] refers to now, as the run's
- * [Identities] decide, following it through re-creation by the supervisor or by anyone else. Changed
- * only under the supervisor's lock.
+ * What a supervisor knows of one of its components: what to re-create it from and the configuration to restore. Where
+ * it is now is not its to know: [node] is what its [name] refers to now, as the run's [Identities] decide, following it
+ * through re-creation by the supervisor or by anyone else. Changed only under the supervisor's lock.
  *
  * @property index its place in the declared order.
  */
@@ -21,7 +20,8 @@ internal class SupervisedChild(val index: Int, val ref: ComponentRef, val restar
     lateinit var name: FollowedComponent
 
     /** The component its name refers to now. */
-    val node: ComponentNode get() = name.node
+    val node: ComponentNode
+        get() = name.node
 
     /** The supervisor's watch on [node]. */
     var subscription: Subscription? = null
@@ -39,11 +39,12 @@ internal class SupervisedChild(val index: Int, val ref: ComponentRef, val restar
     var left: Boolean = false
 
     /** What the component answers when asked for its state now. */
-    suspend fun status(): ChildStatus = try {
-        ChildStatus.Up(node.state())
-    } catch (e: RtcException) {
-        ChildStatus.Gone(e.reason)
-    }
+    suspend fun status(): ChildStatus =
+        try {
+            ChildStatus.Up(node.state())
+        } catch (e: RtcException) {
+            ChildStatus.Gone(e.reason)
+        }
 
     override fun toString(): String = node.path.toString()
 }

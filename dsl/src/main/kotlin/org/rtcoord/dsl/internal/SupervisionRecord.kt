@@ -17,12 +17,15 @@ import org.rtcoord.RtcPath
 import org.rtcoord.RtcTree
 
 /**
- * What a supervisor keeps of its [children] for recovering them: each one's type, name, hosting managers
- * and active configuration set (in the child), and the [connections] among them and to the rest of the
- * system, taken when supervision starts and kept up to date with their events. Used under the
- * supervisor's lock.
+ * What a supervisor keeps of its [children] for recovering them: each one's type, name, hosting managers and active
+ * configuration set (in the child), and the [connections] among them and to the rest of the system, taken when
+ * supervision starts and kept up to date with their events. Used under the supervisor's lock.
  */
-internal class SupervisionRecord(private val tree: RtcTree, private val children: List<SupervisedChild>, private val log: RecoveryLog) {
+internal class SupervisionRecord(
+    private val tree: RtcTree,
+    private val children: List<SupervisedChild>,
+    private val log: RecoveryLog,
+) {
     /** The connections to make again when one of their supervised components is re-created. */
     val connections: MutableList<RecordedConnection> = mutableListOf()
 
@@ -30,7 +33,13 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
     suspend fun takeAll() {
         val managers = managers()
         children.forEach { take(it, managers) }
-        children.forEach { child -> child.node.snapshot().ports.filter { it.connectors.isNotEmpty() }.forEach { takeConnections(child, it.name) } }
+        children.forEach { child ->
+            child.node
+                .snapshot()
+                .ports
+                .filter { it.connectors.isNotEmpty() }
+                .forEach { takeConnections(child, it.name) }
+        }
     }
 
     /** Records [child]'s type, name, hosting managers (among [managers]) and active configuration set. */
@@ -40,9 +49,15 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
         child.typeName = snapshot.typeName
         child.instanceName = snapshot.instanceName
         val configuration = node.configuration()
-        child.configuration = configuration.activeSet?.let { id -> configuration.sets[id]?.let { RecordedConfiguration(id, it) } }
+        child.configuration =
+            configuration.activeSet?.let { id -> configuration.sets[id]?.let { RecordedConfiguration(id, it) } }
         val host = managers.firstOrNull { manager ->
-            val hosted = try { manager.children() } catch (e: RtcException) { emptyList() }
+            val hosted =
+                try {
+                    manager.children()
+                } catch (e: RtcException) {
+                    emptyList()
+                }
             hosted.any { it is ComponentNode && it.isSameComponent(node) }
         }
         child.managers = host?.let { managersAbove(it.path.child(node.name)) }.orEmpty()
@@ -60,12 +75,21 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
         take(child, managers())
     }
 
-    private suspend fun managers(): List<ManagerNode> = tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER)).toList().filterIsInstance<ManagerNode>()
+    private suspend fun managers(): List<ManagerNode> =
+        tree.find(predicate = NodeFilters.kind(NodeKind.MANAGER)).toList().filterIsInstance<ManagerNode>()
 
     /** The managers above [path] (a component below a manager, a slave below its master), nearest first. */
     private suspend fun managersAbove(path: RtcPath): List<ManagerNode> =
-        generateSequence(path.parent) { it.parent }.takeWhile { it.names.isNotEmpty() }.toList()
-            .mapNotNull { above -> try { tree.node(above) as? ManagerNode } catch (e: RtcException) { null } }
+        generateSequence(path.parent) { it.parent }
+            .takeWhile { it.names.isNotEmpty() }
+            .toList()
+            .mapNotNull { above ->
+                try {
+                    tree.node(above) as? ManagerNode
+                } catch (e: RtcException) {
+                    null
+                }
+            }
 
     /** Records the connections of [child]'s port [port] that are not recorded yet ([only] that one, when given). */
     private suspend fun takeConnections(child: SupervisedChild, port: String, only: String? = null) {
@@ -73,10 +97,13 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
             if ((only != null && connection.id != only) || connections.any { it.id == connection.id }) continue
             val ends = connection.ports.map { end -> endOf(end) }
             if (ends.any { it == null }) {
-                log.line("connection ${connection.name} has a port the tree does not know (${connection.ports.joinToString { it.fullName }}): it will not be made again")
+                log.line(
+                    "connection ${connection.name} has a port the tree does not know (${connection.ports.joinToString { it.fullName }}): it will not be made again"
+                )
                 continue
             }
-            val recorded = RecordedConnection(connection.id, connection.name, connection.properties, ends.filterNotNull())
+            val recorded =
+                RecordedConnection(connection.id, connection.name, connection.properties, ends.filterNotNull())
             // One between the same ports went with a component since re-created: this one replaces it.
             connections.removeAll { it.joinsSamePorts(recorded) }
             connections += recorded
@@ -88,15 +115,23 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
         val path = end.path ?: return null
         val port = path.port ?: return null
         val component = path.withPort(null)
-        val owner = children.firstOrNull { it.node.path == component }
-            ?: try { tree.component(component.toString()) } catch (e: RtcException) { null }?.let { node -> children.firstOrNull { it.node.isSameComponent(node) } }
+        val owner =
+            children.firstOrNull { it.node.path == component }
+                ?: try {
+                        tree.component(component.toString())
+                    } catch (e: RtcException) {
+                        null
+                    }
+                    ?.let { node -> children.firstOrNull { it.node.isSameComponent(node) } }
         return owner?.let { RecordedConnection.End.Supervised(it, port) } ?: RecordedConnection.End.External(path)
     }
 
     /** Keeps [child]'s records up to date with [event]. */
     suspend fun update(child: SupervisedChild, event: RtcEvent) {
         when (event) {
-            is PortConnected -> if (connections.none { it.id == event.connector.id }) takeConnections(child, event.port, only = event.connector.id)
+            is PortConnected ->
+                if (connections.none { it.id == event.connector.id })
+                    takeConnections(child, event.port, only = event.connector.id)
             is PortDisconnected -> {
                 val connection = connections.firstOrNull { it.id == event.connector.id } ?: return
                 // A connection lost because one of its components failed or exits (it leaves its execution
@@ -116,7 +151,11 @@ internal class SupervisionRecord(private val tree: RtcTree, private val children
             }
             is ParameterChanged -> {
                 val recorded = child.configuration?.takeIf { it.set == event.set } ?: return
-                child.configuration = recorded.copy(values = event.new?.let { recorded.values + (event.name to it) } ?: (recorded.values - event.name))
+                child.configuration =
+                    recorded.copy(
+                        values =
+                            event.new?.let { recorded.values + (event.name to it) } ?: (recorded.values - event.name)
+                    )
             }
             else -> Unit
         }

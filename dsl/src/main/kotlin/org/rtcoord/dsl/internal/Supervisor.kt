@@ -1,5 +1,8 @@
 package org.rtcoord.dsl.internal
 
+import java.util.concurrent.atomic.AtomicInteger
+import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.channels.Channel
@@ -25,19 +28,15 @@ import org.rtcoord.dsl.RestartType
 import org.rtcoord.dsl.Strategy
 import org.rtcoord.dsl.Supervision
 import org.rtcoord.dsl.SupervisorActivity
-import java.util.concurrent.atomic.AtomicInteger
-import java.util.concurrent.atomic.AtomicLong
-import kotlin.time.TimeSource
 
 /**
- * Runs one [Supervision]: watches its components and recovers them as the strategy says, within the
- * restart intensity its [RestartPolicy] keeps; what recovery needs is kept by a [SupervisionRecord],
- * and a component that is gone is brought back by a [ChildRestorer]. Failures are handled one episode
- * at a time, in the order they arrive, by one coroutine of [scope]; the record is kept under a lock the
- * recovery holds, so a recovery never sees it half updated.
+ * Runs one [Supervision]: watches its components and recovers them as the strategy says, within the restart intensity
+ * its [RestartPolicy] keeps; what recovery needs is kept by a [SupervisionRecord], and a component that is gone is
+ * brought back by a [ChildRestorer]. Failures are handled one episode at a time, in the order they arrive, by one
+ * coroutine of [scope]; the record is kept under a lock the recovery holds, so a recovery never sees it half updated.
  *
- * @param activity what it has done, for those who show it: made with the coordinator, so that it can be
- *   followed before the supervisor starts.
+ * @param activity what it has done, for those who show it: made with the coordinator, so that it can be followed before
+ *   the supervisor starts.
  * @param escalate runs the script's escalation handlers.
  */
 internal class Supervisor(
@@ -51,11 +50,18 @@ internal class Supervisor(
     private val escalate: suspend (Escalation) -> Unit,
 ) {
     /** A failure to handle: [child] did [what] while it was [node]. [exited]: it ended by itself. */
-    private class Failure(val child: SupervisedChild, val node: ComponentNode, val what: String, val exited: Boolean, val seq: Long)
+    private class Failure(
+        val child: SupervisedChild,
+        val node: ComponentNode,
+        val what: String,
+        val exited: Boolean,
+        val seq: Long,
+    )
 
     private val name = supervision.name
     private val say = RecoveryLog(name, log)
-    private val children = supervision.children.mapIndexed { index, ref -> SupervisedChild(index, ref, supervision.restartOf(ref)) }
+    private val children =
+        supervision.children.mapIndexed { index, ref -> SupervisedChild(index, ref, supervision.restartOf(ref)) }
     private val record = SupervisionRecord(engine.tree, children, say)
     private val restorer = ChildRestorer(engine, record, say)
     private val lock = Mutex()
@@ -64,22 +70,33 @@ internal class Supervisor(
     private val sequence = AtomicLong()
     /** Per child: the last failure number its latest restart answers (only the handling coroutine touches it). */
     private val covered = HashMap<SupervisedChild, Long>()
-    private val policy = time.markNow().let { start -> RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() } }
+    private val policy =
+        time.markNow().let { start ->
+            RestartPolicy(supervision.maxRestarts, supervision.backoff) { start.elapsedNow() }
+        }
     @Volatile private var stopped = false
     /** Failures reported and not answered yet: restarted, left, or found to be no news. */
     private val unanswered = AtomicInteger()
     @Volatile private var handling: Job? = null
 
-    /** Whether every failure reported so far is answered, or the supervisor has stopped: nothing it was told of is still to come. */
-    internal val quiet: Boolean get() = handling?.isActive != true || unanswered.get() == 0
+    /**
+     * Whether every failure reported so far is answered, or the supervisor has stopped: nothing it was told of is still
+     * to come.
+     */
+    internal val quiet: Boolean
+        get() = handling?.isActive != true || unanswered.get() == 0
 
     /** Resolves and watches the components, records what recovery needs, and starts handling failures. */
     suspend fun start() {
         lock.withLock {
             children.forEach { it.name = engine.identities.followed(it.ref.selector) }
-            children.groupBy { child -> children.first { it.node.isSameComponent(child.node) } }.values.firstOrNull { it.size > 1 }?.let { same ->
-                throw IllegalArgumentException("$name: ${same.joinToString { it.ref.selector }} are one component")
-            }
+            children
+                .groupBy { child -> children.first { it.node.isSameComponent(child.node) } }
+                .values
+                .firstOrNull { it.size > 1 }
+                ?.let { same ->
+                    throw IllegalArgumentException("$name: ${same.joinToString { it.ref.selector }} are one component")
+                }
             children.forEach { watch(it) }
             record.takeAll()
         }
@@ -91,7 +108,11 @@ internal class Supervisor(
                 // Failures reported together (one process killed) are one episode.
                 val reported = listOf(failure) + generateSequence { failures.tryReceive().getOrNull() }
                 try {
-                    catchFailure({ handle(reported) }) { e -> say.line("recovering ${reported.joinToString { it.node.path.toString() }} failed: ${e.message ?: e}") }
+                    catchFailure({ handle(reported) }) { e ->
+                        say.line(
+                            "recovering ${reported.joinToString { it.node.path.toString() }} failed: ${e.message ?: e}"
+                        )
+                    }
                 } finally {
                     unanswered.addAndGet(-reported.size)
                 }
@@ -107,12 +128,16 @@ internal class Supervisor(
     }
 
     /**
-     * Watches [child]'s component, and the one that replaces it once re-created. A failure must never be
-     * dropped: whatever the script watches with, the supervisor queues its events.
+     * Watches [child]'s component, and the one that replaces it once re-created. A failure must never be dropped:
+     * whatever the script watches with, the supervisor queues its events.
      */
     private suspend fun watch(child: SupervisedChild) {
-        val events = HandlerQueue(scope, Overlap.QUEUE) { event: RtcEvent -> (event.source as? ComponentNode)?.let { observe(child, it, event) } }
-        child.subscription = engine.identities.listen(child.ref.selector, setOf(RtcEvent::class.java), listener = events::offer)
+        val events =
+            HandlerQueue(scope, Overlap.QUEUE) { event: RtcEvent ->
+                (event.source as? ComponentNode)?.let { observe(child, it, event) }
+            }
+        child.subscription =
+            engine.identities.listen(child.ref.selector, setOf(RtcEvent::class.java), listener = events::offer)
     }
 
     private suspend fun observe(child: SupervisedChild, node: ComponentNode, event: RtcEvent) {
@@ -121,22 +146,27 @@ internal class Supervisor(
             is HeartbeatLost -> report(child, node, "was lost (silent for ${event.silentMillis} ms)", exited = false)
             is BecameZombie -> report(child, node, "became unreachable (${event.cause.reason})", exited = false)
             is ComponentFinalized -> report(child, node, "exited", exited = true)
-            is PortConnected, is PortDisconnected, is ConfigurationSetActivated, is ParameterChanged -> lock.withLock {
-                if (!child.left && child.node.isSameComponent(node)) record.update(child, event)
-            }
+            is PortConnected,
+            is PortDisconnected,
+            is ConfigurationSetActivated,
+            is ParameterChanged ->
+                lock.withLock {
+                    if (!child.left && child.node.isSameComponent(node)) record.update(child, event)
+                }
             else -> Unit
         }
     }
 
     private fun report(child: SupervisedChild, node: ComponentNode, what: String, exited: Boolean) {
         unanswered.incrementAndGet()
-        if (failures.trySend(Failure(child, node, what, exited, sequence.incrementAndGet())).isFailure) unanswered.decrementAndGet()
+        if (failures.trySend(Failure(child, node, what, exited, sequence.incrementAndGet())).isFailure)
+            unanswered.decrementAndGet()
     }
 
     /**
-     * One restart episode: every child that failed by now (those reported, and siblings lost in the same
-     * fault, such as the components of one killed process) is recovered by one decision, which counts
-     * once against the restart intensity.
+     * One restart episode: every child that failed by now (those reported, and siblings lost in the same fault, such as
+     * the components of one killed process) is recovered by one decision, which counts once against the restart
+     * intensity.
      */
     private suspend fun handle(reported: List<Failure>) {
         val fresh = reported.filter { it.isNews() }
@@ -150,7 +180,8 @@ internal class Supervisor(
                 report?.exited == true -> failed[child] = report.what
                 status is ChildStatus.Gone -> failed[child] = report?.what ?: "is gone (${status.reason})"
                 (status as ChildStatus.Up).state == LifeCycle.ERROR -> failed[child] = report?.what ?: "is in ERROR"
-                report != null -> say.line("$child ${report.what}, but it answers and is ${status.state}: nothing to recover")
+                report != null ->
+                    say.line("$child ${report.what}, but it answers and is ${status.state}: nothing to recover")
             }
         }
         failed.keys.forEach { covered[it] = episode }
@@ -159,14 +190,16 @@ internal class Supervisor(
         for (child in failed.keys.toList()) {
             when {
                 child.restart == RestartType.TEMPORARY -> leave(child, "it is temporary: not restarted")
-                child.restart == RestartType.TRANSIENT && child in exited -> leave(child, "it is transient and exited by itself: not restarted")
+                child.restart == RestartType.TRANSIENT && child in exited ->
+                    leave(child, "it is transient and exited by itself: not restarted")
                 else -> continue
             }
             failed -= child
         }
         if (failed.isEmpty()) return
         when (val decision = policy.decide(failed.keys.map { it.index }.toSet())) {
-            is RestartPolicy.Decision.Escalate -> failed.entries.first().let { (child, what) -> giveUp(child, what, decision.restarts) }
+            is RestartPolicy.Decision.Escalate ->
+                failed.entries.first().let { (child, what) -> giveUp(child, what, decision.restarts) }
             is RestartPolicy.Decision.Restart -> {
                 val together = failed.keys.joinToString()
                 if (decision.wait.isPositive()) {
@@ -174,7 +207,9 @@ internal class Supervisor(
                     say.line("restarting $together in ${decision.wait} (consecutive restart ${decision.attempt})")
                     val waited = failed.keys.associateWith { it.node }
                     delay(decision.wait)
-                    failed.keys.filter { child -> replacedMeanwhile(child, waited.getValue(child)) }.forEach { failed -= it }
+                    failed.keys
+                        .filter { child -> replacedMeanwhile(child, waited.getValue(child)) }
+                        .forEach { failed -= it }
                     if (failed.isEmpty()) return
                 }
                 // Whatever was reported of them meanwhile, this restart answers.
@@ -187,8 +222,8 @@ internal class Supervisor(
     }
 
     /**
-     * Whether someone else re-created [child] in place of [failed] while the restart waited, and the new
-     * component runs: it is followed, not restarted (a new one in ERROR is still restarted).
+     * Whether someone else re-created [child] in place of [failed] while the restart waited, and the new component
+     * runs: it is followed, not restarted (a new one in ERROR is still restarted).
      */
     private suspend fun replacedMeanwhile(child: SupervisedChild, failed: ComponentNode): Boolean = lock.withLock {
         restorer.replacement(child, failed) ?: return false
@@ -196,21 +231,22 @@ internal class Supervisor(
     }
 
     /** Whether this failure is news: about the component the child is now, and after its last restart began. */
-    private fun Failure.isNews(): Boolean = !child.left && child.node.isSameComponent(node) && seq > (covered[child] ?: 0L)
+    private fun Failure.isNews(): Boolean =
+        !child.left && child.node.isSameComponent(node) && seq > (covered[child] ?: 0L)
 
     /**
-     * Restarts [failed] and, as the strategy says, the others: those not failed are stopped in reverse
-     * order, then all are started in declared order. Where the others depend on the earlier ones
-     * (rest-for-one, one-for-all), starting stops at the first that does not come up: the later ones
-     * stay stopped until it does. One that did not come up is retried as a failure of its own. Each it
-     * starts again is counted as it is ([SupervisorActivity.startingAgain]).
+     * Restarts [failed] and, as the strategy says, the others: those not failed are stopped in reverse order, then all
+     * are started in declared order. Where the others depend on the earlier ones (rest-for-one, one-for-all), starting
+     * stops at the first that does not come up: the later ones stay stopped until it does. One that did not come up is
+     * retried as a failure of its own. Each it starts again is counted as it is ([SupervisorActivity.startingAgain]).
      */
     private suspend fun restart(failed: List<SupervisedChild>) {
-        val group = when (supervision.strategy) {
-            Strategy.ONE_FOR_ONE -> failed
-            Strategy.ONE_FOR_ALL -> children
-            Strategy.REST_FOR_ONE -> children.drop(failed.minOf { it.index })
-        }.filter { !it.left }
+        val group =
+            when (supervision.strategy) {
+                Strategy.ONE_FOR_ONE -> failed
+                Strategy.ONE_FOR_ALL -> children
+                Strategy.REST_FOR_ONE -> children.drop(failed.minOf { it.index })
+            }.filter { !it.left }
         if (group.size > failed.size) {
             say.line("${supervision.strategy}: restarting ${group.joinToString()}")
             group.asReversed().filter { it !in failed }.forEach { stop(it) }
@@ -226,9 +262,13 @@ internal class Supervisor(
             if (start(member)) continue
             notStarted = notStarted ?: member
             if (inOrder) {
-                group.drop(place + 1).filter { !it.left }.takeIf { it.isNotEmpty() }?.let { later ->
-                    say.line("${later.joinToString()} stay stopped until $member starts")
-                }
+                group
+                    .drop(place + 1)
+                    .filter { !it.left }
+                    .takeIf { it.isNotEmpty() }
+                    ?.let { later ->
+                        say.line("${later.joinToString()} stay stopped until $member starts")
+                    }
                 break
             }
         }
@@ -238,14 +278,15 @@ internal class Supervisor(
 
     private suspend fun stop(member: SupervisedChild) {
         when (val status = member.status()) {
-            is ChildStatus.Up -> say.attempt("stop $member") { if (status.state == LifeCycle.ACTIVE) member.node.deactivate() }
+            is ChildStatus.Up ->
+                say.attempt("stop $member") { if (status.state == LifeCycle.ACTIVE) member.node.deactivate() }
             is ChildStatus.Gone -> say.line("stop $member: it is gone (${status.reason})")
         }
     }
 
     /**
-     * Brings [member] up (reset; followed when someone else re-created it; re-created when gone) and
-     * activates it; returns whether it is ACTIVE.
+     * Brings [member] up (reset; followed when someone else re-created it; re-created when gone) and activates it;
+     * returns whether it is ACTIVE.
      */
     private suspend fun start(member: SupervisedChild): Boolean {
         say.line("start $member")
@@ -256,9 +297,13 @@ internal class Supervisor(
                 restorer.recreate(member, status.reason) ?: return false
                 restorer.restore(member)
             }
-            is ChildStatus.Up -> if (status.state == LifeCycle.ERROR) say.attempt("reset $member") { member.node.reset() } ?: return false
+            is ChildStatus.Up ->
+                if (status.state == LifeCycle.ERROR)
+                    say.attempt("reset $member") { member.node.reset() } ?: return false
         }
-        return say.attempt("activate $member") { if (member.node.state() != LifeCycle.ACTIVE) member.node.activate() } != null
+        return say.attempt("activate $member") {
+            if (member.node.state() != LifeCycle.ACTIVE) member.node.activate()
+        } != null
     }
 
     private fun leave(child: SupervisedChild, why: String) {

@@ -2,9 +2,6 @@
 
 package org.rtcoord.dsl.script
 
-import org.rtcoord.InternalRtcoordApi
-import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.Coordination
 import java.io.IOException
 import java.lang.reflect.InvocationTargetException
 import java.nio.file.Files
@@ -13,17 +10,19 @@ import java.util.Properties
 import java.util.jar.JarInputStream
 import java.util.jar.Manifest
 import java.util.zip.ZipException
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordination
 
 /**
- * A coordinator compiled ahead of time (`rtcoord compile SCRIPT.coord.kts -o NAME.jar`, or
- * [ScriptHost.compile]): a jar of the script's classes, its text, and a manifest naming the script class
- * and the rtcoord version that compiled it. Loading it needs no Kotlin compiler and no scripting host,
- * only the dsl and what it runs on (Kotlin's standard library, kotlinx-coroutines, core): what an
- * Eclipse plug-in has in rtcoord's OSGi bundle. The classes are read into memory, so the jar is not
- * held open.
+ * A coordinator compiled ahead of time (`rtcoord compile SCRIPT.coord.kts -o NAME.jar`, or [ScriptHost.compile]): a jar
+ * of the script's classes, its text, and a manifest naming the script class and the rtcoord version that compiled it.
+ * Loading it needs no Kotlin compiler and no scripting host, only the dsl and what it runs on (Kotlin's standard
+ * library, kotlinx-coroutines, core): what an Eclipse plug-in has in rtcoord's OSGi bundle. The classes are read into
+ * memory, so the jar is not held open.
  *
- * A jar compiled by another rtcoord version is refused, naming both versions: the script's classes are
- * compiled against the DSL they were built with, and call it by its binary names.
+ * A jar compiled by another rtcoord version is refused, naming both versions: the script's classes are compiled against
+ * the DSL they were built with, and call it by its binary names.
  */
 public object CompiledCoordinator {
     /** The manifest attribute naming the script class. */
@@ -41,20 +40,20 @@ public object CompiledCoordinator {
     /** This rtcoord's version: the one a compiled coordinator must have been compiled by. */
     @JvmStatic
     public val version: String by lazy {
-        CompiledCoordinator::class.java.getResourceAsStream("version.properties")
-            ?.use { Properties().apply { load(it) }.getProperty("version") } ?: "unknown"
+        CompiledCoordinator::class.java.getResourceAsStream("version.properties")?.use {
+            Properties().apply { load(it) }.getProperty("version")
+        } ?: "unknown"
     }
 
     /** Whether [file] is taken for a compiled coordinator rather than a script: its name ends in `.jar`. */
-    @JvmStatic
-    public fun isCompiled(file: Path): Boolean = file.fileName.toString().endsWith(".jar", ignoreCase = true)
+    @JvmStatic public fun isCompiled(file: Path): Boolean = file.fileName.toString().endsWith(".jar", ignoreCase = true)
 
     /**
-     * Evaluates the coordinator compiled into [jar] with [args], its host running it on [host], and returns
-     * what it declared; the script's relative file names are relative to the jar's directory.
+     * Evaluates the coordinator compiled into [jar] with [args], its host running it on [host], and returns what it
+     * declared; the script's relative file names are relative to the jar's directory.
      *
-     * @throws ScriptFailure when [jar] cannot be read, is not a compiled coordinator (naming its path), was
-     *   compiled by another rtcoord version (naming both), or the script's body throws (naming its line).
+     * @throws ScriptFailure when [jar] cannot be read, is not a compiled coordinator (naming its path), was compiled by
+     *   another rtcoord version (naming both), or the script's body throws (naming its line).
      */
     @JvmStatic
     @JvmOverloads
@@ -62,23 +61,41 @@ public object CompiledCoordinator {
     public fun load(jar: Path, args: List<String> = emptyList(), host: TreeConfig = TreeConfig()): Coordination {
         val contents = read(jar)
         val manifest = contents.manifest?.mainAttributes
-        val className = manifest?.getValue(SCRIPT_CLASS) ?: refuse(jar, "not a compiled coordinator: its manifest has no $SCRIPT_CLASS (compile one with rtcoord compile)")
+        val className =
+            manifest?.getValue(SCRIPT_CLASS)
+                ?: refuse(
+                    jar,
+                    "not a compiled coordinator: its manifest has no $SCRIPT_CLASS (compile one with rtcoord compile)",
+                )
         val compiledBy = manifest.getValue(COMPILED_BY) ?: "an unknown version"
-        if (compiledBy != version) refuse(jar, "compiled by rtcoord $compiledBy, and this is rtcoord $version: compile it again with this one")
+        if (compiledBy != version)
+            refuse(jar, "compiled by rtcoord $compiledBy, and this is rtcoord $version: compile it again with this one")
         val name = manifest.getValue(SCRIPT_NAME) ?: jar.fileName.toString()
-        val type = try {
-            Class.forName(className, true, ScriptClasses(contents.entries, CoordinatorScript::class.java.classLoader))
-        } catch (e: ClassNotFoundException) {
-            refuse(jar, "not a compiled coordinator: it has no class $className, which its manifest names")
-        } catch (e: LinkageError) {
-            refuse(jar, "its classes do not link against this rtcoord: ${e.message}")
-        }
-        if (!CoordinatorScript::class.java.isAssignableFrom(type)) refuse(jar, "not a compiled coordinator: $className is not a coordinator script")
-        val constructor = try {
-            type.getConstructor(Array<String>::class.java, TreeConfig::class.java, Path::class.java, String::class.java)
-        } catch (e: NoSuchMethodException) {
-            refuse(jar, "not a compiled coordinator: $className has no coordinator script's constructor")
-        }
+        val type =
+            try {
+                Class.forName(
+                    className,
+                    true,
+                    ScriptClasses(contents.entries, CoordinatorScript::class.java.classLoader),
+                )
+            } catch (e: ClassNotFoundException) {
+                refuse(jar, "not a compiled coordinator: it has no class $className, which its manifest names")
+            } catch (e: LinkageError) {
+                refuse(jar, "its classes do not link against this rtcoord: ${e.message}")
+            }
+        if (!CoordinatorScript::class.java.isAssignableFrom(type))
+            refuse(jar, "not a compiled coordinator: $className is not a coordinator script")
+        val constructor =
+            try {
+                type.getConstructor(
+                    Array<String>::class.java,
+                    TreeConfig::class.java,
+                    Path::class.java,
+                    String::class.java,
+                )
+            } catch (e: NoSuchMethodException) {
+                refuse(jar, "not a compiled coordinator: $className has no coordinator script's constructor")
+            }
         return try {
             constructor.newInstance(args.toTypedArray(), host, jar.toAbsolutePath().parent, name) as Coordination
         } catch (e: InvocationTargetException) {
@@ -90,22 +107,26 @@ public object CompiledCoordinator {
     @JvmStatic
     @Throws(ScriptFailure::class)
     public fun source(jar: Path): String =
-        read(jar).entries[SOURCE_ENTRY]?.toString(Charsets.UTF_8) ?: refuse(jar, "not a compiled coordinator: it holds no script text")
+        read(jar).entries[SOURCE_ENTRY]?.toString(Charsets.UTF_8)
+            ?: refuse(jar, "not a compiled coordinator: it holds no script text")
 
     private class Contents(val manifest: Manifest?, val entries: Map<String, ByteArray>)
 
-    private fun read(jar: Path): Contents = try {
-        JarInputStream(Files.newInputStream(jar)).use { input ->
-            val entries = HashMap<String, ByteArray>()
-            generateSequence { input.nextJarEntry }.filterNot { it.isDirectory }.forEach { entries[it.name] = input.readBytes() }
-            if (input.manifest == null && entries.isEmpty()) refuse(jar, "not a compiled coordinator: not a jar")
-            Contents(input.manifest, entries)
+    private fun read(jar: Path): Contents =
+        try {
+            JarInputStream(Files.newInputStream(jar)).use { input ->
+                val entries = HashMap<String, ByteArray>()
+                generateSequence { input.nextJarEntry }
+                    .filterNot { it.isDirectory }
+                    .forEach { entries[it.name] = input.readBytes() }
+                if (input.manifest == null && entries.isEmpty()) refuse(jar, "not a compiled coordinator: not a jar")
+                Contents(input.manifest, entries)
+            }
+        } catch (e: ZipException) {
+            refuse(jar, "not a compiled coordinator: not a jar (${e.message})")
+        } catch (e: IOException) {
+            refuse(jar, "cannot read it: ${e.message ?: e.javaClass.simpleName}")
         }
-    } catch (e: ZipException) {
-        refuse(jar, "not a compiled coordinator: not a jar (${e.message})")
-    } catch (e: IOException) {
-        refuse(jar, "cannot read it: ${e.message ?: e.javaClass.simpleName}")
-    }
 
     private fun refuse(jar: Path, why: String): Nothing = throw ScriptFailure(listOf("$jar: $why"))
 }

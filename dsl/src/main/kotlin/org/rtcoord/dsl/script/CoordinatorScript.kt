@@ -1,7 +1,5 @@
 package org.rtcoord.dsl.script
 
-import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.Coordination
 import java.nio.file.Path
 import kotlin.script.experimental.annotations.KotlinScript
 import kotlin.script.experimental.api.ScriptAcceptedLocation
@@ -12,38 +10,43 @@ import kotlin.script.experimental.api.defaultImports
 import kotlin.script.experimental.api.ide
 import kotlin.script.experimental.jvm.dependenciesFromCurrentContext
 import kotlin.script.experimental.jvm.jvm
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordination
 
 /**
- * The script definition of `*.coord.kts` coordinators: the script body is a [Coordination], with the
- * core API, the DSL, lifecycle states (`ERROR`, `ACTIVE`, ...), duration units and `delay` imported; [directory]
- * is the script's own, and [name] its file name.
+ * The script definition of `*.coord.kts` coordinators: the script body is a [Coordination], with the core API, the DSL,
+ * lifecycle states (`ERROR`, `ACTIVE`, ...), duration units and `delay` imported; [directory] is the script's own, and
+ * [name] its file name.
  */
 @KotlinScript(
     displayName = "rtcoord coordinator",
     fileExtension = "coord.kts",
     compilationConfiguration = CoordinatorScriptCompilation::class,
 )
-public abstract class CoordinatorScript(args: Array<String>, host: TreeConfig, directory: Path, name: String) : Coordination(args.toList(), host, directory, name)
+public abstract class CoordinatorScript(args: Array<String>, host: TreeConfig, directory: Path, name: String) :
+    Coordination(args.toList(), host, directory, name)
 
 /** How coordinator scripts compile: default imports, and the host's class path as the script's. */
-public object CoordinatorScriptCompilation : ScriptCompilationConfiguration({
-    defaultImports(
-        "org.rtcoord.*",
-        "org.rtcoord.dsl.*",
-        "org.rtcoord.LifeCycle.*",
-        "kotlin.time.Duration.Companion.milliseconds",
-        "kotlin.time.Duration.Companion.seconds",
-        "kotlin.time.Duration.Companion.minutes",
-        "kotlinx.coroutines.delay",
-    )
-    jvm {
-        dependenciesFromCurrentContext(wholeClasspath = true)
-    }
-    // The DSL's inline words (`data<TimedDoubleSeq> { }`) are JVM 17 bytecode, which a script can inline only at the same target.
-    compilerOptions("-jvm-target", "17")
-    ide {
-        acceptedLocations(ScriptAcceptedLocation.Everywhere)
-    }
-}) {
+public object CoordinatorScriptCompilation :
+    ScriptCompilationConfiguration({
+        defaultImports(
+            "org.rtcoord.*",
+            "org.rtcoord.dsl.*",
+            "org.rtcoord.LifeCycle.*",
+            "kotlin.time.Duration.Companion.milliseconds",
+            "kotlin.time.Duration.Companion.seconds",
+            "kotlin.time.Duration.Companion.minutes",
+            "kotlinx.coroutines.delay",
+        )
+        jvm {
+            dependenciesFromCurrentContext(wholeClasspath = true)
+        }
+        // The DSL's inline words (`data<TimedDoubleSeq> { }`) are JVM 17 bytecode, which a script can inline only at
+        // the same target.
+        compilerOptions("-jvm-target", "17")
+        ide {
+            acceptedLocations(ScriptAcceptedLocation.Everywhere)
+        }
+    }) {
     private fun readResolve(): Any = CoordinatorScriptCompilation
 }

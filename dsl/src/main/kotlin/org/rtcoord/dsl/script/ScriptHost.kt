@@ -2,9 +2,6 @@
 
 package org.rtcoord.dsl.script
 
-import org.rtcoord.InternalRtcoordApi
-import org.rtcoord.TreeConfig
-import org.rtcoord.dsl.Coordination
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
@@ -20,11 +17,14 @@ import kotlin.script.experimental.jvm.baseClassLoader
 import kotlin.script.experimental.jvm.jvm
 import kotlin.script.experimental.jvmhost.JvmScriptCompiler
 import kotlin.script.experimental.jvmhost.createJvmCompilationConfigurationFromTemplate
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordination
 
 /**
- * Compiles and evaluates `*.coord.kts` coordinators with the embedded Kotlin compiler. Compiled scripts
- * are kept in [cacheDirectory] by a hash of their text and of the compiler and DSL they were built with,
- * so an unchanged script starts without compiling. Problems come back as `file:line:col: message` lines.
+ * Compiles and evaluates `*.coord.kts` coordinators with the embedded Kotlin compiler. Compiled scripts are kept in
+ * [cacheDirectory] by a hash of their text and of the compiler and DSL they were built with, so an unchanged script
+ * starts without compiling. Problems come back as `file:line:col: message` lines.
  */
 public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirectory()) {
     private val compilation = createJvmCompilationConfigurationFromTemplate<CoordinatorScript>()
@@ -34,51 +34,67 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     private val fresh by lazy { JvmScriptCompiler(CompiledScripts.host(null, CoordinatorScript::class.java)) }
 
     /** Compiles [script]; returns its errors (none when it compiles). */
-    public suspend fun check(script: Path): List<String> = when (val result = compile(script)) {
-        is ResultWithDiagnostics.Success -> emptyList()
-        is ResultWithDiagnostics.Failure -> ScriptProblems.of(script, result.reports)
-    }
+    public suspend fun check(script: Path): List<String> =
+        when (val result = compile(script)) {
+            is ResultWithDiagnostics.Success -> emptyList()
+            is ResultWithDiagnostics.Failure -> ScriptProblems.of(script, result.reports)
+        }
 
     /**
-     * Compiles (or takes from the cache) and evaluates [script] with [args], the host running it on
-     * [host]: returns what it declared. File names in the script are relative to the script's directory.
-     * A `.jar` is a coordinator compiled ahead of time, loaded without compiling ([CompiledCoordinator.load]).
-     * Throws [ScriptFailure] when it does not compile or its body throws.
+     * Compiles (or takes from the cache) and evaluates [script] with [args], the host running it on [host]: returns
+     * what it declared. File names in the script are relative to the script's directory. A `.jar` is a coordinator
+     * compiled ahead of time, loaded without compiling ([CompiledCoordinator.load]). Throws [ScriptFailure] when it
+     * does not compile or its body throws.
      */
-    public suspend fun load(script: Path, args: List<String> = emptyList(), host: TreeConfig = TreeConfig()): Coordination {
+    public suspend fun load(
+        script: Path,
+        args: List<String> = emptyList(),
+        host: TreeConfig = TreeConfig(),
+    ): Coordination {
         if (CompiledCoordinator.isCompiled(script)) return CompiledCoordinator.load(script, args, host)
-        val compiled = when (val result = compile(script)) {
-            is ResultWithDiagnostics.Success -> result.value
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
-        }
+        val compiled =
+            when (val result = compile(script)) {
+                is ResultWithDiagnostics.Success -> result.value
+                is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
+            }
         val evaluation = ScriptEvaluationConfiguration {
             constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent, script.fileName.toString())
             jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
         }
         return when (val result = evaluator(compiled, evaluation)) {
             is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
-            is ResultWithDiagnostics.Success -> when (val value = result.value.returnValue) {
-                is ResultValue.Error -> throw ScriptFailure(listOf(ScriptProblems.thrown(script.toString(), value.error)))
-                else -> value.scriptInstance as? Coordination ?: throw ScriptFailure(listOf("${script.fileName}:1:1: the script did not produce a coordinator"))
-            }
+            is ResultWithDiagnostics.Success ->
+                when (val value = result.value.returnValue) {
+                    is ResultValue.Error ->
+                        throw ScriptFailure(listOf(ScriptProblems.thrown(script.toString(), value.error)))
+                    else ->
+                        value.scriptInstance as? Coordination
+                            ?: throw ScriptFailure(
+                                listOf("${script.fileName}:1:1: the script did not produce a coordinator")
+                            )
+                }
         }
     }
 
     /**
-     * Compiles [script] into [jar], a coordinator that runs without the Kotlin compiler ([CompiledCoordinator]):
-     * in an Eclipse plug-in through rtcoord's OSGi bundle, or with `rtcoord run NAME.jar`. Compiles afresh,
-     * whatever the cache holds. Throws [ScriptFailure] when it does not compile or [jar] cannot be written.
+     * Compiles [script] into [jar], a coordinator that runs without the Kotlin compiler ([CompiledCoordinator]): in an
+     * Eclipse plug-in through rtcoord's OSGi bundle, or with `rtcoord run NAME.jar`. Compiles afresh, whatever the
+     * cache holds. Throws [ScriptFailure] when it does not compile or [jar] cannot be written.
      */
     public suspend fun compile(script: Path, jar: Path) {
-        val compiled = when (val result = compile(script, by = fresh)) {
-            is ResultWithDiagnostics.Success -> result.value
-            is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
-        }
+        val compiled =
+            when (val result = compile(script, by = fresh)) {
+                is ResultWithDiagnostics.Success -> result.value
+                is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
+            }
         CompiledCoordinatorJar.write(compiled, Files.readString(script), script.fileName.toString(), jar)
     }
 
     private suspend fun compile(script: Path, by: JvmScriptCompiler = compiler): ResultWithDiagnostics<CompiledScript> {
-        if (!Files.isRegularFile(script)) return ResultWithDiagnostics.Failure(ScriptDiagnostic(ScriptDiagnostic.unspecifiedError, "no such file", sourcePath = script.toString()))
+        if (!Files.isRegularFile(script))
+            return ResultWithDiagnostics.Failure(
+                ScriptDiagnostic(ScriptDiagnostic.unspecifiedError, "no such file", sourcePath = script.toString())
+            )
         return by(script.toFile().toScriptSource(), compilation)
     }
 
@@ -88,8 +104,12 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
          * `~/.cache/rtcoord`.
          */
         public fun defaultCacheDirectory(): Path {
-            val cache = System.getenv("RTCOORD_CACHE")?.takeIf { it.isNotEmpty() }?.let { Paths.get(it) }
-                ?: Paths.get(System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache", "rtcoord")
+            val cache =
+                System.getenv("RTCOORD_CACHE")?.takeIf { it.isNotEmpty() }?.let { Paths.get(it) }
+                    ?: Paths.get(
+                        System.getenv("XDG_CACHE_HOME") ?: "${System.getProperty("user.home")}/.cache",
+                        "rtcoord",
+                    )
             return cache.resolve("scripts")
         }
     }

@@ -1,13 +1,13 @@
 package org.rtcoord.dsl.script
 
-import org.rtcoord.InternalRtcoordApi
 import java.nio.file.Files
 import java.nio.file.Path
+import org.rtcoord.InternalRtcoordApi
 
 /**
- * A script's text, for what messages quote of it: the column a word is written at, and the block of code
- * a call passes in braces, such as a rule's guard (`where { component("x").state() != ACTIVE }`) or a
- * test's condition (`expect(within = 1.seconds) { component("x").state() == ERROR }`).
+ * A script's text, for what messages quote of it: the column a word is written at, and the block of code a call passes
+ * in braces, such as a rule's guard (`where { component("x").state() != ACTIVE }`) or a test's condition
+ * (`expect(within = 1.seconds) { component("x").state() == ERROR }`).
  */
 @InternalRtcoordApi
 public class ScriptSource(private val text: String) {
@@ -42,21 +42,27 @@ public class ScriptSource(private val text: String) {
         if (line < 1 || line > starts.size) return null
         val start = starts[line - 1]
         val end = starts.getOrNull(line)?.minus(1) ?: text.length
-        return Regex("(?<![\\w$])${Regex.escape(word)}(?![\\w$])").find(text.substring(start, end))?.range?.first?.plus(start)
+        return Regex("(?<![\\w$])${Regex.escape(word)}(?![\\w$])")
+            .find(text.substring(start, end))
+            ?.range
+            ?.first
+            ?.plus(start)
     }
 
     public companion object {
         /** The text of [script], or null when it cannot be read. */
-        public fun read(script: Path): ScriptSource? = try {
-            ScriptSource(Files.readString(script))
-        } catch (e: java.io.IOException) {
-            null
-        }
+        public fun read(script: Path): ScriptSource? =
+            try {
+                ScriptSource(Files.readString(script))
+            } catch (e: java.io.IOException) {
+                null
+            }
     }
 
     /** The index of the quote that closes the string opening at [start], raw strings included. */
     private fun endOfString(start: Int): Int {
-        if (text.startsWith("\"\"\"", start)) return (text.indexOf("\"\"\"", start + 3).takeIf { it >= 0 } ?: (text.length - 3)) + 2
+        if (text.startsWith("\"\"\"", start))
+            return (text.indexOf("\"\"\"", start + 3).takeIf { it >= 0 } ?: (text.length - 3)) + 2
         var i = start + 1
         while (i < text.length && text[i] != '"') {
             if (text[i] == '\\') i++

@@ -1,17 +1,5 @@
 package org.rtcoord.dsl.script
 
-import kotlinx.coroutines.runBlocking
-import org.junit.jupiter.api.AfterEach
-import org.junit.jupiter.api.Assertions.assertEquals
-import org.junit.jupiter.api.Assertions.assertThrows
-import org.junit.jupiter.api.Assertions.assertTrue
-import org.junit.jupiter.api.Test
-import org.junit.jupiter.api.io.TempDir
-import org.rtcoord.TreeConfig
-import org.rtcoord.RtcTree
-import org.rtcoord.dsl.Coordinator
-import org.rtcoord.runtime.Scenarios
-import org.rtcoord.runtime.naming.NamingService
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.LinkedBlockingQueue
@@ -21,11 +9,25 @@ import java.util.jar.JarEntry
 import java.util.jar.JarInputStream
 import java.util.jar.JarOutputStream
 import java.util.jar.Manifest
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.AfterEach
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertThrows
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.RtcTree
+import org.rtcoord.TreeConfig
+import org.rtcoord.dsl.Coordinator
+import org.rtcoord.runtime.Scenarios
+import org.rtcoord.runtime.naming.NamingService
 
-/** A coordinator compiled ahead of time into a jar runs as its script does, without compiling; what is not one is refused. */
+/**
+ * A coordinator compiled ahead of time into a jar runs as its script does, without compiling; what is not one is
+ * refused.
+ */
 class CompiledCoordinatorTest {
-    @TempDir
-    lateinit var directory: Path
+    @TempDir lateinit var directory: Path
 
     private val naming = NamingService.start()
     private val system = Scenarios.localisation(naming.corbaloc)
@@ -52,13 +54,14 @@ class CompiledCoordinatorTest {
     fun `a compiled coordinator runs from its jar alone, named for its script`() {
         val jar = compiled("reset.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n")
         val log = LinkedBlockingQueue<String>()
-        Coordinator(tree, CompiledCoordinator.load(jar, emptyList(), config), null) { log.add(it) }.use { coordinator ->
-            assertEquals("reset.coord.kts", coordinator.name)
-            runBlocking { coordinator.start() }
-            system.component("gyro0").fail()
-            val fired = log.poll(20, TimeUnit.SECONDS)
-            assertTrue(fired?.startsWith("rule 'gyro0.rtc enters ERROR' fired") == true, fired.toString())
-        }
+        Coordinator(tree, CompiledCoordinator.load(jar, emptyList(), config), null) { log.add(it) }
+            .use { coordinator ->
+                assertEquals("reset.coord.kts", coordinator.name)
+                runBlocking { coordinator.start() }
+                system.component("gyro0").fail()
+                val fired = log.poll(20, TimeUnit.SECONDS)
+                assertTrue(fired?.startsWith("rule 'gyro0.rtc enters ERROR' fired") == true, fired.toString())
+            }
         assertEquals("on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n", CompiledCoordinator.source(jar))
     }
 
@@ -72,20 +75,32 @@ class CompiledCoordinatorTest {
     @Test
     fun `a jar compiled by another rtcoord version is refused, naming both`() {
         val jar = compiled("reset.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }\n")
-        val other = rewritten(jar, directory.resolve("other.jar")) { it[Attributes.Name("Rtcoord-Version")] = "0.0.1-other" }
+        val other =
+            rewritten(jar, directory.resolve("other.jar")) { it[Attributes.Name("Rtcoord-Version")] = "0.0.1-other" }
         val failure = assertThrows(ScriptFailure::class.java) { CompiledCoordinator.load(other) }
-        assertEquals(listOf("$other: compiled by rtcoord 0.0.1-other, and this is rtcoord ${CompiledCoordinator.version}: compile it again with this one"), failure.problems)
+        assertEquals(
+            listOf(
+                "$other: compiled by rtcoord 0.0.1-other, and this is rtcoord ${CompiledCoordinator.version}: compile it again with this one"
+            ),
+            failure.problems,
+        )
     }
 
     @Test
     fun `a jar that is not a coordinator is refused with its path`() {
         val plain = directory.resolve("plain.jar")
-        JarOutputStream(Files.newOutputStream(plain), Manifest().apply { mainAttributes[Attributes.Name.MANIFEST_VERSION] = "1.0" }).use { out ->
-            out.putNextEntry(JarEntry("hello.txt"))
-            out.write("hello".toByteArray())
-        }
+        JarOutputStream(
+                Files.newOutputStream(plain),
+                Manifest().apply { mainAttributes[Attributes.Name.MANIFEST_VERSION] = "1.0" },
+            )
+            .use { out ->
+                out.putNextEntry(JarEntry("hello.txt"))
+                out.write("hello".toByteArray())
+            }
         assertEquals(
-            listOf("$plain: not a compiled coordinator: its manifest has no Rtcoord-Coordinator (compile one with rtcoord compile)"),
+            listOf(
+                "$plain: not a compiled coordinator: its manifest has no Rtcoord-Coordinator (compile one with rtcoord compile)"
+            ),
             assertThrows(ScriptFailure::class.java) { CompiledCoordinator.load(plain) }.problems,
         )
         val text = Files.writeString(directory.resolve("text.jar"), "not a jar at all\n")
@@ -103,11 +118,12 @@ class CompiledCoordinatorTest {
         JarInputStream(Files.newInputStream(jar)).use { input ->
             val manifest = Manifest(input.manifest).also { change(it.mainAttributes) }
             JarOutputStream(Files.newOutputStream(to), manifest).use { out ->
-                generateSequence { input.nextJarEntry }.forEach { entry ->
-                    out.putNextEntry(JarEntry(entry.name))
-                    out.write(input.readBytes())
-                    out.closeEntry()
-                }
+                generateSequence { input.nextJarEntry }
+                    .forEach { entry ->
+                        out.putNextEntry(JarEntry(entry.name))
+                        out.write(input.readBytes())
+                        out.closeEntry()
+                    }
             }
         }
         return to

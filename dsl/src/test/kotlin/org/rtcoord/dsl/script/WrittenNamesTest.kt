@@ -3,19 +3,24 @@ package org.rtcoord.dsl.script
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Test
 
-/** The names a script's text passes to the DSL, as `check` reads them: where, of what kind, and which it cannot know. */
+/**
+ * The names a script's text passes to the DSL, as `check` reads them: where, of what kind, and which it cannot know.
+ */
 class WrittenNamesTest {
-    private fun read(text: String) = WrittenNames.read(text).map { "${it.position} ${it.kind} ${it.name ?: "(${it.expression})"}" }
+    private fun read(text: String) =
+        WrittenNames.read(text).map { "${it.position} ${it.kind} ${it.name ?: "(${it.expression})"}" }
 
     @Test
     fun `names in rules and handlers, with the column of their opening quote`() {
-        val text = """
+        val text =
+            """
             on(component("laser0.rtc")).state(ERROR) {
                 component("lazer0").reset()
                 connect("odometry0.rtc:odo", component("odo_localise0.rtc").port("odo"), mapOf("a" to "b"))
                 manager().create("odo_localise")
             }
-        """.trimIndent()
+            """
+                .trimIndent()
         assertEquals(
             listOf(
                 "1:14 COMPONENT laser0.rtc",
@@ -32,14 +37,16 @@ class WrittenNamesTest {
 
     @Test
     fun `comments are skipped, and names built at run time are said to be unknown`() {
-        val text = """
+        val text =
+            """
             // component("commented.rtc")
             /* port("also:commented") */
             val name = args.first()
             on(component(name)).state(ERROR) { component("${'$'}name.rtc").port("scan") }
             val created = "x"
             log("component(\"inside.rtc\") in a string")
-        """.trimIndent()
+            """
+                .trimIndent()
         assertEquals(
             listOf("4:14 COMPONENT (name)", "4:46 COMPONENT (\"${'$'}name.rtc\")", "4:64 PORT (\"scan\")"),
             read(text),
@@ -48,11 +55,13 @@ class WrittenNamesTest {
 
     @Test
     fun `network words and named arguments`() {
-        val text = """
+        val text =
+            """
             modes("m") {
                 mode("a") { network { active("a.rtc", "b.rtc"); connected(from = "a.rtc:out", to = "b.rtc:in"); inactive("c.rtc") } }
             }
-        """.trimIndent()
+            """
+                .trimIndent()
         assertEquals(
             listOf("2:34 COMPONENT a.rtc", "2:43 COMPONENT b.rtc", "2:70 PORT a.rtc:out", "2:88 PORT b.rtc:in"),
             read(text),
@@ -61,6 +70,9 @@ class WrittenNamesTest {
 
     @Test
     fun `a component type is no name, and a glob with a type names the glob`() {
-        assertEquals(listOf("2:11 COMPONENT laser*"), read("on(component(type = \"laser\")).state(ERROR) { }\ncomponent(\"laser*\", type = \"laser\")"))
+        assertEquals(
+            listOf("2:11 COMPONENT laser*"),
+            read("on(component(type = \"laser\")).state(ERROR) { }\ncomponent(\"laser*\", type = \"laser\")"),
+        )
     }
 }

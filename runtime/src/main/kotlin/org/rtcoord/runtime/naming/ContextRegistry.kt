@@ -1,5 +1,7 @@
 package org.rtcoord.runtime.naming
 
+import java.util.concurrent.locks.ReentrantLock
+import kotlin.concurrent.withLock
 import org.omg.CORBA.portable.ObjectImpl
 import org.omg.CosNaming.Binding
 import org.omg.CosNaming.BindingIterator
@@ -7,14 +9,12 @@ import org.omg.CosNaming.BindingIteratorHelper
 import org.omg.CosNaming.NamingContextExtHelper
 import org.rtcoord.runtime.RuntimeOrb
 import org.slf4j.LoggerFactory
-import java.util.concurrent.locks.ReentrantLock
-import kotlin.concurrent.withLock
 
 private val log = LoggerFactory.getLogger(ContextRegistry::class.java)
 
 /**
- * The live naming contexts of one naming service and the lock that guards all their bindings. One lock
- * for the whole tree keeps a compound name's walk and its final step atomic; every step is a map access.
+ * The live naming contexts of one naming service and the lock that guards all their bindings. One lock for the whole
+ * tree keeps a compound name's walk and its final step atomic; every step is a map access.
  */
 internal class ContextRegistry(private val orb: RuntimeOrb) {
     val lock = ReentrantLock()
@@ -26,7 +26,8 @@ internal class ContextRegistry(private val orb: RuntimeOrb) {
     val root: NamingContextServant = create()
 
     /** All live contexts, the root first. */
-    val contexts: List<NamingContextServant> get() = lock.withLock { live.values.toList() }
+    val contexts: List<NamingContextServant>
+        get() = lock.withLock { live.values.toList() }
 
     /** A new context, active and unbound. */
     fun create(): NamingContextServant = lock.withLock {

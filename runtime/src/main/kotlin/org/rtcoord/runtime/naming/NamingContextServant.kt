@@ -1,5 +1,6 @@
 package org.rtcoord.runtime.naming
 
+import kotlin.concurrent.withLock
 import org.omg.CORBA.BAD_PARAM
 import org.omg.CORBA.NO_PERMISSION
 import org.omg.CosNaming.BindingIteratorHolder
@@ -15,7 +16,6 @@ import org.omg.CosNaming.NamingContextPackage.NotEmpty
 import org.omg.CosNaming.NamingContextPackage.NotFound
 import org.omg.CosNaming.NamingContextPackage.NotFoundReason
 import org.slf4j.LoggerFactory
-import kotlin.concurrent.withLock
 
 private val log = LoggerFactory.getLogger(NamingContextServant::class.java)
 
@@ -28,20 +28,40 @@ internal class NamingContextServant(private val registry: ContextRegistry) : Nam
     val bindings = LinkedHashMap<NameKey, Bound>()
 
     override fun bind(n: Array<NameComponent>?, obj: org.omg.CORBA.Object?): Unit =
-        place(n, obj ?: throw BAD_PARAM("cannot bind a nil reference"), BindingType.nobject, replace = false) { next, rest, target -> next.bind(rest, target) }
+        place(n, obj ?: throw BAD_PARAM("cannot bind a nil reference"), BindingType.nobject, replace = false) {
+            next,
+            rest,
+            target ->
+            next.bind(rest, target)
+        }
 
     override fun bind_context(n: Array<NameComponent>?, nc: NamingContext?): Unit =
-        place(n, nc ?: throw BAD_PARAM("cannot bind a nil context"), BindingType.ncontext, replace = false) { next, rest, target -> next.bind_context(rest, target) }
+        place(n, nc ?: throw BAD_PARAM("cannot bind a nil context"), BindingType.ncontext, replace = false) {
+            next,
+            rest,
+            target ->
+            next.bind_context(rest, target)
+        }
 
     override fun rebind(n: Array<NameComponent>?, obj: org.omg.CORBA.Object?): Unit =
-        place(n, obj ?: throw BAD_PARAM("cannot bind a nil reference"), BindingType.nobject, replace = true) { next, rest, target -> next.rebind(rest, target) }
+        place(n, obj ?: throw BAD_PARAM("cannot bind a nil reference"), BindingType.nobject, replace = true) {
+            next,
+            rest,
+            target ->
+            next.rebind(rest, target)
+        }
 
     override fun rebind_context(n: Array<NameComponent>?, nc: NamingContext?): Unit =
-        place(n, nc ?: throw BAD_PARAM("cannot bind a nil context"), BindingType.ncontext, replace = true) { next, rest, target -> next.rebind_context(rest, target) }
+        place(n, nc ?: throw BAD_PARAM("cannot bind a nil context"), BindingType.ncontext, replace = true) {
+            next,
+            rest,
+            target ->
+            next.rebind_context(rest, target)
+        }
 
     /**
-     * Binds [target] as [type] at [n] (a [replace] replaces what is bound there); a name through a
-     * context of another name server is passed on to it by [elsewhere], the same operation there.
+     * Binds [target] as [type] at [n] (a [replace] replaces what is bound there); a name through a context of another
+     * name server is passed on to it by [elsewhere], the same operation there.
      */
     private fun <T : org.omg.CORBA.Object> place(
         n: Array<NameComponent>?,
@@ -49,9 +69,13 @@ internal class NamingContextServant(private val registry: ContextRegistry) : Nam
         type: BindingType,
         replace: Boolean,
         elsewhere: (NamingContext, Array<NameComponent>, T) -> Unit,
-    ): Unit = inLastContext(n, { context, key -> if (replace) context.replace(key, type, target) else context.add(key, type, target) }) { next, rest ->
-        elsewhere(next, rest, target)
-    }
+    ): Unit =
+        inLastContext(
+            n,
+            { context, key -> if (replace) context.replace(key, type, target) else context.add(key, type, target) },
+        ) { next, rest ->
+            elsewhere(next, rest, target)
+        }
 
     override fun resolve(n: Array<NameComponent>?): org.omg.CORBA.Object =
         inLastContext(n, { context, key -> context.lookUp(key).target }) { next, rest ->
@@ -59,11 +83,14 @@ internal class NamingContextServant(private val registry: ContextRegistry) : Nam
         }
 
     override fun unbind(n: Array<NameComponent>?) {
-        inLastContext(n, { context, key ->
-            context.lookUp(key)
-            context.bindings.remove(key)
-            log.debug("Unbound {}", key)
-        }) { next, rest ->
+        inLastContext(
+            n,
+            { context, key ->
+                context.lookUp(key)
+                context.bindings.remove(key)
+                log.debug("Unbound {}", key)
+            },
+        ) { next, rest ->
             next.unbind(rest)
         }
     }
@@ -71,10 +98,13 @@ internal class NamingContextServant(private val registry: ContextRegistry) : Nam
     override fun new_context(): NamingContext = registry.create().reference
 
     override fun bind_new_context(n: Array<NameComponent>?): NamingContext =
-        inLastContext(n, { context, key ->
-            if (key in context.bindings) throw AlreadyBound()
-            registry.create().reference.also { context.add(key, BindingType.ncontext, it) }
-        }) { next, rest ->
+        inLastContext(
+            n,
+            { context, key ->
+                if (key in context.bindings) throw AlreadyBound()
+                registry.create().reference.also { context.add(key, BindingType.ncontext, it) }
+            },
+        ) { next, rest ->
             next.bind_new_context(rest)
         }
 
@@ -105,9 +135,9 @@ internal class NamingContextServant(private val registry: ContextRegistry) : Nam
     override fun resolve_str(sn: String?): org.omg.CORBA.Object = resolve(to_name(sn))
 
     /**
-     * Walks [n] through the contexts of this service and runs [here] on the last component in the
-     * context that holds it, all under the lock. When the walk reaches a context served elsewhere it
-     * hands that context the rest of the name through [elsewhere], outside the lock.
+     * Walks [n] through the contexts of this service and runs [here] on the last component in the context that holds
+     * it, all under the lock. When the walk reaches a context served elsewhere it hands that context the rest of the
+     * name through [elsewhere], outside the lock.
      */
     private fun <T> inLastContext(
         n: Array<NameComponent>?,
@@ -115,15 +145,17 @@ internal class NamingContextServant(private val registry: ContextRegistry) : Nam
         elsewhere: (NamingContext, Array<NameComponent>) -> T,
     ): T {
         val name = NameKey.validated(n)
-        val (next, rest) = registry.lock.withLock {
-            var context = this
-            for (i in 0 until name.lastIndex) {
-                val bound = context.bindings[name[i]] ?: throw notFound(NotFoundReason.missing_node, name, i)
-                if (bound.type != BindingType.ncontext) throw notFound(NotFoundReason.not_context, name, i)
-                context = registry.local(bound.target) ?: return@withLock bound.target to name.subList(i + 1, name.size)
+        val (next, rest) =
+            registry.lock.withLock {
+                var context = this
+                for (i in 0 until name.lastIndex) {
+                    val bound = context.bindings[name[i]] ?: throw notFound(NotFoundReason.missing_node, name, i)
+                    if (bound.type != BindingType.ncontext) throw notFound(NotFoundReason.not_context, name, i)
+                    context =
+                        registry.local(bound.target) ?: return@withLock bound.target to name.subList(i + 1, name.size)
+                }
+                return here(context, name.last())
             }
-            return here(context, name.last())
-        }
         return elsewhere(NamingContextHelper.unchecked_narrow(next), rest.toComponents())
     }
 
@@ -140,7 +172,8 @@ internal class NamingContextServant(private val registry: ContextRegistry) : Nam
     private fun replace(key: NameKey, type: BindingType, target: org.omg.CORBA.Object) {
         val existing = bindings[key]
         if (existing != null && existing.type != type) {
-            val why = if (existing.type == BindingType.ncontext) NotFoundReason.not_object else NotFoundReason.not_context
+            val why =
+                if (existing.type == BindingType.ncontext) NotFoundReason.not_object else NotFoundReason.not_context
             throw NotFound(why, arrayOf(key.toComponent()))
         }
         bindings[key] = Bound(key, type, target)

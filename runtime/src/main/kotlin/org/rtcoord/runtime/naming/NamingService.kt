@@ -1,28 +1,32 @@
 package org.rtcoord.runtime.naming
 
+import java.util.concurrent.atomic.AtomicBoolean
 import org.rtcoord.runtime.RuntimeOrb
 import org.slf4j.LoggerFactory
-import java.util.concurrent.atomic.AtomicBoolean
 
 private val log = LoggerFactory.getLogger(NamingService::class.java)
 
 /**
- * A CORBA naming service (CosNaming `NamingContextExt`) in this JVM, on 127.0.0.1 unless told otherwise, that tools written
- * by others (omniORB's `nameclt`, rtshell) use as they use omniNames: its root context answers at
- * [corbaloc]. Contexts and bindings live in memory; [snapshot] and [start] carry them over a restart.
+ * A CORBA naming service (CosNaming `NamingContextExt`) in this JVM, on 127.0.0.1 unless told otherwise, that tools
+ * written by others (omniORB's `nameclt`, rtshell) use as they use omniNames: its root context answers at [corbaloc].
+ * Contexts and bindings live in memory; [snapshot] and [start] carry them over a restart.
  */
-public class NamingService private constructor(
+public class NamingService
+private constructor(
     private val orb: RuntimeOrb,
     private val registry: ContextRegistry,
 ) : AutoCloseable {
     /** The port it listens on. */
-    public val port: Int get() = orb.port
+    public val port: Int
+        get() = orb.port
 
     /** The root context's address, `corbaloc:iiop:HOST:PORT/NameService`. */
-    public val corbaloc: String get() = orb.corbaloc(KEY)
+    public val corbaloc: String
+        get() = orb.corbaloc(KEY)
 
     /** `HOST:PORT`, the form rtshell paths (`/127.0.0.1:PORT/`) and `-n` options take. */
-    public val address: String get() = "${orb.host}:${orb.port}"
+    public val address: String
+        get() = "${orb.host}:${orb.port}"
 
     private val closed = AtomicBoolean()
 
@@ -44,8 +48,8 @@ public class NamingService private constructor(
         private const val KEY = "NameService"
 
         /**
-         * Starts a naming service on [host]:[port] (port 0: one the system chooses), empty or with the
-         * contexts and bindings of [restore].
+         * Starts a naming service on [host]:[port] (port 0: one the system chooses), empty or with the contexts and
+         * bindings of [restore].
          */
         public fun start(port: Int = 0, restore: NamingSnapshot? = null, host: String = "127.0.0.1"): NamingService {
             val orb = RuntimeOrb.start(port, host)

@@ -3,8 +3,8 @@ package org.rtcoord.runtime.naming
 import org.omg.CosNaming.NamingContextPackage.InvalidName
 
 /**
- * The CosNaming stringified name syntax: components separated by `/`, id and kind by `.`, and `\`
- * escaping any of those three characters inside an id or kind.
+ * The CosNaming stringified name syntax: components separated by `/`, id and kind by `.`, and `\` escaping any of those
+ * three characters inside an id or kind.
  */
 internal object StringifiedNames {
     private const val SEPARATOR = '/'
@@ -12,21 +12,23 @@ internal object StringifiedNames {
     private const val ESCAPE = '\\'
     private val special = setOf(SEPARATOR, KIND, ESCAPE)
 
-    fun format(name: List<NameKey>): String = name.joinToString(SEPARATOR.toString()) { key ->
-        if (key.kind.isEmpty()) escape(key.id) else escape(key.id) + KIND + escape(key.kind)
-    }
+    fun format(name: List<NameKey>): String =
+        name.joinToString(SEPARATOR.toString()) { key ->
+            if (key.kind.isEmpty()) escape(key.id) else escape(key.id) + KIND + escape(key.kind)
+        }
 
     /** The name [sn] stands for; raises InvalidName for anything the syntax (or [NameKey]) rejects. */
     fun parse(sn: String): List<NameKey> = split(sn, SEPARATOR).map(::component)
 
     private fun component(text: String): NameKey {
         val parts = split(text, KIND)
-        val key = when (parts.size) {
-            1 -> NameKey(unescape(parts[0]), "")
-            // "id." is malformed: an empty kind is written without the dot.
-            2 -> NameKey(unescape(parts[0]), unescape(parts[1]).ifEmpty { throw InvalidName() })
-            else -> throw InvalidName()
-        }
+        val key =
+            when (parts.size) {
+                1 -> NameKey(unescape(parts[0]), "")
+                // "id." is malformed: an empty kind is written without the dot.
+                2 -> NameKey(unescape(parts[0]), unescape(parts[1]).ifEmpty { throw InvalidName() })
+                else -> throw InvalidName()
+            }
         if (key.id.isEmpty()) throw InvalidName()
         return key
     }

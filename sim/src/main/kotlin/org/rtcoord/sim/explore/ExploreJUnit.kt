@@ -7,9 +7,9 @@ import javax.xml.stream.XMLOutputFactory
 import javax.xml.stream.XMLStreamWriter
 
 /**
- * Writes an exploration as JUnit XML for CI: `TEST-NAME.explore.xml`, a test case per distinct failure
- * (named by where it fails, its failure holding the smallest schedule and the replay command, its output
- * the first failing run's timeline), or one passing test case saying how many runs found nothing.
+ * Writes an exploration as JUnit XML for CI: `TEST-NAME.explore.xml`, a test case per distinct failure (named by where
+ * it fails, its failure holding the smallest schedule and the replay command, its output the first failing run's
+ * timeline), or one passing test case saying how many runs found nothing.
  */
 public object ExploreJUnit {
     private val factory: XMLOutputFactory = XMLOutputFactory.newFactory()
@@ -40,12 +40,16 @@ public object ExploreJUnit {
                     xml.writeStartElement("failure")
                     xml.writeAttribute("message", clean(found.failure.toString()))
                     xml.writeAttribute("type", "explored")
-                    val lines = listOf(found.failure.toString()) + found.failure.details.map { "  $it" } + listOf(
-                        "scenario: ${found.scenario}",
-                        "failed in ${found.occurrences} run(s), first ${found.firstRun}: ${found.drawn}",
-                        "smallest schedule: ${found.smallest}",
-                        "replay: ${found.replay}",
-                    ) + listOfNotNull(found.test?.let { "regression test: $it" })
+                    val lines =
+                        listOf(found.failure.toString()) +
+                            found.failure.details.map { "  $it" } +
+                            listOf(
+                                "scenario: ${found.scenario}",
+                                "failed in ${found.occurrences} run(s), first ${found.firstRun}: ${found.drawn}",
+                                "smallest schedule: ${found.smallest}",
+                                "replay: ${found.replay}",
+                            ) +
+                            listOfNotNull(found.test?.let { "regression test: $it" })
                     xml.writeCharacters(clean(lines.joinToString("\n")))
                     xml.writeEndElement()
                     if (found.timeline.isNotEmpty()) {

@@ -3,12 +3,14 @@ package org.rtcoord.sim.explore
 import kotlin.time.Duration
 
 /**
- * How `rtcoord test --explore` searches: [seed] draws the schedules; it stops after [runs] runs or once
- * [duration] is up (the first that comes; both null: at [DEFAULT_RUNS]); each schedule has up to
- * [maxFaults] faults; [parallelism] runs go at once, each on a system of its own; a distinct failure is
- * shrunk in at most [shrinkRuns] runs; [writeTests] writes each as a regression test next to the test.
+ * How `rtcoord test --explore` searches: [seed] draws the schedules; it stops after [runs] runs or once [duration] is
+ * up (the first that comes; both null: at [DEFAULT_RUNS]); each schedule has up to [maxFaults] faults; [parallelism]
+ * runs go at once, each on a system of its own; a distinct failure is shrunk in at most [shrinkRuns] runs; [writeTests]
+ * writes each as a regression test next to the test.
  */
-public class ExploreOptions @JvmOverloads constructor(
+public class ExploreOptions
+@JvmOverloads
+constructor(
     /** What the schedules are drawn from: the same seed draws the same schedules. */
     public val seed: Long,
     /** How many runs, or null for as many as [duration] allows. */
@@ -31,7 +33,8 @@ public class ExploreOptions @JvmOverloads constructor(
     }
 
     /** The runs to make: [runs], or [DEFAULT_RUNS] when neither it nor [duration] is given, or unbounded. */
-    internal val runLimit: Long get() = runs?.toLong() ?: if (duration == null) DEFAULT_RUNS.toLong() else Long.MAX_VALUE
+    internal val runLimit: Long
+        get() = runs?.toLong() ?: if (duration == null) DEFAULT_RUNS.toLong() else Long.MAX_VALUE
 
     public companion object {
         /** Runs made when neither their number nor a duration is given. */

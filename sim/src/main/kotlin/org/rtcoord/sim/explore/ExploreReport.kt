@@ -1,17 +1,18 @@
 package org.rtcoord.sim.explore
 
+import java.nio.file.Path
+import kotlin.time.Duration
 import org.rtcoord.sim.test.TestFailure
 import org.rtcoord.sim.test.TestFile
 import org.rtcoord.sim.test.TimelineEntry
-import java.nio.file.Path
-import kotlin.time.Duration
 
 /**
- * What an exploration of [file] found: how many [runs] it made and how many [failed] or were [skipped]
- * (each reason a skip had, with how often), over [elapsed], whether it was [interrupted] before its end,
- * and each distinct failure once, in [failures].
+ * What an exploration of [file] found: how many [runs] it made and how many [failed] or were [skipped] (each reason a
+ * skip had, with how often), over [elapsed], whether it was [interrupted] before its end, and each distinct failure
+ * once, in [failures].
  */
-public class ExploreReport internal constructor(
+public class ExploreReport
+internal constructor(
     /** The test explored. */
     public val file: TestFile,
     /** The seed its schedules were drawn from. */
@@ -26,7 +27,10 @@ public class ExploreReport internal constructor(
     public val skipReasons: Map<String, Int>,
     /** How long it explored, shrinking included. */
     public val elapsed: Duration,
-    /** The runs' own time summed: from each run's coordinator start to its last entry, the time the robot would have taken. */
+    /**
+     * The runs' own time summed: from each run's coordinator start to its last entry, the time the robot would have
+     * taken.
+     */
     public val robotTime: Duration,
     /** Whether it was stopped (Ctrl-C) before its runs or its time were done. */
     public val interrupted: Boolean,
@@ -35,12 +39,12 @@ public class ExploreReport internal constructor(
 )
 
 /**
- * A distinct failure an exploration found: where and how it fails ([failure]), how many runs failed so,
- * the schedule of the first ([drawn], run [firstRun]) and the smallest that still fails so ([smallest]),
- * the command that replays it, and the regression [test] written for it (with whether it failed when
- * run as written).
+ * A distinct failure an exploration found: where and how it fails ([failure]), how many runs failed so, the schedule of
+ * the first ([drawn], run [firstRun]) and the smallest that still fails so ([smallest]), the command that replays it,
+ * and the regression [test] written for it (with whether it failed when run as written).
  */
-public class FoundFailure internal constructor(
+public class FoundFailure
+internal constructor(
     /** The first run's failure: where (`file:line:col`) and what, with what explains it. */
     public val failure: TestFailure,
     /** The scenario it failed in. */
@@ -68,10 +72,11 @@ public class FoundFailure internal constructor(
 )
 
 /**
- * One run done, for a progress display: its [key] (`SEED:INDEX`), [scenario], [schedule] and [verdict]
- * (`PASS`, `FAIL FILE:LINE:COL: ...`, `SKIP ...`), and the totals so far.
+ * One run done, for a progress display: its [key] (`SEED:INDEX`), [scenario], [schedule] and [verdict] (`PASS`, `FAIL
+ * FILE:LINE:COL: ...`, `SKIP ...`), and the totals so far.
  */
-public class ExploreProgress internal constructor(
+public class ExploreProgress
+internal constructor(
     /** `SEED:INDEX` of the run. */
     public val key: String,
     /** Its scenario. */
@@ -92,14 +97,16 @@ public class ExploreProgress internal constructor(
     public val elapsed: Duration,
 ) {
     /** Runs per minute so far. */
-    public val perMinute: Double get() = if (elapsed.isPositive()) runs * 60_000.0 / elapsed.inWholeMilliseconds else 0.0
+    public val perMinute: Double
+        get() = if (elapsed.isPositive()) runs * 60_000.0 / elapsed.inWholeMilliseconds else 0.0
 }
 
 /**
- * [reruns] runs of one schedule, run [key] of a test: its [schedule], each run's verdict, and the share
- * of runs that agree with the most common verdict, [agreement].
+ * [reruns] runs of one schedule, run [key] of a test: its [schedule], each run's verdict, and the share of runs that
+ * agree with the most common verdict, [agreement].
  */
-public class ReplayReport internal constructor(
+public class ReplayReport
+internal constructor(
     /** `SEED:INDEX`. */
     public val key: String,
     /** The scenario run. */
@@ -120,10 +127,12 @@ public class ReplayReport internal constructor(
     public val elapsed: Duration,
 ) {
     /** Whether the most common verdict is a failure. */
-    public val failed: Boolean get() = verdict.startsWith("FAIL")
+    public val failed: Boolean
+        get() = verdict.startsWith("FAIL")
 
     /** [agreeing] of [reruns]. */
-    public val agreement: Double get() = agreeing.toDouble() / reruns
+    public val agreement: Double
+        get() = agreeing.toDouble() / reruns
 }
 
 /** A test that cannot be explored, and why: [lines], one a problem (`file:line:col: what`). */

@@ -1,5 +1,10 @@
 package org.rtcoord.sim.explore
 
+import java.nio.file.Files
+import java.nio.file.Path
+import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.Duration
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.Dispatchers
@@ -22,23 +27,18 @@ import org.rtcoord.sim.test.TestResult
 import org.rtcoord.sim.test.TestScriptHost
 import org.rtcoord.sim.test.TestStep
 import org.rtcoord.sim.test.UnrunnableTest
-import java.nio.file.Files
-import java.nio.file.Path
-import java.util.concurrent.atomic.AtomicLong
-import kotlin.time.Duration
-import kotlin.time.TimeSource
 
 /**
- * `rtcoord test --explore`: searches the fault schedules a test's system can meet for the ones that make
- * its coordinator fail. Each run draws a schedule from the seed and its index ([ScheduleSpace]), plays the
- * test's scenario on a fresh simulated system with the schedule's faults applied alongside its steps, and
- * judges it by the test's oracle: its invariants, its expectations, a handler that fails. A fault that
- * cannot be applied skips the run. Each distinct failure (by where it fails) is shrunk to the smallest
- * schedule that still fails there ([ScheduleShrinker]) and written as a regression test ([FoundTest]).
+ * `rtcoord test --explore`: searches the fault schedules a test's system can meet for the ones that make its
+ * coordinator fail. Each run draws a schedule from the seed and its index ([ScheduleSpace]), plays the test's scenario
+ * on a fresh simulated system with the schedule's faults applied alongside its steps, and judges it by the test's
+ * oracle: its invariants, its expectations, a handler that fails. A fault that cannot be applied skips the run. Each
+ * distinct failure (by where it fails) is shrunk to the smallest schedule that still fails there ([ScheduleShrinker])
+ * and written as a regression test ([FoundTest]).
  *
  * Refused ([ExploreRefused]): a test that cannot be loaded, one with nothing to check (no invariant and no
- * expectation), and one that fails without any fault. [stop] (Ctrl-C) ends an exploration early with
- * what it found so far, unshrunk.
+ * expectation), and one that fails without any fault. [stop] (Ctrl-C) ends an exploration early with what it found so
+ * far, unshrunk.
  */
 public class FaultExplorer @JvmOverloads constructor(private val scripts: ScriptHost = ScriptHost()) {
     private val loader = TestLoader(TestScriptHost(), scripts)
@@ -50,10 +50,14 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
     }
 
     /**
-     * Explores the test at [path] as [options] say, telling [progress] of each run as it ends (from any
-     * thread, one at a time). Throws [ExploreRefused] for a test that cannot be explored.
+     * Explores the test at [path] as [options] say, telling [progress] of each run as it ends (from any thread, one at
+     * a time). Throws [ExploreRefused] for a test that cannot be explored.
      */
-    public suspend fun explore(path: Path, options: ExploreOptions, progress: (ExploreProgress) -> Unit = {}): ExploreReport = coroutineScope {
+    public suspend fun explore(
+        path: Path,
+        options: ExploreOptions,
+        progress: (ExploreProgress) -> Unit = {},
+    ): ExploreReport = coroutineScope {
         val began = TimeSource.Monotonic.markNow()
         val test = load(path)
         val space = space(test, options.maxFaults)
@@ -61,41 +65,61 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         val found = Findings()
         val next = AtomicLong()
         val deadline = options.duration?.let { began + it }
-        val workers = launch(Dispatchers.IO) {
-            repeat(options.parallelism) {
-                launch {
-                    while (deadline?.hasPassedNow() != true) {
-                        val index = next.getAndIncrement()
-                        if (index >= options.runLimit) break
-                        val schedule = space.draw(options.seed, index)
-                        val result = run(schedule)
-                        synchronized(found) { progress(found.add(schedule, result, began.elapsedNow())) }
+        val workers =
+            launch(Dispatchers.IO) {
+                repeat(options.parallelism) {
+                    launch {
+                        while (deadline?.hasPassedNow() != true) {
+                            val index = next.getAndIncrement()
+                            if (index >= options.runLimit) break
+                            val schedule = space.draw(options.seed, index)
+                            val result = run(schedule)
+                            synchronized(found) { progress(found.add(schedule, result, began.elapsedNow())) }
+                        }
                     }
                 }
             }
+        val interrupting = launch {
+            stopping.await()
+            workers.cancel()
         }
-        val interrupting = launch { stopping.await(); workers.cancel() }
         workers.join()
         interrupting.cancel()
         val interrupted = stopping.isCompleted
-        val failures = found.groups.values.map { group ->
-            val replay = replayCommand(test, group.schedule, options.maxFaults)
-            if (interrupted) return@map group.found(group.schedule, 0, replay, null, null)
-            val shrinker = ScheduleShrinker(options.shrinkRuns) { candidate ->
-                val verdict = Verdict.of(run(candidate))
-                verdict is Verdict.Failed && verdict.key == group.verdict.key
+        val failures =
+            found.groups.values.map { group ->
+                val replay = replayCommand(test, group.schedule, options.maxFaults)
+                if (interrupted) return@map group.found(group.schedule, 0, replay, null, null)
+                val shrinker =
+                    ScheduleShrinker(options.shrinkRuns) { candidate ->
+                        val verdict = Verdict.of(run(candidate))
+                        verdict is Verdict.Failed && verdict.key == group.verdict.key
+                    }
+                val smallest = shrinker.shrink(group.schedule)
+                val written =
+                    if (options.writeTests)
+                        FoundTest.write(test, group.schedule, smallest, group.verdict.failure, replay)
+                    else null
+                group.found(smallest, shrinker.runs, replay, written, written?.let { failsAsWritten(it) })
             }
-            val smallest = shrinker.shrink(group.schedule)
-            val written = if (options.writeTests) FoundTest.write(test, group.schedule, smallest, group.verdict.failure, replay) else null
-            group.found(smallest, shrinker.runs, replay, written, written?.let { failsAsWritten(it) })
-        }
-        ExploreReport(test.file, options.seed, found.runs, found.failed, found.skipped, found.skipReasons.toMap(), began.elapsedNow(), found.robotTime, interrupted, failures)
+        ExploreReport(
+            test.file,
+            options.seed,
+            found.runs,
+            found.failed,
+            found.skipped,
+            found.skipReasons.toMap(),
+            began.elapsedNow(),
+            found.robotTime,
+            interrupted,
+            failures,
+        )
     }
 
     /**
-     * Runs schedule [index] of [seed] (drawn with at most [maxFaults] faults, as the exploration that
-     * found it drew it) of the test at [path] [reruns] times, [parallelism] at once, telling [progress]
-     * of each run's verdict; the report says how many agree.
+     * Runs schedule [index] of [seed] (drawn with at most [maxFaults] faults, as the exploration that found it drew it)
+     * of the test at [path] [reruns] times, [parallelism] at once, telling [progress] of each run's verdict; the report
+     * says how many agree.
      */
     public suspend fun replay(
         path: Path,
@@ -112,74 +136,107 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         val schedule = space(test, maxFaults).draw(seed, index)
         val permits = Semaphore(parallelism)
         val done = AtomicLong()
-        val results = (1..reruns).map {
-            async(Dispatchers.IO) {
-                permits.withPermit { run(schedule) }.also { progress(done.incrementAndGet().toInt(), Verdict.of(it).toString()) }
-            }
-        }.awaitAll()
+        val results =
+            (1..reruns)
+                .map {
+                    async(Dispatchers.IO) {
+                        permits
+                            .withPermit { run(schedule) }
+                            .also { progress(done.incrementAndGet().toInt(), Verdict.of(it).toString()) }
+                    }
+                }
+                .awaitAll()
         val verdicts = results.map(Verdict::of)
         val common = verdicts.maxBy { v -> verdicts.count { it.agrees(v) } }
         val firstFailed = results.firstOrNull { !it.passed }
         ReplayReport(
-            schedule.key, schedule.scenario.name, schedule.toString(), reruns, verdicts.map(Verdict::toString), common.toString(),
-            verdicts.count { it.agrees(common) }, firstFailed?.let { TestReport.failures(it) + TestReport.timeline(it) }.orEmpty(), began.elapsedNow(),
+            schedule.key,
+            schedule.scenario.name,
+            schedule.toString(),
+            reruns,
+            verdicts.map(Verdict::toString),
+            common.toString(),
+            verdicts.count { it.agrees(common) },
+            firstFailed?.let { TestReport.failures(it) + TestReport.timeline(it) }.orEmpty(),
+            began.elapsedNow(),
         )
     }
 
     private suspend fun load(path: Path): LoadedTest {
-        val file = try {
-            TestFiles.find(listOf(path)).singleOrNull() ?: throw ExploreRefused(listOf("$path: explore one test file at a time"))
-        } catch (e: IllegalArgumentException) {
-            throw ExploreRefused(listOf(e.message.orEmpty()))
-        }
+        val file =
+            try {
+                TestFiles.find(listOf(path)).singleOrNull()
+                    ?: throw ExploreRefused(listOf("$path: explore one test file at a time"))
+            } catch (e: IllegalArgumentException) {
+                throw ExploreRefused(listOf(e.message.orEmpty()))
+            }
         if (Files.isDirectory(path)) throw ExploreRefused(listOf("$path: explore one test file at a time"))
-        val test = try {
-            withContext(Dispatchers.IO) { loader.load(file) }
-        } catch (e: UnrunnableTest) {
-            throw ExploreRefused(e.failures.map { it.toString() })
-        }
+        val test =
+            try {
+                withContext(Dispatchers.IO) { loader.load(file) }
+            } catch (e: UnrunnableTest) {
+                throw ExploreRefused(e.failures.map { it.toString() })
+            }
         val checks = test.scenarios.flatMap { it.steps }.filter { it !is TestStep.At && it !is TestStep.Meanwhile }
         if (checks.isEmpty()) {
-            throw ExploreRefused(listOf("${file.path}: nothing to check: the test has no invariant (always, never) and no expectation, so no schedule could fail it"))
+            throw ExploreRefused(
+                listOf(
+                    "${file.path}: nothing to check: the test has no invariant (always, never) and no expectation, so no schedule could fail it"
+                )
+            )
         }
         return test
     }
 
-    private fun space(test: LoadedTest, maxFaults: Int): ScheduleSpace = try {
-        ScheduleSpace(test, maxFaults)
-    } catch (e: IllegalArgumentException) {
-        throw ExploreRefused(listOf("${test.file.path}: ${e.message}"))
-    }
+    private fun space(test: LoadedTest, maxFaults: Int): ScheduleSpace =
+        try {
+            ScheduleSpace(test, maxFaults)
+        } catch (e: IllegalArgumentException) {
+            throw ExploreRefused(listOf("${test.file.path}: ${e.message}"))
+        }
 
     /** Runs each of [scenarios] once without faults: one that fails so is refused, as every schedule would fail it. */
     private suspend fun baseline(scenarios: List<ScenarioPlan>, parallelism: Int) = coroutineScope {
         val permits = Semaphore(parallelism)
-        val failed = scenarios.map { scenario -> async(Dispatchers.IO) { permits.withPermit { runPlain(scenario) } } }.awaitAll().filterNot { it.passed }
+        val failed =
+            scenarios
+                .map { scenario -> async(Dispatchers.IO) { permits.withPermit { runPlain(scenario) } } }
+                .awaitAll()
+                .filterNot { it.passed }
         if (failed.isNotEmpty()) {
             throw ExploreRefused(
-                failed.flatMap { result -> listOf("${result.name} fails without any fault injected; fix it (or the test) first:") + TestReport.failures(result).map { "  $it" } },
+                failed.flatMap { result ->
+                    listOf("${result.name} fails without any fault injected; fix it (or the test) first:") +
+                        TestReport.failures(result).map { "  $it" }
+                }
             )
         }
     }
 
     private suspend fun runPlain(scenario: ScenarioPlan): TestResult = ScenarioRun(scenario, scripts).run()
 
-    private suspend fun run(schedule: Schedule): TestResult = withContext(Dispatchers.IO) {
-        ScenarioRun(schedule.scenario, scripts, schedule.faults.map(Injection::of)).run()
-    }
+    private suspend fun run(schedule: Schedule): TestResult =
+        withContext(Dispatchers.IO) {
+            ScenarioRun(schedule.scenario, scripts, schedule.faults.map(Injection::of)).run()
+        }
 
-    /** Whether the regression test at [path] fails when run as written (one that cannot even be loaded does not count). */
-    private suspend fun failsAsWritten(path: Path): Boolean = try {
-        val test = withContext(Dispatchers.IO) { loader.load(TestFiles.find(listOf(path)).single()) }
-        test.scenarios.any { !runPlain(it).passed }
-    } catch (e: CancellationException) {
-        throw e
-    } catch (e: Exception) {
-        false
-    }
+    /**
+     * Whether the regression test at [path] fails when run as written (one that cannot even be loaded does not count).
+     */
+    private suspend fun failsAsWritten(path: Path): Boolean =
+        try {
+            val test = withContext(Dispatchers.IO) { loader.load(TestFiles.find(listOf(path)).single()) }
+            test.scenarios.any { !runPlain(it).passed }
+        } catch (e: CancellationException) {
+            throw e
+        } catch (e: Exception) {
+            false
+        }
 
     private fun replayCommand(test: LoadedTest, schedule: Schedule, maxFaults: Int): String =
-        "rtcoord test --explore --replay ${schedule.key}" + (if (maxFaults != ExploreOptions.DEFAULT_MAX_FAULTS) " --max-faults $maxFaults" else "") + " ${test.file.path}"
+        "rtcoord test --explore --replay ${schedule.key}" +
+            (if (maxFaults != ExploreOptions.DEFAULT_MAX_FAULTS) " --max-faults $maxFaults" else "") +
+            " ${test.file.path}"
 
     /** The runs' verdicts so far, the failures grouped by where they fail; guarded by its own lock. */
     private class Findings {
@@ -205,7 +262,17 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
                 }
                 Verdict.Passed -> {}
             }
-            return ExploreProgress(schedule.key, schedule.scenario.name, schedule.toString(), Verdict.of(result).toString(), runs, failed, skipped, groups.size, elapsed)
+            return ExploreProgress(
+                schedule.key,
+                schedule.scenario.name,
+                schedule.toString(),
+                Verdict.of(result).toString(),
+                runs,
+                failed,
+                skipped,
+                groups.size,
+                elapsed,
+            )
         }
     }
 
@@ -213,9 +280,20 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
     private class Group(val verdict: Verdict.Failed, val schedule: Schedule) {
         var occurrences = 0
 
-        fun found(smallest: Schedule, shrinkRuns: Int, replay: String, test: Path?, failsAsWritten: Boolean?) = FoundFailure(
-            verdict.failure, schedule.scenario.name, occurrences, schedule.key, schedule.toString(), smallest.toString(), smallest.faults.size,
-            shrinkRuns, replay, test, failsAsWritten, verdict.result.timeline,
-        )
+        fun found(smallest: Schedule, shrinkRuns: Int, replay: String, test: Path?, failsAsWritten: Boolean?) =
+            FoundFailure(
+                verdict.failure,
+                schedule.scenario.name,
+                occurrences,
+                schedule.key,
+                schedule.toString(),
+                smallest.toString(),
+                smallest.faults.size,
+                shrinkRuns,
+                replay,
+                test,
+                failsAsWritten,
+                verdict.result.timeline,
+            )
     }
 }

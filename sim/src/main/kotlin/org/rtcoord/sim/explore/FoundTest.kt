@@ -1,16 +1,15 @@
 package org.rtcoord.sim.explore
 
-import org.rtcoord.sim.test.LoadedTest
-import org.rtcoord.sim.test.TestFailure
 import java.nio.file.Files
 import java.nio.file.Path
+import org.rtcoord.sim.test.LoadedTest
+import org.rtcoord.sim.test.TestFailure
 
 /**
  * A failure exploring found, written as a regression test next to the test it was found in:
- * `NAME.found-SEED-INDEX.test.kts`, the test's text with its other scenarios left out and the schedule
- * in a `meanwhile { }` of the failing scenario (at the end of a file without scenarios), headed by how it
- * was found and the failure it shows. It fails as written while the coordinator has the fault, and
- * passes once it is fixed.
+ * `NAME.found-SEED-INDEX.test.kts`, the test's text with its other scenarios left out and the schedule in a `meanwhile
+ * { }` of the failing scenario (at the end of a file without scenarios), headed by how it was found and the failure it
+ * shows. It fails as written while the coordinator has the fault, and passes once it is fixed.
  */
 internal object FoundTest {
     /** Where the test for [schedule] found in [test] is written. */
@@ -26,13 +25,21 @@ internal object FoundTest {
         return path
     }
 
-    fun text(source: String, test: LoadedTest, drawn: Schedule, smallest: Schedule, failure: TestFailure, replay: String): String {
-        val header = listOf(
-            "// Found by `rtcoord test --explore` in ${test.file.path.fileName}, run ${smallest.key}, shrunk from ${drawn.faults.size} " +
-                "fault(s) to ${smallest.faults.size}; replay it with `$replay`.",
-            "// While the coordinator has the fault, this test fails as the exploration did:",
-            "//   ${failure.toString().replace('\n', ' ')}",
-        )
+    fun text(
+        source: String,
+        test: LoadedTest,
+        drawn: Schedule,
+        smallest: Schedule,
+        failure: TestFailure,
+        replay: String,
+    ): String {
+        val header =
+            listOf(
+                "// Found by `rtcoord test --explore` in ${test.file.path.fileName}, run ${smallest.key}, shrunk from ${drawn.faults.size} " +
+                    "fault(s) to ${smallest.faults.size}; replay it with `$replay`.",
+                "// While the coordinator has the fault, this test fails as the exploration did:",
+                "//   ${failure.toString().replace('\n', ' ')}",
+            )
         val meanwhile = listOf("meanwhile {") + smallest.faults.map { "    ${it.written}" } + "}"
         val blocks = test.scenarioLines.mapNotNull { ScenarioBlocks.block(source, it) }
         val mine = smallest.scenario.declaredAt?.let { at -> blocks.firstOrNull { it.line == at } }
@@ -55,12 +62,15 @@ internal object FoundTest {
 }
 
 /**
- * The `scenario("...") { ... }` calls of a test's text, found by the line they start on: where each
- * begins and ends, for [FoundTest] to keep one and leave the others out. Strings, characters and comments
- * are skipped, so braces in them do not count.
+ * The `scenario("...") { ... }` calls of a test's text, found by the line they start on: where each begins and ends,
+ * for [FoundTest] to keep one and leave the others out. Strings, characters and comments are skipped, so braces in them
+ * do not count.
  */
 internal object ScenarioBlocks {
-    /** A call from [start] (its line's start) to [end] (past its closing brace and line end); its body opens at [bodyStart]. */
+    /**
+     * A call from [start] (its line's start) to [end] (past its closing brace and line end); its body opens at
+     * [bodyStart].
+     */
     class Block(val line: Int, val start: Int, val bodyStart: Int, val end: Int, val indent: Int)
 
     fun block(source: String, line: Int): Block? {
@@ -77,11 +87,13 @@ internal object ScenarioBlocks {
                 continue
             }
             when (source[i]) {
-                '(', '{' -> {
+                '(',
+                '{' -> {
                     if (source[i] == '{' && depth == 0 && bodyStart < 0) bodyStart = i + 1
                     depth++
                 }
-                ')', '}' -> {
+                ')',
+                '}' -> {
                     depth--
                     if (depth == 0 && source[i] == '}' && bodyStart >= 0) {
                         val lineEnd = source.indexOf('\n', i).let { if (it < 0) source.length else it + 1 }
@@ -95,15 +107,17 @@ internal object ScenarioBlocks {
     }
 
     /** Past the string, character or comment starting at [i], or [i] when none does. */
-    private fun skip(source: String, i: Int): Int = when {
-        source.startsWith("//", i) -> source.indexOf('\n', i).let { if (it < 0) source.length else it }
-        source.startsWith("/*", i) -> source.indexOf("*/", i + 2).let { if (it < 0) source.length else it + 2 }
-        source.startsWith("\"\"\"", i) -> source.indexOf("\"\"\"", i + 3).let { if (it < 0) source.length else it + 3 }
-        source[i] == '"' || source[i] == '\'' -> {
-            var j = i + 1
-            while (j < source.length && source[j] != source[i]) j += if (source[j] == '\\') 2 else 1
-            j + 1
+    private fun skip(source: String, i: Int): Int =
+        when {
+            source.startsWith("//", i) -> source.indexOf('\n', i).let { if (it < 0) source.length else it }
+            source.startsWith("/*", i) -> source.indexOf("*/", i + 2).let { if (it < 0) source.length else it + 2 }
+            source.startsWith("\"\"\"", i) ->
+                source.indexOf("\"\"\"", i + 3).let { if (it < 0) source.length else it + 3 }
+            source[i] == '"' || source[i] == '\'' -> {
+                var j = i + 1
+                while (j < source.length && source[j] != source[i]) j += if (source[j] == '\\') 2 else 1
+                j + 1
+            }
+            else -> i
         }
-        else -> i
-    }
 }

@@ -4,17 +4,19 @@ import org.rtcoord.sim.test.ScenarioPlan
 import org.rtcoord.sim.test.ScheduledFault
 
 /**
- * The faults one run of an exploration applies to [scenario], in time order: run [index] of [seed]'s
- * sequence, which draws it again the same ([ScheduleSpace.draw]), or a smaller one shrinking made of it.
+ * The faults one run of an exploration applies to [scenario], in time order: run [index] of [seed]'s sequence, which
+ * draws it again the same ([ScheduleSpace.draw]), or a smaller one shrinking made of it.
  */
 internal class Schedule(val seed: Long, val index: Long, val scenario: ScenarioPlan, faults: List<ScheduledFault>) {
     val faults: List<ScheduledFault> = faults.sortedBy { it.time }
 
     /** `SEED:INDEX`, what `--replay` takes. */
-    val key: String get() = "$seed:$index"
+    val key: String
+        get() = "$seed:$index"
 
     /** The components and managers its faults are on. */
-    val targets: Set<String> get() = faults.mapNotNull { it.fault.target }.toSet()
+    val targets: Set<String>
+        get() = faults.mapNotNull { it.fault.target }.toSet()
 
     /** The same run with [faults] instead. */
     fun with(faults: List<ScheduledFault>): Schedule = Schedule(seed, index, scenario, faults)

@@ -13,7 +13,8 @@ internal sealed class Verdict {
     /** The first [failure] of [result]; runs failing at the same [key] are one distinct failure. */
     class Failed(val failure: TestFailure, val result: TestResult) : Verdict() {
         /** Where it failed: the invariant's or expectation's line of the test, the handler's of the coordinator. */
-        val key: String get() = failure.at
+        val key: String
+            get() = failure.at
 
         override fun toString(): String = "FAIL $failure"
     }
@@ -24,11 +25,12 @@ internal sealed class Verdict {
     }
 
     /** Whether this is the same outcome as [other]: both passed, both skipped, or both failed at one place. */
-    fun agrees(other: Verdict): Boolean = when (this) {
-        is Passed -> other is Passed
-        is Skipped -> other is Skipped
-        is Failed -> other is Failed && other.key == key
-    }
+    fun agrees(other: Verdict): Boolean =
+        when (this) {
+            is Passed -> other is Passed
+            is Skipped -> other is Skipped
+            is Failed -> other is Failed && other.key == key
+        }
 
     companion object {
         fun of(result: TestResult): Verdict {

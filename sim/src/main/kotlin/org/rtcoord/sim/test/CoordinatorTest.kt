@@ -4,10 +4,10 @@ import java.nio.file.Path
 import java.nio.file.Paths
 
 /**
- * What a `NAME.test.kts` says: the [system] to simulate, the [coordinator] to run on it, and its
- * [scenario]s, each run on a fresh system with the coordinator started anew. Steps and invariants
- * written at the top (see [Timeline]) start every scenario; a file without scenarios is one scenario,
- * named after the file. File names are relative to [directory].
+ * What a `NAME.test.kts` says: the [system] to simulate, the [coordinator] to run on it, and its [scenario]s, each run
+ * on a fresh system with the coordinator started anew. Steps and invariants written at the top (see [Timeline]) start
+ * every scenario; a file without scenarios is one scenario, named after the file. File names are relative to
+ * [directory].
  */
 public abstract class CoordinatorTest(
     /** The test file's directory. */
@@ -31,8 +31,8 @@ public abstract class CoordinatorTest(
     }
 
     /**
-     * Reads the IDL files in [directory] for the data types of the system's own, besides OpenRTM-aist's,
-     * as `rtcoord sim --idl` does; once per directory.
+     * Reads the IDL files in [directory] for the data types of the system's own, besides OpenRTM-aist's, as `rtcoord
+     * sim --idl` does; once per directory.
      */
     public fun idl(directory: String) {
         idlDirectories += Declared(directory, this.directory.resolve(directory), line())
@@ -45,17 +45,17 @@ public abstract class CoordinatorTest(
     }
 
     /**
-     * Narrows what `rtcoord test --explore` searches: which components and managers its faults are on,
-     * which faults, the moments they are drawn at, and faults out of scope (`exclude { killManager() }`).
-     * Running the test without `--explore` ignores it.
+     * Narrows what `rtcoord test --explore` searches: which components and managers its faults are on, which faults,
+     * the moments they are drawn at, and faults out of scope (`exclude { killManager() }`). Running the test without
+     * `--explore` ignores it.
      */
     public fun explore(space: SearchSpace.() -> Unit) {
         searchSpace.apply(space)
     }
 
     /**
-     * A scenario named [name]: the steps at the top of the file, then [steps], on a system and a
-     * coordinator of its own. Each scenario is a test case of its own in reports.
+     * A scenario named [name]: the steps at the top of the file, then [steps], on a system and a coordinator of its
+     * own. Each scenario is a test case of its own in reports.
      */
     public fun scenario(name: String, steps: Scenario.() -> Unit) {
         scenarios += Scenario(name, fileName, line()).apply(steps)
@@ -63,7 +63,8 @@ public abstract class CoordinatorTest(
 }
 
 /** A named scenario of a test file: its [Timeline] follows the steps written at the top of the file. */
-public class Scenario internal constructor(
+public class Scenario
+internal constructor(
     /** The scenario's name, which reports name its test case by. */
     public val name: String,
     fileName: String,

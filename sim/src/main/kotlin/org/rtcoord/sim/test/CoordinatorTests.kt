@@ -1,41 +1,49 @@
 package org.rtcoord.sim.test
 
+import java.nio.file.Path
+import java.nio.file.Paths
+import java.util.stream.Stream
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.DynamicContainer
 import org.junit.jupiter.api.DynamicNode
 import org.junit.jupiter.api.DynamicTest
-import java.nio.file.Path
-import java.nio.file.Paths
-import java.util.stream.Stream
 
 /**
- * The JUnit 5 API: `*.test.kts` files as dynamic tests, a container per file and a test per scenario, each
- * failing with its `file:line:col: what` lines and what explains them. A file that cannot be run is one
- * failing test. From Kotlin, `@TestFactory fun coordinators() = CoordinatorTests.of("examples")`; from
- * Java, `@TestFactory Stream<DynamicNode> coordinators() { return CoordinatorTests.of("examples"); }`.
+ * The JUnit 5 API: `*.test.kts` files as dynamic tests, a container per file and a test per scenario, each failing with
+ * its `file:line:col: what` lines and what explains them. A file that cannot be run is one failing test. From Kotlin,
+ * `@TestFactory fun coordinators() = CoordinatorTests.of("examples")`; from Java, `@TestFactory Stream<DynamicNode>
+ * coordinators() { return CoordinatorTests.of("examples"); }`.
  */
 public object CoordinatorTests {
     /** A container per `*.test.kts` file of [paths] (files, or directories whose test files are taken). */
-    @JvmStatic
-    public fun of(vararg paths: String): Stream<DynamicNode> = of(paths.map { Paths.get(it) })
+    @JvmStatic public fun of(vararg paths: String): Stream<DynamicNode> = of(paths.map { Paths.get(it) })
 
     /** A container per `*.test.kts` file of [paths]; each file is loaded when JUnit comes to it. */
     @JvmStatic
     public fun of(paths: List<Path>): Stream<DynamicNode> {
         val runner = CoordinatorTestRunner(parallelism = 1)
         return runner.files(paths).stream().map { file ->
-            DynamicContainer.dynamicContainer(file.name, file.path.toUri(), Stream.of(file).flatMap { scenarios(runner, it) })
+            DynamicContainer.dynamicContainer(
+                file.name,
+                file.path.toUri(),
+                Stream.of(file).flatMap { scenarios(runner, it) },
+            )
         }
     }
 
     private fun scenarios(runner: CoordinatorTestRunner, file: TestFile): Stream<DynamicNode> =
         when (val loaded = runBlocking { runner.load(file) }) {
             is CoordinatorTestRunner.Loaded.Failed -> Stream.of(test(file.name, file) { loaded.result })
-            is CoordinatorTestRunner.Loaded.Runnable -> loaded.test.scenarios.stream().map { scenario -> test(scenario.name, file) { runBlocking { runner.run(scenario) } } }
+            is CoordinatorTestRunner.Loaded.Runnable ->
+                loaded.test.scenarios.stream().map { scenario ->
+                    test(scenario.name, file) { runBlocking { runner.run(scenario) } }
+                }
         }
 
-    private fun test(name: String, file: TestFile, result: () -> TestResult): DynamicNode = DynamicTest.dynamicTest(name, file.path.toUri()) {
-        val outcome = result()
-        if (!outcome.passed) throw AssertionError((TestReport.failures(outcome) + TestReport.timeline(outcome)).joinToString("\n"))
-    }
+    private fun test(name: String, file: TestFile, result: () -> TestResult): DynamicNode =
+        DynamicTest.dynamicTest(name, file.path.toUri()) {
+            val outcome = result()
+            if (!outcome.passed)
+                throw AssertionError((TestReport.failures(outcome) + TestReport.timeline(outcome)).joinToString("\n"))
+        }
 }

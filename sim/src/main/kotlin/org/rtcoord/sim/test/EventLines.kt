@@ -26,7 +26,8 @@ internal object EventLines {
     fun of(event: RtcEvent): String {
         val name = event.source.name
         return when (event) {
-            is StateChanged -> "$name ${event.old} -> ${event.new}" + if (event.handle != 0) " (context ${event.handle})" else ""
+            is StateChanged ->
+                "$name ${event.old} -> ${event.new}" + if (event.handle != 0) " (context ${event.handle})" else ""
             is FsmStateChanged -> "$name FSM ${event.old ?: "?"} -> ${event.new}"
             is PortConnected -> "$name:${event.port} connected (${event.connector.name})"
             is PortDisconnected -> "$name:${event.port} disconnected (${event.connector.name})"
@@ -41,7 +42,8 @@ internal object EventLines {
             is BecameZombie -> "$name unreachable: ${event.cause.reason}"
             is Recovered -> "$name recovered"
             is ComponentFinalized -> "$name exited"
-            is ManagerDied -> "manager $name died, with ${event.components.joinToString { it.name }.ifEmpty { "no components" }}"
+            is ManagerDied ->
+                "manager $name died, with ${event.components.joinToString { it.name }.ifEmpty { "no components" }}"
             is ManagerReturned -> "manager $name answers again"
             is NameServerLost -> "name server ${event.path} lost: ${event.cause.reason}"
             is NameServerReturned -> "name server ${event.path} back after ${event.downMillis} ms"

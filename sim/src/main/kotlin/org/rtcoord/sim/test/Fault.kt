@@ -24,7 +24,8 @@ internal class Fault(val kind: FaultKind, val target: String?) {
     }
 
     /** As a test writes it: `fail("laser0")`, `restartNaming()`. */
-    val written: String get() = "${kind.word}(${target?.let { "\"$it\"" }.orEmpty()})"
+    val written: String
+        get() = "${kind.word}(${target?.let { "\"$it\"" }.orEmpty()})"
 
     /** This fault on [other] instead. */
     fun on(other: String?): Fault = Fault(kind, other)
@@ -47,20 +48,25 @@ internal enum class FaultKind(val word: String, val on: On) {
     EXIT("exit", On.COMPONENT),
     LOSE_CONNECTORS("loseConnectors", On.COMPONENT),
     KILL_MANAGER("killManager", On.MANAGER),
-    RESTART_NAMING("restartNaming", On.SYSTEM),
-    ;
+    RESTART_NAMING("restartNaming", On.SYSTEM);
 
     /** What a fault of this kind is on. */
-    enum class On { COMPONENT, MANAGER, SYSTEM }
+    enum class On {
+        COMPONENT,
+        MANAGER,
+        SYSTEM,
+    }
 
     /** Whether [repair][REPAIR] ends a fault of this kind. */
-    val repairable: Boolean get() = this == BREAK_DOWN || this == FREEZE || this == HANG
+    val repairable: Boolean
+        get() = this == BREAK_DOWN || this == FREEZE || this == HANG
 }
 
 /** A [fault] at [time] from the scenario's start. */
 internal class ScheduledFault(val time: Duration, val fault: Fault) {
     /** As a test writes it: `at(1500.milliseconds) { fail("laser0") }`. */
-    val written: String get() = "at(${kotlin(time)}) { ${fault.written} }"
+    val written: String
+        get() = "at(${kotlin(time)}) { ${fault.written} }"
 
     override fun equals(other: Any?): Boolean = other is ScheduledFault && other.time == time && other.fault == fault
 

@@ -1,6 +1,9 @@
 package org.rtcoord.sim.test
 
-/** The faults and actions an `at(...) { }` step applies to the simulated system, by component name (`laser0` or `laser0.rtc`). */
+/**
+ * The faults and actions an `at(...) { }` step applies to the simulated system, by component name (`laser0` or
+ * `laser0.rtc`).
+ */
 @TestDsl
 public interface Faults {
     /** The component breaks: it goes to ERROR and every reset fails until [repair]. */

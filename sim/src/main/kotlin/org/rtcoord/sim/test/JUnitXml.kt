@@ -9,11 +9,10 @@ import javax.xml.stream.XMLStreamWriter
 import kotlin.time.Duration
 
 /**
- * Writes test results as JUnit XML, the form CI servers (Jenkins, GitLab) read: one `TEST-NAME.xml` per
- * test file, NAME its unique [TestFile.name] with `/` as `.`, holding a test case per scenario; the
- * test case's class name is that NAME, so that files of one name in two directories stay apart. A failed
- * scenario's failure holds its failures with what explains them, and its output the scenario's timeline
- * and the coordinator's log.
+ * Writes test results as JUnit XML, the form CI servers (Jenkins, GitLab) read: one `TEST-NAME.xml` per test file, NAME
+ * its unique [TestFile.name] with `/` as `.`, holding a test case per scenario; the test case's class name is that
+ * NAME, so that files of one name in two directories stay apart. A failed scenario's failure holds its failures with
+ * what explains them, and its output the scenario's timeline and the coordinator's log.
  */
 public object JUnitXml {
     private val factory: XMLOutputFactory = XMLOutputFactory.newFactory()
@@ -22,11 +21,13 @@ public object JUnitXml {
     @JvmStatic
     public fun write(results: List<TestResult>, directory: Path): List<Path> {
         Files.createDirectories(directory)
-        return results.groupBy { it.file.name }.map { (name, scenarios) ->
-            val file = directory.resolve("TEST-${className(name)}.xml")
-            Files.newBufferedWriter(file).use { writer -> write(writer, name, scenarios) }
-            file
-        }
+        return results
+            .groupBy { it.file.name }
+            .map { (name, scenarios) ->
+                val file = directory.resolve("TEST-${className(name)}.xml")
+                Files.newBufferedWriter(file).use { writer -> write(writer, name, scenarios) }
+                file
+            }
     }
 
     private fun write(out: Writer, name: String, scenarios: List<TestResult>) {
@@ -60,7 +61,13 @@ public object JUnitXml {
             xml.writeStartElement("failure")
             xml.writeAttribute("message", clean(result.failures.first().toString()))
             xml.writeAttribute("type", "expectation")
-            xml.writeCharacters(clean(result.failures.joinToString("\n") { failure -> (listOf(failure.toString()) + failure.details.map { "  $it" }).joinToString("\n") }))
+            xml.writeCharacters(
+                clean(
+                    result.failures.joinToString("\n") { failure ->
+                        (listOf(failure.toString()) + failure.details.map { "  $it" }).joinToString("\n")
+                    }
+                )
+            )
             xml.writeEndElement()
         }
         val output = result.timeline.joinToString("\n")
@@ -77,7 +84,8 @@ public object JUnitXml {
     /** Jenkins and GitLab read a class name's dots as packages: `a/transient` is `a.transient`. */
     private fun className(name: String): String = name.replace('/', '.')
 
-    private fun seconds(duration: Duration): String = String.format(Locale.ROOT, "%.3f", duration.inWholeMilliseconds / 1000.0)
+    private fun seconds(duration: Duration): String =
+        String.format(Locale.ROOT, "%.3f", duration.inWholeMilliseconds / 1000.0)
 
     /** [text] without the control characters XML 1.0 cannot hold, which a log line may carry. */
     private fun clean(text: String): String = text.filter { it == '\n' || it == '\t' || it == '\r' || it >= ' ' }

@@ -8,8 +8,8 @@ import org.rtcoord.dsl.Coordinator
 import org.rtcoord.sim.SimulatedSystem
 
 /**
- * The simulated [system] as it is now, asked through [tree]; the [coordinator]'s modes and [logged] lines
- * as they are now (a coordinator not made yet has no modes).
+ * The simulated [system] as it is now, asked through [tree]; the [coordinator]'s modes and [logged] lines as they are
+ * now (a coordinator not made yet has no modes).
  */
 internal class LiveReads(
     private val system: SimulatedSystem,
@@ -26,14 +26,19 @@ internal class LiveReads(
     override suspend fun node(component: String): ComponentNode = node(system, tree, component)
 
     override fun modeOf(machine: String): String? {
-        val running = coordinator ?: throw IllegalArgumentException("no mode machine '$machine': the coordinator has not started")
+        val running =
+            coordinator ?: throw IllegalArgumentException("no mode machine '$machine': the coordinator has not started")
         return running.machine(machine).mode.value
     }
 
-    override val log: List<String> get() = logged.toList()
+    override val log: List<String>
+        get() = logged.toList()
 
     companion object {
-        /** The component [name] of [system], found through [tree] where the system binds it; throws when the system has none. */
+        /**
+         * The component [name] of [system], found through [tree] where the system binds it; throws when the system has
+         * none.
+         */
         suspend fun node(system: SimulatedSystem, tree: RtcTree, name: String): ComponentNode {
             val simulated = system.component(name)
             return tree.component("/${system.address}/${(simulated.contexts + "$name.rtc").joinToString("/")}")

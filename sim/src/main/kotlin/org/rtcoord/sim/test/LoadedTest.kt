@@ -1,11 +1,11 @@
 package org.rtcoord.sim.test
 
-import org.rtcoord.profile.RtsProfile
 import java.nio.file.Path
+import org.rtcoord.profile.RtsProfile
 
 /**
- * A test file loaded and found runnable: the [profile] of its system, its coordinator script, and its
- * scenarios, each the steps written at the top of the file followed by its own.
+ * A test file loaded and found runnable: the [profile] of its system, its coordinator script, and its scenarios, each
+ * the steps written at the top of the file followed by its own.
  */
 internal class LoadedTest(
     val file: TestFile,
@@ -39,14 +39,17 @@ internal class LoadedTest(
 }
 
 /**
- * One scenario of a [test]: its [name] and its [steps], those at the top of the file first, and the line
- * it is [declared at][declaredAt] (null for a file without scenarios).
+ * One scenario of a [test]: its [name] and its [steps], those at the top of the file first, and the line it is
+ * [declared at][declaredAt] (null for a file without scenarios).
  */
 internal class ScenarioPlan(val test: LoadedTest, val name: String, val steps: List<TestStep>, val declaredAt: Int?) {
     /** The texts of the handler failures it expects: a handler failure with none of them fails it. */
     val expectedHandlerFailures: List<String> = steps.filterIsInstance<TestStep.ExpectHandlerFailure>().map { it.text }
 
     /** The faults of its `meanwhile` blocks, applied alongside its steps. */
-    val injections: List<Injection> = steps.filterIsInstance<TestStep.Meanwhile>().flatMap { it.faults }
-        .map { at -> Injection(at.time, test.source.at(at), at.faults) }
+    val injections: List<Injection> =
+        steps
+            .filterIsInstance<TestStep.Meanwhile>()
+            .flatMap { it.faults }
+            .map { at -> Injection(at.time, test.source.at(at), at.faults) }
 }

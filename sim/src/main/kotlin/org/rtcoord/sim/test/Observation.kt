@@ -5,27 +5,28 @@ import org.rtcoord.ComponentSnapshot
 import org.rtcoord.LifeCycle
 
 /**
- * What a condition (`expect { }`, `always { }`, `never { }`) can look at: the simulated system's
- * components and the coordinator's modes and log. Every read is recorded with what it returned, and a
- * failure shows them: `component("laser_localise0").state() was INACTIVE`.
+ * What a condition (`expect { }`, `always { }`, `never { }`) can look at: the simulated system's components and the
+ * coordinator's modes and log. Every read is recorded with what it returned, and a failure shows them:
+ * `component("laser_localise0").state() was INACTIVE`.
  *
- * An `expect` reads the system as it is when the condition is read (a component's state is asked of the
- * component). An invariant reads it as it was just after the event it is checked on: states, which
- * components exist, modes and the log as the events up to that one told them; a snapshot is the tree's
- * latest.
+ * An `expect` reads the system as it is when the condition is read (a component's state is asked of the component). An
+ * invariant reads it as it was just after the event it is checked on: states, which components exist, modes and the log
+ * as the events up to that one told them; a snapshot is the tree's latest.
  */
 @TestDsl
 public interface Observation {
     /** The component [name] (`odo_localise0` or `odo_localise0.rtc`) of the simulated system, there or not (yet). */
     public fun component(name: String): ObservedComponent
 
-    /** The active mode of the coordinator's mode machine [machine] (`localisation/degraded/odometry`), or null before it has one. */
+    /**
+     * The active mode of the coordinator's mode machine [machine] (`localisation/degraded/odometry`), or null before it
+     * has one.
+     */
     public fun modeOf(machine: String): String?
 
     /**
-     * The coordinator's log so far, one line a message: what it writes as rules fire, actions run, modes
-     * change and handlers fail, and what the script's `log` and `warn` say (`warn` lines start with
-     * `warning:`).
+     * The coordinator's log so far, one line a message: what it writes as rules fire, actions run, modes change and
+     * handlers fail, and what the script's `log` and `warn` say (`warn` lines start with `warning:`).
      */
     public val log: List<String>
 }

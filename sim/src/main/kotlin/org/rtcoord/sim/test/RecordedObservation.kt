@@ -11,32 +11,41 @@ internal class Reading(val expression: String, val value: String) {
 }
 
 /**
- * An [Observation] that reads through [reads] and records each read with what it returned, in the order
- * made: what a failure shows of its condition, as Kotlin's power-assert shows the sub-expressions of an
- * assertion. One is made for each reading of a condition.
+ * An [Observation] that reads through [reads] and records each read with what it returned, in the order made: what a
+ * failure shows of its condition, as Kotlin's power-assert shows the sub-expressions of an assertion. One is made for
+ * each reading of a condition.
  */
 internal class RecordedObservation(private val reads: SystemReads) : Observation {
     private val recorded = mutableListOf<Reading>()
 
     /** The reads made so far, each expression once with its last value. */
-    val readings: List<Reading> get() = recorded.associateBy { it.expression }.values.toList()
+    val readings: List<Reading>
+        get() = recorded.associateBy { it.expression }.values.toList()
 
     override fun component(name: String): ObservedComponent = Component(name.removeSuffix(".rtc"))
 
-    override fun modeOf(machine: String): String? = record("modeOf(\"$machine\")", { it ?: "null (no mode yet)" }) { reads.modeOf(machine) }
+    override fun modeOf(machine: String): String? =
+        record("modeOf(\"$machine\")", { it ?: "null (no mode yet)" }) { reads.modeOf(machine) }
 
     override val log: List<String>
-        get() = record("log", { lines -> if (lines.isEmpty()) "empty" else "${lines.size} lines, the last: ${lines.last()}" }) { reads.log }
+        get() =
+            record(
+                "log",
+                { lines -> if (lines.isEmpty()) "empty" else "${lines.size} lines, the last: ${lines.last()}" },
+            ) {
+                reads.log
+            }
 
     private inline fun <T> record(expression: String, shown: (T) -> String = { it.toString() }, read: () -> T): T {
-        val value = try {
-            read()
-        } catch (e: CancellationException) {
-            throw e
-        } catch (e: Exception) {
-            recorded += Reading(expression, "not read: ${e.message ?: e.javaClass.simpleName}")
-            throw e
-        }
+        val value =
+            try {
+                read()
+            } catch (e: CancellationException) {
+                throw e
+            } catch (e: Exception) {
+                recorded += Reading(expression, "not read: ${e.message ?: e.javaClass.simpleName}")
+                throw e
+            }
         recorded += Reading(expression, shown(value))
         return value
     }
@@ -48,12 +57,19 @@ internal class RecordedObservation(private val reads: SystemReads) : Observation
         private val owner = this@RecordedObservation
 
         override suspend fun state(): LifeCycle =
-            owner.record("$written.state()", { it?.toString() ?: "${LifeCycle.UNKNOWN} (no such component)" }) { owner.reads.state(name) } ?: LifeCycle.UNKNOWN
+            owner.record("$written.state()", { it?.toString() ?: "${LifeCycle.UNKNOWN} (no such component)" }) {
+                owner.reads.state(name)
+            } ?: LifeCycle.UNKNOWN
 
         override suspend fun exists(): Boolean = owner.record("$written.exists()") { owner.reads.exists(name) }
 
         override suspend fun snapshot(): ComponentSnapshot =
-            owner.record("$written.snapshot()", { "type ${it.typeName}, ${it.state}, ports ${it.ports.joinToString { port -> port.name }}" }) { owner.reads.snapshot(name) }
+            owner.record(
+                "$written.snapshot()",
+                { "type ${it.typeName}, ${it.state}, ports ${it.ports.joinToString { port -> port.name }}" },
+            ) {
+                owner.reads.snapshot(name)
+            }
 
         override suspend fun node(): ComponentNode = owner.reads.node(name)
     }

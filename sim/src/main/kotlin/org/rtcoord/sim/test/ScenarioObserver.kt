@@ -1,5 +1,7 @@
 package org.rtcoord.sim.test
 
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -7,16 +9,13 @@ import kotlinx.coroutines.flow.StateFlow
 import kotlinx.coroutines.flow.asStateFlow
 import org.rtcoord.RtcEvent
 import org.rtcoord.SystemSnapshot
-import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.time.TimeSource
 
 /**
- * The one owner of what happened in a scenario: takes the system's events, the coordinator's log lines
- * and modes, the faults injected and the steps' outcomes, from any thread, and handles them one at a time
- * in the order they came, in [run]: records each in the timeline, applies it to the [model], and checks
- * every invariant begun so far against the model just after it. The first invariant that does not hold
- * is handed to [broke], with the entry that broke it and its time. [changes] counts the entries, for
- * expectations to read their condition again on each.
+ * The one owner of what happened in a scenario: takes the system's events, the coordinator's log lines and modes, the
+ * faults injected and the steps' outcomes, from any thread, and handles them one at a time in the order they came, in
+ * [run]: records each in the timeline, applies it to the [model], and checks every invariant begun so far against the
+ * model just after it. The first invariant that does not hold is handed to [broke], with the entry that broke it and
+ * its time. [changes] counts the entries, for expectations to read their condition again on each.
  */
 internal class ScenarioObserver(
     private val model: SystemModel,
@@ -26,7 +25,13 @@ internal class ScenarioObserver(
     private sealed class Input {
         class Started(val snapshot: SystemSnapshot) : Input()
 
-        class Happened(val mark: TimeSource.Monotonic.ValueTimeMark, val kind: TimelineEntry.Kind, val text: String, val event: RtcEvent? = null, val mode: Pair<String, String?>? = null) : Input()
+        class Happened(
+            val mark: TimeSource.Monotonic.ValueTimeMark,
+            val kind: TimelineEntry.Kind,
+            val text: String,
+            val event: RtcEvent? = null,
+            val mode: Pair<String, String?>? = null,
+        ) : Input()
 
         class Begin(val invariant: TestStep.Invariant) : Input()
     }
@@ -57,14 +62,20 @@ internal class ScenarioObserver(
 
     fun step(what: String) = happened(TimelineEntry.Kind.STEP, what)
 
-    fun mode(machine: String, mode: String?) = happened(TimelineEntry.Kind.MODE, "$machine: ${mode ?: "no mode"}", mode = machine to mode)
+    fun mode(machine: String, mode: String?) =
+        happened(TimelineEntry.Kind.MODE, "$machine: ${mode ?: "no mode"}", mode = machine to mode)
 
     /** Checks [invariant] from now on, and first against the model as it is once what came before is handled. */
     fun begin(invariant: TestStep.Invariant) {
         inputs.trySend(Input.Begin(invariant))
     }
 
-    private fun happened(kind: TimelineEntry.Kind, text: String, event: RtcEvent? = null, mode: Pair<String, String?>? = null) {
+    private fun happened(
+        kind: TimelineEntry.Kind,
+        text: String,
+        event: RtcEvent? = null,
+        mode: Pair<String, String?>? = null,
+    ) {
         inputs.trySend(Input.Happened(TimeSource.Monotonic.markNow(), kind, text, event, mode))
     }
 
@@ -101,22 +112,33 @@ internal class ScenarioObserver(
         return all.map { TimelineEntry(it.mark - zero, it.kind, it.text) }
     }
 
-    /** Checks [checked] against the model just after [cause] (null: as it is when they begin); the first that does not hold ends the checking of all. */
+    /**
+     * Checks [checked] against the model just after [cause] (null: as it is when they begin); the first that does not
+     * hold ends the checking of all.
+     */
     private suspend fun check(checked: List<TestStep.Invariant>, cause: Input.Happened?) {
         for (invariant in checked) {
             val observation = RecordedObservation(model)
-            val failure = try {
-                if (invariant.keptBy(invariant.condition(observation))) continue
-                null
-            } catch (e: CancellationException) {
-                throw e
-            } catch (e: Exception) {
-                e
-            }
-            val time = (cause?.mark ?: TimeSource.Monotonic.markNow()).let { mark -> origin?.let { TimelineEntry.seconds(mark - it) } }
-            val whenBroken = if (cause == null) "when it began${time?.let { " at $it" }.orEmpty()}" else "at $time, on ${cause.kind.name.lowercase()}: ${cause.text}"
+            val failure =
+                try {
+                    if (invariant.keptBy(invariant.condition(observation))) continue
+                    null
+                } catch (e: CancellationException) {
+                    throw e
+                } catch (e: Exception) {
+                    e
+                }
+            val time =
+                (cause?.mark ?: TimeSource.Monotonic.markNow()).let { mark ->
+                    origin?.let { TimelineEntry.seconds(mark - it) }
+                }
+            val whenBroken =
+                if (cause == null) "when it began${time?.let { " at $it" }.orEmpty()}"
+                else "at $time, on ${cause.kind.name.lowercase()}: ${cause.text}"
             val what = "${invariant.word} { ${source.condition(invariant)} }"
-            val message = if (failure == null) "$what broke $whenBroken" else "$what could not be read $whenBroken: ${failure.message ?: failure.javaClass.simpleName}"
+            val message =
+                if (failure == null) "$what broke $whenBroken"
+                else "$what could not be read $whenBroken: ${failure.message ?: failure.javaClass.simpleName}"
             invariants.clear()
             broke(TestFailure(source.at(invariant), message, observation.readings.map(Reading::toString)))
             return

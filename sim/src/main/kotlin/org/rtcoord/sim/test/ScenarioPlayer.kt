@@ -1,5 +1,8 @@
 package org.rtcoord.sim.test
 
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.first
@@ -7,15 +10,12 @@ import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.HandlerFailure
 import org.rtcoord.sim.SimulatedSystem
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeSource
 
 /**
- * Plays a scenario's steps in order against a started [coordinator] on [system], from [origin] (the
- * coordinator's start): injects the faults of `at` steps, waits for each expectation, and begins each
- * invariant with the [observer]. [play] stops at the first step that fails and returns its failure;
- * [endChecks] are the checks made once every step is done.
+ * Plays a scenario's steps in order against a started [coordinator] on [system], from [origin] (the coordinator's
+ * start): injects the faults of `at` steps, waits for each expectation, and begins each invariant with the [observer].
+ * [play] stops at the first step that fails and returns its failure; [endChecks] are the checks made once every step is
+ * done.
  */
 internal class ScenarioPlayer(
     private val system: SimulatedSystem,
@@ -30,15 +30,17 @@ internal class ScenarioPlayer(
         for (step in steps) {
             // Its faults are applied alongside the steps, from the scenario's start (ScenarioRun).
             if (step is TestStep.Meanwhile) continue
-            val failure = when (step) {
-                is TestStep.At -> at(step)
-                is TestStep.Expect -> expect(step)
-                is TestStep.ExpectMode -> expectMode(step)
-                is TestStep.ExpectLog -> expectLog(step)
-                is TestStep.ExpectHandlerFailure -> expectHandlerFailure(step)
-                is TestStep.Invariant -> null.also { observer.begin(step) }
-                is TestStep.NoRestarts, is TestStep.Meanwhile -> null
-            }
+            val failure =
+                when (step) {
+                    is TestStep.At -> at(step)
+                    is TestStep.Expect -> expect(step)
+                    is TestStep.ExpectMode -> expectMode(step)
+                    is TestStep.ExpectLog -> expectLog(step)
+                    is TestStep.ExpectHandlerFailure -> expectHandlerFailure(step)
+                    is TestStep.Invariant -> null.also { observer.begin(step) }
+                    is TestStep.NoRestarts,
+                    is TestStep.Meanwhile -> null
+                }
             observer.step("${source.at(step)} ${if (failure == null) "held" else "failed"}")
             if (failure != null) return failure
         }
@@ -50,8 +52,16 @@ internal class ScenarioPlayer(
         // Counted by the supervisors themselves: every restart, however close together.
         val restarts = coordinator.supervision.flatMap { it.status.value.restartsByChild.entries }
         return steps.filterIsInstance<TestStep.NoRestarts>().mapNotNull { step ->
-            val times = restarts.filter { it.key.substringAfterLast('/').removeSuffix(".rtc") == step.component }.sumOf { it.value }
-            if (times == 0) null else TestFailure(source.at(step), "expected no restarts of ${step.component}, but a supervisor restarted it $times time(s)")
+            val times =
+                restarts
+                    .filter { it.key.substringAfterLast('/').removeSuffix(".rtc") == step.component }
+                    .sumOf { it.value }
+            if (times == 0) null
+            else
+                TestFailure(
+                    source.at(step),
+                    "expected no restarts of ${step.component}, but a supervisor restarted it $times time(s)",
+                )
         }
     }
 
@@ -70,18 +80,19 @@ internal class ScenarioPlayer(
     private suspend fun expect(step: TestStep.Expect): TestFailure? {
         var last = RecordedObservation(reads)
         var thrown: Exception? = null
-        val held = holdsWithin(step.within) {
-            last = RecordedObservation(reads)
-            thrown = null
-            try {
-                step.condition(last)
-            } catch (e: CancellationException) {
-                throw e
-            } catch (e: Exception) {
-                thrown = e
-                false
+        val held =
+            holdsWithin(step.within) {
+                last = RecordedObservation(reads)
+                thrown = null
+                try {
+                    step.condition(last)
+                } catch (e: CancellationException) {
+                    throw e
+                } catch (e: Exception) {
+                    thrown = e
+                    false
+                }
             }
-        }
         if (held) return null
         val threw = thrown?.let { listOf("the condition threw ${it.javaClass.simpleName}: ${it.message}") }.orEmpty()
         return TestFailure(
@@ -109,7 +120,9 @@ internal class ScenarioPlayer(
         return TestFailure(
             source.at(step),
             "expected a log line containing '${step.text}' within ${step.within}, but none came",
-            listOf("the coordinator logged ${logged.size} lines${logged.lastOrNull()?.let { ", the last: $it" }.orEmpty()}"),
+            listOf(
+                "the coordinator logged ${logged.size} lines${logged.lastOrNull()?.let { ", the last: $it" }.orEmpty()}"
+            ),
         )
     }
 
@@ -124,8 +137,8 @@ internal class ScenarioPlayer(
     }
 
     /**
-     * Whether [check] holds within [within]: read now, again after each entry of the scenario's timeline
-     * (at least every [POLL]), and once more at the deadline.
+     * Whether [check] holds within [within]: read now, again after each entry of the scenario's timeline (at least
+     * every [POLL]), and once more at the deadline.
      */
     private suspend fun holdsWithin(within: Duration, check: suspend () -> Boolean): Boolean {
         val deadline = TimeSource.Monotonic.markNow() + within
@@ -141,7 +154,10 @@ internal class ScenarioPlayer(
     private companion object {
         val POLL = 50.milliseconds
 
-        /** Whether [active], the machine's mode path, is [mode]: a path below [machine], or a mode's name anywhere on it. */
+        /**
+         * Whether [active], the machine's mode path, is [mode]: a path below [machine], or a mode's name anywhere on
+         * it.
+         */
         fun isIn(active: String?, machine: String, mode: String): Boolean {
             val below = active?.removePrefix("$machine/") ?: return false
             return below == mode || below.startsWith("$mode/") || ('/' !in mode && mode in below.split('/'))

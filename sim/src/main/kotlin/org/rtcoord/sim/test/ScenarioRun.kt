@@ -1,5 +1,12 @@
 package org.rtcoord.sim.test
 
+import java.time.Instant
+import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration
+import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
+import kotlin.time.toKotlinDuration
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.CoroutineScope
@@ -42,22 +49,14 @@ import org.rtcoord.dsl.LiveCheck
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.sim.SimulatedSystem
-import java.time.Instant
-import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.time.Duration
-import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.Duration.Companion.seconds
-import kotlin.time.TimeSource
-import kotlin.time.toKotlinDuration
 
 /**
- * Runs one scenario: simulates the test's system afresh, starts its coordinator on it, observes both
- * (every event of the system, every line and mode of the coordinator, from before the start), plays the
- * steps, and stops everything. The scenario stops at its first failure: a step that fails, an invariant
- * that breaks, a handler of the coordinator that fails where the scenario does not expect it, or a rule
- * that can never fire because the system lacks what it names. After the last step it waits for the
- * system to be quiet for a moment, so that what that step set going is checked too. Whatever happens, it
- * returns a result.
+ * Runs one scenario: simulates the test's system afresh, starts its coordinator on it, observes both (every event of
+ * the system, every line and mode of the coordinator, from before the start), plays the steps, and stops everything.
+ * The scenario stops at its first failure: a step that fails, an invariant that breaks, a handler of the coordinator
+ * that fails where the scenario does not expect it, or a rule that can never fire because the system lacks what it
+ * names. After the last step it waits for the system to be quiet for a moment, so that what that step set going is
+ * checked too. Whatever happens, it returns a result.
  */
 internal class ScenarioRun(
     private val plan: ScenarioPlan,
@@ -74,14 +73,27 @@ internal class ScenarioRun(
 
     suspend fun run(): TestResult {
         val began = TimeSource.Monotonic.markNow()
-        val failures = try {
-            simulate()
-        } catch (e: CancellationException) {
-            throw e
-        } catch (e: Exception) {
-            listOf(TestFailure(test.file.path.toString(), "the scenario could not be run: ${e.javaClass.simpleName}: ${e.message}"))
-        }
-        return TestResult(test.file, plan.name, failures, began.elapsedNow(), log.toList(), observer?.timeline().orEmpty())
+        val failures =
+            try {
+                simulate()
+            } catch (e: CancellationException) {
+                throw e
+            } catch (e: Exception) {
+                listOf(
+                    TestFailure(
+                        test.file.path.toString(),
+                        "the scenario could not be run: ${e.javaClass.simpleName}: ${e.message}",
+                    )
+                )
+            }
+        return TestResult(
+            test.file,
+            plan.name,
+            failures,
+            began.elapsedNow(),
+            log.toList(),
+            observer?.timeline().orEmpty(),
+        )
     }
 
     private fun broke(failure: TestFailure) {
@@ -89,11 +101,12 @@ internal class ScenarioRun(
     }
 
     private suspend fun simulate(): List<TestFailure> {
-        val system = try {
-            SimulatedSystem.start(test.profile, idlDirectories = test.idlDirectories)
-        } catch (e: IllegalArgumentException) {
-            return listOf(TestFailure(test.systemAt, "cannot simulate ${test.systemShown}: ${e.message}"))
-        }
+        val system =
+            try {
+                SimulatedSystem.start(test.profile, idlDirectories = test.idlDirectories)
+            } catch (e: IllegalArgumentException) {
+                return listOf(TestFailure(test.systemAt, "cannot simulate ${test.systemShown}: ${e.message}"))
+            }
         // What the system could not be simulated as saved fails the test: it would not test the robot's system.
         if (system.warnings.isNotEmpty()) {
             system.close()
@@ -103,19 +116,24 @@ internal class ScenarioRun(
     }
 
     private suspend fun coordinate(system: SimulatedSystem, tree: RtcTree): List<TestFailure> = coroutineScope {
-        val coordination = try {
-            scripts.load(test.coordinatorShown, test.args, tree.config)
-        } catch (e: ScriptFailure) {
-            return@coroutineScope e.problems.map(TestFailure::of)
-        }
-        val observer = ScenarioObserver(SystemModel(LiveReads(system, tree, null, log)), test.source, ::broke).also { observer = it }
+        val coordination =
+            try {
+                scripts.load(test.coordinatorShown, test.args, tree.config)
+            } catch (e: ScriptFailure) {
+                return@coroutineScope e.problems.map(TestFailure::of)
+            }
+        val observer =
+            ScenarioObserver(SystemModel(LiveReads(system, tree, null, log)), test.source, ::broke).also {
+                observer = it
+            }
         val observing = launch { observer.run() }
         val subscriptions = observe(tree, observer)
         try {
             Coordinator(tree, coordination, null) { line ->
-                log += line
-                observer.log(line)
-            }.use { coordinator -> play(system, tree, coordination, coordinator, observer, observing) }
+                    log += line
+                    observer.log(line)
+                }
+                .use { coordinator -> play(system, tree, coordination, coordinator, observer, observing) }
         } finally {
             subscriptions.forEach(Subscription::cancel)
             observer.close()
@@ -131,16 +149,33 @@ internal class ScenarioRun(
         observer: ScenarioObserver,
         observing: Job,
     ): List<TestFailure> {
-        start(system, tree, coordination, coordinator)?.let { return it }
+        start(system, tree, coordination, coordinator)?.let {
+            return it
+        }
         val origin = TimeSource.Monotonic.markNow()
         observer.origin = origin
         val watching = launch { watch(tree, coordination, coordinator, observer) }
-        val player = ScenarioPlayer(system, coordinator, LiveReads(system, tree, coordinator, log), observer, test.source, origin)
+        val player =
+            ScenarioPlayer(
+                system,
+                coordinator,
+                LiveReads(system, tree, coordinator, log),
+                observer,
+                test.source,
+                origin,
+            )
         val injecting = launch { inject(system, observer, origin, (plan.injections + schedule).sortedBy { it.time }) }
         val playing = async { player.play(plan.steps) }
         // The scenario lasts until its steps are done and its last fault applied, or its first failure.
-        val first = select<TestFailure?> { broken.onAwait { it }; playing.onAwait { it } }
-            ?: select<TestFailure?> { broken.onAwait { it }; injecting.onJoin { null } }
+        val first =
+            select<TestFailure?> {
+                broken.onAwait { it }
+                playing.onAwait { it }
+            }
+                ?: select<TestFailure?> {
+                    broken.onAwait { it }
+                    injecting.onJoin { null }
+                }
         playing.cancel()
         injecting.cancel()
         if (first == null) settle(observer)
@@ -150,16 +185,24 @@ internal class ScenarioRun(
         // What was observed up to now is checked before the verdict: an invariant may break on the last events.
         observer.close()
         withTimeoutOrNull(DRAIN) { observing.join() }
-        val failure = first ?: (if (broken.isCompleted) broken.await() else null) ?: unexpected(coordinator.handlerFailures).firstOrNull() ?: stuck
+        val failure =
+            first
+                ?: (if (broken.isCompleted) broken.await() else null)
+                ?: unexpected(coordinator.handlerFailures).firstOrNull()
+                ?: stuck
         return listOfNotNull(failure) + end
     }
 
     /**
-     * Applies [injections] (in time order) each at its time from [origin], then waits [AFTERMATH]. One that
-     * cannot be applied ends the scenario: a failure at the test's line, or for a schedule's fault a
-     * skipped run.
+     * Applies [injections] (in time order) each at its time from [origin], then waits [AFTERMATH]. One that cannot be
+     * applied ends the scenario: a failure at the test's line, or for a schedule's fault a skipped run.
      */
-    private suspend fun inject(system: SimulatedSystem, observer: ScenarioObserver, origin: TimeSource.Monotonic.ValueTimeMark, injections: List<Injection>) {
+    private suspend fun inject(
+        system: SimulatedSystem,
+        observer: ScenarioObserver,
+        origin: TimeSource.Monotonic.ValueTimeMark,
+        injections: List<Injection>,
+    ) {
         for (injection in injections) {
             delay(injection.time - origin.elapsedNow())
             try {
@@ -170,18 +213,23 @@ internal class ScenarioRun(
                 val why = e.message ?: e.javaClass.simpleName
                 broke(
                     injection.at?.let { TestFailure(it, "at ${injection.time}: $why") }
-                        ?: TestFailure("schedule", "at ${TimelineEntry.seconds(injection.time)}: cannot be applied: $why", skipped = true),
+                        ?: TestFailure(
+                            "schedule",
+                            "at ${TimelineEntry.seconds(injection.time)}: cannot be applied: $why",
+                            skipped = true,
+                        )
                 )
                 return
             }
         }
-        // What the last fault sets going takes a moment to show (a state change polled, a handler run): it is watched for first.
+        // What the last fault sets going takes a moment to show (a state change polled, a handler run): it is watched
+        // for first.
         if (injections.isNotEmpty()) delay(AFTERMATH)
     }
 
     /**
-     * Lets what the last steps set going finish: waits until nothing has happened for [QUIET] (at most
-     * [SETTLE]), so that a handler that fails just after the last expectation held still fails the scenario.
+     * Lets what the last steps set going finish: waits until nothing has happened for [QUIET] (at most [SETTLE]), so
+     * that a handler that fails just after the last expectation held still fails the scenario.
      */
     private suspend fun settle(observer: ScenarioObserver) {
         withTimeoutOrNull(SETTLE) {
@@ -193,9 +241,8 @@ internal class ScenarioRun(
     }
 
     /**
-     * Whether the coordinator stopped reacting: a rule's handler that has not returned [stuckAfter] after it
-     * fired, which holds back the rule's later events. Waits for the handlers running now to return, each
-     * at most until then.
+     * Whether the coordinator stopped reacting: a rule's handler that has not returned [stuckAfter] after it fired,
+     * which holds back the rule's later events. Waits for the handlers running now to return, each at most until then.
      */
     private suspend fun stuck(coordinator: Coordinator): TestFailure? {
         for (rule in coordinator.rules) {
@@ -206,34 +253,65 @@ internal class ScenarioRun(
             return TestFailure(
                 test.coordinatorShown.toString(),
                 "the coordinator stopped reacting: the handler of rule '${rule.description}' had not returned $stuckAfter after it fired on ${status.lastEvent}",
-                listOf("a handler that does not return holds back its rule's later events; every remote call has a deadline, so it waits on something else"),
+                listOf(
+                    "a handler that does not return holds back its rule's later events; every remote call has a deadline, so it waits on something else"
+                ),
             )
         }
         return null
     }
 
     /** Starts [coordinator]; the failures saying why it cannot start, or null once it has. */
-    private suspend fun start(system: SimulatedSystem, tree: RtcTree, coordination: Coordination, coordinator: Coordinator): List<TestFailure>? {
-        val failure = try {
-            withTimeoutOrNull(START_DEADLINE) { coordinator.start() } ?: return listOf(TestFailure(test.coordinatorAt, "the coordinator did not start within $START_DEADLINE"))
-            return null
-        } catch (e: CancellationException) {
-            throw e
-        } catch (e: Exception) {
-            e
-        }
+    private suspend fun start(
+        system: SimulatedSystem,
+        tree: RtcTree,
+        coordination: Coordination,
+        coordinator: Coordinator,
+    ): List<TestFailure>? {
+        val failure =
+            try {
+                withTimeoutOrNull(START_DEADLINE) { coordinator.start() }
+                    ?: return listOf(
+                        TestFailure(test.coordinatorAt, "the coordinator did not start within $START_DEADLINE")
+                    )
+                return null
+            } catch (e: CancellationException) {
+                throw e
+            } catch (e: Exception) {
+                e
+            }
         // A rule's target that the system lacks, as `check` would say it, where the coordinator writes it.
         val check = LiveCheck(tree).check(coordination, test.coordinatorShown)
         val components = "the simulated system has ${system.components.joinToString { it.instanceName }}"
-        val missing = (check.missing - check.cannotFire.toSet()).map { TestFailure(it.at, "${it.name}: ${it.says}", listOf("the coordinator of ${test.coordinatorAt} cannot start", components)) }
-        return missing.ifEmpty { listOf(TestFailure(test.coordinatorAt, "the coordinator cannot start: ${failure.message ?: failure.javaClass.simpleName}", listOf(components))) }
+        val missing =
+            (check.missing - check.cannotFire.toSet()).map {
+                TestFailure(
+                    it.at,
+                    "${it.name}: ${it.says}",
+                    listOf("the coordinator of ${test.coordinatorAt} cannot start", components),
+                )
+            }
+        return missing.ifEmpty {
+            listOf(
+                TestFailure(
+                    test.coordinatorAt,
+                    "the coordinator cannot start: ${failure.message ?: failure.javaClass.simpleName}",
+                    listOf(components),
+                )
+            )
+        }
     }
 
     /**
-     * While the steps play: each handler failure the scenario does not expect, each rule that can never fire
-     * (what it names lacks the parameter or set it is about) breaks the scenario; each mode entered is an entry.
+     * While the steps play: each handler failure the scenario does not expect, each rule that can never fire (what it
+     * names lacks the parameter or set it is about) breaks the scenario; each mode entered is an entry.
      */
-    private suspend fun watch(tree: RtcTree, coordination: Coordination, coordinator: Coordinator, observer: ScenarioObserver) = coroutineScope {
+    private suspend fun watch(
+        tree: RtcTree,
+        coordination: Coordination,
+        coordinator: Coordinator,
+        observer: ScenarioObserver,
+    ) = coroutineScope {
         launch {
             var seen = 0
             coordinator.failureCounts.collect { count ->
@@ -244,26 +322,40 @@ internal class ScenarioRun(
         for (machine in coordinator.machines) launch { machine.mode.collect { observer.mode(machine.name, it) } }
         launch {
             val check = LiveCheck(tree).check(coordination, test.coordinatorShown)
-            check.cannotFire.firstOrNull()?.let { broke(TestFailure(it.at, "${it.name}: ${it.says}", listOf("a rule or mode of the coordinator of ${test.coordinatorAt} can never fire"))) }
+            check.cannotFire.firstOrNull()?.let {
+                broke(
+                    TestFailure(
+                        it.at,
+                        "${it.name}: ${it.says}",
+                        listOf("a rule or mode of the coordinator of ${test.coordinatorAt} can never fire"),
+                    )
+                )
+            }
         }
     }
 
     /** Those of [failures] the scenario does not expect, each as a failure at the coordinator's line. */
     private fun unexpected(failures: List<HandlerFailure>): List<TestFailure> =
-        failures.filter { failure -> plan.expectedHandlerFailures.none { it in failure.toString() } }.map { failure ->
-            val at = failure.at?.let { "${test.coordinatorShown.parent?.resolve(it) ?: it}" } ?: test.coordinatorAt
-            TestFailure(
-                at,
-                "${failure.subject} failed: ${failure.type}: ${failure.message}",
-                listOf("a handler of the coordinator failed; if the scenario expects it, write expectHandlerFailure(\"${failure.message}\")") +
-                    failure.scriptFrames.drop(1).map { "at $it" },
-            )
-        }
+        failures
+            .filter { failure -> plan.expectedHandlerFailures.none { it in failure.toString() } }
+            .map { failure ->
+                val at = failure.at?.let { "${test.coordinatorShown.parent?.resolve(it) ?: it}" } ?: test.coordinatorAt
+                TestFailure(
+                    at,
+                    "${failure.subject} failed: ${failure.type}: ${failure.message}",
+                    listOf(
+                        "a handler of the coordinator failed; if the scenario expects it, write expectHandlerFailure(\"${failure.message}\")"
+                    ) + failure.scriptFrames.drop(1).map { "at $it" },
+                )
+            }
 
     /** Hands [observer] every event of the system from now on, and what the tree knows of it now. */
     private suspend fun observe(tree: RtcTree, observer: ScenarioObserver): List<Subscription> {
-        val following = tree.follow(tree.nameServers, OBSERVED, EventOptions(), { observer.started(it) }) { observer.event(it) }
-        val managers = tree.onWatching { event -> if (event is ManagerDied || event is ManagerReturned) observer.event(event) }
+        val following =
+            tree.follow(tree.nameServers, OBSERVED, EventOptions(), { observer.started(it) }) { observer.event(it) }
+        val managers = tree.onWatching { event ->
+            if (event is ManagerDied || event is ManagerReturned) observer.event(event)
+        }
         return listOf(following, managers)
     }
 
@@ -283,12 +375,29 @@ internal class ScenarioRun(
         /** How long the last entries may take to be checked once the steps are done. */
         val DRAIN = 5.seconds
 
-        /** The events a scenario's timeline shows and its invariants are checked on: all but each port's traffic and how components are watched. */
-        val OBSERVED: Set<Class<out RtcEvent>> = setOf(
-            StateChanged::class.java, FsmStateChanged::class.java, ComponentFinalized::class.java, PortConnected::class.java,
-            PortDisconnected::class.java, ParameterChanged::class.java, ConfigurationSetActivated::class.java, ContextRateChanged::class.java,
-            ContextRunningChanged::class.java, ManagerComponentChanged::class.java, NodeAppeared::class.java, NodeVanished::class.java,
-            HeartbeatLost::class.java, BecameZombie::class.java, Recovered::class.java, NameServerLost::class.java, NameServerReturned::class.java,
-        )
+        /**
+         * The events a scenario's timeline shows and its invariants are checked on: all but each port's traffic and how
+         * components are watched.
+         */
+        val OBSERVED: Set<Class<out RtcEvent>> =
+            setOf(
+                StateChanged::class.java,
+                FsmStateChanged::class.java,
+                ComponentFinalized::class.java,
+                PortConnected::class.java,
+                PortDisconnected::class.java,
+                ParameterChanged::class.java,
+                ConfigurationSetActivated::class.java,
+                ContextRateChanged::class.java,
+                ContextRunningChanged::class.java,
+                ManagerComponentChanged::class.java,
+                NodeAppeared::class.java,
+                NodeVanished::class.java,
+                HeartbeatLost::class.java,
+                BecameZombie::class.java,
+                Recovered::class.java,
+                NameServerLost::class.java,
+                NameServerReturned::class.java,
+            )
     }
 }

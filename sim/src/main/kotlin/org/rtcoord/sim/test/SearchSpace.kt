@@ -3,10 +3,9 @@ package org.rtcoord.sim.test
 import kotlin.time.Duration
 
 /**
- * What `rtcoord test --explore` may draw faults from, as a test's `explore { }` narrows it: by default
- * every fault of the vocabulary on every component and manager of the system, at moments within each
- * scenario's time, in every scenario. Each word narrows it further; written twice, the second replaces the first (but
- * [exclude]s add up).
+ * What `rtcoord test --explore` may draw faults from, as a test's `explore { }` narrows it: by default every fault of
+ * the vocabulary on every component and manager of the system, at moments within each scenario's time, in every
+ * scenario. Each word narrows it further; written twice, the second replaces the first (but [exclude]s add up).
  */
 @TestDsl
 public class SearchSpace internal constructor() {
@@ -44,14 +43,16 @@ public class SearchSpace internal constructor() {
 
     /** Faults are drawn at moments from [from] to [to] after the coordinator's start. */
     public fun window(from: Duration, to: Duration) {
-        require(!from.isNegative() && to > from) { "window($from, $to): give a start at or after 0 and an end after it" }
+        require(!from.isNegative() && to > from) {
+            "window($from, $to): give a start at or after 0 and an end after it"
+        }
         window = from..to
     }
 }
 
 /**
- * Faults named by kind, each on one target or (with none given) on any: the words of `faults { }` and
- * `exclude { }` in a test's `explore { }`.
+ * Faults named by kind, each on one target or (with none given) on any: the words of `faults { }` and `exclude { }` in
+ * a test's `explore { }`.
  */
 @TestDsl
 public class FaultPatterns internal constructor() {

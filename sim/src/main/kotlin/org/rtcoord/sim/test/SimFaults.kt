@@ -2,7 +2,10 @@ package org.rtcoord.sim.test
 
 import org.rtcoord.sim.SimulatedSystem
 
-/** An `at` step's faults, applied to the simulated [system]'s components by instance name, each told to [applied] as it is done. */
+/**
+ * An `at` step's faults, applied to the simulated [system]'s components by instance name, each told to [applied] as it
+ * is done.
+ */
 internal class SimFaults(private val system: SimulatedSystem, private val applied: (String) -> Unit) : Faults {
     private fun named(name: String) = system.component(name.removeSuffix(".rtc"))
 
@@ -15,13 +18,14 @@ internal class SimFaults(private val system: SimulatedSystem, private val applie
 
     override fun fail(component: String) = fault("fail $component") { named(component).fail() }
 
-    override fun repair(component: String) = fault("repair $component") {
-        named(component).run {
-            repair()
-            resumeExecution()
-            thawOutput()
+    override fun repair(component: String) =
+        fault("repair $component") {
+            named(component).run {
+                repair()
+                resumeExecution()
+                thawOutput()
+            }
         }
-    }
 
     override fun freeze(component: String) = fault("freeze $component") { named(component).freezeOutput() }
 
@@ -29,7 +33,8 @@ internal class SimFaults(private val system: SimulatedSystem, private val applie
 
     override fun exit(component: String) = fault("exit $component") { named(component).exit() }
 
-    override fun loseConnectors(component: String) = fault("loseConnectors $component") { named(component).loseConnectors() }
+    override fun loseConnectors(component: String) =
+        fault("loseConnectors $component") { named(component).loseConnectors() }
 
     override fun killManager() = fault("killManager") { system.killManager() }
 

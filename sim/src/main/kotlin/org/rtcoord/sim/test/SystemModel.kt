@@ -12,12 +12,11 @@ import org.rtcoord.StateChanged
 import org.rtcoord.SystemSnapshot
 
 /**
- * The system and the coordinator as the events of a scenario told them, up to the last one applied: what
- * an invariant reads, so that it is checked against each event's outcome, not against a system that
- * has moved on since. Components by instance name (without `.rtc`). A component the events have not told
- * of yet (the tree lists a naming context again only every so often, so one just created may have no
- * event yet) is read from [live], the system as it is now, until they do. Changed by the scenario's one
- * observer coroutine only.
+ * The system and the coordinator as the events of a scenario told them, up to the last one applied: what an invariant
+ * reads, so that it is checked against each event's outcome, not against a system that has moved on since. Components
+ * by instance name (without `.rtc`). A component the events have not told of yet (the tree lists a naming context again
+ * only every so often, so one just created may have no event yet) is read from [live], the system as it is now, until
+ * they do. Changed by the scenario's one observer coroutine only.
  */
 internal class SystemModel(private val live: SystemReads) : SystemReads {
     private val states = HashMap<String, MutableMap<Int, LifeCycle>>()
@@ -39,13 +38,14 @@ internal class SystemModel(private val live: SystemReads) : SystemReads {
     fun apply(event: RtcEvent) {
         when (event) {
             is StateChanged -> state(event.source).put(event.handle, event.new)
-            is NodeAppeared -> (event.child as? ComponentNode)?.let { node ->
-                val name = node.name.removeSuffix(".rtc")
-                nodes[name] = node
-                gone -= name
-                val known = event.snapshot?.contexts?.associate { it.handle to it.state }.orEmpty()
-                states.getOrPut(name) { HashMap() }.putAll(known)
-            }
+            is NodeAppeared ->
+                (event.child as? ComponentNode)?.let { node ->
+                    val name = node.name.removeSuffix(".rtc")
+                    nodes[name] = node
+                    gone -= name
+                    val known = event.snapshot?.contexts?.associate { it.handle to it.state }.orEmpty()
+                    states.getOrPut(name) { HashMap() }.putAll(known)
+                }
             is NodeVanished -> gone(event.child.name)
             is ComponentFinalized -> gone(event.source.name)
             is ManagerDied -> event.components.forEach { gone(it.name) }
@@ -80,7 +80,8 @@ internal class SystemModel(private val live: SystemReads) : SystemReads {
         return known[0] ?: known.entries.minByOrNull { it.key }?.value ?: LifeCycle.UNKNOWN
     }
 
-    override suspend fun exists(component: String): Boolean = component in nodes || (component !in gone && live.exists(component))
+    override suspend fun exists(component: String): Boolean =
+        component in nodes || (component !in gone && live.exists(component))
 
     override suspend fun snapshot(component: String): ComponentSnapshot {
         val node = node(component)
@@ -90,9 +91,12 @@ internal class SystemModel(private val live: SystemReads) : SystemReads {
     override suspend fun node(component: String): ComponentNode = nodes[component] ?: live.node(component)
 
     override fun modeOf(machine: String): String? {
-        require(machine in modes) { "no mode machine '$machine' (machines: ${modes.keys.joinToString().ifEmpty { "none" }})" }
+        require(machine in modes) {
+            "no mode machine '$machine' (machines: ${modes.keys.joinToString().ifEmpty { "none" }})"
+        }
         return modes[machine]
     }
 
-    override val log: List<String> get() = lines.toList()
+    override val log: List<String>
+        get() = lines.toList()
 }

@@ -7,7 +7,8 @@ public object TestReport {
 
     /** Each failure of [result] as `file:line:col: what`, each of its details indented under it. */
     @JvmStatic
-    public fun failures(result: TestResult): List<String> = result.failures.flatMap { failure -> listOf(failure.toString()) + failure.details.map { "  $it" } }
+    public fun failures(result: TestResult): List<String> =
+        result.failures.flatMap { failure -> listOf(failure.toString()) + failure.details.map { "  $it" } }
 
     /** [result]'s timeline as a failure shows it: its last entries, with times from the scenario's start. */
     @JvmStatic
@@ -15,7 +16,9 @@ public object TestReport {
         val entries = result.timeline
         if (entries.isEmpty()) return emptyList()
         val shown = entries.takeLast(TIMELINE)
-        val header = "timeline (seconds from the coordinator's start)" + if (shown.size < entries.size) ", the last ${shown.size} of ${entries.size} entries:" else ":"
+        val header =
+            "timeline (seconds from the coordinator's start)" +
+                if (shown.size < entries.size) ", the last ${shown.size} of ${entries.size} entries:" else ":"
         return listOf(header) + shown.map(TimelineEntry::toString)
     }
 }

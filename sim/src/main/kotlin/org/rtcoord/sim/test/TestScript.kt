@@ -12,8 +12,8 @@ import kotlin.script.experimental.jvm.dependenciesFromCurrentContext
 import kotlin.script.experimental.jvm.jvm
 
 /**
- * The script definition of `*.test.kts` coordinator tests: the body is a [CoordinatorTest], with the core
- * API, lifecycle states (`ACTIVE`, `ERROR`, ...) and duration units imported, as in coordinators.
+ * The script definition of `*.test.kts` coordinator tests: the body is a [CoordinatorTest], with the core API,
+ * lifecycle states (`ACTIVE`, `ERROR`, ...) and duration units imported, as in coordinators.
  */
 @KotlinScript(
     displayName = "rtcoord coordinator test",
@@ -23,22 +23,23 @@ import kotlin.script.experimental.jvm.jvm
 public abstract class TestScript(directory: Path, name: String) : CoordinatorTest(directory, name)
 
 /** How test scripts compile: the imports coordinators have, and the host's class path. */
-public object TestScriptCompilation : ScriptCompilationConfiguration({
-    defaultImports(
-        "org.rtcoord.*",
-        "org.rtcoord.LifeCycle.*",
-        "org.rtcoord.sim.test.*",
-        "kotlin.time.Duration.Companion.milliseconds",
-        "kotlin.time.Duration.Companion.seconds",
-        "kotlin.time.Duration.Companion.minutes",
-    )
-    jvm {
-        dependenciesFromCurrentContext(wholeClasspath = true)
-    }
-    compilerOptions("-jvm-target", "17")
-    ide {
-        acceptedLocations(ScriptAcceptedLocation.Everywhere)
-    }
-}) {
+public object TestScriptCompilation :
+    ScriptCompilationConfiguration({
+        defaultImports(
+            "org.rtcoord.*",
+            "org.rtcoord.LifeCycle.*",
+            "org.rtcoord.sim.test.*",
+            "kotlin.time.Duration.Companion.milliseconds",
+            "kotlin.time.Duration.Companion.seconds",
+            "kotlin.time.Duration.Companion.minutes",
+        )
+        jvm {
+            dependenciesFromCurrentContext(wholeClasspath = true)
+        }
+        compilerOptions("-jvm-target", "17")
+        ide {
+            acceptedLocations(ScriptAcceptedLocation.Everywhere)
+        }
+    }) {
     private fun readResolve(): Any = TestScriptCompilation
 }

@@ -2,9 +2,9 @@
 
 package org.rtcoord.sim.test
 
+import java.nio.file.Path
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.dsl.script.ScriptSource
-import java.nio.file.Path
 
 /** Where a loaded test file's steps are written, and what they say there: how failures name them. */
 internal class TestSource(private val shown: Path, private val text: ScriptSource) {
@@ -15,5 +15,6 @@ internal class TestSource(private val shown: Path, private val text: ScriptSourc
     fun at(line: Int, word: String): String = "$shown:$line:${text.column(line, word)}"
 
     /** What [step]'s braces hold, on one line, or [otherwise]. */
-    fun condition(step: TestStep, otherwise: String = "the condition"): String = text.block(step.line, step.word) ?: otherwise
+    fun condition(step: TestStep, otherwise: String = "the condition"): String =
+        text.block(step.line, step.word) ?: otherwise
 }

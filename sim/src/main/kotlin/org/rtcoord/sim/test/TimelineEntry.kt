@@ -4,11 +4,12 @@ import java.util.Locale
 import kotlin.time.Duration
 
 /**
- * One thing that happened in a scenario: a fault it injected, a line the coordinator logged, an event of
- * the system, a mode the coordinator's machine entered, or a step of the test that held or failed; [at]
- * is its time from the scenario's start (the coordinator's start; negative while it started).
+ * One thing that happened in a scenario: a fault it injected, a line the coordinator logged, an event of the system, a
+ * mode the coordinator's machine entered, or a step of the test that held or failed; [at] is its time from the
+ * scenario's start (the coordinator's start; negative while it started).
  */
-public class TimelineEntry internal constructor(
+public class TimelineEntry
+internal constructor(
     /** When, from the scenario's start. */
     public val at: Duration,
     /** What kind of thing happened. */
@@ -34,7 +35,7 @@ public class TimelineEntry internal constructor(
         STEP,
     }
 
-    /** `  3.012 s  fault  breakDown laser0`. */
+    /** ` 3.012 s fault breakDown laser0`. */
     override fun toString(): String = "${seconds(at).padStart(9)}  ${kind.name.lowercase().padEnd(5)}  $text"
 
     internal companion object {

@@ -1,5 +1,8 @@
 package org.rtcoord.sim.explore
 
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
@@ -10,14 +13,11 @@ import org.junit.jupiter.api.io.TempDir
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.sim.test.CoordinatorTestRunner
 import org.rtcoord.sim.test.TestReport
-import java.nio.file.Files
-import java.nio.file.Path
-import java.nio.file.Paths
 
 /**
- * `rtcoord test --explore` end to end on the examples' system: schedules drawn from a seed find a
- * coordinator's fault, shrink it to one fault at a round time, write it as a test that fails as written,
- * and replay it by its seed; what cannot be explored is refused, what cannot be applied is skipped.
+ * `rtcoord test --explore` end to end on the examples' system: schedules drawn from a seed find a coordinator's fault,
+ * shrink it to one fault at a round time, write it as a test that fails as written, and replay it by its seed; what
+ * cannot be explored is refused, what cannot be applied is skipped.
  */
 class ExploreTest {
     private val system = Paths.get("../examples/localisation.xml").toAbsolutePath().normalize()
@@ -29,7 +29,8 @@ class ExploreTest {
     private fun boom(directory: Path, explore: String): Path {
         write(directory, "boom.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) {\n    error(\"boom\")\n}")
         return write(
-            directory, "boom.test.kts",
+            directory,
+            "boom.test.kts",
             """
             system("$system")
             coordinator("boom.coord.kts")
@@ -44,11 +45,19 @@ class ExploreTest {
     }
 
     @Test
-    fun `a failure is found, shrunk to its smallest schedule, written as a test that fails, and replayed by its seed`(@TempDir directory: Path) {
-        val test = boom(directory, "components(\"laser0\", \"gyro0\"); faults { fail(); breakDown() }; window(0.seconds, 1.seconds)")
+    fun `a failure is found, shrunk to its smallest schedule, written as a test that fails, and replayed by its seed`(
+        @TempDir directory: Path
+    ) {
+        val test =
+            boom(
+                directory,
+                "components(\"laser0\", \"gyro0\"); faults { fail(); breakDown() }; window(0.seconds, 1.seconds)",
+            )
         val explorer = FaultExplorer(ScriptHost())
         val lines = mutableListOf<ExploreProgress>()
-        val report = runBlocking { explorer.explore(test, ExploreOptions(seed = 7, runs = 4, maxFaults = 3, shrinkRuns = 12), lines::add) }
+        val report = runBlocking {
+            explorer.explore(test, ExploreOptions(seed = 7, runs = 4, maxFaults = 3, shrinkRuns = 12), lines::add)
+        }
 
         assertEquals(4, report.runs)
         assertEquals((0..3).map { "7:$it" }, lines.map { it.key }.sorted())
@@ -65,7 +74,11 @@ class ExploreTest {
         assertEquals(true, found.failsAsWritten)
 
         val rerun = runBlocking { CoordinatorTestRunner().let { it.runAll(it.files(listOf(written))) } }.single()
-        assertEquals("${directory.resolve("boom.coord.kts")}:2", rerun.failures.first().at, TestReport.failures(rerun).joinToString("\n"))
+        assertEquals(
+            "${directory.resolve("boom.coord.kts")}:2",
+            rerun.failures.first().at,
+            TestReport.failures(rerun).joinToString("\n"),
+        )
 
         val (seed, index) = found.firstRun.split(':').map(String::toLong)
         val replayed = runBlocking { explorer.replay(test, seed, index, 3, reruns = 2) }
@@ -77,7 +90,9 @@ class ExploreTest {
     fun `an exploration stopped early reports what it found so far, unshrunk`(@TempDir directory: Path) {
         val test = boom(directory, "components(\"laser0\"); faults { fail() }; window(0.seconds, 200.milliseconds)")
         val explorer = FaultExplorer(ScriptHost())
-        val report = runBlocking { explorer.explore(test, ExploreOptions(seed = 2, runs = 50, maxFaults = 1)) { explorer.stop() } }
+        val report = runBlocking {
+            explorer.explore(test, ExploreOptions(seed = 2, runs = 50, maxFaults = 1)) { explorer.stop() }
+        }
         assertTrue(report.interrupted)
         assertTrue(report.runs in 1..2, "runs: ${report.runs}")
         val found = report.failures.single()
@@ -88,7 +103,9 @@ class ExploreTest {
     @Test
     fun `a fault that cannot be applied skips its run, counted with why`(@TempDir directory: Path) {
         val test = boom(directory, "components(\"ghost0\"); faults { exit() }; window(0.seconds, 200.milliseconds)")
-        val report = runBlocking { FaultExplorer(ScriptHost()).explore(test, ExploreOptions(seed = 1, runs = 2, maxFaults = 1)) }
+        val report = runBlocking {
+            FaultExplorer(ScriptHost()).explore(test, ExploreOptions(seed = 1, runs = 2, maxFaults = 1))
+        }
         assertEquals(2, report.skipped)
         assertEquals(0, report.failed)
         assertEquals(mapOf("no component ghost0 in the simulated system" to 2), report.skipReasons)
@@ -97,12 +114,33 @@ class ExploreTest {
     @Test
     fun `a test with nothing to check, or one failing without faults, is refused`(@TempDir directory: Path) {
         write(directory, "quiet.coord.kts", "on(component(\"laser0.rtc\")).state(ERROR) { log(\"laser\") }")
-        val nothing = write(directory, "nothing.test.kts", "system(\"$system\")\ncoordinator(\"quiet.coord.kts\")\nat(1.seconds) { fail(\"laser0\") }")
-        val refused = assertThrows<ExploreRefused> { runBlocking { FaultExplorer(ScriptHost()).explore(nothing, ExploreOptions(seed = 1, runs = 1)) } }
-        assertEquals(listOf("$nothing: nothing to check: the test has no invariant (always, never) and no expectation, so no schedule could fail it"), refused.lines)
+        val nothing =
+            write(
+                directory,
+                "nothing.test.kts",
+                "system(\"$system\")\ncoordinator(\"quiet.coord.kts\")\nat(1.seconds) { fail(\"laser0\") }",
+            )
+        val refused =
+            assertThrows<ExploreRefused> {
+                runBlocking { FaultExplorer(ScriptHost()).explore(nothing, ExploreOptions(seed = 1, runs = 1)) }
+            }
+        assertEquals(
+            listOf(
+                "$nothing: nothing to check: the test has no invariant (always, never) and no expectation, so no schedule could fail it"
+            ),
+            refused.lines,
+        )
 
-        val failing = write(directory, "failing.test.kts", "system(\"$system\")\ncoordinator(\"quiet.coord.kts\")\nexpect(within = 200.milliseconds) { component(\"laser0\").state() == ERROR }")
-        val baseline = assertThrows<ExploreRefused> { runBlocking { FaultExplorer(ScriptHost()).explore(failing, ExploreOptions(seed = 1, runs = 1)) } }
+        val failing =
+            write(
+                directory,
+                "failing.test.kts",
+                "system(\"$system\")\ncoordinator(\"quiet.coord.kts\")\nexpect(within = 200.milliseconds) { component(\"laser0\").state() == ERROR }",
+            )
+        val baseline =
+            assertThrows<ExploreRefused> {
+                runBlocking { FaultExplorer(ScriptHost()).explore(failing, ExploreOptions(seed = 1, runs = 1)) }
+            }
         assertEquals("failing fails without any fault injected; fix it (or the test) first:", baseline.lines.first())
         assertFalse(baseline.lines.drop(1).isEmpty())
     }

@@ -1,20 +1,24 @@
 package org.rtcoord.sim.test
 
+import java.nio.file.Path
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
-import java.nio.file.Path
 
 /** `always` and `never`: checked on every event from where they are written, failing at the first that breaks them. */
 class InvariantTest {
     @Test
-    fun `an invariant fails at the event that broke it, with its time, and one that holds passes`(@TempDir directory: Path) {
+    fun `an invariant fails at the event that broke it, with its time, and one that holds passes`(
+        @TempDir directory: Path
+    ) {
         val folder = TestFolder(directory)
-        val test = folder.test(
-            "invariants.test.kts", "${folder.examples}/localisation.coord.kts",
-            """
+        val test =
+            folder.test(
+                "invariants.test.kts",
+                "${folder.examples}/localisation.coord.kts",
+                """
             always { component("gyro0").state() == ACTIVE }
             scenario("the localiser is switched") {
                 never { component("laser_localise0").state() == INACTIVE }
@@ -28,12 +32,14 @@ class InvariantTest {
                 at(2.seconds) { repair("laser0") }
             }
             """,
-        )
+            )
         val (broken, held) = runBlocking { CoordinatorTestRunner().let { it.runAll(it.files(listOf(test))) } }
         val failure = broken.failures.single()
         assertEquals("$test:5:5", failure.at)
         assertTrue(
-            Regex("""never \{ component\("laser_localise0"\)\.state\(\) == INACTIVE } broke at \d+\.\d{3} s, on event: laser_localise0\.rtc ACTIVE -> INACTIVE""")
+            Regex(
+                    """never \{ component\("laser_localise0"\)\.state\(\) == INACTIVE } broke at \d+\.\d{3} s, on event: laser_localise0\.rtc ACTIVE -> INACTIVE"""
+                )
                 .matches(failure.message),
             failure.message,
         )

@@ -1,20 +1,27 @@
 package org.rtcoord.sim.test
 
+import java.nio.file.Path
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
-import java.nio.file.Path
 
-/** `meanwhile { }`: faults applied at their times alongside the steps, whatever step the timeline waits on; `loseConnectors` among them. */
+/**
+ * `meanwhile { }`: faults applied at their times alongside the steps, whatever step the timeline waits on;
+ * `loseConnectors` among them.
+ */
 class MeanwhileTest {
     @Test
-    fun `meanwhile faults apply at their times while a step waits, and a lost connector is gone at both ends`(@TempDir directory: Path) {
+    fun `meanwhile faults apply at their times while a step waits, and a lost connector is gone at both ends`(
+        @TempDir directory: Path
+    ) {
         val folder = TestFolder(directory)
-        val test = folder.test(
-            "meanwhile.test.kts", "${folder.examples}/localisation.coord.kts",
-            """
+        val test =
+            folder.test(
+                "meanwhile.test.kts",
+                "${folder.examples}/localisation.coord.kts",
+                """
             scenario("the laser's connector is lost while an expectation waits") {
                 expect { component("laser_localise0").snapshot().ports.first { it.name == "laser" }.connectors.size == 1 }
                 meanwhile { at(500.milliseconds) { loseConnectors("laser0") } }
@@ -31,7 +38,7 @@ class MeanwhileTest {
                 expect(within = 3.seconds) { component("laser0").state() == ERROR }
             }
             """,
-        )
+            )
         val (lost, ghost) = runBlocking { CoordinatorTestRunner().let { it.runAll(it.files(listOf(test))) } }
         assertTrue(lost.passed, TestReport.failures(lost).joinToString("\n"))
         assertTrue(lost.timeline.any { it.kind == TimelineEntry.Kind.FAULT && it.text == "loseConnectors laser0" })
