@@ -21,14 +21,19 @@ import org.junit.jupiter.api.Test;
  * tests (process-test-classes), except in a quick build (-Ddokka.skip=true), where this is skipped.
  */
 class BundleJavadocTest {
-    private static final Path API_DOCS = Path.of(System.getProperty("rtcoord.apidocs", "target/apidocs"));
+    /** Given when the build makes the javadoc (not with -Ddokka.skip=true). */
+    private static final String API_DOCS_PROPERTY = System.getProperty("rtcoord.apidocs");
     /** The packages written for Java callers; the others are Kotlin's, where a suspend function takes a continuation. */
     private static final Pattern JAVA_FACING = Pattern.compile("org/rtcoord/(java|profile|dsl/java)/[^/]+\\.html");
     private static final Path SOURCES = Path.of(System.getProperty("rtcoord.bundleSources", "target/bundle-sources"));
 
+    private static Path apiDocs;
+
     @BeforeAll
     static void built() {
-        assumeTrue(Files.isDirectory(API_DOCS), "the javadoc is not built (-Ddokka.skip=true)");
+        assumeTrue(API_DOCS_PROPERTY != null, "the javadoc is not built (-Ddokka.skip=true)");
+        apiDocs = Path.of(API_DOCS_PROPERTY);
+        assertTrue(Files.isDirectory(apiDocs.resolve("org/rtcoord")), "no javadoc in " + apiDocs);
     }
 
     @Test
@@ -43,17 +48,17 @@ class BundleJavadocTest {
 
     @Test
     void onlyTheApi() throws IOException {
-        assertFalse(Files.exists(API_DOCS.resolve("org/rtcoord/internal")), "internal packages");
-        assertFalse(Files.exists(API_DOCS.resolve("org/rtcoord/ComponentEntryImpl.html")), "an internal class of an API package");
+        assertFalse(Files.exists(apiDocs.resolve("org/rtcoord/internal")), "internal packages");
+        assertFalse(Files.exists(apiDocs.resolve("org/rtcoord/ComponentEntryImpl.html")), "an internal class of an API package");
         List<String> leaks;
-        try (Stream<Path> pages = Files.walk(API_DOCS.resolve("org/rtcoord"))) {
+        try (Stream<Path> pages = Files.walk(apiDocs.resolve("org/rtcoord"))) {
             leaks = pages.filter(page -> page.toString().endsWith(".html"))
                 .filter(page -> {
                     String html = read(page);
                     return html.contains("$rtcoord_") || html.contains("kotlin.Metadata") || html.contains("TODO")
-                        || JAVA_FACING.matcher(API_DOCS.relativize(page).toString()).matches() && html.contains("Continuation");
+                        || JAVA_FACING.matcher(apiDocs.relativize(page).toString()).matches() && html.contains("Continuation");
                 })
-                .map(API_DOCS::relativize).map(Path::toString).collect(Collectors.toList());
+                .map(apiDocs::relativize).map(Path::toString).collect(Collectors.toList());
         }
         assertEquals(List.of(), leaks, "pages naming mangled members, Kotlin metadata or placeholders, or Java-facing pages naming continuations");
     }
@@ -66,7 +71,7 @@ class BundleJavadocTest {
     }
 
     private static String text(String page) {
-        return read(API_DOCS.resolve(page)).replaceAll("<[^>]+>", "").replace("&nbsp;", " ").replace("&lt;", "<").replace("&gt;", ">");
+        return read(apiDocs.resolve(page)).replaceAll("<[^>]+>", "").replace("&nbsp;", " ").replace("&lt;", "<").replace("&gt;", ">");
     }
 
     private static String read(Path file) {
