@@ -104,7 +104,9 @@ public final class ApiStubs {
                 if (type instanceof ClassTree) findLeftOut((ClassTree) type, packageOf(unit), packageOf(unit));
             }
         }
-        namesLeftOut = Pattern.compile(leftOut.stream().map(Pattern::quote).collect(Collectors.joining("|", "(?:", ")(?![\\w$])")));
+        // An empty alternation would match everywhere: with nothing left out, nothing is named.
+        namesLeftOut = leftOut.isEmpty() ? Pattern.compile("(?!)")
+                : Pattern.compile(leftOut.stream().map(Pattern::quote).collect(Collectors.joining("|", "(?:", ")(?![\\w$])")));
         int written = 0;
         for (CompilationUnitTree unit : units) {
             List<int[]> cuts = new ArrayList<>();
