@@ -3,6 +3,7 @@ package org.rtcoord.sim.test
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.LifeCycle
+import org.rtcoord.NotFoundException
 import org.rtcoord.RtcTree
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.sim.SimulatedSystem
@@ -17,9 +18,22 @@ internal class LiveReads(
     private val coordinator: Coordinator?,
     private val logged: List<String>,
 ) : SystemReads {
-    override suspend fun state(component: String): LifeCycle? = if (exists(component)) node(component).state() else null
+    override suspend fun state(component: String): LifeCycle? = bound(component)?.state()
 
-    override suspend fun exists(component: String): Boolean = system.components.any { it.instanceName == component }
+    override suspend fun exists(component: String): Boolean = bound(component) != null
+
+    /**
+     * The component [name] as the tree finds it; null while the system has none, and while the tree does not find the
+     * one it has: a manager makes a component before it binds its name, and until then no client sees it.
+     */
+    private suspend fun bound(name: String): ComponentNode? {
+        if (system.components.none { it.instanceName == name }) return null
+        return try {
+            node(name)
+        } catch (e: NotFoundException) {
+            null
+        }
+    }
 
     override suspend fun snapshot(component: String): ComponentSnapshot = node(component).snapshot()
 
