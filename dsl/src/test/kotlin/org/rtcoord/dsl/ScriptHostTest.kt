@@ -228,6 +228,22 @@ class ScriptHostTest {
     }
 
     @Test
+    fun `a cached jar cut short is compiled again, and the cache holds whole jars only`(): Unit = runBlocking {
+        val file = script("cut.coord.kts", "on(component(\"gyro0.rtc\")).state(ERROR) { reset() }")
+        host.load(file)
+        val cached = Files.list(directory.resolve("cache")).use { it.toList() }.single()
+        val whole = Files.readAllBytes(cached)
+        // As a process killed while writing it would leave it.
+        Files.write(cached, whole.copyOf(whole.size / 2))
+
+        ScriptHost(directory.resolve("cache")).load(file)
+        assertEquals(listOf(cached), Files.list(directory.resolve("cache")).use { it.toList() }, "no part left over")
+        val rewritten = Files.getLastModifiedTime(cached)
+        ScriptHost(directory.resolve("cache")).load(file)
+        assertEquals(rewritten, Files.getLastModifiedTime(cached), "the jar compiled again is whole: taken as it is")
+    }
+
+    @Test
     fun `a missing file is one clear line`(): Unit = runBlocking {
         val missing = directory.resolve("absent.coord.kts")
         assertEquals(listOf("$missing:1:1: no such file"), host.check(missing))

@@ -1,11 +1,18 @@
 package org.rtcoord.dsl.script
 
 import java.io.File
+import java.io.IOException
 import java.nio.file.Files
 import java.nio.file.Path
+import java.nio.file.StandardCopyOption.ATOMIC_MOVE
+import java.nio.file.StandardCopyOption.REPLACE_EXISTING
 import java.security.MessageDigest
+import java.util.zip.ZipFile
+import kotlin.script.experimental.api.CompiledScript
+import kotlin.script.experimental.api.ScriptCompilationConfiguration
 import kotlin.script.experimental.api.SourceCode
 import kotlin.script.experimental.host.ScriptingHostConfiguration
+import kotlin.script.experimental.jvm.CompiledJvmScriptsCache
 import kotlin.script.experimental.jvm.compilationCache
 import kotlin.script.experimental.jvm.defaultJvmScriptingHostConfiguration
 import kotlin.script.experimental.jvm.jvm
@@ -26,7 +33,7 @@ public object CompiledScripts {
     public fun host(directory: Path?, vararg templates: Class<*>): ScriptingHostConfiguration =
         ScriptingHostConfiguration(defaultJvmScriptingHostConfiguration) {
             directory?.let {
-                jvm { compilationCache(CompiledScriptJarsCache { source, _ -> jarOf(it, source, templates) }) }
+                jvm { compilationCache(WholeJars { source -> jarOf(it, source, templates) }) }
             }
         }
 
@@ -40,5 +47,52 @@ public object CompiledScripts {
         }
         Files.createDirectories(directory)
         return directory.resolve(digest.digest().joinToString("") { "%02x".format(it) } + ".jar").toFile()
+    }
+
+    /**
+     * Jars written whole or not at all: each is written beside its place and moved there in one step, so another
+     * process compiling the same script at the same time (two `rtcoord run`s, test JVMs side by side) never reads half
+     * of one. A jar that cannot be read (cut short by a process killed while writing it) is compiled again, not an
+     * error at every start.
+     */
+    private class WholeJars(private val jarOf: (SourceCode) -> File) : CompiledJvmScriptsCache {
+        override fun get(
+            script: SourceCode,
+            scriptCompilationConfiguration: ScriptCompilationConfiguration,
+        ): CompiledScript? {
+            val jar = jarOf(script)
+            if (!jar.isFile) return null
+            // Read lazily, a jar cut short would fail only once the script runs: its central directory, at its end,
+            // tells it now.
+            if (!whole(jar)) {
+                jar.delete()
+                return null
+            }
+            return CompiledScriptJarsCache { _, _ -> jar }.get(script, scriptCompilationConfiguration)
+        }
+
+        private fun whole(jar: File) =
+            try {
+                ZipFile(jar).close()
+                true
+            } catch (e: IOException) {
+                false
+            }
+
+        override fun store(
+            compiledScript: CompiledScript,
+            script: SourceCode,
+            scriptCompilationConfiguration: ScriptCompilationConfiguration,
+        ) {
+            val jar = jarOf(script).toPath()
+            val part = Files.createTempFile(jar.parent, jar.fileName.toString(), ".part")
+            try {
+                CompiledScriptJarsCache { _, _ -> part.toFile() }
+                    .store(compiledScript, script, scriptCompilationConfiguration)
+                Files.move(part, jar, ATOMIC_MOVE, REPLACE_EXISTING)
+            } finally {
+                Files.deleteIfExists(part)
+            }
+        }
     }
 }
