@@ -113,7 +113,7 @@ class ServeDrawingTest {
                             )
                             browser.evaluate("document.getElementById('pause').click()")
                             browser.await("laser0's ERROR listed on resuming", expression = errorListed)
-                            browser.screenshot(Paths.get(System.getProperty("rtcoord.root", ".."), "docs", "serve.png"))
+                            browser.screenshot(Paths.get("target", "serve", "serve.png"))
                         }
                     }
                 }
