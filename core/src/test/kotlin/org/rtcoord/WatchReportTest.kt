@@ -2,14 +2,15 @@ package org.rtcoord
 
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.DeadPort
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.iiopAddresses
 import org.rtcoord.runtime.ObserverFlavour as FixtureFlavour
 import org.rtcoord.runtime.Scenarios
 
@@ -123,10 +124,13 @@ class WatchReportTest {
                     events.handler,
                 )
                 val relays = setOf("relay0.rtc", "relay1.rtc")
-                assertEquals(
-                    relays,
-                    List(2) { events.next<WatchMethodChanged> { it.source.name in relays }.source.name }.toSet(),
-                )
+                val watched = List(2) { events.next<WatchMethodChanged> { it.source.name in relays }.source }
+                assertEquals(relays, watched.map { it.name }.toSet())
+                // Where the process listened: its manager and its components, one ORB.
+                val where =
+                    iiopAddresses(localisation.system.runtime.orb.orb, watched.first().component.ref)
+                        .distinct()
+                        .single()
 
                 process.kill()
                 val seen = events.until { seen ->
@@ -142,11 +146,22 @@ class WatchReportTest {
                     "the model holds the death for views that start later",
                 )
 
-                delay(2.seconds) // several probes of the dead manager and its components
-                assertEquals(emptyList<ManagerDied>(), events.drained<ManagerDied>(), "one death only")
+                // Several probes of the dead manager and of its components, counted where the process listened; then
+                // a poll asked for on gyro0 is a change both streams are told, a marker nothing else may precede.
+                DeadPort(where, localisation.system.runtime.orb.orb).use { port ->
+                    await("probes of the dead manager and its components", 30.seconds) {
+                        port.requests("get_profile") >= PROBES && port.requests(PROFILE) >= PROBES
+                    }
+                }
+                tree.on(localisation.path("gyro0.rtc"), StateChanged::class.java, marker) {}
+                assertEquals(
+                    emptyList<ManagerDied>(),
+                    events.until { seen -> seen.any(::isMarker) }.filterIsInstance<ManagerDied>(),
+                    "one death only",
+                )
                 assertEquals(
                     listOf(died),
-                    reported.drained<ManagerDied>(),
+                    reported.until { seen -> seen.any(::isMarker) }.filterIsInstance<ManagerDied>(),
                     "one death only for the tree's reporters too",
                 )
             }
@@ -263,6 +278,9 @@ class WatchReportTest {
     private companion object {
         /** What a component is read with when it is polled (the fixture counts the calls made to it). */
         const val PROFILE = "get_component_profile"
+
+        /** The probes of a dead manager, and the reads of its components, a test lets pass to show they say nothing. */
+        const val PROBES = 3
 
         /** The poll period asked for by a marker registration: no registration of the tests asks for it otherwise. */
         val MARKER_PERIOD = 50.milliseconds
