@@ -1,10 +1,12 @@
 package org.rtcoord
 
-import java.time.Duration as JavaDuration
 import java.time.Instant
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
+import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
+import kotlin.time.TimeSource
+import kotlin.time.toJavaDuration
 import kotlinx.coroutines.flow.take
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.runBlocking
@@ -178,7 +180,8 @@ class DataTapTest {
     fun `port traffic events come from the observer's SEND and RECEIVE hints, at most one per interval per port`():
         Unit = runBlocking {
         val recorder = EventRecorder()
-        val options = EventOptions.Builder().mode(WatchMode.PUSH).trafficInterval(JavaDuration.ofMillis(200)).build()
+        val options =
+            EventOptions.Builder().mode(WatchMode.PUSH).trafficInterval(TRAFFIC_INTERVAL.toJavaDuration()).build()
         val laser = tree.on(localisation.path("laser0.rtc"), PortTraffic::class.java, options, recorder.handler)
         tree.on(localisation.path("laser_localise0.rtc"), PortTraffic::class.java, options, recorder.handler).use {
             val received = recorder.next<PortTraffic> { it.port == "laser" && it.source.name == "laser_localise0.rtc" }
@@ -187,16 +190,32 @@ class DataTapTest {
             assertTrue(sent.outgoing, "the laser sends on its out-port laser")
             laser.cancel()
 
+            // The rate from a count: as many RECEIVE hints as make five intervals, and the time they took. The first
+            // may have been on its way already, so one interval is allowed for it; at the default second between
+            // hints they would take four seconds at least.
             recorder.events.clear()
-            Thread.sleep(1000) // counting what one second brings
-            val second =
-                recorder.drained<PortTraffic>().filter { it.port == "laser" && it.source.name == "laser_localise0.rtc" }
-            assertTrue(second.size in 2..7, "about five RECEIVE hints a second at a 200 ms interval: ${second.size}")
+            val started = TimeSource.Monotonic.markNow()
+            repeat(HINTS) {
+                recorder.next<PortTraffic>(timeout = 10.seconds) {
+                    it.port == "laser" && it.source.name == "laser_localise0.rtc"
+                }
+            }
+            val took = started.elapsedNow()
+            assertTrue(took >= TRAFFIC_INTERVAL * (HINTS - 2), "at most one RECEIVE hint per 200 ms: $HINTS in $took")
+            assertTrue(took < 1.seconds * (HINTS - 2), "the 200 ms asked for, not the default second: $HINTS in $took")
         }
     }
 
     /** The port's connections read now, none if the read fails; for conditions awaited outside coroutines. */
     private fun Port.runCatchingConnections(): List<Connection> = runBlocking {
         runCatching { connections() }.getOrDefault(emptyList())
+    }
+
+    private companion object {
+        /** The least time between two traffic events of one port the traffic test asks for. */
+        val TRAFFIC_INTERVAL = 200.milliseconds
+
+        /** The traffic hints the traffic test counts: the first and five intervals after it. */
+        const val HINTS = 6
     }
 }

@@ -8,7 +8,6 @@ import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
 import kotlinx.coroutines.async
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.toList
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -230,9 +229,14 @@ class FaultToleranceTest {
                         StatusKind.CONFIGURATION to "UPDATE_CONFIG_SET: nowhere",
                         StatusKind.COMPONENT_PROFILE to "ghost0",
                     )
+                // The out-of-order pair leads the reads, which find ACTIVE until one decides at the end of the grace
+                // period: that disagreement ending is the tree done with the notifications.
+                val ended = localisation.tree.core.disagreementsEnded.get()
                 notifications.forEach { (kind, hint) -> client.send(observer, kind, hint) }
                 client.sync(observer)
-                delay(2.seconds) // longer than hints wait for a read to agree
+                await("the reads to settle what the notifications hinted") {
+                    localisation.tree.core.disagreementsEnded.get() > ended
+                }
                 assertEquals(emptyList<RtcEvent>(), recorder.drained<RtcEvent>(), "no event from notifications alone")
 
                 node.deactivate()

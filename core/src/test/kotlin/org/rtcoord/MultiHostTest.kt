@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Assumptions.assumeTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.FixtureProcess
+import org.rtcoord.fixtures.awaitValue
 import org.rtcoord.fixtures.listeningSockets
 
 /**
@@ -114,13 +115,11 @@ class MultiHostTest {
                     }
                 }
                 .sorted()
-        val deadline = TimeSource.Monotonic.markNow() + 15.seconds
-        var after = coordinator.list()
-        while (after.sorted() != expected && deadline.hasNotPassedNow()) {
-            Thread.sleep(200)
-            after = coordinator.list()
-        }
-        assertEquals(expected, after.sorted(), "the coordinator's tree after the cut healed")
+        // Listed again until whole: a listing re-read since the cut healed tells no event.
+        val after =
+            awaitValue("the coordinator's tree after the cut healed to be $expected", 15.seconds) {
+                coordinator.list().takeIf { it.sorted() == expected }
+            }
         println(
             "multi-host: ${after.size} nodes; HeartbeatLost ${lost.inWholeMilliseconds} ms and BecameZombie ${zombie.inWholeMilliseconds} ms after the cut; " +
                 "host a's event in ${flowing.inWholeMilliseconds} ms during it; Recovered ${recovered.inWholeMilliseconds} ms after healing"
@@ -146,12 +145,25 @@ class MultiHostTest {
 
         /** Every line it printed so far. */
         val lines: MutableList<String> = CopyOnWriteArrayList()
+        /** Notified at each line printed, and when the output ends. */
+        private val printed = Object()
+        @Volatile private var ended = false
 
         val pid: Long
             get() = process.pid()
 
         init {
-            Thread({ process.inputStream.bufferedReader().forEachLine { lines += it } }, "coordinator-output")
+            Thread(
+                    {
+                        process.inputStream.bufferedReader().forEachLine {
+                            lines += it
+                            synchronized(printed) { printed.notifyAll() }
+                        }
+                        ended = true
+                        synchronized(printed) { printed.notifyAll() }
+                    },
+                    "coordinator-output",
+                )
                 .apply { isDaemon = true }
                 .start()
             try {
@@ -165,16 +177,19 @@ class MultiHostTest {
         /** Waits until a line that [matches] has been printed; returns it. */
         fun await(what: String, timeout: Duration, from: Int = 0, matches: (String) -> Boolean): String {
             val deadline = TimeSource.Monotonic.markNow() + timeout
-            while (true) {
-                lines.drop(from).firstOrNull(matches)?.let {
-                    return it
+            synchronized(printed) {
+                while (true) {
+                    lines.drop(from).firstOrNull(matches)?.let {
+                        return it
+                    }
+                    check(!ended && process.isAlive) { "the coordinator exited while waiting for $what" }
+                    val left = -deadline.elapsedNow()
+                    if (!left.isPositive())
+                        throw AssertionError(
+                            "no $what within $timeout; the coordinator printed:\n${lines.joinToString("\n")}"
+                        )
+                    printed.wait(left.inWholeMilliseconds.coerceAtLeast(1))
                 }
-                check(process.isAlive) { "the coordinator exited while waiting for $what" }
-                if (deadline.hasPassedNow())
-                    throw AssertionError(
-                        "no $what within $timeout; the coordinator printed:\n${lines.joinToString("\n")}"
-                    )
-                Thread.sleep(20)
             }
         }
 

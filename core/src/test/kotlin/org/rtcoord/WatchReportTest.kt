@@ -2,13 +2,15 @@ package org.rtcoord
 
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.DeadPort
 import org.rtcoord.fixtures.FixtureProcess
+import org.rtcoord.fixtures.await
+import org.rtcoord.fixtures.iiopAddresses
 import org.rtcoord.runtime.ObserverFlavour as FixtureFlavour
 import org.rtcoord.runtime.Scenarios
 
@@ -71,16 +73,30 @@ class WatchReportTest {
                 told.getValue(omg).next<WatchMethodChanged>(),
             )
 
-            delay(1.seconds)
-            val reports = reported.drained<WatchMethodChanged>()
+            // Nothing more while the pushed ones beat and the polled ones are read several times: then a poll asked
+            // for on each is a change every stream is told, a marker nothing else may precede.
+            val (legacy, fsm, muted) = listOf("legacy0", "fsm0", "mute0").map { localisation.system.component(it) }
+            val beats = legacy.heartbeats to fsm.heartbeats
+            val reads = fsm.calls(PROFILE) to muted.calls(PROFILE)
+            await("two heartbeats of each pushed component and five reads of each polled one") {
+                legacy.heartbeats >= beats.first + 2 &&
+                    fsm.heartbeats >= beats.second + 2 &&
+                    fsm.calls(PROFILE) >= reads.first + 5 &&
+                    muted.calls(PROFILE) >= reads.second + 5
+            }
+            listOf(openRtm, omg, mute).forEach { tree.on(it, StateChanged::class.java, marker) {} }
+            val reports = reported.until { seen -> seen.count(::isMarker) == 3 }.filterIsInstance<WatchMethodChanged>()
             assertEquals(
-                listOf(openRtm, omg, mute, omg).map { it.name },
+                listOf(openRtm, omg, mute, omg, openRtm, omg, mute).map { it.name },
                 reports.map { it.source.name },
-                "once per component and change: $reports",
+                "once per component and change, then the markers: $reports",
             )
-            assertEquals(both, reports.last().new)
-            told.values.forEach { assertEquals(emptyList<WatchMethodChanged>(), it.drained<WatchMethodChanged>()) }
-            assertEquals(emptyList<WatchMethodChanged>(), late.drained<WatchMethodChanged>())
+            assertEquals(both, reports[3].new)
+            assertTrue(reports.drop(4).all(::isMarker), "$reports")
+            for ((node, recorder) in told.toList() + (mute to late)) {
+                val heard = recorder.until { seen -> seen.any(::isMarker) }.filterIsInstance<WatchMethodChanged>()
+                assertEquals(1, heard.size, "${node.name} heard only the marker: $heard")
+            }
         }
 
     @Test
@@ -108,10 +124,13 @@ class WatchReportTest {
                     events.handler,
                 )
                 val relays = setOf("relay0.rtc", "relay1.rtc")
-                assertEquals(
-                    relays,
-                    List(2) { events.next<WatchMethodChanged> { it.source.name in relays }.source.name }.toSet(),
-                )
+                val watched = List(2) { events.next<WatchMethodChanged> { it.source.name in relays }.source }
+                assertEquals(relays, watched.map { it.name }.toSet())
+                // Where the process listened: its manager and its components, one ORB.
+                val where =
+                    iiopAddresses(localisation.system.runtime.orb.orb, watched.first().component.ref)
+                        .distinct()
+                        .single()
 
                 process.kill()
                 val seen = events.until { seen ->
@@ -127,11 +146,22 @@ class WatchReportTest {
                     "the model holds the death for views that start later",
                 )
 
-                delay(2.seconds) // several probes of the dead manager and its components
-                assertEquals(emptyList<ManagerDied>(), events.drained<ManagerDied>(), "one death only")
+                // Several probes of the dead manager and of its components, counted where the process listened; then
+                // a poll asked for on gyro0 is a change both streams are told, a marker nothing else may precede.
+                DeadPort(where, localisation.system.runtime.orb.orb).use { port ->
+                    await("probes of the dead manager and its components", 30.seconds) {
+                        port.requests("get_profile") >= PROBES && port.requests(PROFILE) >= PROBES
+                    }
+                }
+                tree.on(localisation.path("gyro0.rtc"), StateChanged::class.java, marker) {}
+                assertEquals(
+                    emptyList<ManagerDied>(),
+                    events.until { seen -> seen.any(::isMarker) }.filterIsInstance<ManagerDied>(),
+                    "one death only",
+                )
                 assertEquals(
                     listOf(died),
-                    reported.drained<ManagerDied>(),
+                    reported.until { seen -> seen.any(::isMarker) }.filterIsInstance<ManagerDied>(),
                     "one death only for the tree's reporters too",
                 )
             }
@@ -219,6 +249,15 @@ class WatchReportTest {
         }
     }
 
+    /** A change to the marker's poll, asked for once a test has shown what it had to. */
+    private fun isMarker(event: RtcEvent): Boolean =
+        event is WatchMethodChanged &&
+            when (val method = event.new) {
+                is WatchMethod.Pushed -> method.pollPeriod == MARKER_PERIOD
+                is WatchMethod.Polled -> method.period == MARKER_PERIOD
+                is WatchMethod.Unwatched -> false
+            }
+
     /** The events from now until [done] holds for them, within 15 s. */
     private fun EventRecorder.until(done: (List<RtcEvent>) -> Boolean): List<RtcEvent> {
         val seen = mutableListOf<RtcEvent>()
@@ -234,5 +273,19 @@ class WatchReportTest {
     private fun signal(name: String, pid: Long) {
         val kill = ProcessBuilder("kill", "-$name", pid.toString()).inheritIO().start()
         assertEquals(0, kill.waitFor(), "kill -$name $pid")
+    }
+
+    private companion object {
+        /** What a component is read with when it is polled (the fixture counts the calls made to it). */
+        const val PROFILE = "get_component_profile"
+
+        /** The probes of a dead manager, and the reads of its components, a test lets pass to show they say nothing. */
+        const val PROBES = 3
+
+        /** The poll period asked for by a marker registration: no registration of the tests asks for it otherwise. */
+        val MARKER_PERIOD = 50.milliseconds
+
+        /** A registration that asks for the marker's poll. */
+        val marker = EventOptions(WatchMode.POLL, pollPeriod = MARKER_PERIOD)
     }
 }

@@ -11,6 +11,7 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
 import org.omg.CosNaming.NamingContextExtHelper
+import org.rtcoord.fixtures.DeadPort
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.await
 import org.rtcoord.runtime.RuntimeProcess
@@ -428,9 +429,13 @@ class ScriptCommandsTest {
                 val saved = naming.snapshot()
                 naming.close()
                 run.awaitLine("the name server said unreachable") { " name server unreachable " in it }
-                // Said once, not at each of its one-second checks: the outage lasts three of them. Nothing counts
-                // the checks of a name server that refuses connections, so this one waits them out.
-                Thread.sleep(3_000)
+                // Said once, not at each of the run's checks: the outage lasts three of them (each lists the root
+                // context), counted where the name server listened.
+                DeadPort(naming.address, system.runtime.orb.orb).use { port ->
+                    await("three checks of the stopped name server", timeout = kotlin.time.Duration.parse("30s")) {
+                        port.requests("list") >= 3
+                    }
+                }
                 naming = NamingService.start(naming.port, saved)
                 run.awaitLine("the name server said to answer again") { " name server answers again" in it }
                 val result = run.stop()

@@ -65,6 +65,13 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
 
     /** Poll ticks that found the previous one still waiting and were folded into it (see [RtcTree.missedPollTicks]). */
     val missedPollTicks = AtomicLong()
+
+    /**
+     * Disagreements between a component's hints and its reads that ended, the reads finding where the hints lead or one
+     * deciding once the grace period passed; counted as the batch that ended one is done. A test that sent hints no
+     * read confirms waits on it to know they were settled, where it would wait out the grace period.
+     */
+    val disagreementsEnded = AtomicLong()
     private val closed = AtomicBoolean()
 
     init {

@@ -19,6 +19,7 @@ import org.rtcoord.TimedDoubleSeq;
 import org.rtcoord.TransitionOutcome;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.WatchMode;
+import org.rtcoord.fixtures.Await;
 import org.rtcoord.runtime.RuntimeProcess;
 import org.rtcoord.runtime.RtSystem;
 import org.rtcoord.runtime.Scenarios;
@@ -152,11 +153,8 @@ class JavaEmbeddingTest {
         assertNotNull(sample.getTime());
         assertEquals(1, laser.connections().stream().filter(c -> c.getId().startsWith("rtcoord-tap-")).count());
         subscription.cancel();
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (laser.connections().stream().anyMatch(c -> c.getId().startsWith("rtcoord-tap-"))) {
-            assertTrue(System.nanoTime() < deadline, "the tap is removed once cancelled");
-            Thread.sleep(20);
-        }
+        Await.await("the tap removed once cancelled", Duration.ofSeconds(10),
+                () -> laser.connections().stream().noneMatch(c -> c.getId().startsWith("rtcoord-tap-")));
     }
 
     @Test
@@ -183,10 +181,9 @@ class JavaEmbeddingTest {
     }
 
     /** Waits until the component applies [gain]: as OpenRTM-aist, it does so on its execution thread, a cycle later. */
-    private void awaitGain(String gain) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!system.component("laser_localise0").parameter("gain").equals(gain) && System.nanoTime() < deadline) Thread.sleep(10);
-        assertEquals(gain, system.component("laser_localise0").parameter("gain"));
+    private void awaitGain(String gain) {
+        Await.await("laser_localise0 to apply gain " + gain, Duration.ofSeconds(10),
+                () -> system.component("laser_localise0").parameter("gain").equals(gain));
     }
 
     @Test

@@ -4,6 +4,7 @@ import _SDOPackage.InvalidParameter
 import _SDOPackage.NameValue
 import _SDOPackage.ServiceProfile
 import java.util.concurrent.ConcurrentHashMap
+import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CoroutineScope
@@ -49,6 +50,11 @@ internal class ObserverHub(
 
     private val log = LoggerFactory.getLogger(ObserverHub::class.java)
     private val subscriptions = ConcurrentHashMap<String, Subscription>()
+    private val sentHeartbeats = AtomicLong()
+
+    /** How many heartbeats were sent so far, to every observer together. */
+    val heartbeats: Long
+        get() = sentHeartbeats.get()
 
     /** The ids of attached observers. */
     val ids: Set<String>
@@ -84,7 +90,10 @@ internal class ObserverHub(
                 scope.launch {
                     while (isActive) {
                         delay(period)
-                        if (!paused()) send(subscription, StatusKind.HEARTBEAT, "")
+                        if (!paused()) {
+                            send(subscription, StatusKind.HEARTBEAT, "")
+                            sentHeartbeats.incrementAndGet()
+                        }
                     }
                 }
             }

@@ -264,6 +264,13 @@ internal constructor(
     public val observerReferences: List<org.omg.CORBA.Object>
         get() = observers.references
 
+    /**
+     * How many heartbeats it sent its observers so far: a test showing what a watcher does not do between beats waits
+     * for beats to pass instead of sleeping.
+     */
+    public val heartbeats: Long
+        get() = observers.heartbeats
+
     /** How many times [operation] (`get_component_profile`, ...) was called on the component itself so far. */
     public fun calls(operation: String): Int = calls[operation]?.get() ?: 0
 

@@ -150,10 +150,12 @@ internal class ComponentMonitor(
 
     private suspend fun handle(batch: List<Work>) {
         watch.needs = registrations.needs()
+        val disagreed = !watch.agreed
         val decision = watch.decide(batch.map { it.input }, now())
         publish(decision.events)
         try {
             perform(decision.step)
+            if (disagreed && watch.agreed) core.disagreementsEnded.incrementAndGet()
         } finally {
             // Before the ticks are done: the probe of the next one expects what this batch found.
             probe?.expect(

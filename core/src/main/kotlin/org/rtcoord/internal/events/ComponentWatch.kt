@@ -93,9 +93,13 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     val published: Map<Int, LifeCycle>
         get() = states.published
 
+    /** Whether hints and reads agree in every context, and no deactivation is held. */
+    val agreed: Boolean
+        get() = states.agreed
+
     /** Whether what the last read found is what a poll probe should expect: hints and reads agree, nothing held. */
     val settled: Boolean
-        get() = needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && states.agreed
+        get() = needs.statesOnly && liveness.state == ComponentLiveness.State.ANSWERING && agreed
 
     /** Takes a batch of [inputs] at [now]; says what to read. */
     fun decide(inputs: List<WatchInput>, now: Long): WatchDecision {

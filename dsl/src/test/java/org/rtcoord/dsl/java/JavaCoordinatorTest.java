@@ -11,6 +11,7 @@ import org.rtcoord.Subscription;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.dsl.RuleActivity;
 import org.rtcoord.dsl.script.ScriptFailure;
+import org.rtcoord.fixtures.Await;
 import org.rtcoord.runtime.RuntimeProcess;
 import org.rtcoord.runtime.RtSystem;
 import org.rtcoord.runtime.Scenarios;
@@ -68,9 +69,7 @@ class JavaCoordinatorTest {
             system.component("gyro0").fail();
             String fired = log.poll(20, TimeUnit.SECONDS);
             assertTrue(fired != null && fired.startsWith("rule 'gyro0.rtc enters ERROR' fired"), String.valueOf(fired));
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (gyro.state() != LifeCycle.INACTIVE && System.nanoTime() < deadline) Thread.sleep(20);
-            assertEquals(LifeCycle.INACTIVE, gyro.state());
+            Await.await("the rule to reset gyro0", Duration.ofSeconds(10), () -> gyro.state() == LifeCycle.INACTIVE);
             BlockingQueue<Integer> failures = new LinkedBlockingQueue<>();
             coordinator.subscribeFailures(Runnable::run, failures::add);
             assertEquals(0, failures.poll(10, TimeUnit.SECONDS));
@@ -79,9 +78,7 @@ class JavaCoordinatorTest {
         log.clear();
         gyro.activate();
         system.component("gyro0").fail();
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (gyro.state() != LifeCycle.ERROR && System.nanoTime() < deadline) Thread.sleep(20);
-        assertEquals(LifeCycle.ERROR, gyro.state());
+        Await.await("gyro0 in ERROR", Duration.ofSeconds(10), () -> gyro.state() == LifeCycle.ERROR);
         assertEquals(null, log.poll(500, TimeUnit.MILLISECONDS));
     }
 
