@@ -134,13 +134,15 @@ internal class MachineInterpreter(
         val kept = active.indexOf(domainOf(transition.source, transition.target)) + 1
         val leaving = active.drop(kept)
         val entering = transition.target.lineage.drop(kept) + transition.target.initialDescent
-        log("mode ${from.path} -> ${entering.last().path} on $trigger")
         // Before any action runs, so that entry actions never race a reconfiguration for the modes being left.
         if ((leaving + entering).any { it.network != null }) {
             reconfiguration?.cancelAndJoin()
             generation++
             established = null
         }
+        // Once the reconfiguration is stopped: from this line on, a transition without actions is done without
+        // suspending, so a run stopped on it reports the new mode.
+        log("mode ${from.path} -> ${entering.last().path} on $trigger")
         for (mode in leaving.asReversed()) {
             timers.remove(mode)?.forEach(Job::cancel)
             run("exit of ${mode.path}", mode.exitActions, reaction)
