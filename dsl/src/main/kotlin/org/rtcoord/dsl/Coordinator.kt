@@ -9,6 +9,7 @@ import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
+import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
@@ -329,7 +330,8 @@ public class Coordinator(
 
     /**
      * Runs the script's `onStop` actions, each within 10 s (one that takes longer is cut short and logged), then
-     * [close]s: what a host calls to end a run the script is told of.
+     * [close]s and waits (up to 10 s) for what it cancelled to end: what a host calls to end a run the script is told
+     * of. Once it returns, each machine's mode is the last it recorded, not one it was leaving.
      */
     public suspend fun stop() {
         withContext(engine) {
@@ -339,6 +341,8 @@ public class Coordinator(
             }
         }
         close()
+        // Not from the coordinator's own coroutines (a handler stopping it), which would wait for themselves.
+        if (currentCoroutineContext()[Engine] == null) withTimeoutOrNull(STOP_LIMIT) { job.join() }
     }
 
     /**
