@@ -1,6 +1,7 @@
 package org.rtcoord
 
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.nanoseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
@@ -152,6 +153,13 @@ class WatchReportTest {
                     await("probes of the dead manager and its components", 30.seconds) {
                         port.requests("get_profile") >= PROBES && port.requests(PROFILE) >= PROBES
                     }
+                    // A dead component is probed once a beat (200 ms), not at each of the watchdog's ten checks a beat:
+                    // ten more probes of the two relays take four beats; at the checks' pace, a quarter of that.
+                    val from = port.requests(PROFILE)
+                    val since = System.nanoTime()
+                    await("ten more probes of the dead relays", 30.seconds) { port.requests(PROFILE) >= from + 10 }
+                    val took = (System.nanoTime() - since).nanoseconds
+                    assertTrue(took >= 400.milliseconds, "ten probes of two dead relays at 200 ms heartbeats in $took")
                 }
                 tree.on(localisation.path("gyro0.rtc"), StateChanged::class.java, marker) {}
                 assertEquals(

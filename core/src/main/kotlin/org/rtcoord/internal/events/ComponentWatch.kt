@@ -257,11 +257,14 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         }
     }
 
-    /** The watchdog's check: a read probes a component whose beat is overdue, and one silent past the limit is lost. */
+    /**
+     * The watchdog's check: a read probes a component whose beat is overdue, and one silent past the limit is lost. One
+     * that does not answer is probed at its heartbeat by the poll its [arrangement] keeps for it, not at every check
+     * (ten a beat).
+     */
     private fun overdue(input: WatchInput.Overdue, now: Long, events: MutableList<RtcEvent>): Boolean {
         liveness.hinted(input.heardAt)
-        if (liveness.state != ComponentLiveness.State.ANSWERING)
-            return liveness.state == ComponentLiveness.State.UNREACHABLE
+        if (liveness.state != ComponentLiveness.State.ANSWERING) return false
         val beating = arrangement.beating
         liveness.checked(now, beating?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })?.let {
             events += HeartbeatLost(node, it.silentMillis)

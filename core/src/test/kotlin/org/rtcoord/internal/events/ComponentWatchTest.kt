@@ -411,6 +411,19 @@ class ComponentWatchTest {
     }
 
     @Test
+    fun `a component that does not answer is probed by its poll at each beat, not at every watchdog check`() {
+        val watch = watching(ACTIVE)
+        watch.decide(listOf(WatchInput.Overdue(heardAt = 0)), 1100)
+        val failed =
+            watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT("connection refused")), 1101)
+        assertEquals(1.seconds, failed.arranged.schedule?.pollPeriod, "probed at its heartbeat")
+        // The watchdog still checks ten times a beat: the heartbeats it waits for are those of the component's return.
+        val checks = (1..20).map { watch.decide(listOf(WatchInput.Overdue(heardAt = 0)), 1101 + it * 100L).step }
+        assertEquals(0, checks.count { it != WatchStep.Idle }, "reads the watchdog asked for in two beats")
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Ticked), 2101).step, "the poll's tick probes it")
+    }
+
+    @Test
     fun `the read that brings it back publishes what it finds at once, as no hint announced it`() {
         val watch = watching(ACTIVE)
         watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT()), 100)
