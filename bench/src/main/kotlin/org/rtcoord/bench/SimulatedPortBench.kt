@@ -1,6 +1,7 @@
 package org.rtcoord.bench
 
 import java.nio.file.Files
+import java.nio.file.Path
 import java.time.Duration as JavaDuration
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
@@ -24,8 +25,8 @@ import org.rtcoord.runtime.rtSystem
  * What `rtcoord sim` spends on one simulated out-port of `RangeData` (1081 ranges) at 100 Hz: the saved system of that
  * one component runs in `./rtcoord sim`, its own process, as a user runs it; this JVM's tree taps the port, so the
  * reader's receipt and decoding are not the simulation's cost. The cost is the process's CPU while the component
- * writes, less the same process with the component inactive (its execution context still ticking), after a warm-up long
- * enough for the JIT to compile the write path.
+ * writes, less the same process with the component inactive (its execution context still ticking), once the JIT has
+ * compiled the write path: its compiler threads are what a JVM spends warming up, not what the port costs as it runs.
  */
 internal class SimulatedPortBench(
     private val options: BenchOptions,
@@ -59,7 +60,7 @@ internal class SimulatedPortBench(
             val received = AtomicLong()
             val tap = tree.port("${ranger.path}:range").tap { received.incrementAndGet() }
             try {
-                delay(options.dataWindow * 3) // warm-up: the JIT compiles the write path
+                val warmUp = simulation.warmUp(options.dataWindow)
                 val samplesBefore = received.get()
                 val writing = simulation.cpuPerSecond(options.dataWindow)
                 val rate = (received.get() - samplesBefore) / options.dataWindow.toDouble(DurationUnit.SECONDS)
@@ -72,7 +73,8 @@ internal class SimulatedPortBench(
                     (writing - idle) * 100,
                     "% of a core",
                     "made up and encoded in `rtcoord sim`, pushed to a tap in another process (${figure(rate)} samples/s reached it); " +
-                        "the process ${figure(writing * 100)} % writing, ${figure(idle * 100)} % inactive; target under 1 %",
+                        "the process ${figure(writing * 100)} % writing, ${figure(idle * 100)} % inactive, after $warmUp; " +
+                        "target under 1 %",
                 )
             } finally {
                 tap.cancel()
@@ -118,6 +120,51 @@ internal class SimulatedPortBench(
             }
         }
 
+        /**
+         * Waits while the component writes until the JIT is quiet: at least three [window]s, then until its compiler
+         * threads spent under 1 % of [QUIET_WINDOWS] windows in a row, at most [WARM_UP_WINDOWS] windows. C2 compiles a
+         * method called once a period after thousands of periods, in waves tens of seconds apart at 100 Hz. Says how
+         * long it took; where the compiler threads cannot be read (`/proc`), three windows.
+         */
+        suspend fun warmUp(window: Duration): String {
+            delay(window * 3)
+            var windows = 3
+            fun seconds() = figure(window.toDouble(DurationUnit.SECONDS) * windows)
+            var compiled = compilerCpu() ?: return "${seconds()} s of warm-up (the JIT cannot be watched here)"
+            var quiet = 0
+            while (quiet < QUIET_WINDOWS && windows < WARM_UP_WINDOWS) {
+                val start = System.nanoTime()
+                delay(window)
+                windows++
+                val now = compilerCpu() ?: compiled
+                quiet = if (now - compiled < (System.nanoTime() - start) / 100) quiet + 1 else 0
+                compiled = now
+            }
+            return if (quiet < QUIET_WINDOWS) "${seconds()} s of warm-up, the JIT still compiling"
+            else "${seconds()} s of warm-up, until the JIT was quiet"
+        }
+
+        /**
+         * The CPU time (ns) of the JIT's compiler threads (`C1 CompilerThread0`, `C2 CompilerThread0`, ...) in the
+         * launcher's JVM, read from `/proc`; null where it cannot be.
+         */
+        private fun compilerCpu(): Long? =
+            processes().sumOf { handle ->
+                val threads = Path.of("/proc/${handle.pid()}/task")
+                if (!Files.isDirectory(threads)) return null
+                Files.list(threads).use { all -> all.toList().filter(::isCompiler).sumOf(::threadCpu) }
+            }
+
+        private fun isCompiler(thread: Path): Boolean =
+            COMPILER.matches(runCatching { Files.readString(thread.resolve("comm")).trim() }.getOrDefault(""))
+
+        /** A thread's user and system time from its `stat` (fields 14 and 15, in ticks); 0 once it has ended. */
+        private fun threadCpu(thread: Path): Long = runCatching {
+            val fields = Files.readString(thread.resolve("stat")).substringAfterLast(')').trim().split(' ')
+            (fields[11].toLong() + fields[12].toLong()) * NANOS_PER_TICK
+        }
+            .getOrDefault(0L)
+
         /** The process's CPU time per second of wall time over [window]. */
         suspend fun cpuPerSecond(window: Duration): Double {
             val before = cpu()
@@ -126,14 +173,17 @@ internal class SimulatedPortBench(
             return (cpu() - before).toDouble() / (System.nanoTime() - start)
         }
 
-        /** The CPU time of the launcher and the JVM it starts (as a child when it makes its class archive). */
+        /** The CPU time of the launcher and the JVM it starts. */
         private fun cpu(): Long =
-            (sequenceOf(process.toHandle()) + process.toHandle().descendants().iterator().asSequence()).sumOf { handle
-                ->
+            processes().sumOf { handle ->
                 handle.info().totalCpuDuration().map(JavaDuration::toNanos).orElseThrow {
                     IllegalStateException("the CPU time of rtcoord sim (pid ${handle.pid()}) cannot be read")
                 }
             }
+
+        /** The launcher and the JVM it starts (as a child when it makes its class archive). */
+        private fun processes(): Sequence<ProcessHandle> =
+            sequenceOf(process.toHandle()) + process.toHandle().descendants().iterator().asSequence()
 
         override fun close() {
             process.outputStream.close()
@@ -143,6 +193,12 @@ internal class SimulatedPortBench(
 
     private companion object {
         const val LABEL = "simulated RangeData(1081) out-port at 100 Hz, rtcoord sim"
+        const val WARM_UP_WINDOWS = 30
+        const val QUIET_WINDOWS = 3
+
+        /** Linux counts a thread's CPU in `/proc` in ticks of USER_HZ, 100 a second. */
+        const val NANOS_PER_TICK = 10_000_000L
+        val COMPILER = Regex("C[12] CompilerThre.*")
         val ranger =
             ComponentType(
                 "ranger",

@@ -5,10 +5,17 @@ import java.nio.ByteOrder
 
 /**
  * Writes CDR as OpenRTM's `corba_cdr` transport sends a sample: no encapsulation header, each value aligned to its size
- * counted from the first byte, in the byte [order] the connector negotiated.
+ * counted from the first byte, in the byte [order] the connector negotiated. [restart] makes it write the next sample
+ * into the same buffer.
  */
-internal class CdrOutput(private val order: ByteOrder, capacity: Int = 256) {
+internal class CdrOutput(private var order: ByteOrder, capacity: Int = 256) {
     private var buffer: ByteBuffer = ByteBuffer.allocate(capacity).order(order)
+
+    /** Empties it for a sample in byte [order], keeping its buffer. */
+    fun restart(order: ByteOrder) {
+        this.order = order
+        buffer.clear().order(order)
+    }
 
     private fun reserve(alignment: Int, size: Int) {
         val padding = (alignment - buffer.position() % alignment) % alignment

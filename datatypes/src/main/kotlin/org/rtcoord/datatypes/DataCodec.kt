@@ -2,6 +2,7 @@ package org.rtcoord.datatypes
 
 import java.math.BigInteger
 import java.nio.ByteOrder
+import java.util.concurrent.atomic.AtomicReference
 
 /**
  * The CDR codec of one data type, as OpenRTM-aist's `corba_cdr` data ports send their samples: the value's CDR with no
@@ -15,17 +16,21 @@ public class DataCodec(public val type: IdlType) {
      * does not fit.
      */
     public fun encode(value: Any?, littleEndian: Boolean): ByteArray {
-        val out = CdrOutput(order(littleEndian), capacity = lastSize)
+        val out = spare.getAndSet(null)?.apply { restart(order(littleEndian)) } ?: CdrOutput(order(littleEndian))
         try {
             write(out, type, value)
         } catch (e: Mismatch) {
             throw IllegalArgumentException("${type.name}${e.path}: ${e.reason}")
         }
-        return out.bytes().also { lastSize = maxOf(it.size, MINIMUM_CAPACITY) }
+        return out.bytes().also { spare.set(out) }
     }
 
-    /** The last sample's size: a port's samples are alike, so the next one's buffer is allocated once. */
-    @Volatile private var lastSize = MINIMUM_CAPACITY
+    /**
+     * A buffer grown to the size of the samples encoded so far, for the next one: a port's samples are alike, so at 100
+     * Hz a scan is encoded without allocating and growing a buffer every 10 ms. Taken by one encoding at a time; one
+     * that finds it taken makes its own.
+     */
+    private val spare = AtomicReference<CdrOutput?>()
 
     /**
      * The value [data] holds; throws [IllegalArgumentException] when it does not decode as this type, or holds bytes
@@ -177,7 +182,6 @@ public class DataCodec(public val type: IdlType) {
         }
 
     private companion object {
-        const val MINIMUM_CAPACITY = 64
         val TWO_TO_64: BigInteger = BigInteger.ONE.shiftLeft(64)
 
         /** The fewest bytes one element can take, for checking a sequence's length before reading it. */

@@ -1,5 +1,7 @@
 package org.rtcoord.datatypes
 
+import java.util.Collections
+import java.util.concurrent.ConcurrentHashMap
 import kotlin.math.PI
 import kotlin.math.abs
 import kotlin.math.sin
@@ -8,12 +10,16 @@ import kotlin.math.sin
  * Made-up samples of one data type for a simulated out-port: deterministic from the time stamp and the port's [seed] (a
  * test can compute what a port sends at a given time), different at every sample, and plausible where the type says
  * what plausible is: a `tm` member is the time stamp itself, a `RangeData` is a 1081-beam scan whose ranges lie within
- * its configuration's limits, a `CameraImage` holds `width * height * bpp / 8` pixel bytes. Numbers move smoothly
- * (sines of the time); enumerators, union cases and booleans change every second or so.
+ * its configuration's limits (the scanner's geometry and configuration stay as they are, as a mounted scanner's do), a
+ * `CameraImage` holds `width * height * bpp / 8` pixel bytes. Numbers move smoothly (sines of the time); enumerators,
+ * union cases and booleans change every second or so.
  */
 public class MadeUpValues(public val type: IdlType, private val seed: Int) {
     /** The sample stamped [timeNanos] (nanoseconds since the epoch), as [DataCodec] encodes it. */
     public fun at(timeNanos: Long): Any? = value(type, timeNanos, seed)
+
+    /** Each scanner's members that stay as they are from one scan to the next, by the scanner's key: made once. */
+    private val scanners = ConcurrentHashMap<Int, Map<String, Any?>>()
 
     private fun value(type: IdlType, time: Long, key: Int): Any? {
         if (type is IdlType.Struct)
@@ -106,6 +112,7 @@ public class MadeUpValues(public val type: IdlType, private val seed: Int) {
         const val SEQUENCE_LENGTH = 4
         const val FAST_MILLIS = 10L
         const val SLOW_MILLIS = 1000L
+        const val BEAMS = 1081
 
         /** Values of the device types whose members depend on each other. */
         val SPECIAL: Map<String, MadeUpValues.(IdlType.Struct, Long, Int) -> Any?> =
@@ -116,24 +123,56 @@ public class MadeUpValues(public val type: IdlType, private val seed: Int) {
                 "IDL:RTC/PointCloud:1.0" to { type, time, key -> pointCloud(type, time, key) },
             )
 
-        /** A 270-degree scanner with a quarter-degree resolution, as common laser rangers are: 1081 beams. */
+        /**
+         * A 270-degree scanner with a quarter-degree resolution, as common laser rangers are: 1081 beams. Only the time
+         * and the [readings] change from scan to scan; the scanner's geometry and configuration are made once (a scan
+         * at 100 Hz would otherwise make them up again, map by map and sine by sine, every 10 ms) and shared by every
+         * scan, read-only.
+         */
         fun MadeUpValues.ranger(type: IdlType.Struct, time: Long, key: Int, readings: String): Any? {
-            val generic = members(type, time, key)
-            val beams = 1081
-            val maxRange = 30.0
-            generic[readings] = sineRanges(beams, phase = time / 1e9 + key)
-            generic["config"] =
-                linkedMapOf(
-                    "minAngle" to -0.75 * PI,
-                    "maxAngle" to 0.75 * PI,
-                    "angularRes" to 1.5 * PI / (beams - 1),
-                    "minRange" to 0.02,
-                    "maxRange" to maxRange,
-                    "rangeRes" to 0.001,
-                    "frequency" to 40.0,
-                )
-            return generic
+            val fixed = scanners.getOrPut(key) { scanner(type, key, readings) }
+            return LinkedHashMap<String, Any?>(type.members.size * 2).apply {
+                for (member in type.members) {
+                    put(
+                        member.name,
+                        when (member.name) {
+                            "tm" -> time(time)
+                            readings -> sineRanges(BEAMS, phase = time / 1e9 + key)
+                            else -> fixed[member.name]
+                        },
+                    )
+                }
+            }
         }
+
+        /** A scanner's members other than the time and the readings, as its scans share them. */
+        fun MadeUpValues.scanner(type: IdlType.Struct, key: Int, readings: String): Map<String, Any?> =
+            type.members
+                .filter { it.name != "tm" && it.name != readings }
+                .associateTo(LinkedHashMap()) { member ->
+                    member.name to
+                        readOnly(
+                            if (member.name == "config")
+                                mapOf(
+                                    "minAngle" to -0.75 * PI,
+                                    "maxAngle" to 0.75 * PI,
+                                    "angularRes" to 1.5 * PI / (BEAMS - 1),
+                                    "minRange" to 0.02,
+                                    "maxRange" to 30.0,
+                                    "rangeRes" to 0.001,
+                                    "frequency" to 40.0,
+                                )
+                            else value(member.type, 0, mix(key, member.name))
+                        )
+                }
+
+        /** [value] with every map and list in it made read-only, to be shared by samples. */
+        fun readOnly(value: Any?): Any? =
+            when (value) {
+                is Map<*, *> -> Collections.unmodifiableMap(value.mapValuesTo(LinkedHashMap()) { readOnly(it.value) })
+                is List<*> -> Collections.unmodifiableList(value.map(::readOnly))
+                else -> value
+            }
 
         fun MadeUpValues.cameraImage(type: IdlType.Struct, time: Long, key: Int): Any? {
             val generic = members(type, time, key)

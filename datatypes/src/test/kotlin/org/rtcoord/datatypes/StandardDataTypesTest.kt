@@ -105,6 +105,12 @@ class StandardDataTypesTest {
         assertNotEquals(ranges.toList(), (second["ranges"] as DoubleArray).toList())
         assertEquals(mapOf("sec" to 1L, "nsec" to 10_000_000L), second["tm"])
         assertEquals(comparable(first), comparable(scans.at(1_000_000_000)), "the same time gives the same sample")
+        assertEquals(first["geometry"], second["geometry"], "a mounted scanner stays where it is")
+        assertEquals(config, second["config"])
+        assertThrows(UnsupportedOperationException::class.java) {
+            @Suppress("UNCHECKED_CAST")
+            (second["config"] as MutableMap<String, Any?>)["maxRange"] = 1.0
+        }
     }
 
     /** Values as decoding gives them: every array a list, every number widened as its type reads. */

@@ -65,9 +65,10 @@ internal class RuntimeConfiguration(
 
     /** The value of variable [name], as the component's code uses it. */
     fun parameter(name: String): String =
-        synchronized(lock) {
-            variables[name] ?: throw IllegalArgumentException("no parameter '$name'")
-        }
+        parameterOrNull(name) ?: throw IllegalArgumentException("no parameter '$name'")
+
+    /** The value of variable [name], or null when the component has no such parameter. */
+    fun parameterOrNull(name: String): String? = synchronized(lock) { variables[name] }
 
     /** The active set's id, or null while no set is active. */
     val activeSet: String?

@@ -18,6 +18,8 @@ private constructor(
     public val orb: ORB,
     public val poa: POA,
     public val host: String,
+    /** The deadline of every outgoing call. */
+    internal val callTimeout: Duration,
 ) : AutoCloseable {
     /** The port the ORB listens on (the one asked for, or the one the system chose for port 0). */
     public val port: Int =
@@ -64,7 +66,7 @@ private constructor(
             val orb = ORB.init(emptyArray(), properties)
             val poa = POAHelper.narrow(orb.resolve_initial_references("RootPOA"))
             poa.the_POAManager().activate()
-            return RuntimeOrb(orb, poa, host)
+            return RuntimeOrb(orb, poa, host, callTimeout)
         }
     }
 }
