@@ -142,9 +142,9 @@ in the same run). Results are printed, never stored.
                     exploreRuns = 6,
                 )
 
-        /** Tiny and short: the harness runs end to end in well under a minute, scripts aside. */
-        fun smoke(): BenchOptions =
-            quick(Benchmark.values().toList())
+        /** Tiny and short: the harness runs [benchmarks] end to end in well under a minute, scripts aside. */
+        fun smoke(benchmarks: List<Benchmark>): BenchOptions =
+            quick(benchmarks)
                 .copy(
                     profile = "smoke",
                     discoverySizes = listOf(10),
