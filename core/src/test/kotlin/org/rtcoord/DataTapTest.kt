@@ -166,13 +166,25 @@ class DataTapTest {
             val (subscription, queue) = samples(port)
             assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
             laser.freezeOutput()
-            // A sample already on its way may still come; after it, nothing.
-            queue.poll(300, TimeUnit.MILLISECONDS)
-            queue.clear()
-            assertEquals(null, queue.poll(500, TimeUnit.MILLISECONDS), "nothing published while frozen")
+            // Samples are stamped when written. A write under way at the freeze ends within the period after it;
+            // from then on, five periods of the laser's execution publish nothing: no sample stamped among them comes.
+            val frozenAt = laser.periods
+            await("a period of the laser's after the freeze") { laser.periods >= frozenAt + 2 }
+            val quietFrom = Instant.now()
+            await("five frozen periods of the laser's") { laser.periods >= frozenAt + 7 }
+            val quietTo = Instant.now()
             assertEquals(LifeCycle.ACTIVE, tree.component(localisation.path("laser0.rtc")).state())
             laser.thawOutput()
-            assertTrue(queue.poll(5, TimeUnit.SECONDS) is TimedDoubleSeq)
+            val received = ArrayList<TimedDoubleSeq>()
+            while (received.lastOrNull()?.time?.isAfter(quietTo) != true) {
+                received += queue.poll(5, TimeUnit.SECONDS) as TimedDoubleSeq? ?: break
+            }
+            assertTrue(received.lastOrNull()?.time?.isAfter(quietTo) == true, "the laser publishes again once repaired")
+            assertEquals(
+                emptyList<Instant>(),
+                received.map { it.time }.filter { !it.isBefore(quietFrom) && !it.isAfter(quietTo) },
+                "nothing published while frozen",
+            )
             subscription.cancel()
         }
 
