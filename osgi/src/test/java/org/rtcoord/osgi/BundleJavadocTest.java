@@ -18,10 +18,10 @@ import org.junit.jupiter.api.Test;
 /**
  * The bundle's javadoc is written for Java: signatures as javac sees them, only the API, nothing of Kotlin's
  * machinery; and its sources jar has the Java view an IDE shows on hover. The javadoc is built before the
- * tests (process-test-classes), except in a quick build (-Ddokka.skip=true), where this is skipped.
+ * tests (process-test-classes) by a build with -Ddocs (CI's second step); without it, this is skipped.
  */
 class BundleJavadocTest {
-    /** Given when the build makes the javadoc (not with -Ddokka.skip=true). */
+    /** Given when the build makes the javadoc (-Ddocs). */
     private static final String API_DOCS_PROPERTY = System.getProperty("rtcoord.apidocs");
     /** The packages written for Java callers; the others are Kotlin's, where a suspend function takes a continuation. */
     private static final Pattern JAVA_FACING = Pattern.compile("org/rtcoord/(java|profile|dsl/java)/[^/]+\\.html");
@@ -31,7 +31,7 @@ class BundleJavadocTest {
 
     @BeforeAll
     static void built() {
-        assumeTrue(API_DOCS_PROPERTY != null, "the javadoc is not built (-Ddokka.skip=true)");
+        assumeTrue(API_DOCS_PROPERTY != null, "the javadoc is built with -Ddocs");
         apiDocs = Path.of(API_DOCS_PROPERTY);
         assertTrue(Files.isDirectory(apiDocs.resolve("org/rtcoord")), "no javadoc in " + apiDocs);
     }
