@@ -4,35 +4,16 @@ import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Test
 
 /**
- * The benchmarks measured in the bench's own JVM run end to end on a tiny system. A class apart from
- * [ProcessBenchSmokeTest], whose benchmarks start processes, so that the build's two test JVMs run them side by side.
+ * The event path's costs run end to end on a tiny system: monitoring and data. Classes apart from
+ * [ReactionBenchSmokeTest], [CostBenchSmokeTest] and [ProcessBenchSmokeTest], so that the build's test JVMs share them.
  */
 class LibraryBenchSmokeTest {
     @Test
-    fun `the benchmarks in this JVM run on a tiny system and land in one table`(): Unit = runBlocking {
+    fun `the monitoring and data benchmarks run on a tiny system and land in one table`(): Unit = runBlocking {
         smokeRun(
-            listOf(
-                Benchmark.MICRO,
-                Benchmark.REACTION,
-                Benchmark.MONITORING,
-                Benchmark.MEMORY,
-                Benchmark.DATA,
-                Benchmark.SIMULATION,
-            ),
-            sections =
-                listOf(
-                    "one call and one notification",
-                    "reaction:",
-                    "monitoring cost:",
-                    "memory:",
-                    "data: tap of a TimedDoubleSeq(181)",
-                    "simulation start, N=10",
-                ),
-            rows =
-                listOf(
-                    Regex("""silence noticed after 100 ms\s+1\s"""),
-                    Regex("""rtcoord SimulatedSystem\.start in a warm JVM\s+1\s"""),
-                ),
+            listOf(Benchmark.MONITORING, Benchmark.DATA),
+            sections = listOf("monitoring cost:", "data: tap of a TimedDoubleSeq(181)"),
+            rows = listOf(Regex("""silence noticed after 100 ms\s+1\s""")),
         )
     }
 }

@@ -3,7 +3,6 @@ package org.rtcoord.cli
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
-import java.util.concurrent.TimeUnit
 import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -36,29 +35,20 @@ class DistributionIT {
 
     @AfterAll fun stop() = localisation.close()
 
-    /** What a process printed and how it ended. */
-    data class Run(val status: Int, val stdout: String, val stderr: String)
-
-    private fun run(command: List<String>): Run {
-        val builder = ProcessBuilder(command)
-        builder.environment().remove("RTCTREE_NAMESERVERS")
-        builder.environment().remove("RTCOORD_NAMESERVERS")
-        builder.environment()["RTCOORD_CACHE"] = directory.resolve("cache").toString()
-        val process = builder.start()
-        val stdout = process.inputStream.bufferedReader().readText()
-        val stderr = process.errorStream.bufferedReader().readText()
-        assertTrue(process.waitFor(60, TimeUnit.SECONDS), "${command.joinToString(" ")} did not end")
-        return Run(process.exitValue(), stdout, stderr)
-    }
+    private fun run(command: List<String>) =
+        runProcess(command, environment = mapOf("RTCOORD_CACHE" to directory.resolve("cache").toString()))
 
     @Test
     fun `bin rtcoord runs from the unpacked archive and lists the system as the command objects do`() {
-        assertEquals(Run(0, "rtcoord $version\n", ""), run(listOf(home.resolve("bin/rtcoord").toString(), "--version")))
+        assertEquals(
+            ProcessRun(0, "rtcoord $version\n", ""),
+            run(listOf(home.resolve("bin/rtcoord").toString(), "--version")),
+        )
         val expected = runRtcoord("ls", "-l", localisation.host).ok()
         val rtcoord = home.resolve("bin/rtcoord").toString()
-        assertEquals(Run(0, expected, ""), run(listOf(rtcoord, "ls", "-l", localisation.host)))
+        assertEquals(ProcessRun(0, expected, ""), run(listOf(rtcoord, "ls", "-l", localisation.host)))
         assertEquals(
-            Run(0, expected, ""),
+            ProcessRun(0, expected, ""),
             run(listOf(rtcoord, "ls", "-l", localisation.host)),
             "again, with the class archive mapped",
         )
@@ -68,7 +58,7 @@ class DistributionIT {
     fun `a link to bin rtcoord from elsewhere works`() {
         val link = Files.createDirectories(directory.resolve("user/bin")).resolve("rtcoord")
         Files.createSymbolicLink(link, home.resolve("bin/rtcoord"))
-        assertEquals(Run(0, "rtcoord $version\n", ""), run(listOf(link.toString(), "--version")))
+        assertEquals(ProcessRun(0, "rtcoord $version\n", ""), run(listOf(link.toString(), "--version")))
     }
 
     @Test

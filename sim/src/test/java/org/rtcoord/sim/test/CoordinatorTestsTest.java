@@ -6,7 +6,7 @@ import org.junit.jupiter.api.TestFactory;
 
 /**
  * The JUnit 5 API, from Java as its KDoc shows it: a container per {@code *.test.kts} file, a test per scenario. Two of
- * the examples' files; {@code rtcoord test examples} (cli's SimAndTestCommandTest) runs them all.
+ * the examples' files; examples' ExampleTestFilesTest runs them all.
  */
 class CoordinatorTestsTest {
     @TestFactory

@@ -1,0 +1,165 @@
+package org.rtcoord.cli
+
+import java.nio.file.Files
+import java.nio.file.Path
+import java.nio.file.Paths
+import java.nio.file.attribute.FileTime
+import java.nio.file.attribute.PosixFilePermissions
+import org.junit.jupiter.api.AfterAll
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.TestInstance
+import org.junit.jupiter.api.io.TempDir
+
+/**
+ * The `./rtcoord` launcher of a checkout: it runs the built jar as it is, builds it first when a source is newer or it
+ * is missing, and keeps a class archive for browsing commands. A class apart from [CliJarIT], so that the build's two
+ * test JVMs run them side by side.
+ */
+@TestInstance(TestInstance.Lifecycle.PER_CLASS)
+class LauncherIT {
+    private val localisation = Localisation()
+    private val jar: Path = Paths.get(System.getProperty("rtcoord.cli.jar"))
+    private val root: Path = Paths.get(System.getProperty("rtcoord.root"))
+
+    @AfterAll fun stop() = localisation.close()
+
+    @Test
+    fun `the launcher runs the jar as it is when nothing changed`(@TempDir directory: Path) {
+        val tree = launcherTree(directory)
+        val version = runProcess(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory))
+        assertEquals(ProcessRun(0, "rtcoord ${version()}\n", ""), version)
+        assertTrue(Files.notExists(directory.resolve("maven-called")))
+    }
+
+    @Test
+    fun `the launcher builds first, saying so in one line, when a source is newer than the jar`(
+        @TempDir directory: Path
+    ) {
+        val tree = launcherTree(directory)
+        val source = Files.createDirectories(tree.resolve("core/src")).resolve("Changed.kt")
+        Files.writeString(source, "")
+        Files.setLastModifiedTime(source, FileTime.fromMillis(System.currentTimeMillis() + 60_000))
+        val version = runProcess(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory))
+        assertEquals(0, version.status, version.stderr)
+        assertEquals("rtcoord: building (first run)...\n", version.stderr)
+        assertEquals(
+            "-B -ntp -q -Dstyle.color=never install -DskipTests -Drtcoord.dist.skip -pl cli -am\n",
+            Files.readString(directory.resolve("maven-called")),
+        )
+    }
+
+    @Test
+    fun `a link to the launcher from elsewhere runs the checkout it points into`(@TempDir directory: Path) {
+        val tree = launcherTree(directory)
+        val link = Files.createDirectories(directory.resolve("home/bin")).resolve("rtcoord")
+        Files.createSymbolicLink(link, tree.resolve("rtcoord"))
+        val version = runProcess(listOf(link.toString(), "--version"), fakeMaven(directory))
+        assertEquals(ProcessRun(0, "rtcoord ${version()}\n", ""), version)
+        assertTrue(Files.notExists(directory.resolve("maven-called")))
+    }
+
+    @Test
+    fun `the launcher builds when there is no jar`(@TempDir directory: Path) {
+        val tree = launcherTree(directory)
+        Files.delete(tree.resolve("cli/target").resolve(jar.fileName))
+        val version = runProcess(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory))
+        assertEquals(0, version.status, version.stderr)
+        assertEquals("rtcoord: building (first run)...\n", version.stderr)
+    }
+
+    @Test
+    fun `the launcher archives a browsing command's classes on its first run and maps them after, silently`(
+        @TempDir directory: Path
+    ) {
+        val tree = launcherTree(directory)
+        // Sources and jar made a while ago, so that an archive made now is newer than all of them.
+        Files.walk(tree)
+            .filter { Files.isRegularFile(it) }
+            .forEach { Files.setLastModifiedTime(it, FileTime.fromMillis(System.currentTimeMillis() - 600_000)) }
+        Files.setLastModifiedTime(
+            tree.resolve("cli/target").resolve(jar.fileName),
+            FileTime.fromMillis(System.currentTimeMillis() - 300_000),
+        )
+        val cache = directory.resolve("cache")
+        val environment = mapOf("RTCOORD_CACHE" to cache.toString())
+        val expected = runRtcoord("ls", "-l", localisation.host).ok()
+        fun listing() =
+            runProcess(
+                listOf(tree.resolve("rtcoord").toString(), "ls", "-l", localisation.host),
+                fakeMaven(directory),
+                environment,
+            )
+
+        assertEquals(
+            ProcessRun(0, "rtcoord ${version()}\n", ""),
+            runProcess(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory), environment),
+        )
+        assertTrue(Files.notExists(cache.resolve("cds")), "--version makes no archive")
+        assertEquals(
+            0,
+            runProcess(listOf(tree.resolve("rtcoord").toString(), "ls", "--help"), fakeMaven(directory), environment)
+                .status,
+        )
+        assertTrue(Files.notExists(cache.resolve("cds")), "a help screen makes no archive")
+        assertEquals(ProcessRun(0, expected, ""), listing())
+        val archive = Files.list(cache.resolve("cds")).use { files -> files.toList() }.single()
+        assertTrue(archive.fileName.toString().startsWith("browse"), archive.toString())
+        val made = Files.getLastModifiedTime(archive)
+        assertEquals(ProcessRun(0, expected, ""), listing())
+        assertEquals(made, Files.getLastModifiedTime(archive), "the archive is mapped, not made again")
+        // Other commands map it too, silently, and never make it again.
+        assertEquals(
+            ProcessRun(0, "rtcoord ${version()}\n", ""),
+            runProcess(listOf(tree.resolve("rtcoord").toString(), "--version"), fakeMaven(directory), environment),
+        )
+        assertEquals(made, Files.getLastModifiedTime(archive), "--version maps the archive")
+
+        // An archive the JVM cannot use is ignored without a word.
+        Files.delete(archive)
+        Files.writeString(archive, "not an archive")
+        assertEquals(ProcessRun(0, expected, ""), listing())
+        assertTrue(Files.notExists(directory.resolve("maven-called")))
+    }
+
+    private fun version() = jar.fileName.toString().removePrefix("rtcoord-cli-").removeSuffix(".jar")
+
+    /**
+     * A copy of the project as the launcher sees it: the script, module folders, and the built jar with its lib folder,
+     * so the launcher can be tried without touching the real build.
+     */
+    private fun launcherTree(directory: Path): Path {
+        val tree = Files.createDirectories(directory.resolve("project"))
+        Files.copy(root.resolve("rtcoord"), tree.resolve("rtcoord"))
+        val launcher = Files.createDirectories(tree.resolve("cli/src/dist/bin")).resolve("rtcoord")
+        Files.copy(root.resolve("cli/src/dist/bin/rtcoord"), launcher)
+        Files.writeString(tree.resolve("pom.xml"), "")
+        listOf("idl", "datatypes", "runtime", "core", "dsl", "sim", "examples").forEach {
+            Files.createDirectories(tree.resolve(it))
+        }
+        Files.writeString(tree.resolve("examples/localisation.coord.kts"), "")
+        val target = Files.createDirectories(tree.resolve("cli/target"))
+        Files.createSymbolicLink(target.resolve("lib"), jar.resolveSibling("lib"))
+        Files.copy(jar, target.resolve(jar.fileName))
+        // The copy is the newest file of the tree, as a jar just built is.
+        Files.setLastModifiedTime(
+            target.resolve(jar.fileName),
+            FileTime.fromMillis(System.currentTimeMillis() + 30_000),
+        )
+        return tree
+    }
+
+    /** A PATH whose `mvn` records its arguments and "builds" by copying the real jar into place. */
+    private fun fakeMaven(directory: Path): String {
+        val bin = Files.createDirectories(directory.resolve("bin"))
+        val mvn = bin.resolve("mvn")
+        val built = directory.resolve("project/cli/target").resolve(jar.fileName)
+        Files.writeString(
+            mvn,
+            "#!/bin/sh\necho \"$@\" > '${directory.resolve("maven-called")}'\ncp '$jar' '$built'\ntouch -d '+2 minutes' '$built'\n",
+        )
+        Files.setPosixFilePermissions(mvn, PosixFilePermissions.fromString("rwxr-xr-x"))
+        return "$bin:${System.getenv("PATH")}"
+    }
+}
