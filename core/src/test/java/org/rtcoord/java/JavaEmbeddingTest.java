@@ -218,8 +218,16 @@ class JavaEmbeddingTest {
 
             states.close();
             parameters.close();
-            tree.component(path("gyro0.rtc")).activate();
-            assertEquals(null, seen.poll(300, TimeUnit.MILLISECONDS));
+            // A subscription made after the close is the marker: once it has seen the activation on the UI thread,
+            // and that thread has run what was queued behind it, a closed subscription's delivery would be in seen.
+            BlockingQueue<String> marker = new LinkedBlockingQueue<>();
+            try (Subscription after = tree.subscribe(path("gyro0.rtc"), StateChanged.class, ui,
+                    event -> marker.add(event.getOld() + " -> " + event.getNew()))) {
+                tree.component(path("gyro0.rtc")).activate();
+                assertEquals("INACTIVE -> ACTIVE", marker.poll(10, TimeUnit.SECONDS));
+            }
+            ui.submit(() -> { }).get(10, TimeUnit.SECONDS);
+            assertEquals(List.of(), List.copyOf(seen));
         } finally {
             ui.shutdownNow();
         }

@@ -239,6 +239,10 @@ internal constructor(
     /** Lets held and later calls through again. */
     public fun release(): Unit = gate.open()
 
+    /** How many calls [hang] holds now: what a test waits for to know its call reached the hung component. */
+    public val heldCalls: Int
+        get() = gate.held
+
     /**
      * The value of parameter [name] as the component uses it: its bound variable, which takes the active configuration
      * set's value only when the component next runs (activation, execution, ERROR).
