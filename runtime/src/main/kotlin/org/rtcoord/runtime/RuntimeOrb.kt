@@ -33,6 +33,10 @@ private constructor(
 
     @Volatile private var closed = false
 
+    /** Its listener's connections, which [close] ends itself. */
+    private val connections =
+        (orb as org.jacorb.orb.ORB).transportManager.socketFactoryManager.serverSocketFactory as ServerConnections
+
     /** Activates [servant] and returns its reference. */
     public fun activate(servant: Servant): org.omg.CORBA.Object = poa.servant_to_reference(servant)
 
@@ -49,12 +53,17 @@ private constructor(
     /** The `corbaloc:` address of [key] on this ORB. */
     public fun corbaloc(key: String): String = "corbaloc:iiop:$host:$port/$key"
 
-    /** Stops listening and releases the ORB's threads; returns once the port can be bound again. Idempotent. */
+    /**
+     * Stops listening, releases the ORB's threads and ends every connection JacORB's shutdown left open; returns once
+     * the port can be bound again. JacORB waits for the requests being served: a servant must not hold one forever.
+     * Idempotent.
+     */
     override fun close() {
         if (closed) return
         closed = true
         orb.shutdown(false)
         orb.destroy()
+        connections.end()
         awaitPortReleased(host, port, 5.seconds)
     }
 
@@ -63,6 +72,7 @@ private constructor(
         public fun start(port: Int = 0, host: String = "127.0.0.1", callTimeout: Duration = 2.seconds): RuntimeOrb {
             // The tree's own recipe: what the benchmarks measure on the runtime is what the tree runs with.
             val properties = OrbRecipe.properties(host, port, callTimeout.inWholeMilliseconds)
+            properties.setProperty("jacorb.net.server_socket_factory", ServerConnections::class.java.name)
             val orb = ORB.init(emptyArray(), properties)
             val poa = POAHelper.narrow(orb.resolve_initial_references("RootPOA"))
             poa.the_POAManager().activate()

@@ -143,6 +143,7 @@ private constructor(
     /** Exits every component and stops the ORB. */
     override fun close() {
         if (!runtimes.remove(this)) return
+        hosted.forEach { it.gate.end() }
         ArrayList(hosted).forEach(::dispose)
         scheduler.shutdownNow()
         scope.cancel()
@@ -163,6 +164,7 @@ private constructor(
     public fun kill() {
         if (!runtimes.remove(this)) return
         killed = true
+        hosted.forEach { it.gate.end() }
         scheduler.shutdownNow()
         scope.cancel()
         orb.close()
