@@ -3,6 +3,7 @@ package org.rtcoord.idl
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
+import java.util.concurrent.ConcurrentHashMap
 import java.util.concurrent.TimeUnit
 import kotlin.streams.asSequence
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -77,8 +78,10 @@ class IdlConformanceTest {
         )
     }
 
-    /** rtctree-aist's IDL, installed into a throw-away virtual environment under target/. */
-    private fun referenceIdl(): Path {
+    /** rtctree-aist's IDL, installed into a throw-away virtual environment under target/ once for the class. */
+    private fun referenceIdl(): Path = reference ?: installReference().also { reference = it }
+
+    private fun installReference(): Path {
         val venv = work.resolve("reference-venv")
         if (!Files.exists(venv.resolve("bin/pip"))) run(Peers.tool("python").toString(), "-m", "venv", venv.toString())
         val pinned =
@@ -100,29 +103,39 @@ class IdlConformanceTest {
 
     /** The declarations of the IDL files in [idlDirectory] ([only] those named, if given) and of what they include. */
     private fun listing(idlDirectory: Path, only: List<String>? = null): IdlListing {
+        val files = printed.computeIfAbsent(idlDirectory, ::print).filterKeys { only == null || it in only }
+        assertTrue(files.isNotEmpty(), "no IDL in $idlDirectory")
+        return IdlListing.parse(
+            files.toSortedMap().values.flatten().distinct().filterNot { it.startsWith("CosNotifyComm::") }
+        )
+    }
+
+    /**
+     * Each IDL file of [idlDirectory], by name, as the `canon` back end prints it: one omniidl per file, in parallel.
+     */
+    private fun print(idlDirectory: Path): Map<String, List<String>> {
         val includes = stubIncludes()
         val files =
             Files.list(idlDirectory).use { paths ->
-                paths
-                    .asSequence()
-                    .filter { it.toString().endsWith(".idl") && (only == null || it.fileName.toString() in only) }
-                    .sorted()
-                    .toList()
+                paths.asSequence().filter { it.toString().endsWith(".idl") }.toList()
             }
-        assertTrue(files.isNotEmpty(), "no IDL in $idlDirectory")
-        val lines = files.flatMap { file ->
-            run(
-                Peers.tool("omniidl").toString(),
-                "-p",
-                Paths.get("src/test/omniidl").toAbsolutePath().toString(),
-                "-b",
-                "canon",
-                "-I$includes",
-                "-I$idlDirectory",
-                file.toString(),
-            )
-        }
-        return IdlListing.parse(lines.distinct().filterNot { it.startsWith("CosNotifyComm::") })
+        return files
+            .parallelStream()
+            .map { file ->
+                file.fileName.toString() to
+                    run(
+                        Peers.tool("omniidl").toString(),
+                        "-p",
+                        Paths.get("src/test/omniidl").toAbsolutePath().toString(),
+                        "-b",
+                        "canon",
+                        "-I$includes",
+                        "-I$idlDirectory",
+                        file.toString(),
+                    )
+            }
+            .toList()
+            .toMap()
     }
 
     /** The reference SDO IDL includes two OMG files that are not shipped with it; its types need neither. */
@@ -143,5 +156,11 @@ class IdlConformanceTest {
         check(process.waitFor(120, TimeUnit.SECONDS)) { "${command.first()} did not finish" }
         check(process.exitValue() == 0) { "${command.joinToString(" ")} failed (${process.exitValue()}): $errors" }
         return output
+    }
+
+    private companion object {
+        /** What omniidl printed, by directory then file: the tests share it (each listing takes seconds). */
+        val printed = ConcurrentHashMap<Path, Map<String, List<String>>>()
+        var reference: Path? = null
     }
 }
