@@ -16,7 +16,6 @@ import org.junit.jupiter.api.Test
  * compared declaration by declaration.
  */
 class IdlConformanceTest {
-    private val root: Path = Paths.get(System.getProperty("rtcoord.root") ?: "..").toAbsolutePath().normalize()
     private val work: Path = Files.createDirectories(Paths.get("target", "idl-conformance").toAbsolutePath())
 
     /**
@@ -78,28 +77,8 @@ class IdlConformanceTest {
         )
     }
 
-    /** rtctree-aist's IDL, installed into a throw-away virtual environment under target/ once for the class. */
-    private fun referenceIdl(): Path = reference ?: installReference().also { reference = it }
-
-    private fun installReference(): Path {
-        val venv = work.resolve("reference-venv")
-        if (!Files.exists(venv.resolve("bin/pip"))) run(Peers.tool("python").toString(), "-m", "venv", venv.toString())
-        val pinned =
-            Files.readAllLines(root.resolve("scripts/peers-requirements.txt")).single {
-                it.startsWith("rtctree-aist==")
-            }
-        run(
-            venv.resolve("bin/pip").toString(),
-            "install",
-            "--quiet",
-            "--disable-pip-version-check",
-            "--no-deps",
-            pinned,
-        )
-        return Files.walk(venv).use { paths ->
-            paths.asSequence().single { it.endsWith("rtctree/data/idl") && Files.isDirectory(it) }
-        }
-    }
+    /** rtctree-aist's IDL, as `scripts/peers.sh` installed it (the version `scripts/peers-requirements.txt` pins). */
+    private fun referenceIdl(): Path = Peers.sitePackage("rtctree").resolve("data/idl")
 
     /** The declarations of the IDL files in [idlDirectory] ([only] those named, if given) and of what they include. */
     private fun listing(idlDirectory: Path, only: List<String>? = null): IdlListing {
@@ -161,6 +140,5 @@ class IdlConformanceTest {
     private companion object {
         /** What omniidl printed, by directory then file: the tests share it (each listing takes seconds). */
         val printed = ConcurrentHashMap<Path, Map<String, List<String>>>()
-        var reference: Path? = null
     }
 }

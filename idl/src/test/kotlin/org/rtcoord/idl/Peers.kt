@@ -27,4 +27,14 @@ internal object Peers {
         }
         return path
     }
+
+    /** The directory of Python package [name] in the peers' virtual environment. */
+    fun sitePackage(name: String): Path {
+        tool("python")
+        val packages =
+            Files.list(home.resolve("lib")).use { versions ->
+                versions.map { it.resolve("site-packages").resolve(name) }.filter(Files::isDirectory).findFirst()
+            }
+        return packages.orElseThrow { AssertionError("$name is not installed in $home: run scripts/peers.sh") }
+    }
 }
