@@ -61,6 +61,8 @@ internal data class BenchOptions(
     val seed: Long = 9,
     /** How long the data benchmark counts at each rate, with its tap and without. */
     val dataWindow: Duration = 10.seconds,
+    /** Most windows the simulated out-port writes before it is measured, until the JIT is quiet (at least three). */
+    val portWarmUpWindows: Int = 30,
     /** Silences timed at each threshold. */
     val silenceRepetitions: Int = 5,
     /** Timed scenarios of the coordinator test's overhead. */
@@ -168,6 +170,7 @@ in the same run). Results are printed, never stored.
                     microIteration = 200.milliseconds,
                     scripts = false,
                     dataWindow = 1.seconds,
+                    portWarmUpWindows = 3,
                     silenceRepetitions = 1,
                     testRepetitions = 1,
                     suiteRepetitions = 1,

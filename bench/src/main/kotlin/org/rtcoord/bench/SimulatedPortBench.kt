@@ -60,7 +60,7 @@ internal class SimulatedPortBench(
             val received = AtomicLong()
             val tap = tree.port("${ranger.path}:range").tap { received.incrementAndGet() }
             try {
-                val warmUp = simulation.warmUp(options.dataWindow)
+                val warmUp = simulation.warmUp(options.dataWindow, options.portWarmUpWindows)
                 val samplesBefore = received.get()
                 val writing = simulation.cpuPerSecond(options.dataWindow)
                 val rate = (received.get() - samplesBefore) / options.dataWindow.toDouble(DurationUnit.SECONDS)
@@ -122,17 +122,18 @@ internal class SimulatedPortBench(
 
         /**
          * Waits while the component writes until the JIT is quiet: at least three [window]s, then until its compiler
-         * threads spent under 1 % of [QUIET_WINDOWS] windows in a row, at most [WARM_UP_WINDOWS] windows. C2 compiles a
-         * method called once a period after thousands of periods, in waves tens of seconds apart at 100 Hz. Says how
-         * long it took; where the compiler threads cannot be read (`/proc`), three windows.
+         * threads spent under 1 % of [QUIET_WINDOWS] windows in a row, at most [most] windows. C2 compiles a method
+         * called once a period after thousands of periods, in waves tens of seconds apart at 100 Hz. Says how long it
+         * took; where the compiler threads cannot be read (`/proc`), or [most] is three, three windows.
          */
-        suspend fun warmUp(window: Duration): String {
+        suspend fun warmUp(window: Duration, most: Int): String {
             delay(window * 3)
             var windows = 3
             fun seconds() = figure(window.toDouble(DurationUnit.SECONDS) * windows)
+            if (most <= windows) return "${seconds()} s of warm-up"
             var compiled = compilerCpu() ?: return "${seconds()} s of warm-up (the JIT cannot be watched here)"
             var quiet = 0
-            while (quiet < QUIET_WINDOWS && windows < WARM_UP_WINDOWS) {
+            while (quiet < QUIET_WINDOWS && windows < most) {
                 val start = System.nanoTime()
                 delay(window)
                 windows++
@@ -193,7 +194,6 @@ internal class SimulatedPortBench(
 
     private companion object {
         const val LABEL = "simulated RangeData(1081) out-port at 100 Hz, rtcoord sim"
-        const val WARM_UP_WINDOWS = 30
         const val QUIET_WINDOWS = 3
 
         /** Linux counts a thread's CPU in `/proc` in ticks of USER_HZ, 100 a second. */
