@@ -64,6 +64,12 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         GRACE,
         SETTLED,
         HOLD_LIMIT,
+        /**
+         * The grace period after the read that followed an observer's attachment: the states are read once more. A
+         * transition under way as the observer was attached sent its hint to the observers the component had before
+         * (none, or one detached since), and that read found the state it leaves; no hint would ever announce it.
+         */
+        CONFIRM,
     }
 
     private val states = ContextStates(node, timing.holdLimitMillis, timing.settleMillis)
@@ -130,6 +136,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                             Timer.GRACE -> if (states.disagreedSince != null) readAll = true
                             Timer.SETTLED -> settle = settle || (states.held.isNotEmpty() && marker == null)
                             Timer.HOLD_LIMIT -> if (states.held.isNotEmpty()) readAll = true
+                            Timer.CONFIRM -> handles += every
                         }
                     }
                 is WatchInput.MarkerBack ->
@@ -171,11 +178,12 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val changes = liveness.answered(now)
         val recovered = ComponentLiveness.Change.Recovered in changes
         if (recovered) events += Recovered(node)
+        val afterAttaching = arrangement.rereading
         // Before reconciling: a component back may have dropped its observer, and until one is attached anew no hint
         // announces what this read finds.
         val arranged = arrangement.answered(recovered, liveness.state, snapshot.advertised)
         val previous = last
-        val reconciled = reconcile(previous, snapshot, now, late)
+        val reconciled = reconcile(previous, snapshot, now, late, confirm = afterAttaching)
         events += reconciled.events
         if (previous != null) events += differences(node, previous, snapshot)
         last = snapshot
@@ -282,6 +290,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         snapshot: ComponentSnapshot,
         now: Long,
         late: List<WatchInput.Hinted>,
+        confirm: Boolean = false,
     ): WatchOutcome {
         val untaken = ArrayList<WatchInput.Hinted>()
         var taken = false
@@ -309,6 +318,11 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         // next.
         states.disagreedSince?.let { arm(Timer.GRACE, it + timing.graceMillis - now) }
         recheckIfHintsLead(::arm)
+        if (confirm) {
+            // The latest attachment's confirmation replaces an earlier one's, due before it.
+            deadlines -= Timer.CONFIRM
+            arm(Timer.CONFIRM, timing.graceMillis)
+        }
         val held = states.held
         if (held.isEmpty()) {
             // A marker sent for a hold that is over is no longer awaited, and the hold's timers end with it.

@@ -12,11 +12,11 @@ import org.rtcoord.EventOptions
  *
  * It arranges in stages, each ending in a step the monitor carries out at once:
  *
- * |stage  |entered when                                                                                                                                                             |next step                                                                                                                                                                             |then                                               |
- * |-------|-------------------------------------------------------------------------------------------------------------------------------------------------------------------------|--------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------|---------------------------------------------------|
- * |OBSERVE|the registrations changed, after a whole read ([reconfigured]); a read brought the component back ([answered]): it may have dropped its observer, or restarted without it|[WatchStep.Detach] an observer that is stale or sends other traffic than asked for; else [WatchStep.Attach] one if a push registration wants it and the component answers; else settle|OBSERVE after detaching, REREAD after attaching one|
- * |REREAD |an observer was attached ([attached])                                                                                                                                    |[WatchStep.ReadAll]: a change between the last read and the attachment sent its hint to nobody                                                                                        |settle                                             |
- * |none   |settled, or the component is finalized                                                                                                                                   |nothing: reads arrange nothing more                                                                                                                                                   |                                                   |
+ * |stage  |entered when                                                                                                                                                             |next step                                                                                                                                                                                   |then                                               |
+ * |-------|-------------------------------------------------------------------------------------------------------------------------------------------------------------------------|--------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------------|---------------------------------------------------|
+ * |OBSERVE|the registrations changed, after a whole read ([reconfigured]); a read brought the component back ([answered]): it may have dropped its observer, or restarted without it|[WatchStep.Detach] an observer that is stale or sends other traffic than asked for; else [WatchStep.Attach] one if a push registration wants it and the component answers; else settle      |OBSERVE after detaching, REREAD after attaching one|
+ * |REREAD |an observer was attached ([attached])                                                                                                                                    |[WatchStep.ReadAll]: a change between the last read and the attachment sent its hint to nobody (the machine reads the states once more a grace period later, [ComponentWatch.Timer.CONFIRM])|settle                                             |
+ * |none   |settled, or the component is finalized                                                                                                                                   |nothing: reads arrange nothing more                                                                                                                                                         |                                                   |
  *
  * Settling decides the method ([decideWatchMethod]), the poll period and the heartbeat watched ([WatchSchedule]), and
  * ends the stages. Whatever the stage: a component found unreachable is probed at its heartbeat if nothing polls it,
@@ -44,6 +44,10 @@ internal class WatchArrangement {
 
     /** The timers as last arranged. */
     private var schedule = WatchSchedule.OFF
+
+    /** Whether the next whole read is the one that follows an observer's attachment ([Stage.REREAD]). */
+    val rereading: Boolean
+        get() = stage == Stage.REREAD
 
     /** Whether an observer announces the component's changes, so that its hints are awaited. */
     val observed: Boolean

@@ -465,4 +465,24 @@ class ComponentWatchTest {
         assertEquals(WatchSchedule(null, 1.seconds), settled.arranged.schedule)
         assertEquals(WatchStep.Idle, settled.arranged.next)
     }
+
+    @Test
+    fun `a change whose hint went to the observer before is found by reading again a grace period after attaching`() {
+        // EventsTest's hung component (a busy-loop run): back, its old observer detached and a new one attached while
+        // a deactivation was under way; the read after attaching found ACTIVE, and the hint went to the old observer.
+        val watch = watching(ACTIVE)
+        watch.failed(UnreachableException("laser0.rtc", org.omg.CORBA.TRANSIENT()), 100)
+        assertEquals(WatchStep.Detach, watch.read(found(ACTIVE), 200, emptyList()).arranged.next)
+        assertInstanceOf(WatchStep.Attach::class.java, watch.detached().arranged.next)
+        assertEquals(WatchStep.ReadAll, watch.attached(Attachment.Attached(ObserverFlavour.OPENRTM), 210).arranged.next)
+        val reread = watch.read(found(ACTIVE), 220, emptyList())
+        assertEquals(listOf(Timer.CONFIRM to 720L), reread.timers)
+        assertEquals(WatchStep.Idle, reread.arranged.next)
+        val confirming = watch.decide(listOf(WatchInput.Fired(Timer.CONFIRM, 720)), 720).step
+        assertEquals(setOf(0), (confirming as WatchStep.ReadStates).handles)
+        val confirmed = watch.statesRead(mapOf(0 to INACTIVE), 721, emptyList())
+        assertEquals(listOf(Timer.GRACE to 1221L), confirmed.timers, "no hint announced it: a grace read decides")
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Fired(Timer.GRACE, 1221)), 1221).step)
+        assertEquals(changed(ACTIVE to INACTIVE), stateEvents(watch.read(found(INACTIVE), 1222, emptyList()).events))
+    }
 }
