@@ -46,6 +46,8 @@ public final class OrbRecipe {
     // otherwise be lost (a oneway sender never sees the TRANSIENT).
     properties.setProperty("jacorb.poa.queue_wait", "on");
     properties.setProperty("jacorb.poa.queue_max", "1000");
+    // Buffer pools of the ORB's own: another ORB's destroy empties JacORB's shared ones under this one.
+    properties.setProperty("jacorb.buffermanager.factory", OrbBufferPools.class.getName());
     return properties;
   }
 }
