@@ -229,3 +229,42 @@ public class NameServerLost(override val source: NameServerNode, public val caus
 public class NameServerReturned(override val source: NameServerNode, public val downMillis: Long) : RtcEvent() {
     override fun fields(): ValueFields = ValueFields("source" to source, "downMillis" to downMillis)
 }
+
+/**
+ * A log record a component's process sent to one of the tree's log inputs ([RtcTree.listenForLogs]), as OpenRTM-aist
+ * 2.x sends them to Fluentd (OpenRTM-aist-Python's FluentLogger, C++'s `fluentbit_stream`).
+ *
+ * [source] is whom the tree found it to be from: the component whose instance name the record's [logger] is, else the
+ * only component of the manager named [manager], else that manager; a record none of these matches (a process the tree
+ * has not listed) comes from the tree's root, and [host] and [pid] say where it came from.
+ */
+public class LogRecord(
+    override val source: Node,
+    /** When the sender stamped it, in milliseconds since the epoch. */
+    public val loggedAt: Long,
+    public val level: LogLevel,
+    /** The logger's name as sent: OpenRTM-aist's C++ names a component's logger by its instance name. */
+    public val logger: String,
+    public val message: String,
+    /** The sender's process id; null when it did not say. */
+    public val pid: Long?,
+    /** The sender's host name; null when it did not say. */
+    public val host: String?,
+    /** The instance name of the sender's manager (`manager.instance_name`); null when it did not say. */
+    public val manager: String?,
+    /** The Fluentd tag it came with (`rtclog` by default in OpenRTM-aist's C++). */
+    public val tag: String,
+) : RtcEvent() {
+    override fun fields(): ValueFields =
+        ValueFields(
+            "source" to source,
+            "loggedAt" to loggedAt,
+            "level" to level,
+            "logger" to logger,
+            "message" to message,
+            "pid" to pid,
+            "host" to host,
+            "manager" to manager,
+            "tag" to tag,
+        )
+}

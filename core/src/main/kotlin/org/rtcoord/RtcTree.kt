@@ -13,6 +13,7 @@ import org.rtcoord.internal.NameServerIdentity
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.componentsFound
 import org.rtcoord.internal.events.AfterSnapshot
+import org.rtcoord.internal.logs.logInputAddress
 
 /**
  * A live tree of an RT system, as rtctree-erl built it for the paper: the root, name servers, naming contexts, managers
@@ -293,6 +294,19 @@ constructor(
      */
     @JvmSynthetic
     public fun onWatching(handler: suspend (RtcEvent) -> Unit): Subscription = core.watcher.report(handler)
+
+    /**
+     * Starts a log input on [address] (`host:port`; port 0 for any free one): a Fluentd forward input (Message,
+     * Forward, PackedForward and CompressedPackedForward, acknowledged when a sender asks, heartbeats answered), to
+     * which OpenRTM-aist's components send their log records (`logger.logstream.fluentd.output0.port` in a Python
+     * component's `rtc.conf`, an `output` of C++'s `fluentbit_stream`). Each record becomes a [LogRecord] event from
+     * the component that logged it, heard through [on] and [follow] as every event is. With [sharedKey], senders must
+     * pass Fluentd's shared-key handshake: set one for anything beyond loopback. Closed with the tree.
+     *
+     * @throws java.io.IOException when it cannot listen there, naming the address.
+     */
+    public fun listenForLogs(address: String = "127.0.0.1:24224", sharedKey: String? = null): LogInput =
+        core.logs.listen(logInputAddress(address), sharedKey, root)
 
     /**
      * The tree's model of the system now, read without a remote call: every component its listings found, once each at

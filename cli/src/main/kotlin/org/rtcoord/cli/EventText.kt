@@ -15,6 +15,7 @@ import org.rtcoord.ContextRunningChanged
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
+import org.rtcoord.LogRecord
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
@@ -27,6 +28,7 @@ import org.rtcoord.PortConnected
 import org.rtcoord.PortDisconnected
 import org.rtcoord.PortTraffic
 import org.rtcoord.Recovered
+import org.rtcoord.RootNode
 import org.rtcoord.RtcEvent
 import org.rtcoord.StateChanged
 import org.rtcoord.WatchMethod
@@ -71,7 +73,13 @@ internal fun RtcEvent.what(): String =
         is NameServerLost ->
             "name server unreachable (${cause.reason}); what is registered on it is unknown until it answers"
         is NameServerReturned -> "name server answers again, after ${downMillis / 1000.0} s"
+        is LogRecord -> "logged $level ${logger.ifEmpty { "-" }}: $message" + origin()
     }
+
+/** Where a record whose sender the tree has not listed came from: its host, process and manager. */
+private fun LogRecord.origin(): String =
+    if (source !is RootNode) ""
+    else listOfNotNull(host, pid?.let { "pid $it" }, manager?.let { "manager $it" }).joinToString(", ", " (from ", ")")
 
 /** A component as a line shows it: its state, and its ports that have connections. */
 internal fun ComponentSnapshot.brief(state: LifeCycle = this.state): String {

@@ -15,6 +15,7 @@ import org.rtcoord.internal.data.DataTaps
 import org.rtcoord.internal.events.ListenerFailures
 import org.rtcoord.internal.events.MillisClock
 import org.rtcoord.internal.events.Watcher
+import org.rtcoord.internal.logs.LogRecords
 import org.rtcoord.internal.model.SystemModel
 import org.slf4j.LoggerFactory
 
@@ -59,6 +60,7 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     val model = SystemModel(nameServers)
     val watcher = Watcher(this)
     val taps = DataTaps(this)
+    val logs = LogRecords(this)
 
     /** Requests whose replies no thread waits for; made on first use, when the ORB has started. */
     val requests by lazy { AsyncRequests(orb.orb, scope) }
@@ -88,6 +90,7 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
         if (!closed.compareAndSet(false, true)) return
         watcher.close()
         taps.close()
+        logs.close()
         scope.cancel()
         orb.close()
     }

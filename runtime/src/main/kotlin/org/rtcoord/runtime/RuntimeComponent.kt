@@ -130,6 +130,13 @@ internal constructor(
     /** Resets the component in its first owned execution context, as `rtreset` does. */
     public fun reset(): ReturnCode_t = owned.reset_component(ref)
 
+    /**
+     * Logs [message] at [level] (`WARN`, `ERROR`, ...) to where its process sends log records
+     * ([RuntimeProcess.sendLogsTo]), as its logger named by its instance name; returns whether it was sent.
+     */
+    public fun log(level: String, message: String): Boolean =
+        runtime.logSender?.send(instanceName, level, message) ?: false
+
     /** Makes the next execution fail, sending the component to ERROR; a reset clears it. */
     public fun fail() {
         injectedFailure = true
@@ -364,7 +371,10 @@ internal constructor(
             "exec_cxt.periodic.rate" to type.rate.toString(),
             "naming.names" to "$instanceName.rtc",
             "sdo.service.consumer.available_services" to type.observerFlavours.joinToString(",") { it.repositoryId },
-        ) + fsmProperties() + type.parameters.associate { "conf.default.${it.name}" to it.default }
+        ) +
+            fsmProperties() +
+            runtime.managerName?.let { mapOf("manager.instance_name" to it) }.orEmpty() +
+            type.parameters.associate { "conf.default.${it.name}" to it.default }
 
     /** An FSM component lists the service as OpenRTM-aist's `SdoServiceAdmin` lists the providers it loaded. */
     private fun fsmProperties(): Map<String, String> =

@@ -3,6 +3,7 @@ package org.rtcoord.runtime
 import RTC.ExecutionContext
 import RTC.LightweightRTObject
 import java.net.InetAddress
+import java.net.InetSocketAddress
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.Executors
 import java.util.concurrent.ScheduledExecutorService
@@ -30,6 +31,11 @@ private constructor(
     public val orb: RuntimeOrb,
     namingAddress: String?,
     public val contexts: List<String>,
+    /**
+     * The instance name of the manager this process stands for, which OpenRTM-aist's manager passes on to each
+     * component it creates (`manager.instance_name` in its profile); null: its components' profiles do not say.
+     */
+    public val managerName: String?,
 ) : AutoCloseable {
     private val log = LoggerFactory.getLogger(RuntimeProcess::class.java)
     private val hosted = CopyOnWriteArrayList<RuntimeComponent>()
@@ -141,8 +147,24 @@ private constructor(
     }
 
     /** Exits every component and stops the ORB. */
+    /** Where its components' log records go, as OpenRTM-aist's logger plugins send them; null: nowhere. */
+    @Volatile
+    internal var logSender: FluentLogSender? = null
+        private set
+
+    /**
+     * Sends its components' log records ([RuntimeComponent.log]) to the Fluentd forward input at [address] as the
+     * process of manager [manager] (its `manager.instance_name`), as an `rtc.conf` naming a fluentd log stream makes
+     * OpenRTM-aist's do.
+     */
+    public fun sendLogsTo(address: InetSocketAddress, manager: String) {
+        logSender?.close()
+        logSender = FluentLogSender(address, manager)
+    }
+
     override fun close() {
         if (!runtimes.remove(this)) return
+        logSender?.close()
         hosted.forEach { it.gate.end() }
         ArrayList(hosted).forEach(::dispose)
         scheduler.shutdownNow()
@@ -182,13 +204,16 @@ private constructor(
 
         /**
          * Starts a runtime whose ORB listens on [host]:[port] (0: any free port) and registers its components with the
-         * naming service at [naming] (a `corbaloc:` address; null: none).
+         * naming service at [naming] (a `corbaloc:` address; null: none); its components' profiles name [managerName]
+         * as their manager's when it is set.
          */
         public fun start(
             naming: String?,
             contexts: List<String> = listOf(hostContext),
             port: Int = 0,
             host: String = "127.0.0.1",
-        ): RuntimeProcess = RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts).also { runtimes += it }
+            managerName: String? = null,
+        ): RuntimeProcess =
+            RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts, managerName).also { runtimes += it }
     }
 }

@@ -13,6 +13,7 @@ import org.rtcoord.ContextRunningChanged
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
+import org.rtcoord.LogRecord
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
@@ -97,6 +98,22 @@ internal sealed class EventDetail {
     @Serializable class NameServerReturned(val downMillis: Long) : EventDetail()
 
     /**
+     * A log record: when its sender stamped it ([loggedAt], ISO-8601 in UTC), its [level], [logger] and [message], and
+     * the process that sent it.
+     */
+    @Serializable
+    class LogRecord(
+        val loggedAt: String,
+        val level: String,
+        val logger: String,
+        val message: String,
+        val pid: Long?,
+        val host: String?,
+        val manager: String?,
+        val tag: String,
+    ) : EventDetail()
+
+    /**
      * A component as `watch` finds it when it starts: its [state], its [connections] when it was read, its FSM when it
      * has one, whether it is [alive]; how it is watched is spread beside.
      */
@@ -150,4 +167,15 @@ internal fun eventDetail(event: RtcEvent): EventDetail =
         is ManagerReturned -> EventDetail.ManagerReturned
         is NameServerLost -> EventDetail.NameServerLost(event.cause.message)
         is NameServerReturned -> EventDetail.NameServerReturned(event.downMillis)
+        is LogRecord ->
+            EventDetail.LogRecord(
+                java.time.Instant.ofEpochMilli(event.loggedAt).toString(),
+                event.level.name,
+                event.logger,
+                event.message,
+                event.pid,
+                event.host,
+                event.manager,
+                event.tag,
+            )
     }

@@ -30,6 +30,7 @@ import org.rtcoord.ContextRunningChanged
 import org.rtcoord.EventOptions
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.LogRecord
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
@@ -197,7 +198,10 @@ internal class LiveView(
         const val RECENT_KEPT = 500
         val RESHAPE_SETTLE = 150.milliseconds
 
-        /** The timeline's filter groups: state, port, configuration, liveness, manager, structure. */
+        /**
+         * The timeline's filter groups: state, port, configuration, liveness, manager, structure, record (a component's
+         * log record; "log" is the coordinator's).
+         */
         fun kindOf(event: RtcEvent): String =
             when (event) {
                 is StateChanged,
@@ -224,6 +228,7 @@ internal class LiveView(
                 is NameServerReturned -> "liveness"
                 is NodeAppeared,
                 is NodeVanished -> "structure"
+                is LogRecord -> "record"
             }
     }
 }

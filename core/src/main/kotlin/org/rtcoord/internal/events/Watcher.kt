@@ -11,6 +11,7 @@ import org.rtcoord.ConfigurationSetRemoved
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventOptions
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.LogRecord
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerNode
 import org.rtcoord.ManagerReturned
@@ -82,6 +83,18 @@ internal class Watcher(private val core: TreeCore) {
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
         val traffic = types != null && PortTraffic::class.java in types
         val releases = mutableListOf<() -> Unit>()
+        if (types == null || types.any { it.isAssignableFrom(LogRecord::class.java) }) {
+            releases += core.logs.add(sink, target)
+            // Records come from the log inputs, not from the components: hearing them alone watches nothing.
+            if (types != null && types.all { LogRecord::class.java.isAssignableFrom(it) }) {
+                if (target !is ComponentNode && target !is DirectoryNode)
+                    throw WrongKindException(target.path.toString(), "component or directory", target.kind.label())
+                return Subscription {
+                    sink.close()
+                    releases.forEach { it() }
+                }
+            }
+        }
         val watched = HashSet<RtcPath>()
         // A component reached by two paths at once (its naming context, its manager) is included once;
         // the second caller waits until it is watched, as the first does.

@@ -1,0 +1,180 @@
+package org.rtcoord.internal.logs
+
+import java.net.InetSocketAddress
+import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.atomic.AtomicLong
+import kotlinx.coroutines.channels.BufferOverflow
+import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.sync.Mutex
+import kotlinx.coroutines.sync.withLock
+import org.rtcoord.ComponentNode
+import org.rtcoord.DirectoryNode
+import org.rtcoord.LogInput
+import org.rtcoord.LogRecord
+import org.rtcoord.ManagerNode
+import org.rtcoord.Node
+import org.rtcoord.RootNode
+import org.rtcoord.RtcException
+import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.componentsFound
+import org.rtcoord.internal.componentsListed
+import org.rtcoord.internal.events.EventSink
+
+/**
+ * The tree's log records: its inputs, who each record is from ([LogSenders]), and the registrations that hear them. A
+ * record is published through the tree's model as every event is, numbered, so that it sits in `follow`'s stream and a
+ * recording in its place among the state changes. Hearing records takes no watching: a registration for records alone
+ * attaches no observer and polls nothing.
+ */
+internal class LogRecords(private val core: TreeCore) {
+    private class Registration(val sink: EventSink, val covers: (LogRecord) -> Boolean)
+
+    private val registrations = CopyOnWriteArrayList<Registration>()
+    private val inputs = CopyOnWriteArrayList<AutoCloseable>()
+    private val senders = LogSenders({ core.nameServers() }, core.clock::now)
+    /** When the listings were last walked for a sender no listing showed; [Long.MIN_VALUE]: never. */
+    private var relisted = Long.MIN_VALUE
+    private val relisting = Mutex()
+
+    /** Hands [sink] the records from [target] or from below it; returns what ends that. */
+    fun add(sink: EventSink, target: Node): () -> Unit {
+        val registration = Registration(sink, coverage(target))
+        registrations += registration
+        return { registrations -= registration }
+    }
+
+    /** Starts an input on [address] whose records that match no listed sender come from [root]. */
+    fun listen(address: InetSocketAddress, sharedKey: String?, root: RootNode): LogInput {
+        val input = Input(address, sharedKey, root)
+        inputs += input
+        return input
+    }
+
+    fun close() {
+        inputs.forEach(AutoCloseable::close)
+    }
+
+    /**
+     * Who [entry] is from: a listed sender, else (the listings walked again, at most once every [RELIST_MILLIS]: a
+     * component created since, or a tree that listed nothing yet) one found then, else null.
+     */
+    private suspend fun senderOf(entry: ForwardEntry): Node? {
+        val (logger, manager) = senderNamesOf(entry)
+        senders.senderOf(logger, manager)?.let {
+            return it
+        }
+        relisting.withLock {
+            val now = core.clock.now()
+            if (relisted != Long.MIN_VALUE && now - relisted < RELIST_MILLIS) return null
+            relisted = now
+            // Profiles too, each read once: a standalone Python component's is the only place its manager's name is.
+            val unread = componentsFound(core.nameServers()).filter { it.component.snapshot.value == null }
+            coroutineScope {
+                unread.forEach { node ->
+                    launch {
+                        try {
+                            node.snapshot()
+                        } catch (e: RtcException) {
+                            // Unreachable now: the sender is not this one, or is found at a later walk.
+                        }
+                    }
+                }
+            }
+            senders.forget()
+        }
+        return senders.senderOf(logger, manager)
+    }
+
+    private inner class Input(listen: InetSocketAddress, sharedKey: String?, private val root: RootNode) : LogInput {
+        private val count = AtomicLong()
+        private val dropped = AtomicLong()
+        /**
+         * Records waiting for their sender to be found, in the order they came; the oldest dropped, and counted, when
+         * more come than can wait, so that a flood costs no more than this much memory.
+         */
+        // Named as asked (the port may be 0): the input may refuse a sender before it says which port it took.
+        private val refusals = LogRefusals("${listen.hostString}:${listen.port}", core.clock::now)
+        private val pending = Channel<ForwardEntry>(PENDING, BufferOverflow.DROP_OLDEST) { dropped.incrementAndGet() }
+        private val forward =
+            ForwardInput(
+                core.scope,
+                ForwardSettings(listen, sharedKey),
+                ::received,
+                { sender, refusal, reason -> refusals.refused(sender, refusal, reason) },
+            )
+
+        // Started once the input listens: an address it cannot take leaves nothing running.
+        private val publishing =
+            core.scope.launch {
+                for (entry in pending) {
+                    val record = logRecordOf(entry, senderOf(entry) ?: root)
+                    core.model.publish(listOf(record)) { event ->
+                        registrations.forEach { if (it.covers(event as LogRecord)) it.sink.offer(event) }
+                    }
+                }
+            }
+
+        override val address: String = "${forward.address.hostString}:${forward.address.port}"
+
+        override val received: Long
+            get() = count.get()
+
+        override fun refusals(): Map<String, Long> = buildMap {
+            forward.refusals().forEach { (refusal, count) -> put(refusal.id, count) }
+            dropped.get().takeIf { it > 0 }?.let { put(DROPPED, it) }
+        }
+
+        private fun received(entry: ForwardEntry) {
+            count.incrementAndGet()
+            pending.trySend(entry)
+        }
+
+        override fun close() {
+            forward.close()
+            pending.close()
+            publishing.cancel()
+            inputs -= this
+        }
+    }
+
+    private companion object {
+        /** How many records may wait for their sender to be found before the oldest are dropped. */
+        const val PENDING = 10_000
+
+        /** What [LogInput.refusals] calls records dropped because more came than could wait. */
+        const val DROPPED = "dropped"
+
+        /** How often at most the listings are walked again for a sender they do not show. */
+        const val RELIST_MILLIS = 5_000L
+
+        /**
+         * Which records a registration on [target] hears: a component's own; a manager's, and those of the components
+         * it hosts; a naming context's or name server's, from the components and managers listed below it; the root's,
+         * every record, including those from senders the tree has not listed.
+         */
+        fun coverage(target: Node): (LogRecord) -> Boolean =
+            when (target) {
+                is RootNode -> { _ ->
+                    true
+                }
+                is ComponentNode -> { record ->
+                    (record.source as? ComponentNode)?.isSameComponent(target) == true
+                }
+                is DirectoryNode -> { record ->
+                    below(record.source, target)
+                }
+                else -> { _ ->
+                    false
+                }
+            }
+
+        private fun below(source: Node, directory: DirectoryNode): Boolean =
+            when (source) {
+                is ComponentNode -> componentsListed(listOf(directory)).any { it.isSameComponent(source) }
+                is ManagerNode -> source.path.startsWith(directory.path)
+                else -> false
+            }
+    }
+}
