@@ -2,7 +2,8 @@
 # Builds an OpenRTM-aist-Python installation for the end-to-end tests on real OpenRTM-aist
 # (examples' OpenRtmPythonTest) from a checkout of https://github.com/OpenRTM/OpenRTM-aist-Python,
 # without its build backend (which fetches a build helper from GitHub): a virtual environment with
-# omniORBpy, the OpenRTM_aist package, and its IDL compiled by omniidl.
+# omniORBpy, the OpenRTM_aist package, and its IDL compiled by omniidl; and fluent-logger, which OpenRTM's
+# FluentLogger.py logger plugin imports to send a component's log records to rtcoord's log input.
 #
 #   scripts/openrtm-python.sh CHECKOUT [VENV]     VENV defaults to ~/.cache/rtcoord/openrtm-python
 #
@@ -14,7 +15,9 @@ venv="${2:-${XDG_CACHE_HOME:-$HOME/.cache}/rtcoord/openrtm-python}"
 [ -d "$checkout/OpenRTM_aist" ] || { echo "openrtm-python: $checkout has no OpenRTM_aist directory" >&2; exit 1; }
 
 python3 -m venv "$venv"
-"$venv/bin/pip" install --disable-pip-version-check --quiet "$(grep -i '^jeteve-omniorb' "$(dirname "$0")/peers-requirements.txt")"
+requirements="$(dirname "$0")/peers-requirements.txt"
+"$venv/bin/pip" install --disable-pip-version-check --quiet \
+  "$(grep -i '^jeteve-omniorb' "$requirements")" "$(grep -i '^fluent-logger' "$requirements")"
 site="$("$venv/bin/python" -c 'import site; print(site.getsitepackages()[0])')"
 rm -rf "$site/OpenRTM_aist"
 cp -r "$checkout/OpenRTM_aist" "$site/"
@@ -25,6 +28,6 @@ cd "$site/OpenRTM_aist/RTM_IDL"
 for idl in *.idl ../ext/sdo/observer/ComponentObserver_OpenRTM.idl ../ext/fsm4rtc_observer/ComponentObserver.idl; do
   "$venv/bin/omniidl" -bpython -I. -C. "$idl"
 done
-"$venv/bin/python" -c 'import OpenRTM_aist, RTC, OpenRTM; OpenRTM.ComponentObserver' \
+"$venv/bin/python" -c 'import OpenRTM_aist, RTC, OpenRTM, fluent.sender; OpenRTM.ComponentObserver' \
   || { echo "openrtm-python: the installation in $venv does not import" >&2; exit 1; }
 echo "openrtm-python: RTCOORD_OPENRTM_PYTHON=$venv/bin/python"

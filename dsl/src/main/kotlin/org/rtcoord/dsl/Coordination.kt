@@ -85,6 +85,15 @@ constructor(
     /** Rules on a naming context's events. */
     public fun on(target: ContextRef): ContextTriggers = ContextTriggers(this, target, emptyList())
 
+    /**
+     * The log records of the whole system, for `on(logs())`: every record the coordinator's tree receives, whoever sent
+     * it.
+     */
+    public fun logs(): LogsRef = LogsRef
+
+    /** Rules on every log record: `on(logs()).level(ERROR) { record -> ... }`. */
+    public fun on(target: LogsRef): LogTriggers = LogTriggers(this, emptyList())
+
     /** Runs [action] every [period], the first time one period after the start. */
     public fun every(period: Duration, action: suspend Reaction.() -> Unit) {
         timers += Timer("every $period", period, period, action)

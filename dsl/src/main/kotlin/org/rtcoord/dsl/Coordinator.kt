@@ -279,6 +279,7 @@ public class Coordinator(
             }
             is Target.Manager -> watchDirectory(engine.manager(target.ref), types, made())
             is Target.Context -> watchDirectory(tree.node(target.ref.path), types, made())
+            Target.Logs -> watchDirectory(tree.root, types, made())
         }
     }
 

@@ -1,5 +1,6 @@
 package org.rtcoord.dsl
 
+import kotlin.time.Duration
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ConfigurationSetActivated
@@ -7,6 +8,8 @@ import org.rtcoord.ContextRateChanged
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
 import org.rtcoord.LifeCycle
+import org.rtcoord.LogLevel
+import org.rtcoord.LogRecord
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
@@ -211,4 +214,33 @@ internal object EventPatterns {
         EventPattern("$target's name server answers again", Target.Context(target), NameServerReturned::class.java) {
             it.source.address == RtcPath(target.path).nameServer
         }
+
+    /**
+     * Records from [target] (a component's, a manager's or, for [Target.Logs], anyone's: [sender] names it) at [level]
+     * or above, whose message [matching] finds, [atLeast] of them within [within] (see [LogBurst]).
+     */
+    fun logged(
+        target: Target,
+        sender: String,
+        level: LogLevel,
+        matching: Regex?,
+        atLeast: Int,
+        within: Duration,
+    ): EventPattern<LogRecord> {
+        require(atLeast >= 1) { "logged needs atLeast of 1 or more, was $atLeast" }
+        require(within.isPositive()) { "logged needs a positive window, was $within" }
+        val matches = { record: LogRecord ->
+            record.level.atLeast(level) && (matching == null || matching.containsMatchIn(record.message))
+        }
+        val what = buildString {
+            append("$sender logs")
+            append(" at $level or above")
+            if (matching != null) append(" matching /${matching.pattern}/")
+            if (atLeast > 1) append(", $atLeast times")
+            if (within.isFinite()) append(" within $within")
+        }
+        return if (atLeast == 1) EventPattern(what, target, LogRecord::class.java, matches = matches)
+        else
+            EventPattern(what, target, LogRecord::class.java, reading = { LogBurst(atLeast, within, matches) }) { true }
+    }
 }

@@ -92,6 +92,8 @@ public class LiveCheck(private val tree: RtcTree) {
                     is Target.Port -> port(target.ref.toString())
                     is Target.Manager -> probe(target.ref.selector) { engine.manager(ManagerRef(target.ref.selector)) }
                     is Target.Context -> probe(target.ref.path) { tree.node(target.ref.path) }
+                    // Nothing to find: records come to the tree's log inputs from whoever sends them.
+                    Target.Logs -> Unit
                 }
                 val parameter = pattern.parameter ?: continue
                 val owner = (pattern.target as? Target.Component)?.ref?.takeUnless { it.isPattern } ?: continue

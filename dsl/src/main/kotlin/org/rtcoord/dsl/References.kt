@@ -199,6 +199,11 @@ public class ContextRef internal constructor(public val path: String) {
     override fun toString(): String = path
 }
 
+/** Every log record the tree receives, whoever sent it ([Coordination.logs]). */
+public object LogsRef {
+    override fun toString(): String = "logs()"
+}
+
 /** The parameter changes of [ComponentRef.configure]. */
 @RtcDsl
 public class ConfigurationChanges internal constructor() {

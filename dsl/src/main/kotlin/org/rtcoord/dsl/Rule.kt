@@ -3,7 +3,7 @@ package org.rtcoord.dsl
 import kotlin.time.Duration
 import org.rtcoord.RtcEvent
 
-/** What a rule watches: a component (or pattern), a port, a manager or a naming context. */
+/** What a rule watches: a component (or pattern), a port, a manager, a naming context or the log records. */
 internal sealed class Target {
     /**
      * What a run follows for this target's events when it names components: a name (followed through re-creation) or a
@@ -39,6 +39,12 @@ internal sealed class Target {
     class Context(val ref: ContextRef) : Target() {
         override val key: String
             get() = "context ${ref.path}"
+    }
+
+    /** Every log record the tree's inputs receive, whoever sent it. */
+    data object Logs : Target() {
+        override val key: String
+            get() = "logs"
     }
 }
 

@@ -1,3 +1,5 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl
 
 import kotlin.time.Duration
@@ -5,7 +7,10 @@ import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.LifeCycle
+import org.rtcoord.LogLevel
+import org.rtcoord.LogRecord
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
 import org.rtcoord.NameServerLost
@@ -20,6 +25,7 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.RtcPath
 import org.rtcoord.StateChanged
 import org.rtcoord.dsl.internal.DeclaredGuard
+import org.rtcoord.dsl.script.LogLevelNames
 
 /**
  * A guard: the rule fires only when it returns true for the event. It runs when the rule's turn to handle the event
@@ -128,6 +134,30 @@ internal constructor(
     public fun finalized(handler: suspend Reaction.(ComponentFinalized) -> Unit): Unit =
         add(EventPatterns.finalized(target), handler)
 
+    /**
+     * When the component logs a record at [level] or above (OpenRTM-aist's levels: [LogLevel.WARN] hears WARN, ERROR
+     * and FATAL) whose message [matching] finds, if given; with [atLeast], once it has logged that many such records
+     * within [within]: `logged(WARN, matching = Regex("timeout"), atLeast = 3, within = 10.seconds) { record -> ... }`,
+     * before it fails. Records reach a coordinator through a log input of its tree (`rtcoord run --logs-listen`, or
+     * [org.rtcoord.RtcTree.listenForLogs]) that the component's process sends to.
+     */
+    public fun logged(
+        level: LogLevel = LogLevel.WARN,
+        matching: Regex? = null,
+        atLeast: Int = 1,
+        within: Duration = Duration.INFINITE,
+        handler: suspend Reaction.(LogRecord) -> Unit,
+    ): Unit = add(EventPatterns.logged(Target.Component(target), "$target", level, matching, atLeast, within), handler)
+
+    /** [logged] at [LogLevel.ERROR], for a script's bare `logged(ERROR)` (see [LogLevelNames]). */
+    public fun logged(
+        level: LifeCycle,
+        matching: Regex? = null,
+        atLeast: Int = 1,
+        within: Duration = Duration.INFINITE,
+        handler: suspend Reaction.(LogRecord) -> Unit,
+    ): Unit = logged(LogLevelNames.of(level), matching, atLeast, within, handler)
+
     private fun <E : RtcEvent> add(pattern: EventPattern<E>, handler: suspend Reaction.(E) -> Unit) =
         owner.add(pattern.rule(guards, handler))
 }
@@ -206,6 +236,31 @@ internal constructor(private val owner: Coordination, private val target: Manage
     /** When the manager, said dead, answers again. */
     public fun returned(handler: suspend Reaction.(ManagerReturned) -> Unit): Unit =
         owner.add(EventPatterns.returned(target).rule(guards, handler))
+
+    /**
+     * When the manager's process, or a component it hosts, logs a record at [level] or above; [matching], [atLeast] and
+     * [within] as in [ComponentTriggers.logged].
+     */
+    public fun logged(
+        level: LogLevel = LogLevel.WARN,
+        matching: Regex? = null,
+        atLeast: Int = 1,
+        within: Duration = Duration.INFINITE,
+        handler: suspend Reaction.(LogRecord) -> Unit,
+    ): Unit =
+        owner.add(
+            EventPatterns.logged(Target.Manager(target), "$target", level, matching, atLeast, within)
+                .rule(guards, handler)
+        )
+
+    /** [logged] at [LogLevel.ERROR], for a script's bare `logged(ERROR)` (see [LogLevelNames]). */
+    public fun logged(
+        level: LifeCycle,
+        matching: Regex? = null,
+        atLeast: Int = 1,
+        within: Duration = Duration.INFINITE,
+        handler: suspend Reaction.(LogRecord) -> Unit,
+    ): Unit = logged(LogLevelNames.of(level), matching, atLeast, within, handler)
 }
 
 /** Bindings appearing and vanishing in a naming context: `on(context("/localhost/host.host_cxt")).appeared { ... }`. */
@@ -233,4 +288,36 @@ internal constructor(private val owner: Coordination, private val target: Contex
     /** When the name server the context is on answers again; the event says how long it was gone. */
     public fun reachable(handler: suspend Reaction.(NameServerReturned) -> Unit): Unit =
         owner.add(EventPatterns.reachable(target).rule(guards, handler))
+}
+
+/**
+ * Every log record the tree's log inputs receive, from any sender, listed or not: `on(logs()).level(ERROR) { record ->
+ * ... }`.
+ */
+@RtcDsl
+public class LogTriggers internal constructor(private val owner: Coordination, private val guards: List<Guard>) {
+    /** Narrows the rule to records for which [guard] holds, read when the handler is about to run (see [Guard]). */
+    public fun where(guard: Guard): LogTriggers = LogTriggers(owner, guards + DeclaredGuard.of(guard))
+
+    /**
+     * When any sender logs a record at [level] or above; [matching], [atLeast] (counted for each sender) and [within]
+     * as in [ComponentTriggers.logged].
+     */
+    public fun level(
+        level: LogLevel,
+        matching: Regex? = null,
+        atLeast: Int = 1,
+        within: Duration = Duration.INFINITE,
+        handler: suspend Reaction.(LogRecord) -> Unit,
+    ): Unit =
+        owner.add(EventPatterns.logged(Target.Logs, "anyone", level, matching, atLeast, within).rule(guards, handler))
+
+    /** [level] at [LogLevel.ERROR], for a script's bare `level(ERROR)` (see [LogLevelNames]). */
+    public fun level(
+        level: LifeCycle,
+        matching: Regex? = null,
+        atLeast: Int = 1,
+        within: Duration = Duration.INFINITE,
+        handler: suspend Reaction.(LogRecord) -> Unit,
+    ): Unit = level(LogLevelNames.of(level), matching, atLeast, within, handler)
 }

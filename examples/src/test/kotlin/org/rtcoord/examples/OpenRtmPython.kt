@@ -71,6 +71,9 @@ class OpenRtmPython private constructor(private val python: String) : OpenRtmIns
         }
     }
 
+    /** OpenRTM-aist-Python's Fluentd logger plugin in the installation, which imports `fluent-logger`. */
+    fun fluentLogger(): Path = examples().resolveSibling("ext/logger/fluentlogger/FluentLogger.py")
+
     /** The directory of OpenRTM-aist-Python's own examples in the installation. */
     fun examples(): Path =
         Paths.get(

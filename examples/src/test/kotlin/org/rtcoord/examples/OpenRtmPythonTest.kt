@@ -33,4 +33,8 @@ class OpenRtmPythonTest {
     @Test
     fun `modes - with a laser that stays broken the system runs on odometry, and on the laser again once it is repaired`():
         Unit = OpenRtmScenarios.modes(OpenRtmPython.named())
+
+    @Test
+    fun `logs - a standalone component's warning, sent by OpenRTM's FluentLogger, is its LogRecord and fires a rule`():
+        Unit = OpenRtmPythonLogs.logs(OpenRtmPython.named())
 }

@@ -1,5 +1,6 @@
 package org.rtcoord.sim
 
+import java.net.InetSocketAddress
 import java.util.concurrent.CopyOnWriteArrayList
 import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.RuntimeManager
@@ -39,12 +40,24 @@ private constructor(
      * Makes the master start a slave when none of its slaves can create a type, as OpenRTM-aist's runs its
      * `manager_cmd`: a new process whose slave can load every one of [types].
      */
+    /** Where every process sends its components' log records, those of slaves started later too; null: nowhere. */
+    @Volatile private var logs: InetSocketAddress? = null
+
+    /** Makes every process, and every slave started later, send its components' log records to [address]. */
+    fun sendLogsTo(address: InetSocketAddress) {
+        logs = address
+        master?.sendLogsTo(address)
+        slaveList.forEach { it.sendLogsTo(address) }
+        loose?.sendLogsTo(address, LOOSE_MANAGER)
+    }
+
     fun startSlavesOnDemand(types: Collection<ComponentType>) {
         val master = checkNotNull(master) { "no master to start slaves" }
         master.manager.managerCommand = { requested ->
             // `%p` is the new process's pid: here the JVM's, followed by a count.
             val name = requested.replace("%p", "${ProcessHandle.current().pid()}${slaveList.size + 1}")
             val slave = SimulatedManager.start(naming, host, name, types, loaded = emptySet(), hosts = emptyList())
+            logs?.let(slave::sendLogsTo)
             slaveList += slave
             master.manager.adopt(slave.manager)
         }
@@ -55,6 +68,9 @@ private constructor(
     }
 
     companion object {
+        /** The manager a process of components no manager hosts names in its records: OpenRTM-aist's default. */
+        const val LOOSE_MANAGER = "manager"
+
         /**
          * Starts the processes of [topology] on the naming service at [naming], their ORBs on [host]: each slave can
          * create the types it lists (looked up in [types]), those of the components it hosts ([instances] says which)
@@ -104,6 +120,9 @@ private constructor(
 internal class SimulatedManager(val manager: RuntimeManager, val process: RuntimeProcess, val hosts: List<String>) {
     val name: String
         get() = manager.name
+
+    /** Makes its process send its components' log records to [address], naming this manager. */
+    fun sendLogsTo(address: InetSocketAddress) = process.sendLogsTo(address, name)
 
     companion object {
         /**

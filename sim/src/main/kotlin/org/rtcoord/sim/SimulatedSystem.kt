@@ -1,5 +1,6 @@
 package org.rtcoord.sim
 
+import java.net.InetSocketAddress
 import java.nio.file.Path
 import org.rtcoord.datatypes.IdlFiles
 import org.rtcoord.profile.ProfileFormatException
@@ -65,6 +66,17 @@ private constructor(
             ?: throw IllegalArgumentException(
                 "no component $instanceName in the simulated system (components: ${components.joinToString { it.instanceName }.ifEmpty { "none" }})"
             )
+
+    /**
+     * Makes its components send their log records ([RuntimeComponent.log]) to the Fluentd forward input at [address]
+     * (`host:port`), each process naming its manager, as OpenRTM-aist's do when their `rtc.conf` names a fluentd log
+     * stream.
+     */
+    public fun sendLogsTo(address: String) {
+        processes.sendLogsTo(
+            InetSocketAddress(address.substringBeforeLast(':'), address.substringAfterLast(':').toInt())
+        )
+    }
 
     /** Whether the system has a master manager, and it was not killed. */
     public val hasLiveManager: Boolean

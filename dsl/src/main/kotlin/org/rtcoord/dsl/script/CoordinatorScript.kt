@@ -1,3 +1,5 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl.script
 
 import java.nio.file.Path
@@ -10,6 +12,7 @@ import kotlin.script.experimental.api.defaultImports
 import kotlin.script.experimental.api.ide
 import kotlin.script.experimental.jvm.dependenciesFromCurrentContext
 import kotlin.script.experimental.jvm.jvm
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
 
@@ -37,6 +40,7 @@ public object CoordinatorScriptCompilation :
             "kotlin.time.Duration.Companion.seconds",
             "kotlin.time.Duration.Companion.minutes",
             "kotlinx.coroutines.delay",
+            *LogLevelNames.imports.toTypedArray(),
         )
         jvm {
             dependenciesFromCurrentContext(wholeClasspath = true)

@@ -1,4 +1,11 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.sim.test
+
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.LifeCycle
+import org.rtcoord.LogLevel
+import org.rtcoord.dsl.script.LogLevelNames
 
 /**
  * The faults and actions an `at(...) { }` step applies to the simulated system, by component name (`laser0` or
@@ -38,4 +45,14 @@ public interface Faults {
 
     /** The naming service restarts with its bindings. */
     public fun restartNaming()
+
+    /**
+     * The component logs [message] at [level], as its OpenRTM-aist logger would: the record reaches the coordinator's
+     * tree through its log input, from the component (`log("laser0", WARN, "scan timeout")`).
+     */
+    public fun log(component: String, level: LogLevel, message: String)
+
+    /** [log] at [LogLevel.ERROR], for a scenario's bare `log("laser0", ERROR, ...)` (see [LogLevelNames]). */
+    public fun log(component: String, level: LifeCycle, message: String): Unit =
+        log(component, LogLevelNames.of(level), message)
 }

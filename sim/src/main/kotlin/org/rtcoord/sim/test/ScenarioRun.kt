@@ -26,6 +26,7 @@ import org.rtcoord.ContextRunningChanged
 import org.rtcoord.EventOptions
 import org.rtcoord.FsmStateChanged
 import org.rtcoord.HeartbeatLost
+import org.rtcoord.LogRecord
 import org.rtcoord.ManagerComponentChanged
 import org.rtcoord.ManagerDied
 import org.rtcoord.ManagerReturned
@@ -116,6 +117,8 @@ internal class ScenarioRun(
     }
 
     private suspend fun coordinate(system: SimulatedSystem, tree: RtcTree): List<TestFailure> = coroutineScope {
+        // The components' log records reach the tree as OpenRTM-aist's reach a Fluentd input: a scenario's `log` step.
+        system.sendLogsTo(tree.listenForLogs("127.0.0.1:0").address)
         val coordination =
             try {
                 scripts.load(test.coordinatorShown, test.args, tree.config)
@@ -398,6 +401,7 @@ internal class ScenarioRun(
                 Recovered::class.java,
                 NameServerLost::class.java,
                 NameServerReturned::class.java,
+                LogRecord::class.java,
             )
     }
 }

@@ -1,5 +1,6 @@
 package org.rtcoord.sim.test
 
+import org.rtcoord.LogLevel
 import org.rtcoord.sim.SimulatedSystem
 
 /**
@@ -41,4 +42,9 @@ internal class SimFaults(private val system: SimulatedSystem, private val applie
     override fun killManager(name: String) = fault("killManager $name") { system.killManager(name) }
 
     override fun restartNaming() = fault("restartNaming") { system.restartNaming() }
+
+    override fun log(component: String, level: LogLevel, message: String) =
+        fault("log $component $level \"$message\"") {
+            check(named(component).log(level.name, message)) { "$component could not send its log record" }
+        }
 }

@@ -1,3 +1,5 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.sim.test
 
 import java.nio.file.Path
@@ -10,6 +12,8 @@ import kotlin.script.experimental.api.defaultImports
 import kotlin.script.experimental.api.ide
 import kotlin.script.experimental.jvm.dependenciesFromCurrentContext
 import kotlin.script.experimental.jvm.jvm
+import org.rtcoord.InternalRtcoordApi
+import org.rtcoord.dsl.script.LogLevelNames
 
 /**
  * The script definition of `*.test.kts` coordinator tests: the body is a [CoordinatorTest], with the core API,
@@ -32,6 +36,7 @@ public object TestScriptCompilation :
             "kotlin.time.Duration.Companion.milliseconds",
             "kotlin.time.Duration.Companion.seconds",
             "kotlin.time.Duration.Companion.minutes",
+            *LogLevelNames.imports.toTypedArray(),
         )
         jvm {
             dependenciesFromCurrentContext(wholeClasspath = true)
