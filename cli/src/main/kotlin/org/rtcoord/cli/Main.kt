@@ -86,6 +86,7 @@ internal val SUBCOMMANDS: Map<String, () -> CliktCommand> =
         "mgr" to { MgrCommand() },
         "del" to { DelCommand() },
         "watch" to { WatchCommand() },
+        "logs" to { LogsCommand() },
         "print" to { PrintCommand() },
         "graph" to { GraphCommand() },
         "serve" to { ServeCommand() },

@@ -4,6 +4,7 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.default
 import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
 import com.github.ajalt.clikt.parameters.types.path
 import org.rtcoord.EventOptions
 import org.rtcoord.WatchMode
@@ -33,10 +34,13 @@ class RecordCommand : TreeCommand("record") {
 
     private val duration by option("--for", metavar = "DURATION", help = "Stop after DURATION.").duration()
 
+    private val logInput by LogInputOptions()
+
     override suspend fun execute() {
         val top = systemTop(path)
         val events = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
         StopSignals().use { signals ->
+            logInput.start(tree)?.let { confirm("receiving log records on ${it.address}") }
             LiveView(tree, top, null, events, operable = false).use { view ->
                 view.start()
                 LiveRecorder.start(view, file).use {

@@ -83,6 +83,7 @@ class RunCommand : TreeCommand("run") {
     private val serve by
         option("--serve", help = "Serve a live view of the system and the coordinator (see rtcoord serve).").flag()
     private val serving by ServeOptions(prefix = "serve-")
+    private val logInput by LogInputOptions()
 
     override suspend fun execute() {
         val coordination =
@@ -121,6 +122,7 @@ class RunCommand : TreeCommand("run") {
                 lines.dropLast(1).forEach { echo("rtcoord: $it", err = true) }
                 fail(lines.lastOrNull() ?: "$script: ${explain(e)}", e)
             }
+            logInput.start(tree)?.let { confirm("${now()} receiving log records on ${it.address}") }
             confirm("${now()} coordinating:")
             coordination.description.forEach { confirm("  $it") }
             if (serve) {

@@ -46,6 +46,7 @@ class ServeCommand : TreeCommand("serve") {
         argument("PATH", help = "A name server, context or manager; default: every name server given.").default("/")
 
     private val serving by ServeOptions()
+    private val logInput by LogInputOptions()
 
     private val poll by
         option("--poll", metavar = "PERIOD", help = "Poll every PERIOD instead of taking pushed events.").duration()
@@ -92,6 +93,7 @@ class ServeCommand : TreeCommand("serve") {
         serving.settings().exposure()?.let { echo("rtcoord: warning: $it", err = true) }
         val events = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
         StopSignals().use { signals ->
+            logInput.start(tree)?.let { echo("serve: receiving log records on ${it.address}") }
             LiveService.start(tree, top, null, events, serving.settings()) { echo("serve: $it") }
                 .use { service ->
                     val picture = screenshot

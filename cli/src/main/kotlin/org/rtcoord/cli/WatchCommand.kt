@@ -3,6 +3,7 @@ package org.rtcoord.cli
 import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.groups.provideDelegate
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
 import kotlinx.coroutines.channels.Channel
@@ -38,6 +39,8 @@ class WatchCommand : TreeCommand("watch") {
             "rtcoord --json watch /localhost/host.host_cxt | jq .event" to "one JSON object per line",
             "rtcoord watch --data /localhost/host.host_cxt/laser0.rtc" to
                 "the laser's events and the rate of its scans, every second",
+            "rtcoord watch --logs /localhost/host.host_cxt" to
+                "the context's events, and the log records its components send to 127.0.0.1:24224",
         )
 
     private val paths by argument("PATH", help = "Components, naming contexts or managers.").multiple(required = true)
@@ -56,6 +59,17 @@ class WatchCommand : TreeCommand("watch") {
             )
             .flag()
 
+    private val logs by
+        option(
+                "--logs",
+                help =
+                    "Also receive the components' log records and print them among the events (on " +
+                        "${LogInputOptions.DEFAULT_ADDRESS} unless --logs-listen says where).",
+            )
+            .flag()
+
+    private val input by LogInputOptions()
+
     override suspend fun execute() {
         val options = poll?.let { EventOptions(mode = WatchMode.POLL, pollPeriod = it) } ?: EventOptions()
         StopSignals().use { signals ->
@@ -70,6 +84,9 @@ class WatchCommand : TreeCommand("watch") {
                 events.send(it)
             }
             val rates = if (data) PortRates.tap(nodes) else null
+            input.start(tree, LogInputOptions.DEFAULT_ADDRESS.takeIf { logs })?.let { listening ->
+                echo("${timestamp(System.currentTimeMillis())} receiving log records on ${listening.address}")
+            }
             coroutineScope {
                 val printing = launch {
                     for (event in events) if (session.json) echo(OneLineJson.encodeToString(EventJson.of(event)))
