@@ -5,10 +5,13 @@ import java.util.concurrent.Executor
 import java.util.function.Consumer
 import java.util.function.Predicate
 import kotlinx.coroutines.flow.toList
+import org.jspecify.annotations.Nullable
 import org.rtcoord.ConnectorSnapshot
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventListener
 import org.rtcoord.EventOptions
+import org.rtcoord.LogInput
+import org.rtcoord.LogRecord
 import org.rtcoord.NameServerNode
 import org.rtcoord.NamingDirectory
 import org.rtcoord.RootNode
@@ -284,6 +287,17 @@ public class JavaTree(
      */
     public fun subscribeWatching(executor: Executor, listener: EventListener<RtcEvent>): Subscription =
         tree.onWatching(JavaListenerCall(listener, executor, RtcEvent::class.java))
+
+    /**
+     * Starts a log input on [address] (`host:port`, port 0 for any free one) that OpenRTM-aist's components send their
+     * log records to, each a [LogRecord] event to [subscribe] to; with [sharedKey], senders must pass Fluentd's
+     * shared-key handshake (see [RtcTree.listenForLogs]). Closed with the tree.
+     *
+     * @throws java.io.IOException when it cannot listen there, naming the address.
+     */
+    @JvmOverloads
+    public fun listenForLogs(address: String = "127.0.0.1:24224", sharedKey: @Nullable String? = null): LogInput =
+        tree.listenForLogs(address, sharedKey)
 
     /** The tree's model of the system now, read without a remote call (see [RtcTree.snapshot]). */
     public fun snapshot(): SystemSnapshot = tree.snapshot()

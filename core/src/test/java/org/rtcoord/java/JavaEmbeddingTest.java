@@ -7,6 +7,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.rtcoord.ConnectorSnapshot;
 import org.rtcoord.EventOptions;
 import org.rtcoord.LifeCycle;
+import org.rtcoord.LogInput;
+import org.rtcoord.LogRecord;
 import org.rtcoord.NodeKind;
 import org.rtcoord.NotFoundException;
 import org.rtcoord.ParameterChanged;
@@ -20,6 +22,7 @@ import org.rtcoord.TransitionOutcome;
 import org.rtcoord.TreeConfig;
 import org.rtcoord.WatchMode;
 import org.rtcoord.fixtures.Await;
+import org.rtcoord.runtime.FluentLogSender;
 import org.rtcoord.runtime.RuntimeProcess;
 import org.rtcoord.runtime.RtSystem;
 import org.rtcoord.runtime.Scenarios;
@@ -29,6 +32,7 @@ import org.rtcoord.profile.ProfileRefusedException;
 import org.rtcoord.profile.RtsProfile;
 import org.rtcoord.profile.RtsProfiles;
 
+import java.net.InetSocketAddress;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
@@ -228,6 +232,24 @@ class JavaEmbeddingTest {
             }
             ui.submit(() -> { }).get(10, TimeUnit.SECONDS);
             assertEquals(List.of(), List.copyOf(seen));
+        } finally {
+            ui.shutdownNow();
+        }
+    }
+
+    @Test
+    void receivesComponentsLogRecordsAsEvents() throws Exception {
+        ExecutorService ui = Executors.newSingleThreadExecutor(runnable -> new Thread(runnable, "ui thread"));
+        LogInput input = tree.listenForLogs("127.0.0.1:0");
+        int port = Integer.parseInt(input.getAddress().substring(input.getAddress().lastIndexOf(':') + 1));
+        try (FluentLogSender sender = new FluentLogSender(new InetSocketAddress("127.0.0.1", port), "manager_slave", "rtclog")) {
+            BlockingQueue<String> seen = new LinkedBlockingQueue<>();
+            try (Subscription records = tree.subscribe(path("laser0.rtc"), LogRecord.class, ui,
+                    record -> seen.add(threadKind() + ": " + record.getLevel() + " " + record.getMessage()))) {
+                assertTrue(sender.send("laser0", "WARN", "scan timeout"));
+                assertEquals("ui thread: WARN scan timeout", seen.poll(10, TimeUnit.SECONDS));
+                assertEquals(1, input.getReceived());
+            }
         } finally {
             ui.shutdownNow();
         }
