@@ -31,6 +31,7 @@ internal class Bench(private val options: BenchOptions, private val installation
                     Benchmark.TEST -> TestBench(options, installation, report).run()
                     Benchmark.SIMULATION -> SimulationBench(options, installation, report).run()
                     Benchmark.EXPLORE -> ExploreBench(options, installation, report).run()
+                    Benchmark.LOGS -> LogsBench(options, report).run()
                 }
             } catch (e: Exception) {
                 report.skipped(benchmark.label, "failed: ${e.message ?: e.javaClass.simpleName}")

@@ -18,6 +18,7 @@ internal enum class Benchmark(val label: String) {
     TEST("test"),
     SIMULATION("simulation"),
     EXPLORE("explore"),
+    LOGS("logs"),
 }
 
 /**
@@ -75,6 +76,14 @@ internal data class BenchOptions(
     val simulationRepetitions: Int = 10,
     /** Runs of `rtcoord test --explore` per processor used. */
     val exploreRuns: Int = 20,
+    /** Connections sending log records, all together at [logRate] records a second. */
+    val logSenders: Int = 100,
+    val logRate: Int = 10_000,
+    /** How long the log records' CPU is sampled, after [logWarmup] at the same rate. */
+    val logWindow: Duration = 10.seconds,
+    val logWarmup: Duration = 5.seconds,
+    /** Records sent while a slow view holds its first one. */
+    val logFlood: Int = 200_000,
 ) {
     companion object {
         const val USAGE =
@@ -83,7 +92,7 @@ internal data class BenchOptions(
 Runs rtcoord's benchmarks and prints one table (min/median/max, ratios against rtshell and rtctree measured
 in the same run). Results are printed, never stored.
   --quick       smaller systems, fewer repetitions, 10 s monitoring windows (a few minutes in all)
-  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data, test, simulation, explore
+  --only        some of: micro, discovery, reaction, monitoring, roundtrip, memory, startup, profile, data, test, simulation, explore, logs
   --seconds S   the monitoring window (default 60, quick 10)
   --launcher-jvm  the benchmarks' JVM takes the options the rtcoord launcher gives its commands (C1 only),
                 not the JDK's defaults (C1 then C2, as a host application embedding the library runs)"""
@@ -177,6 +186,11 @@ in the same run). Results are printed, never stored.
                     simulationSize = 10,
                     simulationRepetitions = 1,
                     exploreRuns = 1,
+                    logSenders = 10,
+                    logRate = 1000,
+                    logWindow = 1.seconds,
+                    logWarmup = 500.milliseconds,
+                    logFlood = 20_000,
                 )
 
         /** Parses the command line; a problem is a one-line [IllegalArgumentException]. */
