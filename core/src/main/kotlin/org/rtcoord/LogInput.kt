@@ -13,7 +13,10 @@ public interface LogInput : AutoCloseable {
 
     /**
      * What it refused, counted by reason (`malformed`, `too-large`, `wrong-key`, `flood`, `incomplete-frame`). Each
-     * refusal is also logged, at most once a minute for each sending host.
+     * refusal is also logged, at most once a minute for each sending host. Records it took but dropped, the oldest
+     * first, so that a flood costs bounded memory, are counted too, and logged at most once a minute: `dropped`, more
+     * than 10,000 waiting to be published; `slow-handler`, more than 10,000 waiting for a handler of records alone (the
+     * tree's handlers, counted on each of its inputs).
      */
     public fun refusals(): Map<String, Long>
 

@@ -1,6 +1,8 @@
 package org.rtcoord
 
 import java.net.InetSocketAddress
+import java.util.concurrent.atomic.AtomicInteger
+import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -8,6 +10,7 @@ import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.assertThrows
 import org.rtcoord.runtime.ComponentType
+import org.rtcoord.fixtures.await
 import org.rtcoord.runtime.FluentLogSender
 import org.rtcoord.runtime.RuntimeProcess
 
@@ -142,6 +145,30 @@ class LogRecordsTest {
     }
 
     @Test
+    fun `a handler too slow for the records loses the oldest, counted, and holds no more than its queue`(): Unit =
+        runBlocking {
+            val release = CompletableDeferred<Unit>()
+            val taken = AtomicInteger()
+            tree.on(tree.root, LogRecord::class.java) {
+                taken.incrementAndGet()
+                release.await()
+            }
+            val sent = QUEUE + 2000
+            val laser = sender(SLAVE)
+            repeat(sent) { assertTrue(laser.send("laser0", "INFO", "scan $it")) }
+
+            // The handler holds the first; of the rest, the queue keeps the newest and every other is counted.
+            fun lost() = input.refusals().filterKeys { it == "dropped" || it == "slow-handler" }.values.sum()
+            await("every record published or dropped") {
+                input.received == sent.toLong() && lost() == sent - 1L - QUEUE
+            }
+            assertTrue((input.refusals()["slow-handler"] ?: 0) > 0, "the handler's drops: ${input.refusals()}")
+            assertEquals(1, taken.get())
+            release.complete(Unit)
+            await("the queue handed over") { taken.get() == QUEUE + 1 }
+        }
+
+    @Test
     fun `an address that is no address is refused, naming it`() {
         val e = assertThrows<IllegalArgumentException> { tree.listenForLogs("localhost") }
         assertEquals("log input address 'localhost': expected HOST:PORT", e.message)
@@ -157,5 +184,7 @@ class LogRecordsTest {
 
         /** The manager of a standalone component's process, in no naming context and no master's listing. */
         const val STANDALONE = "warner_manager"
+        /** How many records wait for a slow handler of records. */
+        const val QUEUE = 10_000
     }
 }

@@ -2,6 +2,7 @@ package org.rtcoord.internal.events
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.launch
 import org.rtcoord.Overlap
@@ -18,19 +19,30 @@ internal class EventSink(
     private val accepts: (RtcEvent) -> Boolean,
     overlap: Overlap,
     private val handler: suspend (RtcEvent) -> Unit,
+    /**
+     * With [Overlap.QUEUE], the most events that wait for the handler, the oldest dropped and told to [dropped] when
+     * more come: for streams the handler need not see whole (log records), so that a slow handler costs no more memory.
+     */
+    bound: Int? = null,
+    private val dropped: () -> Unit = {},
 ) {
+    @Volatile private var closed = false
+
     private val failures =
         checkNotNull(scope.coroutineContext[ListenerFailures]) { "event sinks deliver in a tree's scope" }
     private val listener: Any = (handler as? StandIn)?.listener ?: handler
     private val pending =
-        Channel<RtcEvent>(
-            when (overlap) {
-                Overlap.QUEUE -> Channel.UNLIMITED
-                Overlap.LATEST -> Channel.CONFLATED
-                // Only a handler waiting for its next event takes one; while it runs, offers fail.
-                Overlap.SKIP -> Channel.RENDEZVOUS
-            }
-        )
+        if (overlap == Overlap.QUEUE && bound != null)
+            Channel<RtcEvent>(bound, BufferOverflow.DROP_OLDEST) { if (!closed) dropped() }
+        else
+            Channel(
+                when (overlap) {
+                    Overlap.QUEUE -> Channel.UNLIMITED
+                    Overlap.LATEST -> Channel.CONFLATED
+                    // Only a handler waiting for its next event takes one; while it runs, offers fail.
+                    Overlap.SKIP -> Channel.RENDEZVOUS
+                }
+            )
     private val delivery = scope.launch {
         for (event in pending) {
             try {
@@ -48,6 +60,7 @@ internal class EventSink(
     }
 
     fun close() {
+        closed = true
         pending.close()
         delivery.cancel()
     }

@@ -30,6 +30,7 @@ import org.rtcoord.WatchMethodChanged
 import org.rtcoord.WrongKindException
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
+import org.rtcoord.internal.logs.LogRecords
 import org.rtcoord.label
 
 /**
@@ -72,12 +73,17 @@ internal class Watcher(private val core: TreeCore) {
         options: EventOptions,
         handler: suspend (RtcEvent) -> Unit,
     ): Subscription {
+        val recordsOnly = types != null && types.all { LogRecord::class.java.isAssignableFrom(it) }
         val sink =
             EventSink(
                 core.scope,
                 { event -> types == null || types.any { it.isInstance(event) } },
                 options.overlap,
                 handler,
+                // A handler of records alone that falls behind loses the oldest, counted: records may come faster
+                // than any handler takes them, and must not fill the heap.
+                bound = if (recordsOnly) LogRecords.HANDLER_QUEUE else null,
+                dropped = core.logs::droppedByHandler,
             )
         val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
@@ -86,7 +92,7 @@ internal class Watcher(private val core: TreeCore) {
         if (types == null || types.any { it.isAssignableFrom(LogRecord::class.java) }) {
             releases += core.logs.add(sink, target)
             // Records come from the log inputs, not from the components: hearing them alone watches nothing.
-            if (types != null && types.all { LogRecord::class.java.isAssignableFrom(it) }) {
+            if (recordsOnly) {
                 if (target !is ComponentNode && target !is DirectoryNode)
                     throw WrongKindException(target.path.toString(), "component or directory", target.kind.label())
                 return Subscription {

@@ -5,7 +5,6 @@ import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicLong
 import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.channels.Channel
-import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
@@ -16,11 +15,11 @@ import org.rtcoord.LogRecord
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.RootNode
-import org.rtcoord.RtcException
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.componentsFound
 import org.rtcoord.internal.componentsListed
 import org.rtcoord.internal.events.EventSink
+import org.slf4j.LoggerFactory
 
 /**
  * The tree's log records: its inputs, who each record is from ([LogSenders]), and the registrations that hear them. A
@@ -37,6 +36,30 @@ internal class LogRecords(private val core: TreeCore) {
     /** When the listings were last walked for a sender no listing showed; [Long.MIN_VALUE]: never. */
     private var relisted = Long.MIN_VALUE
     private val relisting = Mutex()
+
+    /** Records dropped, oldest first, because a handler of records alone fell [HANDLER_QUEUE] behind. */
+    private val handlerDrops = AtomicLong()
+    /** When a slow handler's drops were last said; [Long.MIN_VALUE]: never. */
+    private val dropsSaid = AtomicLong(Long.MIN_VALUE)
+
+    /** Counts a record a slow handler lost, and says so (see [sayDrops]). */
+    fun droppedByHandler() {
+        val count = handlerDrops.incrementAndGet()
+        sayDrops {
+            "a handler of log records is too slow for them: the oldest of the $HANDLER_QUEUE waiting for it are dropped ($count so far)"
+        }
+    }
+
+    /**
+     * Says [what] was dropped, at most once a minute for the tree's inputs and handlers together: drops come in floods.
+     */
+    private inline fun sayDrops(what: () -> String) {
+        val now = core.clock.now()
+        val said = dropsSaid.get()
+        if ((said == Long.MIN_VALUE || now - said >= SAY_DROPS_MILLIS) && dropsSaid.compareAndSet(said, now)) {
+            LoggerFactory.getLogger("org.rtcoord.logs").warn(what())
+        }
+    }
 
     /** Hands [sink] the records from [target] or from below it; returns what ends that. */
     fun add(sink: EventSink, target: Node): () -> Unit {
@@ -69,19 +92,7 @@ internal class LogRecords(private val core: TreeCore) {
             val now = core.clock.now()
             if (relisted != Long.MIN_VALUE && now - relisted < RELIST_MILLIS) return null
             relisted = now
-            // Profiles too, each read once: a standalone Python component's is the only place its manager's name is.
-            val unread = componentsFound(core.nameServers()).filter { it.component.snapshot.value == null }
-            coroutineScope {
-                unread.forEach { node ->
-                    launch {
-                        try {
-                            node.snapshot()
-                        } catch (e: RtcException) {
-                            // Unreachable now: the sender is not this one, or is found at a later walk.
-                        }
-                    }
-                }
-            }
+            componentsFound(core.nameServers())
             senders.forget()
         }
         return senders.senderOf(logger, manager)
@@ -94,18 +105,15 @@ internal class LogRecords(private val core: TreeCore) {
          * Records waiting for their sender to be found, in the order they came; the oldest dropped, and counted, when
          * more come than can wait, so that a flood costs no more than this much memory.
          */
-        // Named as asked (the port may be 0): the input may refuse a sender before it says which port it took.
-        private val refusals = LogRefusals("${listen.hostString}:${listen.port}", core.clock::now)
-        private val pending = Channel<ForwardEntry>(PENDING, BufferOverflow.DROP_OLDEST) { dropped.incrementAndGet() }
-        private val forward =
-            ForwardInput(
-                core.scope,
-                ForwardSettings(listen, sharedKey),
-                ::received,
-                { sender, refusal, reason -> refusals.refused(sender, refusal, reason) },
-            )
-
-        // Started once the input listens: an address it cannot take leaves nothing running.
+        private val pending =
+            Channel<ForwardEntry>(PENDING, BufferOverflow.DROP_OLDEST) {
+                val count = dropped.incrementAndGet()
+                if (!closed)
+                    sayDrops {
+                        "log input $address receives records faster than they are published: the oldest of the $PENDING waiting are dropped ($count so far)"
+                    }
+            }
+        @Volatile private var closed = false
         private val publishing =
             core.scope.launch {
                 for (entry in pending) {
@@ -115,16 +123,25 @@ internal class LogRecords(private val core: TreeCore) {
                     }
                 }
             }
+        private val forward =
+            ForwardInput(
+                core.scope,
+                ForwardSettings(listen, sharedKey),
+                ::received,
+                { sender, refusal, reason -> refusals.refused(sender, refusal, reason) },
+            )
 
         override val address: String = "${forward.address.hostString}:${forward.address.port}"
+
+        // Lazy: the input may refuse a sender before this constructor has returned.
+        private val refusals by lazy { LogRefusals(address, core.clock::now) }
 
         override val received: Long
             get() = count.get()
 
-        override fun refusals(): Map<String, Long> = buildMap {
-            forward.refusals().forEach { (refusal, count) -> put(refusal.id, count) }
-            dropped.get().takeIf { it > 0 }?.let { put(DROPPED, it) }
-        }
+        override fun refusals(): Map<String, Long> =
+            forward.refusals().mapKeys { it.key.id } +
+                listOf(DROPPED to dropped.get(), SLOW_HANDLER to handlerDrops.get()).filter { it.second > 0 }
 
         private fun received(entry: ForwardEntry) {
             count.incrementAndGet()
@@ -132,6 +149,7 @@ internal class LogRecords(private val core: TreeCore) {
         }
 
         override fun close() {
+            closed = true
             forward.close()
             pending.close()
             publishing.cancel()
@@ -139,22 +157,31 @@ internal class LogRecords(private val core: TreeCore) {
         }
     }
 
-    private companion object {
+    companion object {
+        /** How many records may wait for a handler of records alone before the oldest are dropped. */
+        const val HANDLER_QUEUE = 10_000
+
+        /** What [LogInput.refusals] calls records a handler too slow for them lost (the tree's, for each input). */
+        private const val SLOW_HANDLER = "slow-handler"
+
+        /** How often at most a slow handler's drops are said. */
+        private const val SAY_DROPS_MILLIS = 60_000L
+
         /** How many records may wait for their sender to be found before the oldest are dropped. */
-        const val PENDING = 10_000
+        private const val PENDING = 10_000
 
         /** What [LogInput.refusals] calls records dropped because more came than could wait. */
-        const val DROPPED = "dropped"
+        private const val DROPPED = "dropped"
 
         /** How often at most the listings are walked again for a sender they do not show. */
-        const val RELIST_MILLIS = 5_000L
+        private const val RELIST_MILLIS = 5_000L
 
         /**
          * Which records a registration on [target] hears: a component's own; a manager's, and those of the components
          * it hosts; a naming context's or name server's, from the components and managers listed below it; the root's,
          * every record, including those from senders the tree has not listed.
          */
-        fun coverage(target: Node): (LogRecord) -> Boolean =
+        private fun coverage(target: Node): (LogRecord) -> Boolean =
             when (target) {
                 is RootNode -> { _ ->
                     true
