@@ -15,8 +15,10 @@ public abstract class ValueObject @InternalRtcoordApi protected constructor() {
      */
     @JvmSynthetic protected abstract fun fields(): ValueFields
 
+    // The same object is equal without its fields made: a StateFlow compares every value it is handed with the one it
+    // holds, as often as a rule fires.
     final override fun equals(other: Any?): Boolean =
-        other is ValueObject && other.javaClass == javaClass && fields() == other.fields()
+        other === this || (other is ValueObject && other.javaClass == javaClass && fields() == other.fields())
 
     final override fun hashCode(): Int = fields().hashCode()
 

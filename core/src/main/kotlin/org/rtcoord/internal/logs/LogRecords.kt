@@ -1,13 +1,18 @@
 package org.rtcoord.internal.logs
 
 import java.net.InetSocketAddress
+import java.util.Collections
+import java.util.IdentityHashMap
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
+import kotlinx.coroutines.yield
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.LogInput
@@ -15,6 +20,7 @@ import org.rtcoord.LogRecord
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.RootNode
+import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.componentsFound
 import org.rtcoord.internal.componentsListed
@@ -63,7 +69,7 @@ internal class LogRecords(private val core: TreeCore) {
 
     /** Hands [sink] the records from [target] or from below it; returns what ends that. */
     fun add(sink: EventSink, target: Node): () -> Unit {
-        val registration = Registration(sink, coverage(target))
+        val registration = Registration(sink, coverage(target, core.clock::now))
         registrations += registration
         return { registrations -= registration }
     }
@@ -114,13 +120,27 @@ internal class LogRecords(private val core: TreeCore) {
                     }
             }
         @Volatile private var closed = false
+        /**
+         * Publishes what waits, then rests [LINGER] before taking more: a record that comes alone goes at once, and a
+         * stream wakes this coroutine, and the handlers' after it, once a linger, not once a record (at 10,000 records
+         * a second, the wake-ups, not the records, were most of the cost).
+         */
         private val publishing =
             core.scope.launch {
-                for (entry in pending) {
-                    val record = logRecordOf(entry, senderOf(entry) ?: root)
-                    core.model.publish(listOf(record)) { event ->
+                val batch = ArrayList<LogRecord>()
+                for (first in pending) {
+                    var entry: ForwardEntry? = first
+                    while (entry != null) {
+                        batch += logRecordOf(entry, senderOf(entry) ?: root)
+                        entry = if (batch.size < MAX_BATCH) pending.tryReceive().getOrNull() else null
+                    }
+                    core.model.publish(batch) { event ->
                         registrations.forEach { if (it.covers(event as LogRecord)) it.sink.offer(event) }
                     }
+                    val full = batch.size == MAX_BATCH
+                    batch.clear()
+                    // A full batch leaves more waiting: rest only once the stream is taken in.
+                    if (full) yield() else delay(LINGER)
                 }
             }
         private val forward =
@@ -173,15 +193,24 @@ internal class LogRecords(private val core: TreeCore) {
         /** What [LogInput.refusals] calls records dropped because more came than could wait. */
         private const val DROPPED = "dropped"
 
+        /** The most records published at once: the model's lock is held while a batch is handed out. */
+        private const val MAX_BATCH = 1000
+
+        /** How long the publisher rests after a batch: the most a record in a stream waits for it. */
+        private val LINGER = 5.milliseconds
+
         /** How often at most the listings are walked again for a sender they do not show. */
         private const val RELIST_MILLIS = 5_000L
+
+        /** How long what a directory's listings hold is taken as known, as [LogSenders] keeps its answers. */
+        private const val BELOW_MILLIS = 1_000L
 
         /**
          * Which records a registration on [target] hears: a component's own; a manager's, and those of the components
          * it hosts; a naming context's or name server's, from the components and managers listed below it; the root's,
          * every record, including those from senders the tree has not listed.
          */
-        private fun coverage(target: Node): (LogRecord) -> Boolean =
+        private fun coverage(target: Node, now: () -> Long): (LogRecord) -> Boolean =
             when (target) {
                 is RootNode -> { _ ->
                     true
@@ -189,19 +218,39 @@ internal class LogRecords(private val core: TreeCore) {
                 is ComponentNode -> { record ->
                     (record.source as? ComponentNode)?.isSameComponent(target) == true
                 }
-                is DirectoryNode -> { record ->
-                    below(record.source, target)
-                }
+                is DirectoryNode -> Below(target, now)::covers
                 else -> { _ ->
                     false
                 }
             }
+    }
 
-        private fun below(source: Node, directory: DirectoryNode): Boolean =
-            when (source) {
-                is ComponentNode -> componentsListed(listOf(directory)).any { it.isSameComponent(source) }
+    /**
+     * Whether a record's sender is listed below [directory]: by its path when it is there (a naming context's own
+     * components), else among the components the listings below show (a manager's, reached at their naming context),
+     * walked at most once every [BELOW_MILLIS] for records from elsewhere, which would otherwise walk them each.
+     */
+    private class Below(private val directory: DirectoryNode, private val now: () -> Long) {
+        @Volatile private var listed: Set<ComponentObject> = emptySet()
+        @Volatile private var listedAt = Long.MIN_VALUE
+
+        fun covers(record: LogRecord): Boolean =
+            when (val source = record.source) {
+                is ComponentNode -> source.path.startsWith(directory.path) || source.component in components()
                 is ManagerNode -> source.path.startsWith(directory.path)
                 else -> false
             }
+
+        private fun components(): Set<ComponentObject> {
+            val time = now()
+            if (listedAt == Long.MIN_VALUE || time - listedAt >= BELOW_MILLIS) {
+                listed =
+                    componentsListed(listOf(directory)).mapTo(Collections.newSetFromMap(IdentityHashMap())) {
+                        it.component
+                    }
+                listedAt = time
+            }
+            return listed
+        }
     }
 }
