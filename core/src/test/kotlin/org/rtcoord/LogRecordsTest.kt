@@ -9,8 +9,8 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.assertThrows
-import org.rtcoord.runtime.ComponentType
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.ComponentType
 import org.rtcoord.runtime.FluentLogSender
 import org.rtcoord.runtime.RuntimeProcess
 

@@ -8,6 +8,7 @@ import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.channels.BufferOverflow
 import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
@@ -20,6 +21,7 @@ import org.rtcoord.LogRecord
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.RootNode
+import org.rtcoord.RtcException
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.componentsFound
@@ -98,7 +100,19 @@ internal class LogRecords(private val core: TreeCore) {
             val now = core.clock.now()
             if (relisted != Long.MIN_VALUE && now - relisted < RELIST_MILLIS) return null
             relisted = now
-            componentsFound(core.nameServers())
+            // Profiles too, each read once: a standalone Python component's is the only place its manager's name is.
+            val unread = componentsFound(core.nameServers()).filter { it.component.snapshot.value == null }
+            coroutineScope {
+                unread.forEach { node ->
+                    launch {
+                        try {
+                            node.snapshot()
+                        } catch (e: RtcException) {
+                            // Unreachable now: the sender is not this one, or is found at a later walk.
+                        }
+                    }
+                }
+            }
             senders.forget()
         }
         return senders.senderOf(logger, manager)
@@ -111,6 +125,8 @@ internal class LogRecords(private val core: TreeCore) {
          * Records waiting for their sender to be found, in the order they came; the oldest dropped, and counted, when
          * more come than can wait, so that a flood costs no more than this much memory.
          */
+        // Named as asked (the port may be 0): the input may refuse a sender before it says which port it took.
+        private val refusals = LogRefusals("${listen.hostString}:${listen.port}", core.clock::now)
         private val pending =
             Channel<ForwardEntry>(PENDING, BufferOverflow.DROP_OLDEST) {
                 val count = dropped.incrementAndGet()
@@ -120,10 +136,18 @@ internal class LogRecords(private val core: TreeCore) {
                     }
             }
         @Volatile private var closed = false
+        private val forward =
+            ForwardInput(
+                core.scope,
+                ForwardSettings(listen, sharedKey),
+                ::received,
+                { sender, refusal, reason -> refusals.refused(sender, refusal, reason) },
+            )
         /**
-         * Publishes what waits, then rests [LINGER] before taking more: a record that comes alone goes at once, and a
-         * stream wakes this coroutine, and the handlers' after it, once a linger, not once a record (at 10,000 records
-         * a second, the wake-ups, not the records, were most of the cost).
+         * Started once the input listens, so that an address it cannot take leaves nothing running. Publishes what
+         * waits, then rests [LINGER] before taking more: a record that comes alone goes at once, and a stream wakes
+         * this coroutine, and the handlers' after it, once a linger, not once a record (at 10,000 records a second, the
+         * wake-ups, not the records, were most of the cost).
          */
         private val publishing =
             core.scope.launch {
@@ -143,25 +167,18 @@ internal class LogRecords(private val core: TreeCore) {
                     if (full) yield() else delay(LINGER)
                 }
             }
-        private val forward =
-            ForwardInput(
-                core.scope,
-                ForwardSettings(listen, sharedKey),
-                ::received,
-                { sender, refusal, reason -> refusals.refused(sender, refusal, reason) },
-            )
 
         override val address: String = "${forward.address.hostString}:${forward.address.port}"
-
-        // Lazy: the input may refuse a sender before this constructor has returned.
-        private val refusals by lazy { LogRefusals(address, core.clock::now) }
 
         override val received: Long
             get() = count.get()
 
-        override fun refusals(): Map<String, Long> =
-            forward.refusals().mapKeys { it.key.id } +
-                listOf(DROPPED to dropped.get(), SLOW_HANDLER to handlerDrops.get()).filter { it.second > 0 }
+        override fun refusals(): Map<String, Long> = buildMap {
+            forward.refusals().forEach { (refusal, count) -> put(refusal.id, count) }
+            mapOf(DROPPED to dropped.get(), SLOW_HANDLER to handlerDrops.get()).forEach { (why, count) ->
+                if (count > 0) put(why, count)
+            }
+        }
 
         private fun received(entry: ForwardEntry) {
             count.incrementAndGet()
