@@ -5,6 +5,7 @@
 const token = new URLSearchParams(location.search).get('token');
 const TIMELINE_KEPT = 1000;
 const STATES = ['CREATED', 'INACTIVE', 'ACTIVE', 'ERROR', 'UNKNOWN'];
+const LEVELS = ['FATAL', 'ERROR', 'WARN', 'INFO', 'DEBUG', 'TRACE', 'VERBOSE', 'PARANOID']; // OpenRTM-aist's, most severe first
 const PORT = 10;           // a port's size on screen
 const ROW = 14;            // a port's row on a component
 const TITLE = 20;          // a component's name above its ports
@@ -67,6 +68,7 @@ const cy = cytoscape({
     { selector: 'node.manager', style: { shape: 'hexagon', width: 'data(width)', height: 'data(height)', 'background-color': '#6a1b9a' } },
     { selector: 'node.external', style: { shape: 'round-rectangle', width: 'data(width)', height: 'data(height)', 'background-opacity': 0,
       'border-width': 1, 'border-style': 'dashed', color: '#455a64' } },
+    { selector: 'node.logged-error', style: { 'outline-width': 4, 'outline-color': '#ff1744', 'outline-offset': 2 } },
     { selector: 'node:selected', style: { 'border-width': 3, 'border-color': '#ffb300' } },
     { selector: 'node.faded, edge.faded', style: { opacity: 0.2 } },
     { selector: 'node.match', style: { 'border-width': 3, 'border-color': '#ff6f00' } },
@@ -99,6 +101,7 @@ const view = {
   portsFar: null,            // whether the ports are left out, the view being zoomed out too far to see them
   held: [],                  // timeline entries that came while the timeline was paused
   replay: null,              // the recording replayed, and where in it the page is
+  lastErrors: {},            // path -> the last ERROR or FATAL record it sent (its timeline entry), until a newer one
 };
 window.rtcoord = view;
 
@@ -151,10 +154,10 @@ function elementsOf(network) {
     nodes.push({ group: 'nodes', classes, data: { id, label, parent: parentOf(parent), width, height, ...extra } });
     leaves.push({ id, parent: parentOf(parent), width, height });
   };
-  network.managers.forEach(m => box(m.id, m.name, 11, 26, m.parent, 'manager'));
+  network.managers.forEach(m => box(m.id, m.name, 11, 26, m.parent, 'manager' + loggedClass(m.id)));
   network.components.forEach(c => {
     const shape = componentShape(c);
-    nodes.push({ group: 'nodes', classes: 'component', data: { id: c.id, label: componentLabel(c.name, c.fsm), state: c.state,
+    nodes.push({ group: 'nodes', classes: 'component' + loggedClass(c.id), data: { id: c.id, label: componentLabel(c.name, c.fsm), state: c.state,
       parent: parentOf(c.parent), width: shape.width, height: shape.height } });
     // The ports stick out of the body by half their size: the layout leaves room for them.
     leaves.push({ id: c.id, parent: parentOf(c.parent), width: shape.width + PORT, height: shape.height + PORT / 2 });
@@ -306,9 +309,45 @@ function noteShown(path, state) {
 
 function listComponents() {
   const list = document.getElementById('components');
-  const items = [...view.components.values()].sort((a, b) => a.id.localeCompare(b.id)).map(c =>
-    element('li', { 'data-component': c.id, 'data-state': c.state, title: c.id }, stateBadge(c.state), ' ', c.name));
+  const items = [...view.components.values()].sort((a, b) => a.id.localeCompare(b.id)).map(c => componentItem(c.id, c.name, c.state));
   list.replaceChildren(...items);
+}
+
+/** A component's line in the list: its state, its name, and its last error when it logged one. */
+function componentItem(path, name, state) {
+  const error = view.lastErrors[path];
+  return element('li', { 'data-component': path, 'data-state': state, title: path }, stateBadge(state), ' ', name,
+    error ? element('span', { class: 'logged-error', title: errorText(error) }, ' ⚠') : '');
+}
+
+/** The class that marks a node whose sender logged an ERROR or FATAL record. */
+function loggedClass(path) {
+  return view.lastErrors[path] ? ' logged-error' : '';
+}
+
+/** An error record in a line: its level, when it was logged, its logger and message. */
+function errorText(record) {
+  return record.level + ' at ' + time(record.loggedAt) + ' (' + (record.logger || '-') + '): ' + record.message;
+}
+
+/** Keeps [record] as its sender's last error when it is one and is not older than the one kept; returns whether it did. */
+function keepError(record) {
+  if (record.kind !== 'record' || LEVELS.indexOf(record.level) > LEVELS.indexOf('ERROR')) return false;
+  const kept = view.lastErrors[record.source];
+  if (kept && Date.parse(kept.loggedAt) > Date.parse(record.loggedAt)) return false;
+  view.lastErrors[record.source] = record;
+  return true;
+}
+
+/** A record that came: an error marks its sender's box, list line and panel. */
+function noteRecord(record) {
+  if (!keepError(record)) return;
+  const path = record.source;
+  cy.getElementById(path).addClass('logged-error');
+  const component = view.components.get(path);
+  const item = document.querySelector('#components li[data-component="' + CSS.escape(path) + '"]');
+  if (item && component) item.replaceWith(componentItem(path, component.name, component.state));
+  if (view.selected === path) showDetails(path);
 }
 
 /** A component's label: its name, and its FSM's state when known. */
@@ -335,19 +374,27 @@ function applyState(path, state, noticedAt) {
   if (component) component.state = state;
   view.shown[path] = { state, at: Date.now(), noticedAt };
   const item = document.querySelector('#components li[data-component="' + CSS.escape(path) + '"]');
-  if (item) item.replaceWith(element('li', { 'data-component': path, 'data-state': state, title: path }, stateBadge(state), ' ',
-    component ? component.name : path));
+  if (item) item.replaceWith(componentItem(path, component ? component.name : path, state));
   if (view.selected === path) showDetails(path);
 }
 
 function timelineEntry(entry) {
   const kind = entry.kind;
-  const text = kind === 'log' ? entry.text : entry.event + ': ' + entry.text;
-  const li = element('li', { 'data-kind': kind, 'data-source': entry.source, 'data-seq': entry.seq },
+  const li = kind === 'record' ? recordEntry(entry) : element('li', { 'data-kind': kind, 'data-source': entry.source, 'data-seq': entry.seq },
     element('span', { class: 'time' }, time(entry.time)), element('span', { class: 'kind' }, kind === 'log' ? entry.source : kind),
-    kind === 'log' ? '' : entry.source + '  ', text);
+    kind === 'log' ? '' : entry.source + '  ', kind === 'log' ? entry.text : entry.event + ': ' + entry.text);
+  li.entry = entry;
   li.hidden = !visible(li);
   return li;
+}
+
+/** A component's log record as RTSystemEditor's log view shows one: when it was logged, its level, who, what. */
+function recordEntry(entry) {
+  const origin = [entry.host, entry.pid && 'pid ' + entry.pid, entry.manager && 'manager ' + entry.manager].filter(Boolean).join(', ');
+  return element('li', { 'data-kind': 'record', 'data-level': entry.level, 'data-source': entry.source, 'data-seq': entry.seq,
+    title: 'from ' + (origin || 'an unknown sender') + ', tag ' + entry.tag },
+  element('span', { class: 'time' }, time(entry.loggedAt)), element('span', { class: 'kind' }, 'record'),
+  element('span', { class: 'level level-' + entry.level }, entry.level), ' ', entry.source + '  ', (entry.logger || '-') + ': ' + entry.message);
 }
 
 /**
@@ -370,13 +417,39 @@ function addToTimeline(entries, replace) {
 function visible(li) {
   const kinds = [...document.querySelectorAll('#filters input[type=checkbox][value]:checked')].map(i => i.value);
   const search = document.getElementById('search').value.toLowerCase();
-  return kinds.includes(li.dataset.kind) && (!search || li.textContent.toLowerCase().includes(search));
+  const level = document.getElementById('level').value;
+  const selectedOnly = document.getElementById('only-selected').checked;
+  return kinds.includes(li.dataset.kind) && (!search || li.textContent.toLowerCase().includes(search)) &&
+    (!level || li.dataset.kind !== 'record' || LEVELS.indexOf(li.dataset.level) <= LEVELS.indexOf(level)) &&
+    (!selectedOnly || li.dataset.source === view.selected);
 }
 
 function refilter() {
   document.querySelectorAll('#timeline li').forEach(li => { li.hidden = !visible(li); });
 }
 document.querySelectorAll('#filters input[value], #search').forEach(input => input.addEventListener('input', refilter));
+document.querySelectorAll('#level, #only-selected').forEach(input => input.addEventListener('change', refilter));
+
+/** A CSV field: quoted, its quotes doubled, when it holds a comma, a quote or a line break. */
+function csvField(value) {
+  const text = value === null || value === undefined ? '' : String(value);
+  return /[",\r\n]/.test(text) ? '"' + text.replace(/"/g, '""') + '"' : text;
+}
+
+/** The log records the timeline shows, oldest first, as CSV with a header line, as RTSystemEditor's log view exports them. */
+function recordsCsv() {
+  const shown = [...document.querySelectorAll('#timeline li[data-kind=record]:not([hidden])')].reverse().map(li => li.entry);
+  return [['time', 'level', 'path', 'logger', 'message', 'pid', 'host', 'manager']]
+    .concat(shown.map(r => [r.loggedAt, r.level, r.source, r.logger, r.message, r.pid, r.host, r.manager]))
+    .map(row => row.map(csvField).join(',') + '\r\n').join('');
+}
+view.recordsCsv = recordsCsv;
+
+document.getElementById('csv').addEventListener('click', () => {
+  const link = element('a', { href: URL.createObjectURL(new Blob([recordsCsv()], { type: 'text/csv' })), download: 'rtcoord-records.csv' });
+  link.click();
+  setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+});
 document.getElementById('pause').addEventListener('change', event => {
   if (event.target.checked) return;
   const held = view.held;
@@ -430,6 +503,7 @@ function modeTree(machine, parent) {
 
 async function showDetails(path) {
   view.selected = path;
+  if (document.getElementById('only-selected').checked) refilter();
   const details = document.getElementById('details');
   let report;
   try {
@@ -447,6 +521,7 @@ async function showDetails(path) {
   };
   const parts = [element('h2', {}, 'Component'), element('div', { 'data-details': path }, element('strong', {}, path), ' ',
     report.state ? stateBadge(report.state) : '')];
+  if (view.lastErrors[path]) parts.push(element('p', { class: 'error', 'data-last-error': path }, 'last ' + errorText(view.lastErrors[path])));
   if (report.error) {
     parts.push(element('p', { class: 'error' }, report.error));
     details.replaceChildren(...parts);
@@ -518,15 +593,24 @@ cy.on('tap', 'node.port', event => showDetails(event.target.data('component')));
 const tip = document.getElementById('tip');
 cy.on('mouseover', 'node.port', event => {
   const port = event.target.data();
-  tip.textContent = port.name + ' (' + port.kind + ')' + (port.dataType ? ': ' + port.dataType : '') +
-    (port.interfaces.length ? ': ' + port.interfaces.join(', ') : '');
+  showTip(event, port.name + ' (' + port.kind + ')' + (port.dataType ? ': ' + port.dataType : '') +
+    (port.interfaces.length ? ': ' + port.interfaces.join(', ') : ''));
+});
+// A box marked for an error tells the last one.
+cy.on('mouseover', 'node.logged-error', event => {
+  const error = view.lastErrors[event.target.id()];
+  if (error) showTip(event, 'last ' + errorText(error));
+});
+cy.on('mouseout', 'node.port, node.logged-error', () => { tip.hidden = true; });
+
+function showTip(event, text) {
+  tip.textContent = text;
   const at = event.renderedPosition;
   const graph = cy.container().getBoundingClientRect();
   tip.style.left = (graph.left + at.x + 12) + 'px';
   tip.style.top = (graph.top + at.y + 12) + 'px';
   tip.hidden = false;
-});
-cy.on('mouseout', 'node.port', () => { tip.hidden = true; });
+}
 
 // Once the user zooms or pans, a change of structure leaves the view where they put it.
 ['wheel', 'mousedown', 'touchstart'].forEach(kind => cy.container().addEventListener(kind, () => { view.steered = true; }, { passive: true }));
@@ -558,6 +642,9 @@ function apply(kind, data) {
   if (kind === 'snapshot') {
     view.snapshots++;
     view.operable = data.operable;
+    // The errors the recent events hold, drawn with the network.
+    view.lastErrors = {};
+    data.events.forEach(keepError);
     drawNetwork(data.network);
     // The network holds the tree's events up to its sequence: older ones that reach the page after it are history.
     view.since = data.network.sequence || 0;
@@ -575,6 +662,7 @@ function apply(kind, data) {
     if (data.event === 'PortTraffic' && !view.replay) showTraffic(data.source, data.port);
     if (data.event === 'BecameZombie') cy.getElementById(data.source).addClass('zombie');
     if (data.event === 'Recovered') cy.getElementById(data.source).removeClass('zombie');
+    if (data.kind === 'record') noteRecord(data);
     addToTimeline([data], false);
   }
 }

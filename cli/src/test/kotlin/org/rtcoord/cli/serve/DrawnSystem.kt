@@ -61,8 +61,12 @@ class DrawnSystem private constructor(val states: Map<String, String>, val probl
                 const b = edge.renderedBoundingBox();
                 if (!(b.w > 0 && b.h > 0)) problems.push('the hosting edge to ' + h + ' has the rendered box ' + box(b));
               }));
+              // A node's body with its border, without what is drawn around it: its label, and the outline that marks a
+              // logged error (Cytoscape 3.33's boundingBox counts an outline even with includeOutlines: false).
+              const bodyOf = n => { const at = n.position(), w = n.outerWidth() / 2, h = n.outerHeight() / 2;
+                return { x1: at.x - w, y1: at.y - h, x2: at.x + w, y2: at.y + h }; };
               const overlap = (a, b) => a.x1 < b.x2 && b.x1 < a.x2 && a.y1 < b.y2 && b.y1 < a.y2;
-              const leaves = cy.nodes('.component, .manager, .external').map(n => [n.id(), n.boundingBox({ includeLabels: false })]);
+              const leaves = cy.nodes('.component, .manager, .external').map(n => [n.id(), bodyOf(n)]);
               for (let i = 0; i < leaves.length; i++) for (let j = i + 1; j < leaves.length; j++) {
                 if (overlap(leaves[i][1], leaves[j][1])) problems.push(leaves[i][0] + ' ' + box(leaves[i][1]) + ' overlaps ' + leaves[j][0] + ' ' + box(leaves[j][1]));
               }
@@ -72,7 +76,7 @@ class DrawnSystem private constructor(val states: Map<String, String>, val probl
                 if (overlap(a.boundingBox({ includeLabels: false }), b.boundingBox({ includeLabels: false }))) problems.push('context ' + a.id() + ' overlaps ' + b.id());
               }));
               cy.nodes('.port').forEach(p => {
-                const body = cy.getElementById(p.data('component')).boundingBox({ includeLabels: false });
+                const body = bodyOf(cy.getElementById(p.data('component')));
                 const at = p.position();
                 const near = (v, lo, hi) => v >= lo - 2 && v <= hi + 2;
                 const onEdge = (near(at.x, body.x1, body.x1 + 2) || near(at.x, body.x2 - 2, body.x2) || near(at.y, body.y2 - 2, body.y2)) &&

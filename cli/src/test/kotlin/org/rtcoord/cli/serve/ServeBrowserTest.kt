@@ -1,7 +1,10 @@
 package org.rtcoord.cli.serve
 
+import java.net.InetAddress
+import java.net.InetSocketAddress
 import java.nio.file.Path
 import java.nio.file.Paths
+import java.time.Instant
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import kotlinx.serialization.json.jsonPrimitive
@@ -17,6 +20,7 @@ import org.rtcoord.cli.Localisation
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.FluentLogSender
 
 /**
  * The page in a real browser (headless Chromium) on the paper's localisation system coordinated by
@@ -49,18 +53,23 @@ class ServeBrowserTest {
         LiveService.start(tree, tree.node(nameServer), coordinator, EventOptions(), ServeSettings(port = port)) {}
     }
 
+    /** Headless Chromium on [service]'s page, once the page has drawn the four components. */
+    private fun drawn(service: LiveService): HeadlessChromium =
+        HeadlessChromium.start().closedAfter().also { browser ->
+            browser.navigate(service.url)
+            browser.await(
+                "the network drawn",
+                expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4",
+            )
+        }
+
     private val components = listOf("laser0", "gyro0", "odometry0", "laser_localise0")
 
     @Test
     fun `the page draws the system, then shows the laser's failure and the coordinator's reaction without a reload`() {
         val coordinator = coordinator()
         val service = serve(coordinator).closedAfter()
-        val browser = HeadlessChromium.start().closedAfter()
-        browser.navigate(service.url)
-        browser.await(
-            "the network drawn",
-            expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4",
-        )
+        val browser = drawn(service)
         browser.screenshot(SCREENSHOTS.resolve("localisation.png"))
 
         // Every component is in the graph, inside the view, in its state, and listed with it.
@@ -144,12 +153,7 @@ class ServeBrowserTest {
                 expected
         }
 
-        val browser = HeadlessChromium.start().closedAfter()
-        browser.navigate(service.url)
-        browser.await(
-            "the network drawn",
-            expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4",
-        )
+        val browser = drawn(service)
         for (entry in tree.snapshot().components) {
             val drawn =
                 browser
@@ -165,12 +169,7 @@ class ServeBrowserTest {
     fun `the page reconnects to a restarted server and follows components appearing and vanishing`() {
         var service = serve(null)
         val port = service.url.substringAfterLast(':').trimEnd('/').toInt()
-        val browser = HeadlessChromium.start().closedAfter()
-        browser.navigate(service.url)
-        browser.await(
-            "the network drawn",
-            expression = "document.body.dataset.rendered === 'true' && rtcoord.cy.nodes('.component').length === 4",
-        )
+        val browser = drawn(service)
         val loadedAt = browser.evaluate("rtcoord.loadedAt").jsonPrimitive.long
 
         service.close()
@@ -192,6 +191,106 @@ class ServeBrowserTest {
         runBlocking { manager.delete("odo_localise0") }
         browser.await("odo_localise0 to vanish", expression = "rtcoord.cy.getElementById(${js(odo)}).empty()")
         assertEquals(loadedAt, browser.evaluate("rtcoord.loadedAt").jsonPrimitive.long, "the page was reloaded")
+    }
+
+    @Test
+    fun `the page shows the components' log records, filters them by level and component, marks errors, exports CSV`() {
+        val port = tree.listenForLogs("127.0.0.1:0").address.substringAfterLast(':').toInt()
+        val service = serve(null).closedAfter()
+        val browser = drawn(service)
+        val laser = localisation.path("laser0.rtc")
+        val gyro = localisation.path("gyro0.rtc")
+        val failed = "scan failed, \"range\" 0\nat beam 3"
+        FluentLogSender(InetSocketAddress("127.0.0.1", port), "manager_slave", "rtclog").closedAfter().apply {
+            assertTrue(send("laser0", "INFO", "scan started"))
+            assertTrue(send("laser0", "ERROR", failed))
+            assertTrue(send("gyro0", "WARN", "drift high"))
+        }
+        browser.await(
+            "the three records in the timeline",
+            expression = "document.querySelectorAll('#timeline li[data-kind=record]').length === 3",
+        )
+        assertEquals(
+            "ERROR $laser  laser0: $failed",
+            browser
+                .evaluate(
+                    "[...document.querySelectorAll('#timeline li[data-kind=record]')].find(li => li.dataset.level === 'ERROR')" +
+                        ".textContent.replace(/^\\S+record/, '')"
+                )
+                .jsonPrimitive
+                .content,
+            "the error's line, after its time",
+        )
+
+        // The error marks the laser's box and its line in the list, the warning marks nothing.
+        assertEquals(
+            "true false true",
+            browser
+                .evaluate(
+                    "rtcoord.cy.getElementById(${js(laser)}).hasClass('logged-error') + ' ' + " +
+                        "rtcoord.cy.getElementById(${js(gyro)}).hasClass('logged-error') + ' ' + " +
+                        "document.querySelector('#components li[data-component=\"' + CSS.escape(${js(laser)}) + " +
+                        "'\"] .logged-error').title.includes('ERROR at ')"
+                )
+                .jsonPrimitive
+                .content,
+        )
+        browser.screenshot(SCREENSHOTS.resolve("localisation-records.png"))
+
+        // WARN and above: the INFO record is hidden, the others shown; the CSV has the two shown, oldest first.
+        browser.evaluate(
+            "(() => { const s = document.getElementById('level'); s.value = 'WARN'; s.dispatchEvent(new Event('change')); })()"
+        )
+        assertEquals(
+            "INFO:true ERROR:false WARN:false",
+            browser
+                .evaluate(
+                    "[...document.querySelectorAll('#timeline li[data-kind=record]')].reverse()" +
+                        ".map(li => li.dataset.level + ':' + li.hidden).join(' ')"
+                )
+                .jsonPrimitive
+                .content,
+        )
+        val pid = ProcessHandle.current().pid()
+        val host = InetAddress.getLocalHost().hostName
+        assertEquals(
+            listOf(
+                "level,path,logger,message,pid,host,manager",
+                "ERROR,$laser,laser0,\"scan failed, \"\"range\"\" 0\nat beam 3\",$pid,$host,manager_slave",
+                "WARN,$gyro,gyro0,drift high,$pid,$host,manager_slave",
+            ),
+            csvWithoutTimes(browser),
+        )
+
+        // The laser selected and the timeline narrowed to it: the gyro's warning goes.
+        browser.evaluate(
+            "document.querySelector('#components li[data-component=\"' + CSS.escape(${js(laser)}) + '\"]').click()"
+        )
+        browser.evaluate(
+            "(() => { const c = document.getElementById('only-selected'); c.checked = true; c.dispatchEvent(new Event('change')); })()"
+        )
+        assertEquals(listOf("level,path,logger,message,pid,host,manager"), csvWithoutTimes(browser).take(1))
+        assertEquals(listOf("ERROR"), csvWithoutTimes(browser).drop(1).map { it.substringBefore(',') })
+        browser.await(
+            "the laser's panel to say its last error",
+            expression =
+                "document.querySelector('[data-last-error]').textContent.startsWith('last ERROR at ') && " +
+                    "document.querySelector('[data-last-error]').textContent.includes('(laser0): scan failed')",
+        )
+    }
+
+    /**
+     * The page's CSV of the records it shows, each line without its first field, which must be a time (`time` on the
+     * header); a record's message may hold a line break, inside quotes.
+     */
+    private fun csvWithoutTimes(browser: HeadlessChromium): List<String> {
+        val csv = browser.evaluate("rtcoord.recordsCsv()").jsonPrimitive.content
+        assertTrue(csv.endsWith("\r\n"), csv)
+        return csv.removeSuffix("\r\n").split("\r\n").mapIndexed { i, line ->
+            val time = line.substringBefore(',')
+            if (i == 0) assertEquals("time", time) else Instant.parse(time)
+            line.substringAfter(',')
+        }
     }
 
     private companion object {
