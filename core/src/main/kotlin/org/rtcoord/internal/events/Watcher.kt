@@ -74,6 +74,9 @@ internal class Watcher(private val core: TreeCore) {
         handler: suspend (RtcEvent) -> Unit,
     ): Subscription {
         val recordsOnly = types != null && types.all { LogRecord::class.java.isAssignableFrom(it) }
+        // Checked before anything starts: records come to components and directories only.
+        if (recordsOnly && target !is ComponentNode && target !is DirectoryNode)
+            throw WrongKindException(target.path.toString(), "component or directory", target.kind.label())
         val sink =
             EventSink(
                 core.scope,
@@ -93,8 +96,6 @@ internal class Watcher(private val core: TreeCore) {
             releases += core.logs.add(sink, target)
             // Records come from the log inputs, not from the components: hearing them alone watches nothing.
             if (recordsOnly) {
-                if (target !is ComponentNode && target !is DirectoryNode)
-                    throw WrongKindException(target.path.toString(), "component or directory", target.kind.label())
                 return Subscription {
                     sink.close()
                     releases.forEach { it() }
