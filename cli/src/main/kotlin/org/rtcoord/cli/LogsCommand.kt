@@ -63,7 +63,9 @@ class LogsCommand : TreeCommand("logs") {
     override suspend fun execute() {
         StopSignals().use { signals ->
             val from = since?.let { System.currentTimeMillis() - it.inWholeMilliseconds }
-            val records = Channel<LogRecord>(Channel.UNLIMITED)
+            // Handed over one at a time: a terminal slower than the records holds them in the tree's bounded queue,
+            // whose oldest are dropped and counted (said on the way out), not in this process's heap.
+            val records = Channel<LogRecord>()
             val nodes = if (paths.isEmpty()) listOf(tree.root) else paths.map { node(it) }
             nodes.forEach { node -> tree.on(node, LogRecord::class.java) { records.send(it) } }
             val listening = checkNotNull(input.start(tree, LogInputOptions.DEFAULT_ADDRESS))
