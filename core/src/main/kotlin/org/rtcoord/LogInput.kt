@@ -5,8 +5,15 @@ package org.rtcoord
  * their log records to, each becoming a [LogRecord] event. Closed with its tree, or by [close].
  */
 public interface LogInput : AutoCloseable {
-    /** Where it listens, `host:port` (the port chosen when 0 was asked for): what a component's `rtc.conf` names. */
+    /** The host it listens on: what a component's `rtc.conf` names as `logger.logstream.fluentd.output0.host`. */
+    public val host: String
+
+    /** The port it listens on, the one chosen when 0 was asked for: `rtc.conf`'s `output0.port`. */
+    public val port: Int
+
+    /** Where it listens, `host:port`. */
     public val address: String
+        get() = "$host:$port"
 
     /** How many records it has received. */
     public val received: Long
@@ -22,4 +29,9 @@ public interface LogInput : AutoCloseable {
 
     /** Stops listening and closes every connection. Idempotent. */
     override fun close()
+
+    public companion object {
+        /** Where OpenRTM-aist's loggers send by default (FluentLogger.py's and Fluent Bit's forward defaults). */
+        public const val DEFAULT_ADDRESS: String = "127.0.0.1:24224"
+    }
 }

@@ -34,10 +34,7 @@ class LogRecordsTest {
     /** A sender of records from a process whose manager is [manager], as its `rtc.conf` would make one. */
     private fun sender(manager: String) =
         FluentLogSender(
-                InetSocketAddress(
-                    input.address.substringBeforeLast(':'),
-                    input.address.substringAfterLast(':').toInt(),
-                ),
+                InetSocketAddress(input.host, input.port),
                 manager,
             )
             .also { senders += it }
@@ -176,7 +173,7 @@ class LogRecordsTest {
         assertTrue(input.address in taken.message.orEmpty(), taken.message)
     }
 
-    private fun port() = input.address.substringAfterLast(':').toInt()
+    private fun port() = input.port
 
     private companion object {
         /** The slave manager of the components' process (the master runs in a process of its own). */

@@ -198,7 +198,7 @@ internal class LogsBench(private val options: BenchOptions, private val report: 
                         "-cp",
                         System.getProperty("java.class.path"),
                         "org.rtcoord.bench.LogSenderMain",
-                        input.address.substringAfterLast(':'),
+                        input.port.toString(),
                         MANAGER,
                         COMPONENTS.joinToString(","),
                         senders.toString(),

@@ -27,9 +27,4 @@ class LogInputOptions : OptionGroup("Log records") {
     /** Starts [tree]'s log input where `--logs-listen` says, else on [orElse]; none when both are null. */
     fun start(tree: RtcTree, orElse: String? = null): LogInput? =
         (address ?: orElse)?.let { tree.listenForLogs(it, sharedKey) }
-
-    companion object {
-        /** Where OpenRTM-aist's loggers send by default. */
-        const val DEFAULT_ADDRESS: String = "127.0.0.1:24224"
-    }
 }

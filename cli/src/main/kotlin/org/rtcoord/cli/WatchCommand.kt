@@ -10,6 +10,7 @@ import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
+import org.rtcoord.LogInput
 import org.rtcoord.Node
 import org.rtcoord.PortTraffic
 import org.rtcoord.RtcEvent
@@ -64,7 +65,7 @@ class WatchCommand : TreeCommand("watch") {
                 "--logs",
                 help =
                     "Also receive the components' log records and print them among the events (on " +
-                        "${LogInputOptions.DEFAULT_ADDRESS} unless --logs-listen says where).",
+                        "${LogInput.DEFAULT_ADDRESS} unless --logs-listen says where).",
             )
             .flag()
 
@@ -84,7 +85,7 @@ class WatchCommand : TreeCommand("watch") {
                 events.send(it)
             }
             val rates = if (data) PortRates.tap(nodes) else null
-            input.start(tree, LogInputOptions.DEFAULT_ADDRESS.takeIf { logs })?.let { listening ->
+            input.start(tree, LogInput.DEFAULT_ADDRESS.takeIf { logs })?.let { listening ->
                 echo("${timestamp(System.currentTimeMillis())} receiving log records on ${listening.address}")
             }
             coroutineScope {

@@ -296,8 +296,10 @@ public class JavaTree(
      * @throws java.io.IOException when it cannot listen there, naming the address.
      */
     @JvmOverloads
-    public fun listenForLogs(address: String = "127.0.0.1:24224", sharedKey: @Nullable String? = null): LogInput =
-        tree.listenForLogs(address, sharedKey)
+    public fun listenForLogs(
+        address: String = LogInput.DEFAULT_ADDRESS,
+        sharedKey: @Nullable String? = null,
+    ): LogInput = tree.listenForLogs(address, sharedKey)
 
     /** The tree's model of the system now, read without a remote call (see [RtcTree.snapshot]). */
     public fun snapshot(): SystemSnapshot = tree.snapshot()

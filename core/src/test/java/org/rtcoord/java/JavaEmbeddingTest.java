@@ -241,8 +241,7 @@ class JavaEmbeddingTest {
     void receivesComponentsLogRecordsAsEvents() throws Exception {
         ExecutorService ui = Executors.newSingleThreadExecutor(runnable -> new Thread(runnable, "ui thread"));
         LogInput input = tree.listenForLogs("127.0.0.1:0");
-        int port = Integer.parseInt(input.getAddress().substring(input.getAddress().lastIndexOf(':') + 1));
-        try (FluentLogSender sender = new FluentLogSender(new InetSocketAddress("127.0.0.1", port), "manager_slave", "rtclog")) {
+        try (FluentLogSender sender = new FluentLogSender(new InetSocketAddress(input.getHost(), input.getPort()), "manager_slave", "rtclog")) {
             BlockingQueue<String> seen = new LinkedBlockingQueue<>();
             try (Subscription records = tree.subscribe(path("laser0.rtc"), LogRecord.class, ui,
                     record -> seen.add(threadKind() + ": " + record.getLevel() + " " + record.getMessage()))) {

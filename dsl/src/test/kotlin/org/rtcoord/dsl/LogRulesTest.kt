@@ -23,7 +23,7 @@ class LogRulesTest : CoordinatedSystem() {
     private fun sendLogsToTree() {
         val input = tree.listenForLogs("127.0.0.1:0")
         system.runtime.sendLogsTo(
-            InetSocketAddress("127.0.0.1", input.address.substringAfterLast(':').toInt()),
+            InetSocketAddress(input.host, input.port),
             "manager_slave",
         )
     }

@@ -7,6 +7,7 @@ import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.rtcoord.EventOptions
+import org.rtcoord.LogInput
 import org.rtcoord.LogLevel
 import org.rtcoord.LogRecord
 import org.rtcoord.RtcTree
@@ -41,7 +42,7 @@ object OpenRtmPythonLogs {
                     "manager.instance_name: $MANAGER",
                     "manager.modules.preload: warner.py",
                     "manager.components.precreate: warner",
-                    *logLines(installation.fluentLogger(), input.address).toTypedArray(),
+                    *logLines(installation.fluentLogger(), input).toTypedArray(),
                 )
                 // OpenRTM's own start-up lines, logged by the manager at INFO, show the plugin sends at all.
                 val first = records.poll(30, TimeUnit.SECONDS) ?: error("no record in 30 s; ${system.output("warner")}")
@@ -83,13 +84,13 @@ object OpenRtmPythonLogs {
      * The rtc.conf lines that make a manager's logger send records at INFO and above to [address] with FluentLogger.py
      * at [plugin]: OpenRTM loads a logger plugin as a module, by its path.
      */
-    private fun logLines(plugin: Path, address: String): List<String> =
+    private fun logLines(plugin: Path, input: LogInput): List<String> =
         listOf(
             "logger.enable: YES",
             "logger.log_level: INFO",
             "logger.plugins: $plugin",
             "logger.logstream.fluentd.output0.tag: $TAG",
-            "logger.logstream.fluentd.output0.host: ${address.substringBeforeLast(':')}",
-            "logger.logstream.fluentd.output0.port: ${address.substringAfterLast(':')}",
+            "logger.logstream.fluentd.output0.host: ${input.host}",
+            "logger.logstream.fluentd.output0.port: ${input.port}",
         )
 }

@@ -68,14 +68,11 @@ private constructor(
             )
 
     /**
-     * Makes its components send their log records ([RuntimeComponent.log]) to the Fluentd forward input at [address]
-     * (`host:port`), each process naming its manager, as OpenRTM-aist's do when their `rtc.conf` names a fluentd log
-     * stream.
+     * Makes its components send their log records ([RuntimeComponent.log]) to the Fluentd forward input at [address],
+     * each process naming its manager, as OpenRTM-aist's do when their `rtc.conf` names a fluentd log stream.
      */
-    public fun sendLogsTo(address: String) {
-        processes.sendLogsTo(
-            InetSocketAddress(address.substringBeforeLast(':'), address.substringAfterLast(':').toInt())
-        )
+    public fun sendLogsTo(address: InetSocketAddress) {
+        processes.sendLogsTo(address)
     }
 
     /** Whether the system has a master manager, and it was not killed. */

@@ -195,7 +195,7 @@ class ServeBrowserTest {
 
     @Test
     fun `the page shows the components' log records, filters them by level and component, marks errors, exports CSV`() {
-        val port = tree.listenForLogs("127.0.0.1:0").address.substringAfterLast(':').toInt()
+        val port = tree.listenForLogs("127.0.0.1:0").port
         val service = serve(null).closedAfter()
         val browser = drawn(service)
         val laser = localisation.path("laser0.rtc")

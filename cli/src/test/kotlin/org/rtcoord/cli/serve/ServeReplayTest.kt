@@ -34,7 +34,7 @@ class ServeReplayTest {
         Localisation().use { localisation ->
             laser = localisation.path("laser0.rtc")
             RtcTree(TreeConfig(listOf(localisation.naming.address), 3.seconds)).use { tree ->
-                val logs = tree.listenForLogs("127.0.0.1:0").address.substringAfterLast(':').toInt()
+                val logs = tree.listenForLogs("127.0.0.1:0").port
                 val top = runBlocking { tree.node("/${localisation.naming.address}") }
                 runBlocking { LiveService.start(tree, top, null, EventOptions(), ServeSettings(record = file)) {} }
                     .use {

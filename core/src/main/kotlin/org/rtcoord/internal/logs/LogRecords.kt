@@ -168,7 +168,8 @@ internal class LogRecords(private val core: TreeCore) {
                 }
             }
 
-        override val address: String = "${forward.address.hostString}:${forward.address.port}"
+        override val host: String = forward.address.hostString
+        override val port: Int = forward.address.port
 
         override val received: Long
             get() = count.get()

@@ -1,5 +1,6 @@
 package org.rtcoord.sim.test
 
+import java.net.InetSocketAddress
 import java.time.Instant
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration
@@ -118,7 +119,7 @@ internal class ScenarioRun(
 
     private suspend fun coordinate(system: SimulatedSystem, tree: RtcTree): List<TestFailure> = coroutineScope {
         // The components' log records reach the tree as OpenRTM-aist's reach a Fluentd input: a scenario's `log` step.
-        system.sendLogsTo(tree.listenForLogs("127.0.0.1:0").address)
+        tree.listenForLogs("127.0.0.1:0").let { system.sendLogsTo(InetSocketAddress(it.host, it.port)) }
         val coordination =
             try {
                 scripts.load(test.coordinatorShown, test.args, tree.config)
