@@ -1,8 +1,6 @@
 package org.rtcoord.internal.logs
 
 import java.net.InetSocketAddress
-import java.util.Collections
-import java.util.IdentityHashMap
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.Duration.Companion.milliseconds
@@ -14,18 +12,13 @@ import kotlinx.coroutines.launch
 import kotlinx.coroutines.sync.Mutex
 import kotlinx.coroutines.sync.withLock
 import kotlinx.coroutines.yield
-import org.rtcoord.ComponentNode
-import org.rtcoord.DirectoryNode
 import org.rtcoord.LogInput
 import org.rtcoord.LogRecord
-import org.rtcoord.ManagerNode
 import org.rtcoord.Node
 import org.rtcoord.RootNode
 import org.rtcoord.RtcException
-import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.TreeCore
 import org.rtcoord.internal.componentsFound
-import org.rtcoord.internal.componentsListed
 import org.rtcoord.internal.events.EventSink
 import org.slf4j.LoggerFactory
 
@@ -71,7 +64,7 @@ internal class LogRecords(private val core: TreeCore) {
 
     /** Hands [sink] the records from [target] or from below it; returns what ends that. */
     fun add(sink: EventSink, target: Node): () -> Unit {
-        val registration = Registration(sink, coverage(target, core.clock::now))
+        val registration = Registration(sink, logCoverage(target, core.clock::now))
         registrations += registration
         return { registrations -= registration }
     }
@@ -219,56 +212,5 @@ internal class LogRecords(private val core: TreeCore) {
 
         /** How often at most the listings are walked again for a sender they do not show. */
         private const val RELIST_MILLIS = 5_000L
-
-        /** How long what a directory's listings hold is taken as known, as [LogSenders] keeps its answers. */
-        private const val BELOW_MILLIS = 1_000L
-
-        /**
-         * Which records a registration on [target] hears: a component's own; a manager's, and those of the components
-         * it hosts; a naming context's or name server's, from the components and managers listed below it; the root's,
-         * every record, including those from senders the tree has not listed.
-         */
-        private fun coverage(target: Node, now: () -> Long): (LogRecord) -> Boolean =
-            when (target) {
-                is RootNode -> { _ ->
-                    true
-                }
-                is ComponentNode -> { record ->
-                    (record.source as? ComponentNode)?.isSameComponent(target) == true
-                }
-                is DirectoryNode -> Below(target, now)::covers
-                else -> { _ ->
-                    false
-                }
-            }
-    }
-
-    /**
-     * Whether a record's sender is listed below [directory]: by its path when it is there (a naming context's own
-     * components), else among the components the listings below show (a manager's, reached at their naming context),
-     * walked at most once every [BELOW_MILLIS] for records from elsewhere, which would otherwise walk them each.
-     */
-    private class Below(private val directory: DirectoryNode, private val now: () -> Long) {
-        @Volatile private var listed: Set<ComponentObject> = emptySet()
-        @Volatile private var listedAt = Long.MIN_VALUE
-
-        fun covers(record: LogRecord): Boolean =
-            when (val source = record.source) {
-                is ComponentNode -> source.path.startsWith(directory.path) || source.component in components()
-                is ManagerNode -> source.path.startsWith(directory.path)
-                else -> false
-            }
-
-        private fun components(): Set<ComponentObject> {
-            val time = now()
-            if (listedAt == Long.MIN_VALUE || time - listedAt >= BELOW_MILLIS) {
-                listed =
-                    componentsListed(listOf(directory)).mapTo(Collections.newSetFromMap(IdentityHashMap())) {
-                        it.component
-                    }
-                listedAt = time
-            }
-            return listed
-        }
     }
 }
