@@ -1,3 +1,5 @@
+@file:JvmName("LogInputs")
+
 package org.rtcoord
 
 /**
@@ -29,9 +31,10 @@ public interface LogInput : AutoCloseable {
 
     /** Stops listening and closes every connection. Idempotent. */
     override fun close()
-
-    public companion object {
-        /** Where OpenRTM-aist's loggers send by default (FluentLogger.py's and Fluent Bit's forward defaults). */
-        public const val DEFAULT_ADDRESS: String = "127.0.0.1:24224"
-    }
 }
+
+/**
+ * Where OpenRTM-aist's loggers send by default (FluentLogger.py's and Fluent Bit's forward defaults): what a [LogInput]
+ * listens on unless told. Java: `LogInputs.DEFAULT_LOG_ADDRESS`.
+ */
+public const val DEFAULT_LOG_ADDRESS: String = "127.0.0.1:24224"

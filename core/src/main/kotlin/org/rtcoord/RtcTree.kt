@@ -305,7 +305,7 @@ constructor(
      *
      * @throws java.io.IOException when it cannot listen there, naming the address.
      */
-    public fun listenForLogs(address: String = LogInput.DEFAULT_ADDRESS, sharedKey: String? = null): LogInput =
+    public fun listenForLogs(address: String = DEFAULT_LOG_ADDRESS, sharedKey: String? = null): LogInput =
         core.logs.listen(logInputAddress(address), sharedKey, root)
 
     /**

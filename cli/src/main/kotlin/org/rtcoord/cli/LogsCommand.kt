@@ -10,7 +10,7 @@ import com.github.ajalt.clikt.parameters.options.option
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
-import org.rtcoord.LogInput
+import org.rtcoord.DEFAULT_LOG_ADDRESS
 import org.rtcoord.LogLevel
 import org.rtcoord.LogRecord
 import org.rtcoord.cli.json.EventJson
@@ -69,7 +69,7 @@ class LogsCommand : TreeCommand("logs") {
             val records = Channel<LogRecord>()
             val nodes = if (paths.isEmpty()) listOf(tree.root) else paths.map { node(it) }
             nodes.forEach { node -> tree.on(node, LogRecord::class.java) { records.send(it) } }
-            val listening = checkNotNull(input.start(tree, LogInput.DEFAULT_ADDRESS))
+            val listening = checkNotNull(input.start(tree, DEFAULT_LOG_ADDRESS))
             echo("rtcoord: receiving log records on ${listening.address}", err = true)
             coroutineScope {
                 val printing = launch {

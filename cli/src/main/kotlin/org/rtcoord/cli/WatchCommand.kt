@@ -9,8 +9,8 @@ import com.github.ajalt.clikt.parameters.options.option
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
+import org.rtcoord.DEFAULT_LOG_ADDRESS
 import org.rtcoord.EventOptions
-import org.rtcoord.LogInput
 import org.rtcoord.Node
 import org.rtcoord.PortTraffic
 import org.rtcoord.RtcEvent
@@ -65,7 +65,7 @@ class WatchCommand : TreeCommand("watch") {
                 "--logs",
                 help =
                     "Also receive the components' log records and print them among the events (on " +
-                        "${LogInput.DEFAULT_ADDRESS} unless --logs-listen says where).",
+                        "${DEFAULT_LOG_ADDRESS} unless --logs-listen says where).",
             )
             .flag()
 
@@ -85,7 +85,7 @@ class WatchCommand : TreeCommand("watch") {
                 events.send(it)
             }
             val rates = if (data) PortRates.tap(nodes) else null
-            input.start(tree, LogInput.DEFAULT_ADDRESS.takeIf { logs })?.let { listening ->
+            input.start(tree, DEFAULT_LOG_ADDRESS.takeIf { logs })?.let { listening ->
                 echo("${timestamp(System.currentTimeMillis())} receiving log records on ${listening.address}")
             }
             coroutineScope {

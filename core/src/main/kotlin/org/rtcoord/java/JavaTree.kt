@@ -7,6 +7,7 @@ import java.util.function.Predicate
 import kotlinx.coroutines.flow.toList
 import org.jspecify.annotations.Nullable
 import org.rtcoord.ConnectorSnapshot
+import org.rtcoord.DEFAULT_LOG_ADDRESS
 import org.rtcoord.DirectoryNode
 import org.rtcoord.EventListener
 import org.rtcoord.EventOptions
@@ -297,7 +298,7 @@ public class JavaTree(
      */
     @JvmOverloads
     public fun listenForLogs(
-        address: String = LogInput.DEFAULT_ADDRESS,
+        address: String = DEFAULT_LOG_ADDRESS,
         sharedKey: @Nullable String? = null,
     ): LogInput = tree.listenForLogs(address, sharedKey)
 
