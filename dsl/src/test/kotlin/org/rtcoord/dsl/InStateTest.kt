@@ -9,12 +9,15 @@ import org.rtcoord.LifeCycle.ACTIVE
 import org.rtcoord.LifeCycle.ERROR
 import org.rtcoord.LifeCycle.INACTIVE
 import org.rtcoord.StateChanged
+import org.rtcoord.fixtures.await
 
 /** A rule on being in ERROR or entering it fires once per stay, however late its first read comes. */
 class InStateTest : CoordinatedSystem() {
     @Test
     fun `a read that found ERROR drops the entry still on its way, and takes the next one`(): Unit = runBlocking {
         system.component("gyro0").fail()
+        // The failure takes effect on gyro0's next execution.
+        await("gyro0 to be in ERROR") { system.component("gyro0").state == RTC.LifeCycleState.ERROR_STATE }
         val gyro = tree.component(path("gyro0.rtc"))
         val reading = InState(ERROR)
 
