@@ -1,113 +1,157 @@
 package org.rtcoord.internal.logs
 
-import java.io.BufferedOutputStream
-import java.io.EOFException
 import java.io.IOException
 import java.net.InetSocketAddress
-import java.net.Socket
+import java.nio.ByteBuffer
+import java.nio.channels.SelectionKey
+import java.nio.channels.SocketChannel
 import java.time.Instant
-import kotlin.time.Duration.Companion.nanoseconds
-import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.currentCoroutineContext
-import kotlinx.coroutines.delay
-import kotlinx.coroutines.flow.MutableStateFlow
-import kotlinx.coroutines.flow.filterNotNull
-import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.isActive
-import kotlinx.coroutines.launch
-import org.msgpack.core.MessageInsufficientBufferException
 import org.msgpack.core.MessagePack
 import org.msgpack.core.MessagePackException
-import org.msgpack.core.MessagePacker
-import org.msgpack.core.MessageUnpacker
+import org.msgpack.core.buffer.ArrayBufferInput
 
 /**
- * One sender's TCP connection: the handshake when a key is set, then frames until the sender closes, each frame's
- * events handed to [received] in order, and its acknowledgement written after them.
+ * One sender's TCP connection, read without blocking when its input's selector finds bytes for it: the handshake when a
+ * key is set, then frames, each decoded once it has arrived whole ([FrameExtent]), its events handed to [received] in
+ * order and its acknowledgement written after them.
  *
- * Reads block, on the input's I/O threads; closing [socket] ends them, which is how [ForwardInput.close] and the frame
- * timeout stop a connection. What the sender does wrong ends the connection with one call of [refused]; nothing it does
- * reaches another connection.
+ * The bytes of a frame not yet whole wait in the connection, at most [ForwardSettings.maxRecordBytes] of them; answers
+ * the sender does not read wait too, and while more than [MAX_UNSENT] bytes of them do the connection is not read from.
+ * What the sender does wrong ends the connection with one call of [refused], naming it; nothing it does reaches another
+ * connection. Not thread-safe: its input's selector thread owns it.
+ *
+ * @property key the connection's registration with the input's selector; its channel is the connection's.
  */
 internal class ForwardConnection(
-    private val socket: Socket,
+    private val key: SelectionKey,
     private val settings: ForwardSettings,
     private val handshake: SharedKeyHandshake?,
     private val received: (ForwardEntry) -> Unit,
-    private val refused: (ForwardRefusal, String) -> Unit,
+    private val refused: (InetSocketAddress, ForwardRefusal, String) -> Unit,
 ) {
-    private val sender = socket.remoteSocketAddress as InetSocketAddress
+    private val channel = key.channel() as SocketChannel
+
+    /** Who sent the connection's events. */
+    val sender = channel.remoteAddress as InetSocketAddress
+
     private val frames = ForwardFrames(settings.maxRecordBytes)
     private val rate = EntryRate(settings.maxEntriesPerSecond)
+    private val extent = FrameExtent(settings.maxRecordBytes)
+    private val input = ArrayBufferInput(ByteArray(0))
+    private val unpacker = MessagePack.newDefaultUnpacker(input)
+    private val values = BoundedValues(unpacker, settings.maxRecordBytes, "a frame")
+    private val packer = MessagePack.newDefaultBufferPacker()
+    private val unsent = ArrayDeque<ByteBuffer>()
+    private var unsentBytes = 0
+    private var authenticated = handshake == null
 
-    /** When the frame being read began (System.nanoTime), or null between frames. */
-    private val frameBegun = MutableStateFlow<Long?>(null)
+    /** Whether the frames of the last read were answered: a PONG or an acknowledgement. */
+    private var answered = false
 
-    @Volatile private var timedOut = false
+    /** The bytes of a frame begun and not yet whole, or null between frames. */
+    private var partial: ByteArray? = null
 
-    /** Serves the connection until the sender closes it, it is refused, or the coroutine is cancelled. */
-    suspend fun serve() {
-        try {
-            coroutineScope {
-                val watchdog = launch { closeStalledFrames() }
-                try {
-                    read()
-                } finally {
-                    watchdog.cancel()
-                }
-            }
-        } catch (e: RefusedInput) {
-            refused(e.refusal, e.message)
-        } catch (e: MessageInsufficientBufferException) {
-            cut(e)
-        } catch (e: EOFException) {
-            cut(e)
-        } catch (e: MessagePackException) {
-            if (timedOut) cut(e) else refused(ForwardRefusal.MALFORMED, "not MessagePack: ${e.message}")
-        } catch (e: IOException) {
-            // A socket closed under a read: by close() (the coroutine is cancelled), the watchdog, or the sender.
-            if (currentCoroutineContext().isActive && (timedOut || frameBegun.value != null)) cut(e)
-        } finally {
-            socket.close()
-        }
-    }
+    /** When the frame in [partial] began (System.nanoTime); meaningless while [partial] is null. */
+    private var frameBegun = 0L
 
-    /** Reports a frame that did not arrive whole, unless the input is closing. */
-    private suspend fun cut(e: Exception) {
-        if (!currentCoroutineContext().isActive) return
-        val why =
-            if (timedOut) "a frame begun was not complete within ${settings.frameTimeout}"
-            else "the connection ended in the middle of a frame (${e.javaClass.simpleName})"
-        refused(ForwardRefusal.INCOMPLETE_FRAME, why)
-    }
+    /** Whether the connection is still served: false once closed, for whatever reason. */
+    var isOpen = true
+        private set
 
-    private fun read() {
-        val unpacker = MessagePack.newDefaultUnpacker(socket.getInputStream())
-        val packer = MessagePack.newDefaultPacker(BufferedOutputStream(socket.getOutputStream()))
-        val values = BoundedValues(unpacker, settings.maxRecordBytes, "a frame")
-        if (handshake != null) {
-            handshake.helo(packer)
-            if (!frame(unpacker, values) { handshake.ping(values, packer) }) return
-        }
-        while (true) {
-            var chunk: String? = null
-            if (!frame(unpacker, values) { chunk = frames.read(values, ::deliver) }) return
-            // Written once the frame is over: a sender gone before its ack is not a frame cut short.
-            chunk?.let { ack(packer, it) }
-        }
+    /** Sends HELO when a key is set: the sender's first frame is then its PING. */
+    fun start() {
+        if (handshake == null) return
+        handshake.helo(packer)
+        send()
     }
 
     /**
-     * Reads one frame with [read] once its first byte is there, under the frame timeout's watch; false when the sender
-     * closed between frames.
+     * Reads what has arrived (at most [READ_CHUNK] bytes) and hands on the frames now whole. [scratch] gives a buffer
+     * of at least the size asked, shared by the input's connections. Returns whether the sender should be read again
+     * without the input's rest: its read filled the chunk (more is waiting), or it was answered (a sender that asks for
+     * acknowledgements waits for each before it sends more).
      */
-    private inline fun frame(unpacker: MessageUnpacker, values: BoundedValues, read: () -> Unit): Boolean {
-        if (!unpacker.hasNext()) return false
-        frameBegun.value = System.nanoTime()
-        values.begin()
-        read()
-        frameBegun.value = null
-        return true
+    fun readable(scratch: (Int) -> ByteArray): Boolean =
+        try {
+            read(scratch)
+        } catch (e: RefusedInput) {
+            refuse(e.refusal, e.message)
+            false
+        } catch (e: MessagePackException) {
+            refuse(ForwardRefusal.MALFORMED, "not MessagePack: ${e.message}")
+            false
+        } catch (e: IOException) {
+            // Reset by the sender: a frame it left unfinished is a frame cut short.
+            ended(e)
+            false
+        }
+
+    /** Writes the answers waiting for the sender. */
+    fun writable() {
+        try {
+            send()
+        } catch (e: IOException) {
+            close()
+        }
+    }
+
+    /** Refuses the frame begun if it has not arrived whole within the frame timeout by [now] (System.nanoTime). */
+    fun closeIfStalled(now: Long) {
+        if (partial != null && now - frameBegun >= settings.frameTimeout.inWholeNanoseconds) {
+            refuse(ForwardRefusal.INCOMPLETE_FRAME, "a frame begun was not complete within ${settings.frameTimeout}")
+        }
+    }
+
+    /** When the frame begun must be whole by (System.nanoTime), or null when none is begun. */
+    fun frameDeadline(): Long? = if (partial != null) frameBegun + settings.frameTimeout.inWholeNanoseconds else null
+
+    /** Closes the connection without a word to anyone: the input is closing, or the sender went between frames. */
+    fun close() {
+        isOpen = false
+        key.cancel()
+        channel.close()
+    }
+
+    private fun read(scratch: (Int) -> ByteArray): Boolean {
+        val kept = partial?.size ?: 0
+        val buffer = scratch(kept + READ_CHUNK)
+        partial?.copyInto(buffer)
+        val count = channel.read(ByteBuffer.wrap(buffer, kept, READ_CHUNK))
+        if (count < 0) {
+            ended(null)
+            return false
+        }
+        val length = kept + count
+        answered = false
+        val used = frames(buffer, length)
+        if (!isOpen) return false
+        partial = if (used == length) null else buffer.copyOfRange(used, length)
+        // A frame that began in this read began now; one still arriving keeps the time it began.
+        if (partial != null && (used > 0 || kept == 0)) frameBegun = System.nanoTime()
+        return count == READ_CHUNK || answered
+    }
+
+    /** Decodes and hands on every frame whole in [buffer]'s first [length] bytes; returns how many bytes they took. */
+    private fun frames(buffer: ByteArray, length: Int): Int {
+        var used = 0
+        while (isOpen && used < length) {
+            val size = extent.lengthOf(buffer, used, length - used)
+            if (size < 0) break
+            input.reset(buffer, used, size)
+            unpacker.reset(input)
+            values.begin()
+            if (authenticated) {
+                frames.read(values, ::deliver)?.let(::ack)
+            } else {
+                // Throws after a refusing PONG, which is sent before the connection closes.
+                handshake!!.ping(values, packer)
+                authenticated = true
+                answered = true
+            }
+            send()
+            used += size
+        }
+        return used
     }
 
     private fun deliver(tag: String, time: Instant, record: Map<String, Any?>) {
@@ -117,25 +161,65 @@ internal class ForwardConnection(
         received(ForwardEntry(tag, time, record, sender))
     }
 
-    private fun ack(packer: MessagePacker, chunk: String) {
+    private fun ack(chunk: String) {
         packer.packMapHeader(1).packString("ack").packString(chunk)
-        packer.flush()
+        answered = true
     }
 
-    /**
-     * Closes the socket when a frame stays incomplete for the frame timeout: the blocked read then fails. One wait per
-     * timeout at most, however many frames pass meanwhile: a frame begun at the time waited on and still being read
-     * after it is late.
-     */
-    private suspend fun closeStalledFrames() {
-        while (true) {
-            val begun = frameBegun.filterNotNull().first()
-            delay(settings.frameTimeout - (System.nanoTime() - begun).nanoseconds)
-            if (frameBegun.value == begun) {
-                timedOut = true
-                socket.close()
-                return
-            }
+    /** Hands what [packer] holds to the sender, as much as it takes now; the rest waits for the channel. */
+    private fun send() {
+        // What is packed reaches the packer's buffer on a flush.
+        packer.flush()
+        if (packer.bufferSize > 0) {
+            val bytes = packer.toByteArray()
+            packer.clear()
+            unsent.addLast(ByteBuffer.wrap(bytes))
+            unsentBytes += bytes.size
         }
+        while (unsent.isNotEmpty()) {
+            val first = unsent.first()
+            unsentBytes -= channel.write(first)
+            if (first.hasRemaining()) break
+            unsent.removeFirst()
+        }
+        if (!isOpen) return
+        key.interestOps(
+            when {
+                unsent.isEmpty() -> SelectionKey.OP_READ
+                // A sender that does not read its answers is not read from until it does.
+                unsentBytes > MAX_UNSENT -> SelectionKey.OP_WRITE
+                else -> SelectionKey.OP_READ or SelectionKey.OP_WRITE
+            }
+        )
+    }
+
+    /** The sender closed, or reset, the connection: refused when it did so in the middle of a frame. */
+    private fun ended(e: IOException?) {
+        if (partial != null) {
+            val why = e?.let { " (${it.javaClass.simpleName})" } ?: ""
+            refuse(ForwardRefusal.INCOMPLETE_FRAME, "the connection ended in the middle of a frame$why")
+        } else {
+            close()
+        }
+    }
+
+    /** Sends what answers wait (a refusing PONG), says why the connection is refused, and closes it. */
+    private fun refuse(refusal: ForwardRefusal, reason: String) {
+        if (!isOpen) return
+        try {
+            send()
+        } catch (e: IOException) {
+            // The sender is gone: the refusal is still counted and said.
+        }
+        close()
+        refused(sender, refusal, reason)
+    }
+
+    private companion object {
+        /** The most read at once: a sender with more waiting is read again without the input's rest. */
+        const val READ_CHUNK = 64 * 1024
+
+        /** The most answers kept for a sender that does not read them before it is no longer read from. */
+        const val MAX_UNSENT = 64 * 1024
     }
 }

@@ -96,6 +96,34 @@ class ForwardInputTest {
     }
 
     @Test
+    fun `frames that come in pieces, several at once, or larger than a read are handed on whole and in order`() {
+        ForwardHarness().use { harness ->
+            ForwardTestClient(harness.input.address).use { client ->
+                val small = packed { packArrayHeader(3).packString("piece").packLong(1).packMapHeader(0) }
+                // A byte at a time: whatever the reads see, the frame is decoded once.
+                small.forEach { client.sendRaw(byteArrayOf(it)) }
+                // Two frames in one write.
+                client.sendRaw(small + small)
+                // About 600 KB in one frame: several reads of the input's 64 KiB.
+                client.send {
+                    packArrayHeader(3).packString("large").packArrayHeader(2000)
+                    repeat(2000) { entry(1, "$it ".padEnd(300, 'x')) }
+                    packMapHeader(1).packString("chunk").packString("large-1")
+                }
+                assertEquals("""{"ack":"large-1"}""", client.receive().toJson())
+                assertEquals(listOf("piece", "piece", "piece"), harness.entries.take(3).map { it.tag })
+                val large = harness.entries.drop(3)
+                assertEquals(
+                    (0 until 2000).map { "$it" },
+                    large.map { (it.record["message"] as String).substringBefore(' ') },
+                )
+                assertTrue(large.all { (it.record["message"] as String).length == 300 })
+            }
+            assertEquals(0L, harness.input.refusals().values.sum())
+        }
+    }
+
+    @Test
     fun `malformed MessagePack closes that connection only and is counted`() {
         ForwardHarness().use { harness ->
             ForwardTestClient(harness.input.address).use { good ->
