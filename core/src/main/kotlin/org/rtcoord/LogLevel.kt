@@ -25,10 +25,13 @@ public enum class LogLevel {
          */
         @JvmStatic
         public fun named(name: String): LogLevel? =
-            when (val upper = name.trim().uppercase()) {
-                "WARNING" -> WARN
-                "CRITICAL" -> FATAL
-                else -> entries.firstOrNull { it.name == upper }
-            }
+            // Senders name levels as OpenRTM-aist writes them: the exact name is looked up first, as often as records
+            // come.
+            entries.firstOrNull { it.name == name }
+                ?: when (val upper = name.trim().uppercase()) {
+                    "WARNING" -> WARN
+                    "CRITICAL" -> FATAL
+                    else -> entries.firstOrNull { it.name == upper }
+                }
     }
 }

@@ -18,7 +18,7 @@ internal fun logRecordOf(entry: ForwardEntry, source: Node): LogRecord {
         level = record.text("level")?.let(LogLevel::named) ?: LogLevel.INFO,
         logger = record.text("name") ?: "",
         message = record.text("message") ?: record.text("log") ?: record.toString(),
-        pid = record.text("pid")?.trim()?.toLongOrNull(),
+        pid = record.text("pid")?.let { it.toLongOrNull() ?: it.trim().toLongOrNull() },
         host = record.text("host"),
         manager = record.text("manager"),
         tag = entry.tag,

@@ -1,5 +1,6 @@
 package org.rtcoord.internal.logs
 
+import java.util.concurrent.ConcurrentHashMap
 import org.rtcoord.ComponentNode
 import org.rtcoord.ManagerNode
 import org.rtcoord.Node
@@ -21,29 +22,26 @@ internal class LogSenders(
 ) {
     private class Found(val node: Node?, val at: Long)
 
-    private val found = HashMap<Pair<String, String?>, Found>()
+    /** Read without a lock: every record looks its sender up here. */
+    private val found = ConcurrentHashMap<Pair<String, String?>, Found>()
 
     /** Forgets every answer: the listings changed. */
     fun forget() {
-        synchronized(found) { found.clear() }
+        found.clear()
     }
 
     /** The component or manager [logger] of manager [manager] is, or null when no listed one matches. */
     fun senderOf(logger: String, manager: String?): Node? {
         val key = logger to manager
         val time = now()
-        synchronized(found) {
-            found[key]
-                ?.takeIf { time - it.at < ttlMillis }
-                ?.let {
-                    return it.node
-                }
-        }
+        found[key]
+            ?.takeIf { time - it.at < ttlMillis }
+            ?.let {
+                return it.node
+            }
         val node = find(logger.removePrefix(PYTHON_PREFIX), manager)
-        synchronized(found) {
-            if (found.size >= MAX_KEPT) found.clear()
-            found[key] = Found(node, time)
-        }
+        if (found.size >= MAX_KEPT) found.clear()
+        found[key] = Found(node, time)
         return node
     }
 
