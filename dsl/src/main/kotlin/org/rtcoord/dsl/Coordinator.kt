@@ -3,6 +3,8 @@
 package org.rtcoord.dsl
 
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.coroutines.CoroutineContext
+import kotlin.coroutines.EmptyCoroutineContext
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
@@ -30,6 +32,7 @@ import org.rtcoord.RtcEvent
 import org.rtcoord.RtcException
 import org.rtcoord.RtcTree
 import org.rtcoord.Subscription
+import org.rtcoord.dsl.internal.ActionJournal
 import org.rtcoord.dsl.internal.Configurator
 import org.rtcoord.dsl.internal.DataRuleRun
 import org.rtcoord.dsl.internal.Engine
@@ -160,7 +163,7 @@ public class Coordinator(
             withContext(engine) {
                 plan.dataRules.forEach { rule ->
                     DataRuleRun(rule, engine, scope) { what, handler ->
-                            run("rule $what") { Reaction(engine, null).handle(handler) }
+                            run("rule $what") { Reaction(engine, null).handle(handler = handler) }
                         }
                         .also { dataRuns += it }
                         .start()
@@ -187,7 +190,7 @@ public class Coordinator(
             scope.launch {
                 delay(timer.delay)
                 while (isActive) {
-                    run(timer.subject) { Reaction(engine, null).handle(timer.action) }
+                    run(timer.subject) { Reaction(engine, null).handle(handler = timer.action) }
                     delay(timer.period ?: break)
                 }
             }
@@ -296,23 +299,35 @@ public class Coordinator(
         }
     }
 
-    /** Runs [rule]'s handler on [event] if every guard holds; on the tree's threads, so the run's engine goes along. */
-    private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E): Unit =
-        withContext(engine) {
-            val reaction = Reaction(engine, event)
-            if (!rule.guards.all { guard -> reaction.guard(event) }) return@withContext
-            log("rule '${rule.description}' fired: ${describe(event)}")
-            val activity = ruleActivities.getValue(rule)
-            activity.fired(describe(event))
-            try {
-                run("rule '${rule.description}'", activity::failed) { reaction.handle { rule.handler(this, event) } }
-            } finally {
-                activity.returned()
+    /**
+     * Runs [rule]'s handler on [event] if every guard holds. Called in [scope] (its [HandlerQueue]'s coroutine), whose
+     * context carries the run's engine: no context to switch to, as often as records come.
+     */
+    private suspend fun <E : RtcEvent> fire(rule: Rule<E>, event: E) {
+        val reaction = Reaction(engine, event)
+        if (!rule.guards.all { guard -> reaction.guard(event) }) return
+        val described = describe(event)
+        log("rule '${rule.description}' fired: $described")
+        val activity = ruleActivities.getValue(rule)
+        activity.fired(described)
+        val journal = ActionJournal()
+        try {
+            run("rule '${rule.description}'", activity::failed, journal) {
+                reaction.handle(journal) { rule.handler(this, event) }
             }
+        } finally {
+            activity.returned()
         }
+    }
 
-    private suspend fun run(what: String, failedAs: (String) -> Unit = {}, block: suspend () -> Unit) {
-        catchFailure({ ScriptCallSite.tracking(block) }) { e ->
+    /** Runs [block] tracking its script frames, in [context] too; a failure is counted and logged as [what]'s. */
+    private suspend fun run(
+        what: String,
+        failedAs: (String) -> Unit = {},
+        context: CoroutineContext = EmptyCoroutineContext,
+        block: suspend () -> Unit,
+    ) {
+        catchFailure({ ScriptCallSite.tracking(context, block) }) { e ->
             failed(what, e)
             failedAs(e.message ?: e.toString())
         }
@@ -337,7 +352,7 @@ public class Coordinator(
     public suspend fun stop() {
         withContext(engine) {
             for (action in plan.stopActions) {
-                withTimeoutOrNull(STOP_LIMIT) { run("on stop") { Reaction(engine, null).handle(action) } }
+                withTimeoutOrNull(STOP_LIMIT) { run("on stop") { Reaction(engine, null).handle(handler = action) } }
                     ?: log("on stop did not finish within $STOP_LIMIT: cut short")
             }
         }

@@ -2,6 +2,7 @@ package org.rtcoord.dsl.internal
 
 import kotlin.coroutines.AbstractCoroutineContextElement
 import kotlin.coroutines.CoroutineContext
+import kotlin.coroutines.EmptyCoroutineContext
 import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.withContext
 
@@ -31,12 +32,12 @@ internal class ScriptCallSite : AbstractCoroutineContextElement(ScriptCallSite) 
         }
 
         /**
-         * Runs [block]; a failure without frames of the script gets those of its last call into the DSL, as a
-         * suppressed [CalledFromScript].
+         * Runs [block], in [context] too (one switch of context for both); a failure without frames of the script gets
+         * those of its last call into the DSL, as a suppressed [CalledFromScript].
          */
-        suspend fun <T> tracking(block: suspend () -> T): T {
+        suspend fun <T> tracking(context: CoroutineContext = EmptyCoroutineContext, block: suspend () -> T): T {
             val site = ScriptCallSite()
-            return catchFailure({ withContext(site) { block() } }) { e ->
+            return catchFailure({ withContext(site + context) { block() } }) { e ->
                 if (scriptFrames(e).isEmpty() && site.frames.isNotEmpty())
                     e.addSuppressed(CalledFromScript(site.frames))
                 throw e
