@@ -82,6 +82,8 @@ internal data class BenchOptions(
     /** How long the log records' CPU is sampled, after [logWarmup] at the same rate. */
     val logWindow: Duration = 10.seconds,
     val logWarmup: Duration = 5.seconds,
+    /** The longest warm-up of the log records, waiting for the JIT to be quiet. */
+    val logWarmupLimit: Duration = 40.seconds,
     /** Records sent while a slow view holds its first one. */
     val logFlood: Int = 200_000,
 ) {
@@ -190,6 +192,7 @@ in the same run). Results are printed, never stored.
                     logRate = 1000,
                     logWindow = 1.seconds,
                     logWarmup = 500.milliseconds,
+                    logWarmupLimit = 1.seconds,
                     logFlood = 20_000,
                 )
 

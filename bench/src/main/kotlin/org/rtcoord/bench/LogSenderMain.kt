@@ -4,6 +4,7 @@ package org.rtcoord.bench
 
 import java.net.InetSocketAddress
 import java.util.concurrent.CountDownLatch
+import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicLong
 import java.util.concurrent.locks.LockSupport
 import kotlin.system.exitProcess
@@ -14,7 +15,8 @@ import org.rtcoord.runtime.FluentLogSender
  * SENDERS RATE SECONDS`, each sender a connection of the runtime's [FluentLogSender] (Message mode, one record a call,
  * as OpenRTM-aist-Python's FluentLogger sends) naming the components of NAMES (comma-separated instance names) in turn,
  * all of them together sending RATE records a second for SECONDS; RATE 0: as fast as they can, SECONDS then being how
- * many records each sends. Prints `started` once every connection is open and `sent N failed M` at the end.
+ * many records each sends. Stops sooner when its standard input ends. Prints `started` once every connection is open
+ * and `sent N failed M` at the end.
  */
 fun main(args: Array<String>) {
     if (args.size != 6) {
@@ -36,6 +38,16 @@ fun main(args: Array<String>) {
     }
     println("started")
     System.out.flush()
+    val stopped = AtomicBoolean()
+    Thread(
+            {
+                System.`in`.readAllBytes()
+                stopped.set(true)
+            },
+            "stop",
+        )
+        .apply { isDaemon = true }
+        .start()
     val done = CountDownLatch(count)
     val start = System.nanoTime()
     senders.forEachIndexed { i, sender ->
@@ -48,7 +60,7 @@ fun main(args: Array<String>) {
                         var due = start + period * i / count
                         val end = start + amount * 1_000_000_000L
                         var n = 0L
-                        while (due < end) {
+                        while (due < end && !stopped.get()) {
                             val wait = due - System.nanoTime()
                             if (wait > 0) LockSupport.parkNanos(wait)
                             if (sender.send(name, LEVELS[(n % LEVELS.size).toInt()], "scan ${n++} ok"))
@@ -58,6 +70,7 @@ fun main(args: Array<String>) {
                         }
                     } else {
                         for (n in 0 until amount) {
+                            if (stopped.get()) break
                             if (sender.send(name, LEVELS[(n % LEVELS.size).toInt()], "scan $n ok"))
                                 sent.incrementAndGet()
                             else failed.incrementAndGet()
