@@ -5,9 +5,14 @@ import java.net.BindException
 import java.net.ConnectException
 import java.net.DatagramPacket
 import java.net.DatagramSocket
+import java.net.InetSocketAddress
 import java.time.Instant
+import java.util.concurrent.ConcurrentLinkedQueue
 import java.util.zip.GZIPOutputStream
 import kotlin.time.Duration.Companion.milliseconds
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
 import org.junit.jupiter.api.Assertions.assertArrayEquals
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -281,6 +286,30 @@ class ForwardInputTest {
                 harness.awaitRefusal(ForwardRefusal.WRONG_KEY)
                 assertTrue(harness.entries.isEmpty())
             }
+    }
+
+    @Test
+    fun `a callback that throws closes that connection only, and the input serves the others`() {
+        val job = SupervisorJob()
+        val received = ConcurrentLinkedQueue<ForwardEntry>()
+        val settings = ForwardSettings(InetSocketAddress("127.0.0.1", 0))
+        val receiving = { entry: ForwardEntry ->
+            check(entry.tag != "boom") { "the callback's own bug" }
+            received += entry
+        }
+        ForwardInput(CoroutineScope(job + Dispatchers.Default), settings, receiving) { _, _, _ -> }
+            .use { input ->
+                ForwardTestClient(input.address).use { good ->
+                    ForwardTestClient(input.address).use { unlucky ->
+                        message(unlucky, "boom")
+                        assertTrue(unlucky.closedByServer())
+                        message(good, "after")
+                        await("the other connection's entry") { received.any { it.tag == "after" } }
+                    }
+                }
+                assertEquals(0L, input.refusals().values.sum(), "not the sender's doing")
+            }
+        job.cancel()
     }
 
     @Test
