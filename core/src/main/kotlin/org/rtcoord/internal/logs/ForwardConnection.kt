@@ -55,8 +55,7 @@ internal class ForwardConnection(
     private var frameBegun = 0L
 
     /** Whether the connection is still served: false once closed, for whatever reason. */
-    var isOpen = true
-        private set
+    private var isOpen = true
 
     /** Sends HELO when a key is set: the sender's first frame is then its PING. */
     fun start() {
@@ -131,7 +130,10 @@ internal class ForwardConnection(
         return count == READ_CHUNK || answered
     }
 
-    /** Decodes and hands on every frame whole in [buffer]'s first [length] bytes; returns how many bytes they took. */
+    /**
+     * Decodes and hands on every frame whole in [buffer]'s first [length] bytes, then sends their answers in one write;
+     * returns how many bytes they took.
+     */
     private fun frames(buffer: ByteArray, length: Int): Int {
         var used = 0
         while (isOpen && used < length) {
@@ -148,9 +150,9 @@ internal class ForwardConnection(
                 authenticated = true
                 answered = true
             }
-            send()
             used += size
         }
+        if (answered) send()
         return used
     }
 
