@@ -42,6 +42,8 @@ internal data class BenchOptions(
     val monitoredComponents: Int,
     val monitoringWindow: Duration,
     val monitoringWarmup: Duration,
+    /** Components watched by push in the monitoring benchmark's section at scale. */
+    val pushScaleComponents: Int = 10_000,
     val roundTripRepetitions: Int,
     /** Tree sizes to try for the memory benchmark, largest first: the first the machine can serve counts. */
     val memorySizes: List<Int>,
@@ -168,6 +170,7 @@ in the same run). Results are printed, never stored.
                     reactionChanges = 20,
                     reactionWarmUpLimit = 20,
                     monitoredComponents = 10,
+                    pushScaleComponents = 20,
                     monitoringWindow = 1.seconds,
                     monitoringWarmup = 500.milliseconds,
                     roundTripRepetitions = 1,

@@ -14,6 +14,7 @@ import org.rtcoord.EventOptions
 import org.rtcoord.RtcTree
 import org.rtcoord.StateChanged
 import org.rtcoord.TreeConfig
+import org.rtcoord.WatchMethod
 import org.rtcoord.WatchMode
 import org.rtcoord.fixtures.FixtureProcess
 
@@ -47,9 +48,54 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
                 EventOptions(WatchMode.POLL, pollPeriod = 100.milliseconds),
             )
         }
+        atScale()
     }
 
-    private suspend fun watch(address: String, components: ProcessHandle, label: String, watching: EventOptions?) {
+    /**
+     * Push at scale (issue 54: "10,000 components watched by push: under 10% of a core; memory at most 8 KB per
+     * component"): the live heap the tree and its subscriptions add, over the bench JVM's before the tree, per
+     * component.
+     */
+    private suspend fun atScale() {
+        val n = options.pushScaleComponents
+        FixtureProcess.start("--scenario", "scale:$n", timeout = 10.minutes).use { fixtures ->
+            report.section(
+                "monitoring cost at scale: $n components watched by push for ${options.monitoringWindow}, after ${options.monitoringWarmup} warm-up"
+            )
+            val components = ProcessHandle.of(fixtures.pid).orElseThrow()
+            val heapBefore = Heap.live()
+            watch(fixtures.address, components, "push, $n components", EventOptions(WatchMode.PUSH), heapBefore)
+        }
+    }
+
+    /** Waits, at most [SETTLE_LIMIT], until the tree watches all [count] components by push; reports how long. */
+    private suspend fun settled(tree: RtcTree, label: String, count: Int) {
+        val started = System.nanoTime()
+        var pushed = 0
+        while (System.nanoTime() - started < SETTLE_LIMIT.inWholeNanoseconds) {
+            pushed = tree.snapshot().components.count { it.watchMethod is WatchMethod.Pushed }
+            if (pushed >= count) break
+            delay(1.seconds)
+        }
+        report.value(
+            "$label: every observer attached after",
+            (System.nanoTime() - started) / 1e9,
+            "s",
+            "$pushed of $count components watched by push when the warm-up began (at most ${SETTLE_LIMIT.inWholeMinutes} min waited)",
+        )
+    }
+
+    /**
+     * Watches every component of the system at [address] as [watching] says (null: only the tree) and reports the
+     * window's CPU, both JVMs', and heap; with [heapBefore], also the live heap the tree adds per component.
+     */
+    private suspend fun watch(
+        address: String,
+        components: ProcessHandle,
+        label: String,
+        watching: EventOptions?,
+        heapBefore: Long? = null,
+    ) {
         RtcTree(TreeConfig(listOf(address))).use { tree ->
             tree.refresh()
             val nodes = tree.find { it is ComponentNode }.toList()
@@ -63,6 +109,8 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
                         }
                     }
                     .orEmpty()
+            // At scale attaching every observer takes a while: the window measures watching, not attaching.
+            if (heapBefore != null) settled(tree, label, nodes.size)
             delay(options.monitoringWarmup)
             val missedBefore = tree.missedPollTicks
             val cpu = mutableListOf<Double>()
@@ -84,13 +132,15 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
                 before = now
             }
             val missed = tree.missedPollTicks - missedBefore
-            val live = Heap.live() / Heap.MB
+            val liveBytes = Heap.live()
+            val live = liveBytes / Heap.MB
             subscriptions.forEach { it.cancel() }
             val cpuSamples = Samples(cpu, "% core")
             val target =
-                when (watching?.mode) {
-                    null -> ""
-                    WatchMode.POLL -> "; target: under 30% of one core"
+                when {
+                    watching == null -> ""
+                    watching.mode == WatchMode.POLL -> "; target: under 30% of one core"
+                    heapBefore != null -> "; target: under 10% of one core"
                     else -> "; target: under 5% of one core"
                 }
             report.row(
@@ -104,6 +154,14 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
                 "mean ${figure(fixturesCpu.average())}% of one core: the ${nodes.size} components answering, in their own JVM",
             )
             report.row("$label: heap used", Samples(heap, "MB"), "live after GC ${figure(live)} MB")
+            if (heapBefore != null) {
+                report.value(
+                    "$label: live heap per component",
+                    (liveBytes - heapBefore) / 1024.0 / nodes.size,
+                    "KB",
+                    "the tree and its ${subscriptions.size} subscriptions, over the JVM's ${figure(heapBefore / Heap.MB)} MB before the tree; target: at most 8 KB",
+                )
+            }
             if (watching?.mode == WatchMode.POLL) {
                 val ticks =
                     nodes.size *
@@ -123,5 +181,10 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
                 report.value("$label: rate achieved", achieved, "Hz", "reads of each component per second (10 asked)")
             }
         }
+    }
+
+    private companion object {
+        /** The longest wait for every observer to be attached before the window. */
+        val SETTLE_LIMIT = 5.minutes
     }
 }

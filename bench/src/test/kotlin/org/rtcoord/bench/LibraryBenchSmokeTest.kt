@@ -12,8 +12,12 @@ class LibraryBenchSmokeTest {
     fun `the monitoring and data benchmarks run on a tiny system and land in one table`(): Unit = runBlocking {
         smokeRun(
             listOf(Benchmark.MONITORING, Benchmark.DATA),
-            sections = listOf("monitoring cost:", "data: tap of a TimedDoubleSeq(181)"),
-            rows = listOf(Regex("""silence noticed after 100 ms\s+1\s""")),
+            sections = listOf("monitoring cost:", "monitoring cost at scale:", "data: tap of a TimedDoubleSeq(181)"),
+            rows =
+                listOf(
+                    Regex("""silence noticed after 100 ms\s+1\s"""),
+                    Regex("""push, 20 components: live heap per component\s+1\s"""),
+                ),
         )
     }
 }
