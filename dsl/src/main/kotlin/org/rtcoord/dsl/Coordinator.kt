@@ -3,8 +3,6 @@
 package org.rtcoord.dsl
 
 import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.coroutines.CoroutineContext
-import kotlin.coroutines.EmptyCoroutineContext
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
@@ -163,7 +161,7 @@ public class Coordinator(
             withContext(engine) {
                 plan.dataRules.forEach { rule ->
                     DataRuleRun(rule, engine, scope) { what, handler ->
-                            run("rule $what") { Reaction(engine, null).handle(handler = handler) }
+                            react("rule $what", Reaction(engine, null), handler = handler)
                         }
                         .also { dataRuns += it }
                         .start()
@@ -190,7 +188,7 @@ public class Coordinator(
             scope.launch {
                 delay(timer.delay)
                 while (isActive) {
-                    run(timer.subject) { Reaction(engine, null).handle(handler = timer.action) }
+                    react(timer.subject, Reaction(engine, null), handler = timer.action)
                     delay(timer.period ?: break)
                 }
             }
@@ -293,9 +291,7 @@ public class Coordinator(
 
     private suspend fun escalated(supervision: Supervision, escalation: Escalation) {
         for (handler in supervision.escalationHandlers) {
-            run("escalation handler of ${escalation.supervisor}") {
-                Reaction(engine, null).handle { handler(escalation) }
-            }
+            react("escalation handler of ${escalation.supervisor}", Reaction(engine, null)) { handler(escalation) }
         }
     }
 
@@ -310,24 +306,25 @@ public class Coordinator(
         log("rule '${rule.description}' fired: $described")
         val activity = ruleActivities.getValue(rule)
         activity.fired(described)
-        val journal = ActionJournal()
         try {
-            run("rule '${rule.description}'", activity::failed, journal) {
-                reaction.handle(journal) { rule.handler(this, event) }
-            }
+            react("rule '${rule.description}'", reaction, activity::failed) { rule.handler(this, event) }
         } finally {
             activity.returned()
         }
     }
 
-    /** Runs [block] tracking its script frames, in [context] too; a failure is counted and logged as [what]'s. */
-    private suspend fun run(
+    /**
+     * Runs [handler] as [reaction]'s, its actions journaled and its script frames tracked in one switch of context; a
+     * failure is counted and logged as [what]'s.
+     */
+    private suspend fun react(
         what: String,
+        reaction: Reaction,
         failedAs: (String) -> Unit = {},
-        context: CoroutineContext = EmptyCoroutineContext,
-        block: suspend () -> Unit,
+        handler: suspend Reaction.() -> Unit,
     ) {
-        catchFailure({ ScriptCallSite.tracking(context, block) }) { e ->
+        val journal = ActionJournal()
+        catchFailure({ ScriptCallSite.tracking(journal) { reaction.handle(journal, handler) } }) { e ->
             failed(what, e)
             failedAs(e.message ?: e.toString())
         }
@@ -352,7 +349,7 @@ public class Coordinator(
     public suspend fun stop() {
         withContext(engine) {
             for (action in plan.stopActions) {
-                withTimeoutOrNull(STOP_LIMIT) { run("on stop") { Reaction(engine, null).handle(handler = action) } }
+                withTimeoutOrNull(STOP_LIMIT) { react("on stop", Reaction(engine, null), handler = action) }
                     ?: log("on stop did not finish within $STOP_LIMIT: cut short")
             }
         }

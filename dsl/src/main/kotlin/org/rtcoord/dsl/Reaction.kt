@@ -3,7 +3,6 @@ package org.rtcoord.dsl
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.TimeoutCancellationException
-import kotlinx.coroutines.currentCoroutineContext
 import kotlinx.coroutines.withContext
 import kotlinx.coroutines.withTimeout
 import kotlinx.coroutines.withTimeoutOrNull
@@ -173,14 +172,12 @@ internal constructor(
     private val fallbacks = java.util.concurrent.CopyOnWriteArrayList<suspend Reaction.(ReactionFailure) -> Unit>()
 
     /**
-     * Runs [handler] as this reaction's handler: its actions are journaled in [journal], and if it fails its
-     * [onFailure] fallbacks run before the failure goes on to the caller. A caller that already runs in [journal]'s
-     * context spares a context switch, as often as records come.
+     * Runs [handler] as this reaction's handler, in a context that holds [journal], where its actions are journaled; if
+     * it fails its [onFailure] fallbacks run before the failure goes on to the caller.
      */
-    internal suspend fun handle(journal: ActionJournal = ActionJournal(), handler: suspend Reaction.() -> Unit) {
+    internal suspend fun handle(journal: ActionJournal, handler: suspend Reaction.() -> Unit) {
         this.journal = journal
-        val inJournal = currentCoroutineContext()[ActionJournal] === journal
-        catchFailure({ if (inJournal) handler() else withContext(journal) { handler() } }) { e ->
+        catchFailure({ handler() }) { e ->
             val failure = ReactionFailure(e, journal.done) { engine.log(it) }
             for (fallback in fallbacks) {
                 catchFailure({ fallback(failure) }) { other ->
