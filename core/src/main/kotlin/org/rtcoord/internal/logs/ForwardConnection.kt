@@ -45,9 +45,6 @@ internal class ForwardConnection(
     private var unsentBytes = 0
     private var authenticated = handshake == null
 
-    /** Whether the frames of the last read were answered: a PONG or an acknowledgement. */
-    private var answered = false
-
     /** The bytes of a frame begun and not yet whole, or null between frames. */
     private var partial: ByteArray? = null
 
@@ -121,8 +118,8 @@ internal class ForwardConnection(
             return false
         }
         val length = kept + count
-        answered = false
         val used = frames(buffer, length)
+        val answered = send()
         if (!isOpen) return false
         partial = if (used == length) null else buffer.copyOfRange(used, length)
         // A frame that began in this read began now; one still arriving keeps the time it began.
@@ -131,8 +128,8 @@ internal class ForwardConnection(
     }
 
     /**
-     * Decodes and hands on every frame whole in [buffer]'s first [length] bytes, then sends their answers in one write;
-     * returns how many bytes they took.
+     * Decodes and hands on every frame whole in [buffer]'s first [length] bytes, packing their answers to be sent in
+     * one write; returns how many bytes they took.
      */
     private fun frames(buffer: ByteArray, length: Int): Int {
         var used = 0
@@ -148,11 +145,9 @@ internal class ForwardConnection(
                 // Throws after a refusing PONG, which is sent before the connection closes.
                 handshake!!.ping(values, packer)
                 authenticated = true
-                answered = true
             }
             used += size
         }
-        if (answered) send()
         return used
     }
 
@@ -165,18 +160,23 @@ internal class ForwardConnection(
 
     private fun ack(chunk: String) {
         packer.packMapHeader(1).packString("ack").packString(chunk)
-        answered = true
     }
 
-    /** Hands what [packer] holds to the sender, as much as it takes now; the rest waits for the channel. */
-    private fun send() {
+    /**
+     * Hands what [packer] holds to the sender, as much as it takes now; the rest waits for the channel. Returns whether
+     * [packer] held anything: the sender was answered.
+     */
+    private fun send(): Boolean {
         // What is packed reaches the packer's buffer on a flush.
         packer.flush()
-        if (packer.bufferSize > 0) {
+        val answered = packer.bufferSize > 0
+        if (answered) {
             val bytes = packer.toByteArray()
             packer.clear()
             unsent.addLast(ByteBuffer.wrap(bytes))
             unsentBytes += bytes.size
+        } else if (unsent.isEmpty()) {
+            return false
         }
         while (unsent.isNotEmpty()) {
             val first = unsent.first()
@@ -184,7 +184,7 @@ internal class ForwardConnection(
             if (first.hasRemaining()) break
             unsent.removeFirst()
         }
-        if (!isOpen) return
+        if (!isOpen) return answered
         key.interestOps(
             when {
                 unsent.isEmpty() -> SelectionKey.OP_READ
@@ -193,6 +193,7 @@ internal class ForwardConnection(
                 else -> SelectionKey.OP_READ or SelectionKey.OP_WRITE
             }
         )
+        return answered
     }
 
     /** The sender closed, or reset, the connection: refused when it did so in the middle of a frame. */
