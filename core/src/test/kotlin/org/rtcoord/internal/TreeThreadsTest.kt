@@ -1,0 +1,89 @@
+package org.rtcoord.internal
+
+import java.util.concurrent.ConcurrentHashMap
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.TimeUnit
+import java.util.concurrent.atomic.AtomicInteger
+import kotlin.time.Duration.Companion.milliseconds
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Job
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.joinAll
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.rtcoord.fixtures.await
+
+/**
+ * A tree keeps as few threads as its work needs: a fixed pool kept 32 threads alive under 1 s heartbeats. Still, its
+ * coroutines never run more than its concurrency at once, and a timer's task runs on a worker, not on the timer.
+ */
+class TreeThreadsTest {
+    @Test
+    fun `coroutines that block run at most concurrency at once`() = runBlocking {
+        TreeThreads(concurrency = 4).use { threads ->
+            val running = AtomicInteger()
+            val most = AtomicInteger()
+            CoroutineScope(threads.dispatcher)
+                .run {
+                    List(40) {
+                        launch {
+                            most.accumulateAndGet(running.incrementAndGet(), ::maxOf)
+                            Thread.sleep(5)
+                            running.decrementAndGet()
+                        }
+                    }
+                }
+                .joinAll()
+            assertTrue(most.get() in 2..4, "${most.get()} ran at once")
+        }
+    }
+
+    @Test
+    fun `work that comes one task at a time keeps one worker, and idle workers end`() = runBlocking {
+        TreeThreads(concurrency = 32, idle = 300.milliseconds).use { threads ->
+            // A burst makes several workers.
+            val burst = CountDownLatch(8)
+            val workers = ConcurrentHashMap.newKeySet<Thread>()
+            repeat(8) {
+                threads.submit {
+                    workers += Thread.currentThread()
+                    burst.countDown()
+                    burst.await(5, TimeUnit.SECONDS)
+                }
+            }
+            assertTrue(burst.await(5, TimeUnit.SECONDS))
+            // Then a task every 20 ms, as heartbeats come: the most recently idle worker takes each.
+            val used = ConcurrentHashMap.newKeySet<String>()
+            val ticking: Job =
+                CoroutineScope(threads.dispatcher).launch {
+                    repeat(50) {
+                        used += Thread.currentThread().name
+                        delay(20)
+                    }
+                }
+            ticking.join()
+            assertTrue(used.size <= 3, "one task at a time ran on $used")
+            await("the burst's idle workers end") { workers.count(Thread::isAlive) <= 3 }
+        }
+    }
+
+    @Test
+    fun `a timed task runs on a worker once its time has passed`() {
+        TreeThreads(concurrency = 2).use { threads ->
+            val ran = CountDownLatch(1)
+            var thread = ""
+            val start = System.nanoTime()
+            var after = 0L
+            threads.schedule(50_000_000) {
+                after = System.nanoTime() - start
+                thread = Thread.currentThread().name
+                ran.countDown()
+            }
+            assertTrue(ran.await(5, TimeUnit.SECONDS))
+            assertTrue(after >= 50_000_000, "ran after ${after / 1000} us")
+            assertTrue(thread.startsWith("rtcoord-tree-"), "ran on $thread")
+        }
+    }
+}
