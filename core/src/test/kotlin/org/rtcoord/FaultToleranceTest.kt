@@ -190,8 +190,11 @@ class FaultToleranceTest {
                     hung.release()
                 }
                 hungEvents.next<Recovered>(timeout = 10.seconds)
-                // The deactivation held while it hung goes through once released, as a late CORBA call does.
-                await("the held deactivation") { hung.state == RTC.LifeCycleState.INACTIVE_STATE }
+                // The deactivation held while it hung goes through once released, as a late CORBA call does, and the
+                // tree tells of it: whether its read on recovery, the observer it attaches anew or the read that
+                // confirms the attachment sees it. Activating before then could hide both transitions from the tree.
+                hungEvents.next<StateChanged> { it.new == LifeCycle.INACTIVE }
+                assertEquals(RTC.LifeCycleState.INACTIVE_STATE, hung.state)
                 hungNode.activate()
                 assertEquals(
                     LifeCycle.ACTIVE,
