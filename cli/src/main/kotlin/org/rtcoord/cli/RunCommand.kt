@@ -26,6 +26,7 @@ import org.rtcoord.cli.serve.LiveService
 import org.rtcoord.cli.serve.ServeOptions
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.LiveCheck
+import org.rtcoord.dsl.script.CompiledCoordinator
 import org.rtcoord.dsl.script.ScriptFailure
 import org.rtcoord.dsl.script.ScriptHost
 
@@ -86,9 +87,12 @@ class RunCommand : TreeCommand("run") {
     private val logInput by LogInputOptions()
 
     override suspend fun execute() {
+        val scripts = ScriptHost()
+        if (CompilerProcess.wanted && !CompiledCoordinator.isCompiled(script) && !scripts.isCached(script))
+            CompilerProcess.compile(script)
         val coordination =
             try {
-                ScriptHost().load(script, arguments, session.treeConfig())
+                scripts.load(script, arguments, session.treeConfig())
             } catch (e: ScriptFailure) {
                 // Each problem (file:line:col: message) is an error line of its own.
                 e.problems.dropLast(1).forEach { echo("rtcoord: $it", err = true) }

@@ -37,6 +37,12 @@ public object CompiledScripts {
             }
         }
 
+    /**
+     * Whether [source] as it is now is kept in [directory], compiled against [templates]: it starts without compiling.
+     */
+    public fun holds(directory: Path, source: SourceCode, vararg templates: Class<*>): Boolean =
+        jarOf(directory, source, templates).isFile
+
     private fun jarOf(directory: Path, source: SourceCode, templates: Array<out Class<*>>): File {
         val digest = MessageDigest.getInstance("SHA-256")
         digest.update(source.text.toByteArray())

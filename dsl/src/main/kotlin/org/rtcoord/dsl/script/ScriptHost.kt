@@ -33,6 +33,15 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     /** Without the cache: a script taken from it is only a jar of classes, without the compiler's output to write. */
     private val fresh by lazy { JvmScriptCompiler(CompiledScripts.host(null, CoordinatorScript::class.java)) }
 
+    /**
+     * Whether [script], as its file is now, was compiled before and is kept in the cache: [load] starts it without the
+     * Kotlin compiler. False without a cache, or for a file that cannot be read.
+     */
+    public fun isCached(script: Path): Boolean =
+        cacheDirectory != null &&
+            Files.isRegularFile(script) &&
+            CompiledScripts.holds(cacheDirectory, script.toFile().toScriptSource(), CoordinatorScript::class.java)
+
     /** Compiles [script]; returns its errors (none when it compiles). */
     public suspend fun check(script: Path): List<String> =
         when (val result = compile(script)) {

@@ -1,0 +1,34 @@
+package org.rtcoord.cli
+
+import java.nio.file.Files
+import java.nio.file.Path
+import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.Assertions.assertFalse
+import org.junit.jupiter.api.Assertions.assertTrue
+import org.junit.jupiter.api.Test
+import org.junit.jupiter.api.io.TempDir
+import org.rtcoord.dsl.script.ScriptHost
+
+/** A script compiled apart is in the cache, so the JVM that runs it next starts it without the compiler. */
+class CompilerProcessTest {
+    @Test
+    fun `a script compiled in a JVM of its own is then taken from the cache`(@TempDir dir: Path) = runBlocking {
+        // A text no other test compiles: it cannot be in the cache already.
+        val script =
+            Files.writeString(
+                dir.resolve("apart.coord.kts"),
+                "// ${System.nanoTime()}\non(component(\"laser0.rtc\")).state(ERROR) { log(\"laser down\") }\n",
+            )
+        val scripts = ScriptHost()
+        assertFalse(scripts.isCached(script))
+        assertTrue(CompilerProcess.compile(script), "the other JVM compiled it")
+        assertTrue(scripts.isCached(script))
+    }
+
+    @Test
+    fun `a script with errors is left to compile where it runs`(@TempDir dir: Path) = runBlocking {
+        val script = Files.writeString(dir.resolve("broken.coord.kts"), "on(nothing(${System.nanoTime()}))\n")
+        assertFalse(CompilerProcess.compile(script))
+        assertFalse(ScriptHost().isCached(script))
+    }
+}
