@@ -51,7 +51,6 @@ public object CompiledScripts {
             val jar = File(template.protectionDomain.codeSource.location.toURI())
             digest.update("${jar.lastModified()}:${jar.length()}".toByteArray())
         }
-        Files.createDirectories(directory)
         return directory.resolve(digest.digest().joinToString("") { "%02x".format(it) } + ".jar").toFile()
     }
 
@@ -91,6 +90,7 @@ public object CompiledScripts {
             scriptCompilationConfiguration: ScriptCompilationConfiguration,
         ) {
             val jar = jarOf(script).toPath()
+            Files.createDirectories(jar.parent)
             val part = Files.createTempFile(jar.parent, jar.fileName.toString(), ".part")
             try {
                 CompiledScriptJarsCache { _, _ -> part.toFile() }

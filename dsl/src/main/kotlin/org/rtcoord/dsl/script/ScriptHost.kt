@@ -2,6 +2,7 @@
 
 package org.rtcoord.dsl.script
 
+import java.io.IOException
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
@@ -39,8 +40,11 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
      */
     public fun isCached(script: Path): Boolean =
         cacheDirectory != null &&
-            Files.isRegularFile(script) &&
-            CompiledScripts.holds(cacheDirectory, script.toFile().toScriptSource(), CoordinatorScript::class.java)
+            try {
+                CompiledScripts.holds(cacheDirectory, script.toFile().toScriptSource(), CoordinatorScript::class.java)
+            } catch (e: IOException) {
+                false
+            }
 
     /** Compiles [script]; returns its errors (none when it compiles). */
     public suspend fun check(script: Path): List<String> =
