@@ -5,6 +5,8 @@ import java.nio.file.Path
 import java.nio.file.Paths
 import java.nio.file.attribute.FileTime
 import java.nio.file.attribute.PosixFilePermissions
+import java.util.concurrent.CompletableFuture
+import java.util.concurrent.TimeUnit
 import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -73,15 +75,7 @@ class LauncherIT {
     fun `the launcher archives a browsing command's classes on its first run and maps them after, silently`(
         @TempDir directory: Path
     ) {
-        val tree = launcherTree(directory)
-        // Sources and jar made a while ago, so that an archive made now is newer than all of them.
-        Files.walk(tree)
-            .filter { Files.isRegularFile(it) }
-            .forEach { Files.setLastModifiedTime(it, FileTime.fromMillis(System.currentTimeMillis() - 600_000)) }
-        Files.setLastModifiedTime(
-            tree.resolve("cli/target").resolve(jar.fileName),
-            FileTime.fromMillis(System.currentTimeMillis() - 300_000),
-        )
+        val tree = agedLauncherTree(directory)
         val cache = directory.resolve("cache")
         val environment = mapOf("RTCOORD_CACHE" to cache.toString())
         val expected = runRtcoord("ls", "-l", localisation.host).ok()
@@ -123,7 +117,54 @@ class LauncherIT {
         assertTrue(Files.notExists(directory.resolve("maven-called")))
     }
 
+    @Test
+    fun `a SIGTERM to the launcher while it archives ends the command's JVM and leaves no partial archive`(
+        @TempDir directory: Path
+    ) {
+        val tree = agedLauncherTree(directory)
+        val cache = directory.resolve("cache")
+        val watch =
+            ProcessBuilder(tree.resolve("rtcoord").toString(), "watch", localisation.host)
+                .redirectErrorStream(true)
+                .apply {
+                    environment()["PATH"] = fakeMaven(directory)
+                    environment()["RTCOORD_CACHE"] = cache.toString()
+                }
+                .start()
+        var jvm: ProcessHandle? = null
+        try {
+            // The JVM runs as the launcher's child while it writes the archive; it watches once it prints a line.
+            val firstLine = CompletableFuture.supplyAsync { watch.inputStream.bufferedReader().readLine() }
+            assertTrue(firstLine.get(60, TimeUnit.SECONDS) != null, "watch printed nothing")
+            jvm = watch.toHandle().children().toList().single()
+            watch.destroy()
+            assertTrue(watch.waitFor(30, TimeUnit.SECONDS), "the launcher ended")
+            assertTrue(!jvm.onExit().get(30, TimeUnit.SECONDS).isAlive, "the JVM ended with it")
+            assertEquals(0, watch.exitValue(), "watch stops as on Ctrl-C")
+            val archives =
+                Files.list(cache.resolve("cds")).use { files -> files.map { it.fileName.toString() }.toList() }
+            assertTrue(archives.none { it.contains(".jsa.") }, "no partial archive left: $archives")
+        } finally {
+            // An orphaned JVM is no longer the launcher's descendant.
+            jvm?.destroyForcibly()
+            watch.destroyForcibly()
+        }
+    }
+
     private fun version() = jar.fileName.toString().removePrefix("rtcoord-cli-").removeSuffix(".jar")
+
+    /** [launcherTree] with its sources and jar made a while ago, so that an archive made now is newer than all. */
+    private fun agedLauncherTree(directory: Path): Path {
+        val tree = launcherTree(directory)
+        Files.walk(tree)
+            .filter { Files.isRegularFile(it) }
+            .forEach { Files.setLastModifiedTime(it, FileTime.fromMillis(System.currentTimeMillis() - 600_000)) }
+        Files.setLastModifiedTime(
+            tree.resolve("cli/target").resolve(jar.fileName),
+            FileTime.fromMillis(System.currentTimeMillis() - 300_000),
+        )
+        return tree
+    }
 
     /**
      * A copy of the project as the launcher sees it: the script, module folders, and the built jar with its lib folder,

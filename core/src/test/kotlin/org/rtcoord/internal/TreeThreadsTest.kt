@@ -41,7 +41,7 @@ class TreeThreadsTest {
     }
 
     @Test
-    fun `work that comes one task at a time keeps one worker, and idle workers end`() = runBlocking {
+    fun `work that comes one task at a time reuses a few workers, and idle ones end`() = runBlocking {
         TreeThreads(concurrency = 32, idle = 300.milliseconds).use { threads ->
             // A burst makes several workers.
             val burst = CountDownLatch(8)
