@@ -1,6 +1,6 @@
 package org.rtcoord
 
-import java.util.Collections
+import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -56,7 +56,7 @@ class CallbackContractTest {
     @Test
     fun `a burst of 100 transitions arrives complete and in order`(): Unit = runBlocking {
         val node = relay("burst0")
-        val seen = Collections.synchronizedList(mutableListOf<LifeCycle>())
+        val seen = CopyOnWriteArrayList<LifeCycle>()
         tree.on<StateChanged>(node, StateChanged::class.java, push) { seen += it.new }
         val fixture = localisation.system.component("burst0")
         val context = fixture.ref.get_owned_contexts()[0]
@@ -71,7 +71,7 @@ class CallbackContractTest {
     @Test
     fun `queue delivers everything in order to a slow handler`(): Unit = runBlocking {
         val node = relay("queued0")
-        val seen = Collections.synchronizedList(mutableListOf<LifeCycle>())
+        val seen = CopyOnWriteArrayList<LifeCycle>()
         tree.on<StateChanged>(node, StateChanged::class.java, push) {
             delay(30)
             seen += it.new
@@ -84,8 +84,8 @@ class CallbackContractTest {
     @Test
     fun `skip drops what comes while the handler runs, latest keeps only the newest`(): Unit = runBlocking {
         val node = relay("busy0")
-        val skipped = Collections.synchronizedList(mutableListOf<StateChanged>())
-        val latest = Collections.synchronizedList(mutableListOf<StateChanged>())
+        val skipped = CopyOnWriteArrayList<StateChanged>()
+        val latest = CopyOnWriteArrayList<StateChanged>()
         tree.on<StateChanged>(node, StateChanged::class.java, EventOptions(WatchMode.PUSH, overlap = Overlap.SKIP)) {
             skipped += it
             delay(400)

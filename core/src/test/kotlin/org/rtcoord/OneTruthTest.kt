@@ -3,7 +3,7 @@ package org.rtcoord
 import java.net.InetAddress
 import java.net.InetSocketAddress
 import java.net.Socket
-import java.util.Collections
+import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -89,7 +89,7 @@ class OneTruthTest {
             Scenarios.localisation(server.corbaloc).use { system ->
                 RtcTree(TreeConfig(listOf(server.address))).use { tree ->
                     val recorder = EventRecorder()
-                    val appeared = Collections.synchronizedList(ArrayList<RtcPath>())
+                    val appeared = CopyOnWriteArrayList<RtcPath>()
                     tree.on("/${server.address}", RtcEvent::class.java, push) { event ->
                         if (event is NodeAppeared) appeared += event.child.path
                         recorder.handler(event)
@@ -112,8 +112,7 @@ class OneTruthTest {
                     recorder.next<NodeAppeared>(timeout = 10.seconds) { it.child.name == "late0.rtc" }
                     system.runtime.create(Scenarios.relay, "late1")
                     recorder.next<NodeAppeared>(timeout = 10.seconds) { it.child.name == "late1.rtc" }
-                    val twice =
-                        synchronized(appeared) { appeared.groupingBy { it }.eachCount().filterValues { it > 1 } }
+                    val twice = appeared.groupingBy { it }.eachCount().filterValues { it > 1 }
                     assertEquals(emptyMap<RtcPath, Int>(), twice, "appeared more than once")
                 }
             }

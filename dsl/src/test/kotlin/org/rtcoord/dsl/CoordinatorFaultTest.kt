@@ -1,6 +1,5 @@
 package org.rtcoord.dsl
 
-import java.util.Collections
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.hours
@@ -34,7 +33,7 @@ import org.rtcoord.runtime.rtSystem
  */
 class CoordinatorFaultTest {
     private val naming = NamingService.start()
-    private val log = Collections.synchronizedList(mutableListOf<String>())
+    private val log = CopyOnWriteArrayList<String>()
     private val started = mutableListOf<AutoCloseable>()
     private val push = EventOptions(WatchMode.PUSH, heartbeat = 200.milliseconds, pollPeriod = 200.milliseconds)
 
@@ -190,8 +189,8 @@ class CoordinatorFaultTest {
             val system = Scenarios.localisation(naming.corbaloc).closedAfter()
             val busy = system.runtime.create(Scenarios.relay, "busy0").also { it.activate() }
             val tree = RtcTree(TreeConfig(listOf(naming.address))).closedAfter()
-            val slow = Collections.synchronizedList(mutableListOf<LifeCycle>())
-            val prompt = Collections.synchronizedList(mutableListOf<LifeCycle>())
+            val slow = CopyOnWriteArrayList<LifeCycle>()
+            val prompt = CopyOnWriteArrayList<LifeCycle>()
             val coordinator =
                 coordinator(tree) {
                     on(component("busy0")).stateChanged { error("handler bug") }

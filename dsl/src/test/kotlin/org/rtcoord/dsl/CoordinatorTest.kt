@@ -1,6 +1,7 @@
 package org.rtcoord.dsl
 
 import java.util.Collections
+import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -98,7 +99,7 @@ class CoordinatorTest : CoordinatedSystem() {
     fun `fsmState rules fire as the FSM enters each state, nested ones after the state holding them`(): Unit =
         runBlocking {
             val microwave = system.runtime.create(Scenarios.microwave, "Microwave0")
-            val fired = Collections.synchronizedList(mutableListOf<Pair<Long, String>>())
+            val fired = CopyOnWriteArrayList<Pair<Long, String>>()
             coordinator {
                 on(component("Microwave0")).fsmState("Operational") {
                     fired += it.sequence to "Operational after ${it.old}"
@@ -121,7 +122,7 @@ class CoordinatorTest : CoordinatedSystem() {
 
     @Test
     fun `guards narrow a rule`(): Unit = runBlocking {
-        val fired = Collections.synchronizedList(mutableListOf<String>())
+        val fired = CopyOnWriteArrayList<String>()
         val guarded = AtomicInteger()
         coordinator {
             on(component("laser0"))
@@ -154,7 +155,7 @@ class CoordinatorTest : CoordinatedSystem() {
     @Test
     fun `a component already in ERROR at the start fires the level-triggered rule once, not the edge-triggered one`():
         Unit = runBlocking {
-        val fired = Collections.synchronizedList(mutableListOf<String>())
+        val fired = CopyOnWriteArrayList<String>()
         system.component("gyro0").fail()
         await("gyro0 to be in ERROR before the coordinator starts") {
             system.component("gyro0").state == RTC.LifeCycleState.ERROR_STATE
@@ -183,7 +184,7 @@ class CoordinatorTest : CoordinatedSystem() {
     @Test
     fun `components names every match of a pattern for a handler to act on, and warn logs a warning`(): Unit =
         runBlocking {
-            val found = Collections.synchronizedList(mutableListOf<String>())
+            val found = CopyOnWriteArrayList<String>()
             coordinator {
                 after(0.seconds) {
                     components("laser*").forEach { found += it.path().name }
@@ -205,8 +206,8 @@ class CoordinatorTest : CoordinatedSystem() {
     @Test
     fun `configParam follows the value in use, configParamInAnySet every set's changes with the set's id`(): Unit =
         runBlocking {
-            val inUse = Collections.synchronizedList(mutableListOf<String>())
-            val anySet = Collections.synchronizedList(mutableListOf<String>())
+            val inUse = CopyOnWriteArrayList<String>()
+            val anySet = CopyOnWriteArrayList<String>()
             coordinator {
                 on(component("laser_localise0")).configParam("gain") { old, new -> inUse += "$old->$new" }
                 on(component("laser_localise0")).configParamInAnySet("gain") { set, old, new ->
@@ -253,7 +254,7 @@ class CoordinatorTest : CoordinatedSystem() {
     @Test
     fun `a rule on a type covers the components of that type alone, those created after the start included`(): Unit =
         runBlocking {
-            val failed = Collections.synchronizedList(mutableListOf<String>())
+            val failed = CopyOnWriteArrayList<String>()
             coordinator { on(component(type = "relay")).state(ERROR) { event -> failed += event.source.name } }
                 .use { coordinator ->
                     coordinator.start()
@@ -278,8 +279,8 @@ class CoordinatorTest : CoordinatedSystem() {
     @Test
     fun `a glob rule covers components created after the start, and with includeCurrent one created already in ERROR`():
         Unit = runBlocking {
-        val edge = Collections.synchronizedList(mutableListOf<String>())
-        val level = Collections.synchronizedList(mutableListOf<String>())
+        val edge = CopyOnWriteArrayList<String>()
+        val level = CopyOnWriteArrayList<String>()
         coordinator {
             on(component("*")).state(ERROR) { event -> edge += event.source.name }
             on(component("*")).state(ERROR, includeCurrent = true) { event ->
@@ -407,7 +408,7 @@ class CoordinatorTest : CoordinatedSystem() {
                         log("${event.source.name} failed; gyro0 is ${component("gyro0").state()}")
                     }
                 }
-            val logs = List(3) { Collections.synchronizedList(mutableListOf<String>()) }
+            val logs = List(3) { CopyOnWriteArrayList<String>() }
             fun run(tree: RtcTree, log: MutableList<String>) =
                 Coordinator(tree, coordination, EventOptions(WatchMode.PUSH)) { log += it }
             fun reactions(log: List<String>) = log.count { it == "gyro0.rtc failed; gyro0 is ERROR" }

@@ -1,6 +1,6 @@
 package org.rtcoord.dsl
 
-import java.util.Collections
+import java.util.concurrent.CopyOnWriteArrayList
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -15,7 +15,7 @@ class ReactionFailureTest : CoordinatedSystem() {
     @Test
     fun `an attempted reset of a component that stays broken is a warning, and the handler goes on`(): Unit =
         runBlocking {
-            val outcome = Collections.synchronizedList(mutableListOf<Boolean>())
+            val outcome = CopyOnWriteArrayList<Boolean>()
             coordinator {
                 on(component("laser0")).state(ERROR) {
                     outcome += attempt { reset() }
@@ -84,7 +84,7 @@ class ReactionFailureTest : CoordinatedSystem() {
     @Test
     fun `a switch the manager refuses half way is undone - the old localiser runs again, connected as before`(): Unit =
         runBlocking {
-            val failures = Collections.synchronizedList(mutableListOf<ReactionFailure>())
+            val failures = CopyOnWriteArrayList<ReactionFailure>()
             system.master!!.remove_slave_manager(system.slave!!.ref)
             coordinator {
                 on(component("laser0")).state(ERROR) {
