@@ -6,11 +6,11 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.Job
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.joinAll
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.withContext
+import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.fixtures.await
@@ -25,18 +25,22 @@ class TreeThreadsTest {
         TreeThreads(concurrency = 4).use { threads ->
             val running = AtomicInteger()
             val most = AtomicInteger()
-            CoroutineScope(threads.dispatcher)
-                .run {
+            val release = CountDownLatch(1)
+            val tasks =
+                CoroutineScope(threads.dispatcher).run {
                     List(40) {
                         launch {
                             most.accumulateAndGet(running.incrementAndGet(), ::maxOf)
-                            Thread.sleep(5)
+                            release.await(10, TimeUnit.SECONDS)
                             running.decrementAndGet()
                         }
                     }
                 }
-                .joinAll()
-            assertTrue(most.get() in 2..4, "${most.get()} ran at once")
+            // Each holds its thread until released: a fifth would start only past the limit.
+            await("four coroutines to block") { running.get() == 4 }
+            release.countDown()
+            tasks.joinAll()
+            assertEquals(4, most.get())
         }
     }
 
@@ -54,16 +58,9 @@ class TreeThreadsTest {
                 }
             }
             assertTrue(burst.await(5, TimeUnit.SECONDS))
-            // Then a task every 20 ms, as heartbeats come: the most recently idle worker takes each.
-            val used = ConcurrentHashMap.newKeySet<String>()
-            val ticking: Job =
-                CoroutineScope(threads.dispatcher).launch {
-                    repeat(50) {
-                        used += Thread.currentThread().name
-                        delay(20)
-                    }
-                }
-            ticking.join()
+            // Then one task after another, as heartbeats come: the most recently idle worker takes each.
+            val used = HashSet<String>()
+            repeat(50) { used += withContext(threads.dispatcher) { Thread.currentThread().name } }
             assertTrue(used.size <= 3, "one task at a time ran on $used")
             await("the burst's idle workers end") { workers.count(Thread::isAlive) <= 3 }
         }
