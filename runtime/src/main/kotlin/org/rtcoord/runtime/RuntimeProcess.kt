@@ -7,7 +7,6 @@ import java.net.InetSocketAddress
 import java.util.concurrent.CopyOnWriteArrayList
 import java.util.concurrent.Executors
 import java.util.concurrent.ScheduledExecutorService
-import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
@@ -16,6 +15,8 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.SupervisorJob
 import kotlinx.coroutines.cancel
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
 import org.omg.CosNaming.NamingContextExt
 import org.omg.CosNaming.NamingContextExtHelper
 import org.omg.CosNaming.NamingContextPackage.AlreadyBound
@@ -43,10 +44,13 @@ private constructor(
         NamingContextExtHelper.narrow(orb.orb.string_to_object(it))
     }
 
-    internal val scheduler: ScheduledExecutorService =
-        Executors.newScheduledThreadPool(2) { task ->
-            Thread(task, "runtime-ec-${threads.incrementAndGet()}").apply { isDaemon = true }
-        }
+    /**
+     * The thread that ticks every execution context of the process. One: with two, the idle one woke at every tick to
+     * take over the queue's wait (a scheduled pool's leader and follower), doubling the process's wake-ups.
+     */
+    internal val scheduler: ScheduledExecutorService = Executors.newSingleThreadScheduledExecutor { task ->
+        Thread(task, "runtime-ec-${threads.incrementAndGet()}").apply { isDaemon = true }
+    }
     internal val scope =
         CoroutineScope(SupervisorJob() + Dispatchers.IO.limitedParallelism(16) + CoroutineName("runtime-process"))
 
@@ -123,7 +127,11 @@ private constructor(
     /** An exiting component finalised: its objects go now, its registration at the next clean-up. */
     internal fun finalized(component: RuntimeComponent) {
         component.teardown()
-        scheduler.schedule({ cleanUp(component) }, cleanupDelay.inWholeMilliseconds, TimeUnit.MILLISECONDS)
+        // Off the contexts' thread: unbinding waits on the naming service, which may be down.
+        scope.launch {
+            delay(cleanupDelay)
+            cleanUp(component)
+        }
     }
 
     /** Unregisters an exited component and unbinds its name. */
