@@ -88,7 +88,7 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
     // child shown meanwhile (a name server added during a refresh) is never written over.
     @JvmSynthetic
     internal suspend fun relist(): List<Node> = listingLock.withLock {
-        val listed = withContext(core.remote.dispatcher) { readChildren(listing.value.orEmpty()) }
+        val listed = withContext(core.remote.callDispatcher()) { readChildren(listing.value.orEmpty()) }
         listing.updateAndGet { settled(listed) }!!
     }
 

@@ -131,7 +131,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
             // Only a read that started after this caller arrived is as fresh as its own would be: one that
             // started before may have missed what the caller just wrote.
             current.value.takeIf { lastRead > arrived }
-                ?: withContext(core.remote.dispatcher) {
+                ?: withContext(core.remote.callDispatcher()) {
                     val stamp = stamp()
                     val reader = ComponentReader(core.remote, subject, ref)
                     val withConfiguration = current.value?.configuration != null
@@ -194,7 +194,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     }
 
     private suspend fun readSummary(subject: String): ComponentReader.SummaryReading = refreshing.withLock {
-        withContext(core.remote.dispatcher) { ComponentReader(core.remote, subject, ref).readSummary() }
+        withContext(core.remote.callDispatcher()) { ComponentReader(core.remote, subject, ref).readSummary() }
             .also { currentSummary.value = it.summary }
     }
 

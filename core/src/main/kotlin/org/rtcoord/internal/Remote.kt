@@ -46,6 +46,13 @@ internal class Remote(
     val dispatcher: CoroutineDispatcher = threads.calls.limitedParallelism(concurrency)
 
     /**
+     * Where the calling coroutine's calls and the work that makes them run: its [BackgroundCalls]' few threads under
+     * the tree's periodic listings, else [dispatcher].
+     */
+    suspend fun callDispatcher(): CoroutineDispatcher =
+        currentCoroutineContext()[BackgroundCalls]?.dispatcher ?: dispatcher
+
+    /**
      * Runs [block] once one of the tree's call slots is free; the deadline counts from then, so calls queued behind a
      * large discovery do not expire before they are sent.
      */
@@ -70,7 +77,7 @@ internal class Remote(
                 Result.failure(translate(e, subject, operation, limit))
             }
         if (currentCoroutineContext()[AbandonableCalls] == null)
-            return withContext(dispatcher) { runInterruptible { run() } }
+            return withContext(callDispatcher()) { runInterruptible { run() } }
         return suspendCancellableCoroutine { waiting ->
             // Resuming is ignored when the caller has given up.
             val running = threads.submit { waiting.resume(run()) }

@@ -37,6 +37,9 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
         )
     private val threads = TreeThreads(config.concurrency)
     val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned, threads)
+
+    /** Where the tree's periodic listings run, all of them together: the listings of a system come at once. */
+    val background = BackgroundCalls(remote.dispatcher.limitedParallelism(BackgroundCalls.PARALLELISM))
     val scope =
         CoroutineScope(
             SupervisorJob() +

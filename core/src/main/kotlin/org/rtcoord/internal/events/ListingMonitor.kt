@@ -6,6 +6,7 @@ import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.ManagerComponentChanged
@@ -52,14 +53,15 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
         poller?.cancel()
         period = shortest
         poller = shortest?.let { every ->
-            core.scope.launch {
+            // On the listings' few threads (TreeCore.background); what the listing finds is read at full concurrency.
+            core.scope.launch(core.background.dispatcher) {
                 var before = directory.listed.value
                 var failing = false
                 while (isActive) {
                     delay(every)
                     val after =
                         try {
-                            directory.relist()
+                            withContext(core.background) { directory.relist() }
                         } catch (e: RtcException) {
                             if (!failing) log.info("{}; listing it again every {}", e.message, every)
                             // Every time: a server shutting down first answers wrongly, and only then not at all.

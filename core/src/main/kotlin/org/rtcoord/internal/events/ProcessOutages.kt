@@ -5,6 +5,7 @@ import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.delay
 import kotlinx.coroutines.launch
+import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentNode
 import org.rtcoord.DirectoryNode
 import org.rtcoord.ManagerDied
@@ -61,7 +62,7 @@ internal class ProcessOutages(
     @Synchronized
     fun checkNameServers(wanted: Boolean) {
         serverChecks?.cancel()
-        serverChecks = if (wanted) core.scope.launch { listNameServers() } else null
+        serverChecks = if (wanted) core.scope.launch(core.background.dispatcher) { listNameServers() } else null
     }
 
     /**
@@ -93,7 +94,7 @@ internal class ProcessOutages(
             delay(SERVER_CHECK_PERIOD)
             for (server in core.nameServers()) {
                 try {
-                    server.relist()
+                    withContext(core.background) { server.relist() }
                 } catch (e: RtcException) {
                     listingFailed(server, e, SERVER_CHECK_PERIOD)
                 }
