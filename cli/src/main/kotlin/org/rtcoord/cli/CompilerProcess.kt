@@ -6,7 +6,6 @@ import java.nio.file.Path
 import java.util.concurrent.TimeUnit
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.minutes
-import kotlinx.coroutines.Dispatchers
 import kotlinx.coroutines.runInterruptible
 
 /**
@@ -30,7 +29,9 @@ internal object CompilerProcess {
      * the caller compiles it itself, and reports its problems as it always does.
      */
     suspend fun compile(script: Path, timeout: Duration = 5.minutes): Boolean =
-        runInterruptible(Dispatchers.IO) {
+        // On the caller's thread, which has nothing else to do yet: kotlinx's IO threads, once started, stay for as
+        // long as the coordinator runs (two of them in every `run` that had compiled its script).
+        runInterruptible {
             val java = Path.of(System.getProperty("java.home"), "bin", "java").toString()
             // The launcher's class archive flags name this JVM's archive, which the other must neither write nor map.
             val options =
