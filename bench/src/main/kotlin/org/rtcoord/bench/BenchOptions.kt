@@ -66,6 +66,11 @@ internal data class BenchOptions(
     val dataWindow: Duration = 10.seconds,
     /** Most windows the simulated out-port writes before it is measured, until the JIT is quiet (at least three). */
     val portWarmUpWindows: Int = 30,
+    /**
+     * Pairs of windows (writing, then inactive) the simulated out-port is measured in: the machine's noise moves one 10
+     * s window by a quarter of the cost.
+     */
+    val portRounds: Int = 5,
     /** Silences timed at each threshold. */
     val silenceRepetitions: Int = 5,
     /** Timed scenarios of the coordinator test's overhead. */
@@ -150,6 +155,7 @@ in the same run). Results are printed, never stored.
                     microIterations = 4 to 3,
                     microIteration = 1.seconds,
                     dataWindow = 5.seconds,
+                    portRounds = 3,
                     silenceRepetitions = 3,
                     testRepetitions = 5,
                     suiteRepetitions = 1,
@@ -185,6 +191,7 @@ in the same run). Results are printed, never stored.
                     scripts = false,
                     dataWindow = 1.seconds,
                     portWarmUpWindows = 3,
+                    portRounds = 2,
                     silenceRepetitions = 1,
                     testRepetitions = 1,
                     suiteRepetitions = 1,
