@@ -2,6 +2,7 @@ package org.rtcoord.cli
 
 import java.io.IOException
 import java.lang.management.ManagementFactory
+import java.nio.file.Files
 import java.nio.file.Path
 import java.util.concurrent.TimeUnit
 import kotlin.time.Duration
@@ -14,7 +15,7 @@ import kotlinx.coroutines.runInterruptible
  * the compiler's classes and heap for good once it has loaded them: `rtcoord run` of the localisation coordinator was
  * 268 MB resident for as long as it ran after compiling its script itself, against 81 MB when it started from the
  * cache. The launcher asks for it for `run` (`-Drtcoord.compile=apart`); in-process runs (tests, a host application)
- * compile where they run.
+ * compile where they run. A script with errors is not compiled again here to find them: the other JVM's are reported.
  */
 internal object CompilerProcess {
     private const val PROPERTY = "rtcoord.compile"
@@ -24,11 +25,11 @@ internal object CompilerProcess {
         get() = System.getProperty(PROPERTY) == "apart"
 
     /**
-     * Compiles [script] into the cache in another JVM, the same Java with this one's options and class path; whether it
-     * compiled. When it did not (the script has errors, or the JVM could not be started or took longer than [timeout])
-     * the caller compiles it itself, and reports its problems as it always does.
+     * Compiles [script] into the cache in another JVM, the same Java with this one's options and class path. Returns
+     * null when it compiled, else the problems to report: the script's own (`file:line:col: message` lines, as `rtcoord
+     * check` prints them), or why that JVM could not compile it (it could not start, or took longer than [timeout]).
      */
-    suspend fun compile(script: Path, timeout: Duration = 5.minutes): Boolean =
+    suspend fun compile(script: Path, timeout: Duration = 5.minutes): List<String>? =
         // On the caller's thread, which has nothing else to do yet: kotlinx's IO threads, once started, stay for as
         // long as the coordinator runs (two of them in every `run` that had compiled its script).
         runInterruptible {
@@ -42,25 +43,36 @@ internal object CompilerProcess {
                 }
             val command =
                 listOf(java) + options + listOf("-cp", System.getProperty("java.class.path"), MAIN, "check", "$script")
-            val process =
-                try {
-                    ProcessBuilder(command)
-                        .redirectErrorStream(true)
-                        .redirectOutput(ProcessBuilder.Redirect.DISCARD)
-                        .start()
-                } catch (e: IOException) {
-                    return@runInterruptible false
-                }
+            val errors = Files.createTempFile("rtcoord-compile", ".txt")
             try {
-                if (!process.waitFor(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS)) {
+                val process =
+                    try {
+                        ProcessBuilder(command)
+                            .redirectError(errors.toFile())
+                            .redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                            .start()
+                    } catch (e: IOException) {
+                        return@runInterruptible listOf("$script: the compiler's JVM could not start: ${e.message}")
+                    }
+                try {
+                    if (!process.waitFor(timeout.inWholeMilliseconds, TimeUnit.MILLISECONDS)) {
+                        process.destroyForcibly()
+                        return@runInterruptible listOf("$script: not compiled within $timeout")
+                    }
+                } catch (e: InterruptedException) {
                     process.destroyForcibly()
-                    return@runInterruptible false
+                    throw e
                 }
-            } catch (e: InterruptedException) {
-                process.destroyForcibly()
-                throw e
+                if (process.exitValue() == 0) null
+                else
+                    Files.readAllLines(errors)
+                        .filter { it.isNotBlank() }
+                        .ifEmpty {
+                            listOf("$script: the compiler's JVM exited with ${process.exitValue()}")
+                        }
+            } finally {
+                Files.deleteIfExists(errors)
             }
-            process.exitValue() == 0
         }
 
     /** The class the launcher runs. */

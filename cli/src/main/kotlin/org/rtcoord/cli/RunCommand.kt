@@ -88,10 +88,10 @@ class RunCommand : TreeCommand("run") {
 
     override suspend fun execute() {
         val scripts = ScriptHost()
-        if (CompilerProcess.wanted && !CompiledCoordinator.isCompiled(script) && !scripts.isCached(script))
-            CompilerProcess.compile(script)
         val coordination =
             try {
+                if (CompilerProcess.wanted && !CompiledCoordinator.isCompiled(script) && !scripts.isCached(script))
+                    CompilerProcess.compile(script)?.let { throw ScriptFailure(it) }
                 scripts.load(script, arguments, session.treeConfig())
             } catch (e: ScriptFailure) {
                 // Each problem (file:line:col: message) is an error line of its own.

@@ -4,12 +4,17 @@ import java.nio.file.Files
 import java.nio.file.Path
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertFalse
+import org.junit.jupiter.api.Assertions.assertNotNull
+import org.junit.jupiter.api.Assertions.assertNull
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.io.TempDir
 import org.rtcoord.dsl.script.ScriptHost
 
-/** A script compiled apart is in the cache, so the JVM that runs it next starts it without the compiler. */
+/**
+ * A script compiled apart is in the cache, so the JVM that runs it next starts it without the compiler; one with errors
+ * comes back with them, for that JVM has no compiler to find them with.
+ */
 class CompilerProcessTest {
     @Test
     fun `a script compiled in a JVM of its own is then taken from the cache`(@TempDir dir: Path) = runBlocking {
@@ -21,14 +26,16 @@ class CompilerProcessTest {
             )
         val scripts = ScriptHost()
         assertFalse(scripts.isCached(script))
-        assertTrue(CompilerProcess.compile(script), "the other JVM compiled it")
+        assertNull(CompilerProcess.compile(script), "the other JVM compiled it")
         assertTrue(scripts.isCached(script))
     }
 
     @Test
-    fun `a script with errors is left to compile where it runs`(@TempDir dir: Path) = runBlocking {
+    fun `a script with errors comes back with its problems, as check prints them`(@TempDir dir: Path) = runBlocking {
         val script = Files.writeString(dir.resolve("broken.coord.kts"), "on(nothing(${System.nanoTime()}))\n")
-        assertFalse(CompilerProcess.compile(script))
+        val problems = CompilerProcess.compile(script)
+        assertNotNull(problems)
+        assertTrue(problems!!.any { it.startsWith("$script:1:") && "nothing" in it }, "$problems")
         assertFalse(ScriptHost().isCached(script))
     }
 }

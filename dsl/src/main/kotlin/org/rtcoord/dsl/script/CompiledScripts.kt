@@ -43,6 +43,17 @@ public object CompiledScripts {
     public fun holds(directory: Path, source: SourceCode, vararg templates: Class<*>): Boolean =
         jarOf(directory, source, templates).isFile
 
+    /**
+     * [source] as [directory] keeps it, compiled against [templates] with [configuration]; null when it is not kept.
+     * Reads the jar without the compiler: a script compiled before starts with the scripting runtime alone.
+     */
+    internal fun cached(
+        directory: Path,
+        source: SourceCode,
+        configuration: ScriptCompilationConfiguration,
+        vararg templates: Class<*>,
+    ): CompiledScript? = WholeJars { jarOf(directory, it, templates) }.get(source, configuration)
+
     private fun jarOf(directory: Path, source: SourceCode, templates: Array<out Class<*>>): File {
         val digest = MessageDigest.getInstance("SHA-256")
         digest.update(source.text.toByteArray())

@@ -29,7 +29,13 @@ import org.rtcoord.dsl.Coordination
  */
 public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirectory()) {
     private val compilation = createJvmCompilationConfigurationFromTemplate<CoordinatorScript>()
-    private val compiler = JvmScriptCompiler(CompiledScripts.host(cacheDirectory, CoordinatorScript::class.java))
+    /**
+     * Made when a script is first compiled: a cached script loads without the compiler's classes, so `rtcoord run` has
+     * no compiler on its class path (the launcher's, bin/rtcoord).
+     */
+    private val compiler by lazy {
+        JvmScriptCompiler(CompiledScripts.host(cacheDirectory, CoordinatorScript::class.java))
+    }
     private val evaluator = BasicJvmScriptEvaluator()
     /** Without the cache: a script taken from it is only a jar of classes, without the compiler's output to write. */
     private val fresh by lazy { JvmScriptCompiler(CompiledScripts.host(null, CoordinatorScript::class.java)) }
@@ -66,10 +72,11 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     ): Coordination {
         if (CompiledCoordinator.isCompiled(script)) return CompiledCoordinator.load(script, args, host)
         val compiled =
-            when (val result = compile(script)) {
-                is ResultWithDiagnostics.Success -> result.value
-                is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
-            }
+            cached(script)
+                ?: when (val result = compile(script)) {
+                    is ResultWithDiagnostics.Success -> result.value
+                    is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
+                }
         val evaluation = ScriptEvaluationConfiguration {
             constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent, script.fileName.toString())
             jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
@@ -102,6 +109,17 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
             }
         CompiledCoordinatorJar.write(compiled, Files.readString(script), script.fileName.toString(), jar)
     }
+
+    /** [script] as the cache holds it, compiled from its text as it is now; null when it is not there. */
+    private fun cached(script: Path): CompiledScript? =
+        if (cacheDirectory == null || !Files.isRegularFile(script)) null
+        else
+            CompiledScripts.cached(
+                cacheDirectory,
+                script.toFile().toScriptSource(),
+                compilation,
+                CoordinatorScript::class.java,
+            )
 
     private suspend fun compile(script: Path, by: JvmScriptCompiler = compiler): ResultWithDiagnostics<CompiledScript> {
         if (!Files.isRegularFile(script))
