@@ -36,6 +36,7 @@ class CheckCommand : TreeCommand("check") {
         argument("SCRIPT", help = "Coordinator scripts (*.coord.kts).").path().multiple(required = true)
 
     override suspend fun execute() {
+        CompilerJars.require("rtcoord check")
         val host = ScriptHost()
         // Names looked up on a name server that does not answer would all be "missing": say why once, and check none.
         val live = session.nameServers.isNotEmpty()

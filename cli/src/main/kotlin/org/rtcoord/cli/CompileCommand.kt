@@ -37,6 +37,7 @@ class CompileCommand : TreeCommand("compile") {
             .path()
 
     override suspend fun execute() {
+        CompilerJars.require("rtcoord compile")
         val jar = output ?: defaultJar(script)
         try {
             ScriptHost().compile(script, jar)

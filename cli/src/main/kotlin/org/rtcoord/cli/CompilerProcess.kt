@@ -1,5 +1,6 @@
 package org.rtcoord.cli
 
+import java.io.File
 import java.io.IOException
 import java.lang.management.ManagementFactory
 import java.nio.file.Files
@@ -14,8 +15,9 @@ import kotlinx.coroutines.runInterruptible
  * cache: the JVM that then runs the coordinator takes it from there and never loads the Kotlin compiler. A JVM keeps
  * the compiler's classes and heap for good once it has loaded them: `rtcoord run` of the localisation coordinator was
  * 268 MB resident for as long as it ran after compiling its script itself, against 81 MB when it started from the
- * cache. The launcher asks for it for `run` (`-Drtcoord.compile=apart`); in-process runs (tests, a host application)
- * compile where they run. A script with errors is not compiled again here to find them: the other JVM's are reported.
+ * cache. The launcher asks for it for `run` (`-Drtcoord.compile=apart`), as does a JVM without the compiler's jars
+ * ([CompilerJars]), which that other JVM is given; in-process runs (tests, a host application) compile where they run.
+ * A script with errors is not compiled again here to find them: the other JVM's are reported.
  */
 internal object CompilerProcess {
     private const val PROPERTY = "rtcoord.compile"
@@ -25,9 +27,10 @@ internal object CompilerProcess {
         get() = System.getProperty(PROPERTY) == "apart"
 
     /**
-     * Compiles [script] into the cache in another JVM, the same Java with this one's options and class path. Returns
-     * null when it compiled, else the problems to report: the script's own (`file:line:col: message` lines, as `rtcoord
-     * check` prints them), or why that JVM could not compile it (it could not start, or took longer than [timeout]).
+     * Compiles [script] into the cache in another JVM, the same Java with this one's options and class path (and the
+     * compiler's jars, when this one lacks them). Returns null when it compiled, else the problems to report: the
+     * script's own (`file:line:col: message` lines, as `rtcoord check` prints them), or why that JVM could not compile
+     * it (it could not start, or took longer than [timeout]).
      */
     suspend fun compile(script: Path, timeout: Duration = 5.minutes): List<String>? =
         // On the caller's thread, which has nothing else to do yet: kotlinx's IO threads, once started, stay for as
@@ -41,8 +44,11 @@ internal object CompilerProcess {
                         it.startsWith("-XX:SharedArchiveFile") ||
                         it.startsWith("-D$PROPERTY=")
                 }
-            val command =
-                listOf(java) + options + listOf("-cp", System.getProperty("java.class.path"), MAIN, "check", "$script")
+            val classPath =
+                listOf(System.getProperty("java.class.path"), if (CompilerJars.present) "" else CompilerJars.classPath)
+                    .filter { it.isNotEmpty() }
+                    .joinToString(File.pathSeparator)
+            val command = listOf(java) + options + listOf("-cp", classPath, MAIN, "check", "$script")
             val errors = Files.createTempFile("rtcoord-compile", ".txt")
             try {
                 val process =

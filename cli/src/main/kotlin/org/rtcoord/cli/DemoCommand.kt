@@ -36,6 +36,7 @@ class DemoCommand : TreeCommand("demo") {
         examples("rtcoord demo" to "start the system, break the laser after 3 s, show the coordinator reacting")
 
     override suspend fun execute() {
+        CompilerJars.require("rtcoord demo")
         echo("Starting an embedded naming service and the paper's localisation system...")
         NamingService.start().use { naming ->
             Scenarios.localisation(naming.corbaloc).use { system ->

@@ -90,7 +90,8 @@ class RunCommand : TreeCommand("run") {
         val scripts = ScriptHost()
         val coordination =
             try {
-                if (CompilerProcess.wanted && !CompiledCoordinator.isCompiled(script) && !scripts.isCached(script))
+                val apart = CompilerProcess.wanted || !CompilerJars.present
+                if (apart && !CompiledCoordinator.isCompiled(script) && !scripts.isCached(script))
                     CompilerProcess.compile(script)?.let { throw ScriptFailure(it) }
                 scripts.load(script, arguments, session.treeConfig())
             } catch (e: ScriptFailure) {
@@ -127,8 +128,8 @@ class RunCommand : TreeCommand("run") {
                 fail(lines.lastOrNull() ?: "$script: ${explain(e)}", e)
             }
             logInput.start(tree)?.let { confirm("${now()} receiving log records on ${it.address}") }
-            confirm("${now()} coordinating:")
-            coordination.description.forEach { confirm("  $it") }
+            // One write: a component's watched line, printed from the tree's threads, never splits the list.
+            confirm((listOf("${now()} coordinating:") + coordination.description.map { "  $it" }).joinToString("\n"))
             if (serve) {
                 serving.settings().exposure()?.let { echo("rtcoord: warning: $it", err = true) }
                 val top = tree.nameServers.singleOrNull() ?: tree.root

@@ -124,6 +124,7 @@ class TestCommand : CliktCommand("test") {
         option("--no-write", help = "With --explore: do not write the regression tests of what was found.").flag()
 
     override fun run() {
+        CompilerJars.require("rtcoord test")
         if (explore || replay != null) return exploreFaults()
         val runner = parallel?.let { CoordinatorTestRunner(parallelism = it) } ?: CoordinatorTestRunner()
         val files =

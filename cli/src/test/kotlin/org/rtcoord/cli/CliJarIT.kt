@@ -38,6 +38,22 @@ class CliJarIT {
     }
 
     @Test
+    fun `the jar has no compiler on its class path, and a command that compiles says how to run it`(
+        @TempDir directory: Path
+    ) {
+        val script = Files.writeString(directory.resolve("a.coord.kts"), "after(0.seconds) { log(\"hi\") }\n")
+        assertEquals(
+            ProcessRun(
+                1,
+                "",
+                "rtcoord: rtcoord check needs the Kotlin compiler, which bin/rtcoord adds to the class path: run it with " +
+                    "bin/rtcoord (or java -cp with lib/compiler/*.jar added)\n",
+            ),
+            rtcoord("check", script.toString()),
+        )
+    }
+
+    @Test
     fun `-v turns JacORB's logging on and adds the stack trace before the error line`() {
         // In a process of its own: logging is configured once per JVM.
         val failed = rtcoord("-v", "cat", localisation.path("sonar0.rtc"))

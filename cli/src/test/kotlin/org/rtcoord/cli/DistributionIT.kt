@@ -55,6 +55,23 @@ class DistributionIT {
     }
 
     @Test
+    fun `bin rtcoord compiles with the compiler kept apart, and no other command has it on its class path`() {
+        val rtcoord = home.resolve("bin/rtcoord").toString()
+        val script = home.resolve("share/rtcoord/examples/localisation.coord.kts")
+        val checked = run(listOf(rtcoord, "check", script.toString()))
+        assertEquals(0, checked.status, checked.stderr)
+        assertTrue(checked.stdout.startsWith("$script: compiles"), checked.stdout)
+        val compiler = home.resolve("lib/compiler")
+        assertTrue(
+            Files.isRegularFile(compiler.resolve("kotlin-compiler-embeddable-${KotlinVersion.CURRENT}.jar")),
+            "$compiler",
+        )
+        val manifest = java.util.jar.JarFile(home.resolve("lib/rtcoord-cli.jar").toFile()).use { it.manifest }
+        val classPath = manifest.mainAttributes.getValue("Class-Path")
+        assertTrue("kotlin-scripting-jvm-host" in classPath && "kotlin-compiler" !in classPath, classPath)
+    }
+
+    @Test
     fun `a link to bin rtcoord from elsewhere works`() {
         val link = Files.createDirectories(directory.resolve("user/bin")).resolve("rtcoord")
         Files.createSymbolicLink(link, home.resolve("bin/rtcoord"))

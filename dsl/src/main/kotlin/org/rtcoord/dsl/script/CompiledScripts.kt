@@ -38,12 +38,6 @@ public object CompiledScripts {
         }
 
     /**
-     * Whether [source] as it is now is kept in [directory], compiled against [templates]: it starts without compiling.
-     */
-    public fun holds(directory: Path, source: SourceCode, vararg templates: Class<*>): Boolean =
-        jarOf(directory, source, templates).isFile
-
-    /**
      * [source] as [directory] keeps it, compiled against [templates] with [configuration]; null when it is not kept.
      * Reads the jar without the compiler: a script compiled before starts with the scripting runtime alone.
      */

@@ -10,8 +10,9 @@ import kotlin.script.experimental.api.acceptedLocations
 import kotlin.script.experimental.api.compilerOptions
 import kotlin.script.experimental.api.defaultImports
 import kotlin.script.experimental.api.ide
-import kotlin.script.experimental.jvm.dependenciesFromCurrentContext
 import kotlin.script.experimental.jvm.jvm
+import kotlin.script.experimental.jvm.updateClasspath
+import kotlin.script.experimental.jvm.util.scriptCompilationClasspathFromContext
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.TreeConfig
 import org.rtcoord.dsl.Coordination
@@ -43,7 +44,13 @@ public object CoordinatorScriptCompilation :
             *LogLevelNames.imports.toTypedArray(),
         )
         jvm {
-            dependenciesFromCurrentContext(wholeClasspath = true)
+            // The host's class path less the compiler's own jars, which no script names: a cached script's jar lists
+            // its class path, and the JVM that loads it would open them (`rtcoord run` runs without the compiler).
+            updateClasspath(
+                scriptCompilationClasspathFromContext(wholeClasspath = true).filterNot { jar ->
+                    COMPILER_JARS.any { jar.name.startsWith("$it-") }
+                }
+            )
         }
         // The DSL's inline words (`data<TimedDoubleSeq> { }`) are JVM 17 bytecode, which a script can inline only at
         // the same target.
@@ -54,3 +61,12 @@ public object CoordinatorScriptCompilation :
     }) {
     private fun readResolve(): Any = CoordinatorScriptCompilation
 }
+
+/** The Kotlin compiler's jars, by artifact: the compiling JVM's, never a script's. */
+private val COMPILER_JARS =
+    listOf(
+        "kotlin-compiler-embeddable",
+        "kotlin-daemon-embeddable",
+        "kotlin-scripting-compiler-embeddable",
+        "kotlin-scripting-compiler-impl-embeddable",
+    )

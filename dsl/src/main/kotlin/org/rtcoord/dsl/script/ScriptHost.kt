@@ -42,15 +42,15 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
 
     /**
      * Whether [script], as its file is now, was compiled before and is kept in the cache: [load] starts it without the
-     * Kotlin compiler. False without a cache, or for a file that cannot be read.
+     * Kotlin compiler. False without a cache, for a file that cannot be read, and for a kept jar that no longer loads
+     * (the jars it was compiled against have moved, as an upgrade moves them).
      */
     public fun isCached(script: Path): Boolean =
-        cacheDirectory != null &&
-            try {
-                CompiledScripts.holds(cacheDirectory, script.toFile().toScriptSource(), CoordinatorScript::class.java)
-            } catch (e: IOException) {
-                false
-            }
+        try {
+            cached(script) != null
+        } catch (e: IOException) {
+            false
+        }
 
     /** Compiles [script]; returns its errors (none when it compiles). */
     public suspend fun check(script: Path): List<String> =
