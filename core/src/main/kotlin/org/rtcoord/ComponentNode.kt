@@ -2,7 +2,6 @@ package org.rtcoord
 
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeSource
 import kotlinx.coroutines.flow.StateFlow
 import org.rtcoord.internal.ComponentCalls
 import org.rtcoord.internal.ComponentObject
@@ -139,7 +138,7 @@ public sealed class ComponentNode(
     internal suspend fun awaitUnbound(operation: String) {
         val context = namingParent ?: return
         val limit = core.remote.defaultDeadline
-        pollUntil(TimeSource.Monotonic.markNow() + limit, 5.milliseconds, 50.milliseconds) {
+        pollUntil(core.time.markNow() + limit, 5.milliseconds, 50.milliseconds) {
             Unit.takeUnless { context.binds(name, component) }
         }
             ?: throw TimedOutException(

@@ -2,7 +2,6 @@ package org.rtcoord
 
 import RTM.Manager
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeSource
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
@@ -137,7 +136,7 @@ public sealed class ManagerNode(
      * it until its next clean-up, and would hand back the dead component).
      */
     private suspend fun awaitNameFree(type: String, instanceName: String) {
-        val deadline = TimeSource.Monotonic.markNow() + core.remote.defaultDeadline
+        val deadline = core.time.markNow() + core.remote.defaultDeadline
         pollUntil(deadline, 20.milliseconds) {
             when {
                 instanceName !in calls.hostedInstanceNames() -> Unit

@@ -22,6 +22,10 @@ import kotlin.time.toKotlinDuration
  *   explicitly when they cannot. `0.0.0.0` listens on every interface, and only when given.
  * @property listenerFailures where what event listeners and handlers throw goes, with the listener and the event
  *   ([ListenerFailure]); by default it is logged ([ListenerFailureHandler.Log]). Never dropped.
+ * @property speed how many times as fast as the robot's clock the tree's own time runs: its timers, polling, liveness
+ *   checks, call deadlines and the heartbeats it asks observers for, and a coordinator's waits and measures on it. 1
+ *   (the default) on a robot; more only against a simulated system that runs as fast (`rtcoord test --speed`). Every
+ *   duration the tree and its coordinators are given or report stays in the robot's time.
  *
  * Java callers write `new TreeConfig(List.of("127.0.0.1:2809"))`, or use a [Builder]: `new
  * TreeConfig.Builder().nameServer("127.0.0.1").build()`. [listenAddressProblem] checks a listen address before it is
@@ -34,6 +38,7 @@ public class TreeConfig(
     public val orb: Any? = null,
     public val listenAddress: String? = null,
     public val listenerFailures: ListenerFailureHandler = ListenerFailureHandler.Log,
+    public val speed: Double = 1.0,
 ) {
     /** A configuration with [nameServers] and the defaults for the rest. */
     public constructor(nameServers: List<String>) : this(nameServers, 3.seconds)
@@ -43,6 +48,7 @@ public class TreeConfig(
         get() = callTimeout.inWholeMilliseconds
 
     init {
+        require(speed > 0 && speed.isFinite()) { "speed must be positive, was $speed" }
         require(callTimeout.isPositive()) { "callTimeout must be positive, was $callTimeout" }
         require(concurrency > 0) { "concurrency must be positive, was $concurrency" }
         require(orb == null || orb is org.omg.CORBA.ORB) {
@@ -62,6 +68,7 @@ public class TreeConfig(
         private var orb: Any? = null
         private var listenAddress: String? = null
         private var listenerFailures: ListenerFailureHandler = ListenerFailureHandler.Log
+        private var speed = 1.0
 
         /** Adds a name server (see [TreeConfig.nameServers]). */
         public fun nameServer(address: String): Builder = apply { nameServers += address }
@@ -83,8 +90,11 @@ public class TreeConfig(
         /** Sets [TreeConfig.listenerFailures]. */
         public fun listenerFailures(handler: ListenerFailureHandler): Builder = apply { listenerFailures = handler }
 
+        /** Sets [TreeConfig.speed]. */
+        public fun speed(speed: Double): Builder = apply { this.speed = speed }
+
         /** The configuration; fails as the constructor does on a bad value. */
         public fun build(): TreeConfig =
-            TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress, listenerFailures)
+            TreeConfig(nameServers.toList(), callTimeout, concurrency, orb, listenAddress, listenerFailures, speed)
     }
 }

@@ -82,7 +82,7 @@ internal data class BenchOptions(
     /** Timed starts of the simulated system, each kind. */
     val simulationRepetitions: Int = 10,
     /** Runs of `rtcoord test --explore` per processor used. */
-    val exploreRuns: Int = 20,
+    val exploreRuns: Int = 60,
     /** Connections sending log records, all together at [logRate] records a second. */
     val logSenders: Int = 100,
     val logRate: Int = 10_000,
@@ -160,7 +160,7 @@ in the same run). Results are printed, never stored.
                     testRepetitions = 5,
                     suiteRepetitions = 1,
                     simulationRepetitions = 3,
-                    exploreRuns = 6,
+                    exploreRuns = 20,
                 )
 
         /** Tiny and short: the harness runs [benchmarks] end to end in well under a minute, scripts aside. */

@@ -7,8 +7,9 @@ import org.rtcoord.sim.explore.FaultExplorer
 /**
  * Exploring faults (`rtcoord test --explore`) on `examples/localisation.test.kts`, in this JVM: schedules per minute
  * one at a time and one per processor, and the speed-up over the robot's clock (the runs' own time summed, over the
- * wall time), after one untimed exploration. Each exploration's wall time includes its baseline (each explored scenario
- * run once without faults). Shrinking and the written tests are left out: exploring alone.
+ * wall time), after one untimed exploration. The runs go at `--explore`'s default speed ([ExploreOptions.DEFAULT_SPEED]
+ * times the robot's clock). Each exploration's wall time includes its baseline (each explored scenario run once without
+ * faults). Shrinking and the written tests are left out: exploring alone.
  */
 internal class ExploreBench(
     private val options: BenchOptions,
@@ -48,7 +49,8 @@ internal class ExploreBench(
                 "/min",
                 "${explored.runs} runs, ${explored.failed} failed, ${explored.skipped} skipped; " +
                     "${figure(explored.robotTime.inWholeMilliseconds / 1000.0 / explored.runs)} s of the robot's time a run; " +
-                    "${figure(explored.robotTime.inWholeMilliseconds.toDouble() / explored.elapsed.inWholeMilliseconds)}x the robot's clock (real time, not scaled)",
+                    "${figure(explored.robotTime.inWholeMilliseconds.toDouble() / explored.elapsed.inWholeMilliseconds)}x the robot's clock " +
+                    "(each run at ${ExploreOptions.shown(ExploreOptions.DEFAULT_SPEED)}x)",
             )
         }
     }

@@ -5,9 +5,11 @@ import com.github.ajalt.clikt.core.Context
 import com.github.ajalt.clikt.core.ProgramResult
 import com.github.ajalt.clikt.parameters.arguments.argument
 import com.github.ajalt.clikt.parameters.arguments.multiple
+import com.github.ajalt.clikt.parameters.options.check
 import com.github.ajalt.clikt.parameters.options.default
 import com.github.ajalt.clikt.parameters.options.flag
 import com.github.ajalt.clikt.parameters.options.option
+import com.github.ajalt.clikt.parameters.types.double
 import com.github.ajalt.clikt.parameters.types.int
 import com.github.ajalt.clikt.parameters.types.long
 import com.github.ajalt.clikt.parameters.types.path
@@ -16,6 +18,7 @@ import java.util.Locale
 import kotlin.random.Random
 import kotlin.time.TimeSource
 import kotlinx.coroutines.runBlocking
+import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.sim.explore.ExploreOptions
 import org.rtcoord.sim.test.CoordinatorTestRunner
 import org.rtcoord.sim.test.JUnitXml
@@ -39,6 +42,7 @@ class TestCommand : CliktCommand("test") {
             "rtcoord test --explore --runs 200 nav.test.kts" to "200 runs, each with faults drawn from a random seed",
             "rtcoord test --explore --for 10m --seed 42 --parallel 2 nav.test.kts" to
                 "explore for 10 minutes, two runs at a time",
+            "rtcoord test --speed 5 tests/" to "every scenario five times as fast as the robot's clock",
             "rtcoord test --explore --replay 42:17 nav.test.kts" to "run 17 of seed 42 again",
             "rtcoord test --explore --replay 42:17 --reruns 100 nav.test.kts" to
                 "run it 100 times: how often it fails the same way",
@@ -120,13 +124,26 @@ class TestCommand : CliktCommand("test") {
             .int()
             .default(1)
 
+    private val speed by
+        option(
+                "--speed",
+                metavar = "K",
+                help =
+                    "Run scenarios K times as fast as the robot's clock: the simulated system, its tree and the coordinator, with " +
+                        "every timer, heartbeat, deadline and back-off; times are still shown in the robot's. Default: 1, and " +
+                        "${ExploreOptions.shown(ExploreOptions.DEFAULT_SPEED)} with --explore and --replay.",
+            )
+            .double()
+            .check("must be positive") { it > 0 && it.isFinite() }
+
     private val noWrite by
         option("--no-write", help = "With --explore: do not write the regression tests of what was found.").flag()
 
     override fun run() {
         CompilerJars.require("rtcoord test")
         if (explore || replay != null) return exploreFaults()
-        val runner = parallel?.let { CoordinatorTestRunner(parallelism = it) } ?: CoordinatorTestRunner()
+        val runner =
+            CoordinatorTestRunner(parallel ?: Runtime.getRuntime().availableProcessors(), ScriptHost(), speed ?: 1.0)
         val files =
             try {
                 runner.files(paths.ifEmpty { listOf(Paths.get("")) })
@@ -153,6 +170,9 @@ class TestCommand : CliktCommand("test") {
         if (failed > 0) throw ProgramResult(1)
     }
 
+    private val exploringSpeed: Double
+        get() = speed ?: ExploreOptions.DEFAULT_SPEED
+
     private fun exploreFaults() {
         val file = paths.singleOrNull() ?: throw CommandFailed("--explore: give one test file (${paths.size} given)")
         val status =
@@ -165,7 +185,7 @@ class TestCommand : CliktCommand("test") {
         val exploration = TestExploration(::echo, status)
         val parallelism = parallel ?: Runtime.getRuntime().availableProcessors()
         val failed =
-            replay?.let { exploration.replay(file, it, maxFaults, reruns, parallelism) }
+            replay?.let { exploration.replay(file, it, maxFaults, reruns, parallelism, exploringSpeed) }
                 ?: try {
                     exploration.explore(
                         file,
@@ -176,6 +196,7 @@ class TestCommand : CliktCommand("test") {
                             maxFaults,
                             parallelism,
                             writeTests = !noWrite,
+                            speed = exploringSpeed,
                         ),
                         junit,
                     )

@@ -26,7 +26,7 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
                 listOf("${ExploreOptions.DEFAULT_RUNS} runs")
             }
         echo(
-            "exploring $file: seed ${options.seed}, ${limit.joinToString(" or ")}, up to ${options.maxFaults} faults a run, ${options.parallelism} at a time"
+            "exploring $file: seed ${options.seed}, ${limit.joinToString(" or ")}, up to ${options.maxFaults} faults a run, ${options.parallelism} at a time, ${ExploreOptions.shown(options.speed)}x the robot's clock"
         )
         val report = refusedAsFailure {
             StopSignals().use { signals ->
@@ -47,11 +47,11 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
     }
 
     /** Replays run [key] (`SEED:INDEX`) of [file] [reruns] times; whether its most common verdict is a failure. */
-    fun replay(file: Path, key: String, maxFaults: Int, reruns: Int, parallelism: Int): Boolean {
+    fun replay(file: Path, key: String, maxFaults: Int, reruns: Int, parallelism: Int, speed: Double): Boolean {
         val (seed, index) = parseKey(key)
         val report = refusedAsFailure {
             runBlocking {
-                FaultExplorer().replay(file, seed, index, maxFaults, reruns, parallelism) { done, verdict ->
+                FaultExplorer().replay(file, seed, index, maxFaults, reruns, parallelism, speed) { done, verdict ->
                     ran(done, reruns, key, verdict)
                 }
             }

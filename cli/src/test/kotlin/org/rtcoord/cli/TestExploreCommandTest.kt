@@ -58,7 +58,8 @@ class TestExploreCommandTest {
         assertEquals(1, explored.statusCode, explored.stdout + explored.stderr)
         val out = explored.stdout
         assertTrue(
-            out.lines().first().startsWith("exploring $test: seed 3, 2 runs, up to 1 faults a run, 1 at a time"),
+            out.lines().first() ==
+                "exploring $test: seed 3, 2 runs, up to 1 faults a run, 1 at a time, 10x the robot's clock",
             out,
         )
         assertTrue(
@@ -120,5 +121,9 @@ class TestExploreCommandTest {
         val key = runRtcoord("test", "--explore", "--replay", "3-0", test.toString())
         assertEquals(1, key.statusCode)
         assertEquals("rtcoord: --replay 3-0: give SEED:INDEX, as a run's line shows it (e.g. 42:17)", key.stderr.trim())
+        val speed = runRtcoord("test", "--explore", "--speed", "0", test.toString())
+        // A usage error, as Clikt reports one.
+        assertEquals(2, speed.statusCode)
+        assertTrue(speed.stderr.trim().endsWith("invalid value for --speed: must be positive"), speed.stderr)
     }
 }

@@ -6,7 +6,6 @@ import RTC.ReturnCode_t
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeMark
-import kotlin.time.TimeSource
 import kotlinx.coroutines.withContext
 import org.rtcoord.Composition
 import org.rtcoord.ContextSelector
@@ -92,7 +91,7 @@ internal class ComponentCalls(
     ): TransitionOutcome {
         val (handle, ec) = context(selector)
         val limit = deadline ?: core.remote.defaultDeadline
-        val started = TimeSource.Monotonic.markNow()
+        val started = core.time.markNow()
         val code =
             try {
                 core.remote.call(subject, operation.verb, limit) { operation.call(ec, component.ref) }

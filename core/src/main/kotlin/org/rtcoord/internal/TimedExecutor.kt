@@ -17,20 +17,22 @@ import java.util.concurrent.TimeUnit
  * schedules a coroutine's `delay` on an executor's own timer when the executor is a [ScheduledExecutorService], keeps
  * every delay of the tree's coroutines on the tree's threads.
  *
- * A task due once the workers are shut down is dropped, as a delayed task is at shutdown.
+ * A task due once the workers are shut down is dropped, as a delayed task is at shutdown. Delays are in the robot's
+ * time, which runs [speed] times as fast as the host's (see [org.rtcoord.TreeConfig.speed]).
  */
 internal class TimedExecutor(
     private val workers: ExecutorService,
     private val timer: ScheduledExecutorService,
+    private val speed: Double = 1.0,
 ) : AbstractExecutorService(), ScheduledExecutorService {
     override fun execute(command: Runnable) = workers.execute(command)
 
     override fun schedule(command: Runnable, delay: Long, unit: TimeUnit): ScheduledFuture<*> =
-        timer.schedule(handOver(command), delay, unit)
+        timer.schedule(handOver(command), hostNanos(delay, unit), TimeUnit.NANOSECONDS)
 
     override fun <V> schedule(callable: Callable<V>, delay: Long, unit: TimeUnit): ScheduledFuture<V> {
         val task = FutureTask(callable)
-        return HandedOver(timer.schedule(handOver(task), delay, unit), task)
+        return HandedOver(timer.schedule(handOver(task), hostNanos(delay, unit), TimeUnit.NANOSECONDS), task)
     }
 
     override fun scheduleAtFixedRate(
@@ -38,14 +40,30 @@ internal class TimedExecutor(
         initialDelay: Long,
         period: Long,
         unit: TimeUnit,
-    ): ScheduledFuture<*> = timer.scheduleAtFixedRate(handOver(command), initialDelay, period, unit)
+    ): ScheduledFuture<*> =
+        timer.scheduleAtFixedRate(
+            handOver(command),
+            hostNanos(initialDelay, unit),
+            hostNanos(period, unit).coerceAtLeast(1),
+            TimeUnit.NANOSECONDS,
+        )
 
     override fun scheduleWithFixedDelay(
         command: Runnable,
         initialDelay: Long,
         delay: Long,
         unit: TimeUnit,
-    ): ScheduledFuture<*> = timer.scheduleWithFixedDelay(handOver(command), initialDelay, delay, unit)
+    ): ScheduledFuture<*> =
+        timer.scheduleWithFixedDelay(
+            handOver(command),
+            hostNanos(initialDelay, unit),
+            hostNanos(delay, unit).coerceAtLeast(1),
+            TimeUnit.NANOSECONDS,
+        )
+
+    /** A delay of the robot's time in nanoseconds of the host's. */
+    private fun hostNanos(delay: Long, unit: TimeUnit): Long =
+        unit.toNanos(delay).let { if (speed == 1.0) it else (it / speed).toLong() }
 
     /** [command] handed to a worker when due; cancelled, if it is a future, once the workers are shut down. */
     private fun handOver(command: Runnable) = Runnable {

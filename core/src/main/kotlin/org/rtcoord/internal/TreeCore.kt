@@ -3,6 +3,7 @@ package org.rtcoord.internal
 import java.util.concurrent.Future
 import java.util.concurrent.atomic.AtomicBoolean
 import java.util.concurrent.atomic.AtomicLong
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineExceptionHandler
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
@@ -33,9 +34,9 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
                 config.listenAddress
                     ?: listenAddressToward(nameServers().firstOrNull()?.address?.substringBeforeLast(':'))
             },
-            config.callTimeout,
+            config.callTimeout / config.speed,
         )
-    private val threads = TreeThreads(config.concurrency)
+    private val threads = TreeThreads(config.concurrency, config.speed)
     val remote = Remote(config.concurrency, config.callTimeout, orbEnforcesDeadline = orb.owned, threads)
 
     /** Where the tree's periodic listings run, all of them together: the listings of a system come at once. */
@@ -45,11 +46,18 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
             SupervisorJob() +
                 threads.dispatcher +
                 CoroutineName("rtc-tree") +
-                CoroutineExceptionHandler { _, e -> log.warn("tree task failed: {}", e.toString()) } +
+                CoroutineExceptionHandler { _, e ->
+                    log.warn("tree task failed: {}", e.toString())
+                    log.debug("tree task failed", e)
+                } +
                 ListenerFailures(config.listenerFailures)
         )
+    /** The tree's clock: the robot's time, [TreeConfig.speed] times as fast as the host's when that is not 1. */
+    val time: TimeSource.WithComparableMarks =
+        if (config.speed == 1.0) TimeSource.Monotonic else ScaledTimeSource(config.speed)
+
     /** The monotonic clock of every component monitor. */
-    val clock = MillisClock()
+    val clock = MillisClock(time)
 
     /** Runs [task] on the tree's threads when [clock] reads [millis]; null once the tree is closed. */
     fun at(millis: Long, task: Runnable): Future<*>? = threads.schedule(clock.nanosUntil(millis), task)

@@ -1,5 +1,6 @@
 package org.rtcoord.internal
 
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineScope
 import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.RtcTree
@@ -11,6 +12,13 @@ import org.rtcoord.internal.events.ListenerFailures
  * only.
  */
 @InternalRtcoordApi public fun RtcTree.treeScope(): CoroutineScope = core.scope
+
+/**
+ * The tree's clock: the robot's time, [org.rtcoord.TreeConfig.speed] times as fast as the host's. What the dsl's rules
+ * and the simulation's scenarios measure, as the tree's own waits follow it. Public for the dsl and the simulation
+ * only.
+ */
+@InternalRtcoordApi public fun RtcTree.treeTime(): TimeSource.WithComparableMarks = core.time
 
 /**
  * Tells the tree's [org.rtcoord.ListenerFailureHandler] that [listener] threw [error] on [event], or that its executor

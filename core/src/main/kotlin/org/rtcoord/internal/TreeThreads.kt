@@ -21,14 +21,15 @@ import org.rtcoord.ClosedException
  * One pool of threads does the tree's work, made when no idle one is free and ended after [idle] without work; the idle
  * thread most recently busy takes the next task, so a quiet tree keeps only the few its heartbeats and timers need (a
  * coordinator runs for months beside the components it watches: a pool of fixed size kept 32 threads of a 67-thread
- * `rtcoord watch` alive under 1 s heartbeats). One more thread keeps the time of delays and timers.
+ * `rtcoord watch` alive under 1 s heartbeats). One more thread keeps the time of delays and timers, in the robot's time
+ * at [speed] (see [org.rtcoord.TreeConfig.speed]).
  *
  * [dispatcher] runs the tree's coroutines, at most [concurrency] at once: work that makes calls may block in JacORB
  * (connecting, sending) besides the calls themselves. [submit] runs each blocking remote call on a thread of its own,
  * so that a caller who gives up is not held by a call JacORB will not interrupt (it ignores interrupts until its own
  * timeout); [calls] runs the calls of callers who wait for them, and the work that makes many, on the same pool.
  */
-internal class TreeThreads(concurrency: Int, idle: Duration = IDLE) : AutoCloseable {
+internal class TreeThreads(concurrency: Int, speed: Double = 1.0, idle: Duration = IDLE) : AutoCloseable {
     private val workers =
         ThreadPoolExecutor(
             0,
@@ -45,7 +46,7 @@ internal class TreeThreads(concurrency: Int, idle: Duration = IDLE) : AutoClosea
             setKeepAliveTime(idle.inWholeMilliseconds, TimeUnit.MILLISECONDS)
             allowCoreThreadTimeOut(true)
         }
-    private val timed = TimedExecutor(workers, timer)
+    private val timed = TimedExecutor(workers, timer, speed)
 
     /** The threads that block in remote calls, as many as needed: [Remote] limits how many run at once. */
     val calls: CoroutineDispatcher = timed.asCoroutineDispatcher()

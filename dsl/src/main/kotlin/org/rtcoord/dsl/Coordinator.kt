@@ -46,6 +46,7 @@ import org.rtcoord.dsl.internal.catchFailure
 import org.rtcoord.dsl.internal.plan
 import org.rtcoord.dsl.internal.queued
 import org.rtcoord.internal.treeScope
+import org.rtcoord.internal.treeTime
 
 /**
  * Runs a [Coordination]'s plan against a live system: subscribes its rules, starts its timers, mode machines and
@@ -85,7 +86,16 @@ public class Coordinator(
         )
     private val interpreters =
         plan.machines.map {
-            MachineInterpreter(it, scope, engine, Configurator(engine, scope), log, ::failed, ::watchNetwork)
+            MachineInterpreter(
+                it,
+                scope,
+                engine,
+                Configurator(engine, scope),
+                log,
+                ::failed,
+                ::watchNetwork,
+                time = tree.treeTime(),
+            )
         }
     /** The listeners of followed names, and the subscriptions to nodes that are not followed. */
     private val listeners = CopyOnWriteArrayList<Subscription>()
@@ -173,7 +183,9 @@ public class Coordinator(
             }
             plan.supervisions.zip(supervision).forEach { (supervision, activity) ->
                 supervisors +=
-                    Supervisor(supervision, activity, engine, scope, log) { escalated(supervision, it) }
+                    Supervisor(supervision, activity, engine, scope, log, tree.treeTime()) {
+                            escalated(supervision, it)
+                        }
                         .also { it.start() }
             }
             // Last: watching a manager watches the components below it, and the tree names each component by the path

@@ -25,6 +25,8 @@ internal class ObserverHub(
     private val owner: String,
     private val accepted: Set<ObserverFlavour>,
     private val scope: CoroutineScope,
+    /** How long a robot's time lasts on this host's clock (see [RuntimeProcess.speed]). */
+    private val onHost: (Duration) -> Duration,
     private val paused: () -> Boolean,
 ) {
     private class Subscription(
@@ -80,7 +82,7 @@ internal class ObserverHub(
                 profile,
                 flavour,
                 kinds,
-                heartbeatInterval(flavour, properties),
+                heartbeatInterval(flavour, properties)?.let(onHost),
                 trafficInterval(properties["port_profile.send_event.min_interval"]),
                 trafficInterval(properties["port_profile.receive_event.min_interval"]),
             )
@@ -175,9 +177,12 @@ internal class ObserverHub(
             .toSet()
     }
 
-    /** An interval in seconds as a decimal; one second (OpenRTM's default) when absent or malformed. */
+    /**
+     * An interval in seconds of the robot's time as a decimal, one second (OpenRTM's default) when absent or malformed,
+     * in nanoseconds of the host's.
+     */
     private fun trafficInterval(value: String?): Long =
-        ((value?.trim()?.toDoubleOrNull()?.takeIf { it >= 0 } ?: 1.0) * 1e9).toLong()
+        onHost((value?.trim()?.toDoubleOrNull()?.takeIf { it >= 0 } ?: 1.0).seconds).inWholeNanoseconds
 
     private fun heartbeatInterval(flavour: ObserverFlavour, properties: Map<String, String>): Duration? {
         fun key(name: String) =

@@ -74,7 +74,8 @@ internal constructor(
         get() = runtime.scope
 
     internal val gate = Gate()
-    internal val observers = ObserverHub(instanceName, type.observerFlavours, runtime.scope) { gate.isClosed }
+    internal val observers =
+        ObserverHub(instanceName, type.observerFlavours, runtime.scope, runtime::onHost) { gate.isClosed }
     private val configuration = RuntimeConfiguration(runtime.orb.orb, type, observers, gate)
     private val fsm = type.fsm?.let { spec -> RuntimeFsm(spec, observers::raiseFsm, ::nameValue) }
     private var fsmRef: ExtendedFsmService? = null

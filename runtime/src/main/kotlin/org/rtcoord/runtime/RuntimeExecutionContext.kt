@@ -210,7 +210,7 @@ internal class RuntimeExecutionContext(
                 }
             }
         // Outside the lock: the context keeps running its other participants meanwhile.
-        if (resetFailed) Thread.sleep(transitionTimeout.inWholeMilliseconds)
+        if (resetFailed) Thread.sleep(runtime.onHost(transitionTimeout).inWholeMilliseconds)
         return code
     }
 
@@ -255,11 +255,11 @@ internal class RuntimeExecutionContext(
         // transition_timeout long (ExecutionContextBase.waitForActivated and the like), then answers RTC_ERROR.
         val made = CompletableFuture<ReturnCode_t>()
         thread(isDaemon = true, name = "${component.instanceName} slow transition") {
-            Thread.sleep(callbackTime.inWholeMilliseconds)
+            Thread.sleep(runtime.onHost(callbackTime).inWholeMilliseconds)
             made.complete(transition(component, from, to, action))
         }
         return try {
-            made.get(transitionTimeout.inWholeMilliseconds, TimeUnit.MILLISECONDS)
+            made.get(runtime.onHost(transitionTimeout).inWholeNanoseconds, TimeUnit.NANOSECONDS)
         } catch (e: TimeoutException) {
             ReturnCode_t.RTC_ERROR
         }
@@ -291,7 +291,8 @@ internal class RuntimeExecutionContext(
                 }
                 if (succeeded) ReturnCode_t.RTC_OK else ReturnCode_t.RTC_ERROR
             }
-        return code ?: ReturnCode_t.RTC_ERROR.also { Thread.sleep(transitionTimeout.inWholeMilliseconds) }
+        return code
+            ?: ReturnCode_t.RTC_ERROR.also { Thread.sleep(runtime.onHost(transitionTimeout).inWholeMilliseconds) }
     }
 
     /**
@@ -351,7 +352,7 @@ internal class RuntimeExecutionContext(
     }
 
     private fun schedule() {
-        val period = (1_000_000_000 / rate).toLong().coerceAtLeast(1)
+        val period = (1_000_000_000 / (rate * runtime.speed)).toLong().coerceAtLeast(1)
         ticker = runtime.scheduler.scheduleAtFixedRate(::tick, period, period, TimeUnit.NANOSECONDS)
     }
 

@@ -37,6 +37,12 @@ private constructor(
      * component it creates (`manager.instance_name` in its profile); null: its components' profiles do not say.
      */
     public val managerName: String?,
+    /**
+     * How many times as fast as the robot's clock the process runs: its execution contexts tick, its observers beat and
+     * its clean-ups come that much sooner, while every rate and interval it reports or is given stays the robot's. A
+     * tree at the same speed (`TreeConfig.speed`) sees the robot's system, faster. 1 by default.
+     */
+    public val speed: Double,
 ) : AutoCloseable {
     private val log = LoggerFactory.getLogger(RuntimeProcess::class.java)
     private val hosted = CopyOnWriteArrayList<RuntimeComponent>()
@@ -124,12 +130,15 @@ private constructor(
      */
     @Volatile public var cleanupDelay: Duration = 300.milliseconds
 
+    /** How long [robotTime] lasts on this host's clock, at [speed]. */
+    internal fun onHost(robotTime: Duration): Duration = if (speed == 1.0) robotTime else robotTime / speed
+
     /** An exiting component finalised: its objects go now, its registration at the next clean-up. */
     internal fun finalized(component: RuntimeComponent) {
         component.teardown()
         // Off the contexts' thread: unbinding waits on the naming service, which may be down.
         scope.launch {
-            delay(cleanupDelay)
+            delay(onHost(cleanupDelay))
             cleanUp(component)
         }
     }
@@ -213,7 +222,7 @@ private constructor(
         /**
          * Starts a runtime whose ORB listens on [host]:[port] (0: any free port) and registers its components with the
          * naming service at [naming] (a `corbaloc:` address; null: none); its components' profiles name [managerName]
-         * as their manager's when it is set.
+         * as their manager's when it is set. It runs [speed] times as fast as the robot's clock.
          */
         public fun start(
             naming: String?,
@@ -221,7 +230,12 @@ private constructor(
             port: Int = 0,
             host: String = "127.0.0.1",
             managerName: String? = null,
-        ): RuntimeProcess =
-            RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts, managerName).also { runtimes += it }
+            speed: Double = 1.0,
+        ): RuntimeProcess {
+            require(speed > 0 && speed.isFinite()) { "speed must be positive, was $speed" }
+            return RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts, managerName, speed).also {
+                runtimes += it
+            }
+        }
     }
 }

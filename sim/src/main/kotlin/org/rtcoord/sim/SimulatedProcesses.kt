@@ -16,6 +16,8 @@ internal class SimulatedProcesses
 private constructor(
     private val naming: String,
     private val host: String,
+    /** How many times as fast as the robot's clock the processes run ([RuntimeProcess.speed]). */
+    private val speed: Double,
     val master: SimulatedManager?,
     slaves: List<SimulatedManager>,
     /** The process of the components no manager hosts; null when there are none. */
@@ -56,7 +58,8 @@ private constructor(
         master.manager.managerCommand = { requested ->
             // `%p` is the new process's pid: here the JVM's, followed by a count.
             val name = requested.replace("%p", "${ProcessHandle.current().pid()}${slaveList.size + 1}")
-            val slave = SimulatedManager.start(naming, host, name, types, loaded = emptySet(), hosts = emptyList())
+            val slave =
+                SimulatedManager.start(naming, host, speed, name, types, loaded = emptySet(), hosts = emptyList())
             logs?.let(slave::sendLogsTo)
             slaveList += slave
             master.manager.adopt(slave.manager)
@@ -74,11 +77,12 @@ private constructor(
         /**
          * Starts the processes of [topology] on the naming service at [naming], their ORBs on [host]: each slave can
          * create the types it lists (looked up in [types]), those of the components it hosts ([instances] says which)
-         * loaded from the start.
+         * loaded from the start, each at [speed] ([RuntimeProcess.speed]).
          */
         fun start(
             naming: String,
             host: String,
+            speed: Double,
             topology: ManagerTopology,
             types: Map<String, ComponentType>,
             instances: Map<String, ComponentType>,
@@ -88,7 +92,8 @@ private constructor(
                 val master =
                     topology.masterPath?.let { path ->
                         val process =
-                            RuntimeProcess.start(naming, contexts = path.dropLast(1), host = host).also(started::add)
+                            RuntimeProcess.start(naming, path.dropLast(1), host = host, speed = speed)
+                                .also(started::add)
                         SimulatedManager(
                             RuntimeManager(process, isMaster = true, name = topology.masterName!!),
                             process,
@@ -99,15 +104,15 @@ private constructor(
                     topology.slaves.map { slave ->
                         val loaded = (slave.types + slave.components.mapNotNull { instances[it]?.typeName }).toSet()
                         val known = (loaded + slave.loadable).mapNotNull(types::get)
-                        SimulatedManager.start(naming, host, slave.name, known, loaded, slave.components).also {
+                        SimulatedManager.start(naming, host, speed, slave.name, known, loaded, slave.components).also {
                             started += it.process
                         }
                     }
                 slaves.forEach { master?.manager?.adopt(it.manager) }
                 val loose =
                     if (topology.unhosted.isEmpty() && master != null) null
-                    else RuntimeProcess.start(naming, host = host)
-                return SimulatedProcesses(naming, host, master, slaves, loose)
+                    else RuntimeProcess.start(naming, host = host, speed = speed)
+                return SimulatedProcesses(naming, host, speed, master, slaves, loose)
             } catch (e: Exception) {
                 started.forEach(RuntimeProcess::close)
                 throw e
@@ -127,11 +132,12 @@ internal class SimulatedManager(val manager: RuntimeManager, val process: Runtim
     companion object {
         /**
          * Starts a slave [name] in a process of its own, hosting [hosts], with a module `<type>.so` for each of
-         * [types], of which those [loaded] names are loaded.
+         * [types], of which those [loaded] names are loaded, at [speed].
          */
         fun start(
             naming: String,
             host: String,
+            speed: Double,
             name: String,
             types: Collection<ComponentType>,
             loaded: Set<String>,
@@ -139,7 +145,7 @@ internal class SimulatedManager(val manager: RuntimeManager, val process: Runtim
         ): SimulatedManager {
             val modules = types.map { RuntimeModule("${it.typeName}.so", listOf(it)) }
             val preloaded = modules.filter { it.types.single().typeName in loaded }.map { it.fileName }
-            val process = RuntimeProcess.start(naming, host = host)
+            val process = RuntimeProcess.start(naming, host = host, speed = speed)
             return try {
                 SimulatedManager(
                     RuntimeManager(process, isMaster = false, name = name, modules = modules, preloaded = preloaded),

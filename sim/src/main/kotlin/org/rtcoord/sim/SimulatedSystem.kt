@@ -165,7 +165,8 @@ private constructor(
          * Simulates [profile] with every ORB and the naming service listening on [host], the naming service on [port]
          * (0: a free one), the data types the IDL files in [idlDirectories] declare besides OpenRTM-aist's. What cannot
          * be simulated (an IDL file that cannot be read included: its types' ports send nothing) is left out and named
-         * in [warnings].
+         * in [warnings]. The system runs [speed] times as fast as the robot's clock
+         * ([org.rtcoord.runtime.RuntimeProcess.speed]), for a tree at the same speed (`TreeConfig.speed`).
          */
         @JvmStatic
         @JvmOverloads
@@ -174,6 +175,7 @@ private constructor(
             host: String = "127.0.0.1",
             port: Int = 0,
             idlDirectories: List<Path> = emptyList(),
+            speed: Double = 1.0,
         ): SimulatedSystem {
             val types =
                 SimulatedTypes(profile, idlDirectories.takeIf { it.isNotEmpty() }?.let(IdlFiles::readDirectories))
@@ -183,7 +185,7 @@ private constructor(
             val naming = NamingService.start(port, host = host)
             val processes =
                 try {
-                    SimulatedProcesses.start(naming.corbaloc, host, topology, types.creatable, types.byInstance)
+                    SimulatedProcesses.start(naming.corbaloc, host, speed, topology, types.creatable, types.byInstance)
                 } catch (e: Exception) {
                     naming.close()
                     throw e

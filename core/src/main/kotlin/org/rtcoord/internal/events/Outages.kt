@@ -50,7 +50,7 @@ internal class Outages<T : Node>(
     private suspend fun check(node: T, period: Duration) {
         try {
             val failure = failureOf(node) ?: return
-            val since = System.currentTimeMillis()
+            val since = core.time.markNow()
             val event = lost(node, failure)
             log.info("{}: {}", node.path, failure.reason)
             publish(node, event)
@@ -60,7 +60,7 @@ internal class Outages<T : Node>(
                 if (sinksOf(node).isEmpty()) return
                 if (failureOf(node) == null) {
                     log.info("{}: answers again", node.path)
-                    publish(node, back(node, System.currentTimeMillis() - since))
+                    publish(node, back(node, since.elapsedNow().inWholeMilliseconds))
                     return
                 }
             }

@@ -30,7 +30,8 @@ internal class PollSchedules(private val core: TreeCore) {
                         POLLS_IN_FLIGHT,
                         { core.missedPollTicks.addAndGet(it) },
                         slow,
-                        context = core.remote.dispatcher,
+                        core.time,
+                        core.remote.dispatcher,
                     )
                 }
                 .add(member)

@@ -2,6 +2,7 @@ package org.rtcoord.internal.events
 
 import java.util.concurrent.CopyOnWriteArrayList
 import kotlin.time.Duration
+import kotlin.time.TimeSource
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 
@@ -10,7 +11,7 @@ import kotlinx.coroutines.Job
  * watched component (a thousand components watched by push made two thousand timer wake-ups a second). A check only
  * compares a time and, rarely, posts work to its monitor.
  */
-internal class Watchdogs(private val scope: CoroutineScope) {
+internal class Watchdogs(private val scope: CoroutineScope, private val time: TimeSource) {
     private class Group(val checks: CopyOnWriteArrayList<() -> Unit>, val timer: Job)
 
     private val groups = HashMap<Duration, Group>()
@@ -21,7 +22,7 @@ internal class Watchdogs(private val scope: CoroutineScope) {
             groups
                 .getOrPut(period) {
                     val checks = CopyOnWriteArrayList<() -> Unit>()
-                    Group(checks, scope.launchTicks(period) { checks.forEach { it() } })
+                    Group(checks, scope.launchTicks(period, time) { checks.forEach { it() } })
                 }
                 .checks += check
         }

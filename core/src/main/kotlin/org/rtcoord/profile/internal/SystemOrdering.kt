@@ -2,7 +2,6 @@ package org.rtcoord.profile.internal
 
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.CoroutineName
@@ -57,7 +56,7 @@ internal class SystemOrdering(private val tree: RtcTree) {
         val issued = steps.associateWith { CompletableDeferred<Boolean>() }
         val finished = steps.associateWith { CompletableDeferred<Boolean>() }
         val outcomes = java.util.concurrent.ConcurrentHashMap<PlannedStep, StepOutcome>()
-        val start = TimeSource.Monotonic.markNow()
+        val start = tree.core.time.markNow()
         coroutineScope {
             for (step in steps) launch {
                 // Earlier sequences' time is theirs: a step's deadline starts once they are done.

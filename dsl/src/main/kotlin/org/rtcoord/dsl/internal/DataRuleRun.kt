@@ -1,3 +1,5 @@
+@file:OptIn(InternalRtcoordApi::class)
+
 package org.rtcoord.dsl.internal
 
 import kotlin.time.Duration.Companion.milliseconds
@@ -7,6 +9,7 @@ import kotlinx.coroutines.isActive
 import kotlinx.coroutines.launch
 import org.rtcoord.ComponentNode
 import org.rtcoord.DataListener
+import org.rtcoord.InternalRtcoordApi
 import org.rtcoord.LifeCycle
 import org.rtcoord.Overlap
 import org.rtcoord.PortData
@@ -14,6 +17,7 @@ import org.rtcoord.RtcException
 import org.rtcoord.Subscription
 import org.rtcoord.dsl.DataRule
 import org.rtcoord.dsl.Reaction
+import org.rtcoord.internal.treeTime
 
 /**
  * One run of a [DataRule]: taps the port and hands samples to the handler (the newest waiting while it runs), or
@@ -27,6 +31,7 @@ internal class DataRuleRun(
     private val scope: CoroutineScope,
     private val fire: suspend (String, suspend Reaction.() -> Unit) -> Unit,
 ) {
+    private val began = engine.tree.treeTime().markNow()
     private var following: Subscription? = null
     @Volatile private var tapped: Subscription? = null
 
@@ -100,7 +105,6 @@ internal class DataRuleRun(
         return DataListener { synchronized(liveness) { liveness.sample(now()) } }
     }
 
-    private companion object {
-        fun now(): Long = System.nanoTime() / 1_000_000
-    }
+    /** Milliseconds of the tree's time (see [org.rtcoord.TreeConfig.speed]) since the rule began. */
+    private fun now(): Long = began.elapsedNow().inWholeMilliseconds
 }

@@ -6,7 +6,8 @@ import kotlin.time.Duration
  * How `rtcoord test --explore` searches: [seed] draws the schedules; it stops after [runs] runs or once [duration] is
  * up (the first that comes; both null: at [DEFAULT_RUNS]); each schedule has up to [maxFaults] faults; [parallelism]
  * runs go at once, each on a system of its own; a distinct failure is shrunk in at most [shrinkRuns] runs; [writeTests]
- * writes each as a regression test next to the test.
+ * writes each as a regression test next to the test. The simulated systems, their trees and the coordinators run
+ * [speed] times as fast as the robot's clock (`TreeConfig.speed`).
  */
 public class ExploreOptions
 @JvmOverloads
@@ -25,11 +26,14 @@ constructor(
     public val shrinkRuns: Int = DEFAULT_SHRINK_RUNS,
     /** Whether each distinct failure is written as `NAME.found-SEED-INDEX.test.kts` next to the test. */
     public val writeTests: Boolean = true,
+    /** How many times as fast as the robot's clock each run goes. */
+    public val speed: Double = DEFAULT_SPEED,
 ) {
     init {
         require(runs == null || runs > 0) { "--runs must be at least 1" }
         require(maxFaults >= 1) { "--max-faults must be at least 1" }
         require(parallelism >= 1) { "--parallel must be at least 1" }
+        require(speed > 0 && speed.isFinite()) { "--speed must be positive" }
     }
 
     /** The runs to make: [runs], or [DEFAULT_RUNS] when neither it nor [duration] is given, or unbounded. */
@@ -45,5 +49,12 @@ constructor(
 
         /** The most runs shrinking one failure takes unless told. */
         public const val DEFAULT_SHRINK_RUNS: Int = 40
+
+        /** How many times as fast as the robot's clock runs go unless told. */
+        public const val DEFAULT_SPEED: Double = 10.0
+
+        /** [speed] as `--speed` takes it: `10`, `2.5`. */
+        public fun shown(speed: Double): String =
+            if (speed % 1.0 == 0.0) speed.toLong().toString() else speed.toString()
     }
 }

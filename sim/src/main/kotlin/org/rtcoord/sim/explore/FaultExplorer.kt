@@ -61,7 +61,7 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         val began = TimeSource.Monotonic.markNow()
         val test = load(path)
         val space = space(test, options.maxFaults)
-        baseline(space.scenarios, options.parallelism)
+        baseline(space.scenarios, options.parallelism, options.speed)
         val found = Findings()
         val next = AtomicLong()
         val deadline = options.duration?.let { began + it }
@@ -73,7 +73,7 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
                             val index = next.getAndIncrement()
                             if (index >= options.runLimit) break
                             val schedule = space.draw(options.seed, index)
-                            val result = run(schedule)
+                            val result = run(schedule, options.speed)
                             synchronized(found) { progress(found.add(schedule, result, began.elapsedNow())) }
                         }
                     }
@@ -88,11 +88,11 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         val interrupted = stopping.isCompleted
         val failures =
             found.groups.values.map { group ->
-                val replay = replayCommand(test, group.schedule, options.maxFaults)
+                val replay = replayCommand(test, group.schedule, options)
                 if (interrupted) return@map group.found(group.schedule, 0, replay, null, null)
                 val shrinker =
                     ScheduleShrinker(options.shrinkRuns) { candidate ->
-                        val verdict = Verdict.of(run(candidate))
+                        val verdict = Verdict.of(run(candidate, options.speed))
                         verdict is Verdict.Failed && verdict.key == group.verdict.key
                     }
                 val smallest = shrinker.shrink(group.schedule)
@@ -128,6 +128,7 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         maxFaults: Int,
         reruns: Int,
         parallelism: Int = 1,
+        speed: Double = ExploreOptions.DEFAULT_SPEED,
         progress: (Int, String) -> Unit = { _, _ -> },
     ): ReplayReport = coroutineScope {
         require(reruns >= 1) { "--reruns must be at least 1" }
@@ -141,7 +142,7 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
                 .map {
                     async(Dispatchers.IO) {
                         permits
-                            .withPermit { run(schedule) }
+                            .withPermit { run(schedule, speed) }
                             .also { progress(done.incrementAndGet().toInt(), Verdict.of(it).toString()) }
                     }
                 }
@@ -196,11 +197,11 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         }
 
     /** Runs each of [scenarios] once without faults: one that fails so is refused, as every schedule would fail it. */
-    private suspend fun baseline(scenarios: List<ScenarioPlan>, parallelism: Int) = coroutineScope {
+    private suspend fun baseline(scenarios: List<ScenarioPlan>, parallelism: Int, speed: Double) = coroutineScope {
         val permits = Semaphore(parallelism)
         val failed =
             scenarios
-                .map { scenario -> async(Dispatchers.IO) { permits.withPermit { runPlain(scenario) } } }
+                .map { scenario -> async(Dispatchers.IO) { permits.withPermit { runPlain(scenario, speed) } } }
                 .awaitAll()
                 .filterNot { it.passed }
         if (failed.isNotEmpty()) {
@@ -213,11 +214,12 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         }
     }
 
-    private suspend fun runPlain(scenario: ScenarioPlan): TestResult = ScenarioRun(scenario, scripts).run()
+    private suspend fun runPlain(scenario: ScenarioPlan, speed: Double): TestResult =
+        ScenarioRun(scenario, scripts, speed = speed).run()
 
-    private suspend fun run(schedule: Schedule): TestResult =
+    private suspend fun run(schedule: Schedule, speed: Double): TestResult =
         withContext(Dispatchers.IO) {
-            ScenarioRun(schedule.scenario, scripts, schedule.faults.map(Injection::of)).run()
+            ScenarioRun(schedule.scenario, scripts, schedule.faults.map(Injection::of), speed = speed).run()
         }
 
     /**
@@ -226,16 +228,18 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
     private suspend fun failsAsWritten(path: Path): Boolean =
         try {
             val test = withContext(Dispatchers.IO) { loader.load(TestFiles.find(listOf(path)).single()) }
-            test.scenarios.any { !runPlain(it).passed }
+            test.scenarios.any { !runPlain(it, 1.0).passed }
         } catch (e: CancellationException) {
             throw e
         } catch (e: Exception) {
             false
         }
 
-    private fun replayCommand(test: LoadedTest, schedule: Schedule, maxFaults: Int): String =
+    private fun replayCommand(test: LoadedTest, schedule: Schedule, options: ExploreOptions): String =
         "rtcoord test --explore --replay ${schedule.key}" +
-            (if (maxFaults != ExploreOptions.DEFAULT_MAX_FAULTS) " --max-faults $maxFaults" else "") +
+            (if (options.maxFaults != ExploreOptions.DEFAULT_MAX_FAULTS) " --max-faults ${options.maxFaults}" else "") +
+            (if (options.speed != ExploreOptions.DEFAULT_SPEED) " --speed ${ExploreOptions.shown(options.speed)}"
+            else "") +
             " ${test.file.path}"
 
     /** The runs' verdicts so far, the failures grouped by where they fail; guarded by its own lock. */

@@ -18,15 +18,21 @@ import org.rtcoord.dsl.script.ScriptHost
  * the file's coordinator compiled by the dsl's [ScriptHost], [parallelism] scenarios at a time. Test scripts are kept
  * compiled in [ScriptHost.defaultCacheDirectory], as coordinators are: an unchanged one starts at once. Whatever a test
  * does (it does not compile, its coordinator names what the system lacks, a scenario cannot be run at all), it is a
- * failed result and every other test still runs.
+ * failed result and every other test still runs. Scenarios run [speed] times as fast as the robot's clock
+ * (`TreeConfig.speed`).
  */
 public class CoordinatorTestRunner
 @JvmOverloads
 constructor(
     private val parallelism: Int = Runtime.getRuntime().availableProcessors(),
     private val scripts: ScriptHost = ScriptHost(),
+    private val speed: Double = 1.0,
 ) {
     private val loader = TestLoader(TestScriptHost(), scripts)
+
+    init {
+        require(speed > 0 && speed.isFinite()) { "speed must be positive, was $speed" }
+    }
 
     /**
      * How long a handler may run before the coordinator is said to have stopped reacting: shorter in the tests of that
@@ -103,5 +109,5 @@ constructor(
 
     /** Runs [scenario] on a system of its own. */
     internal suspend fun run(scenario: ScenarioPlan): TestResult =
-        withContext(Dispatchers.IO) { ScenarioRun(scenario, scripts, stuckAfter = stuckAfter).run() }
+        withContext(Dispatchers.IO) { ScenarioRun(scenario, scripts, stuckAfter = stuckAfter, speed = speed).run() }
 }

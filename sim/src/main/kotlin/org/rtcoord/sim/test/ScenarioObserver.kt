@@ -1,7 +1,7 @@
 package org.rtcoord.sim.test
 
 import java.util.concurrent.CopyOnWriteArrayList
-import kotlin.time.TimeSource
+import kotlin.time.ComparableTimeMark
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -21,12 +21,14 @@ internal class ScenarioObserver(
     private val model: SystemModel,
     private val source: TestSource,
     private val broke: (TestFailure) -> Unit,
+    /** The scenario's clock, which the timeline's times are read on. */
+    private val clock: ScenarioClock,
 ) {
     private sealed class Input {
         class Started(val snapshot: SystemSnapshot) : Input()
 
         class Happened(
-            val mark: TimeSource.Monotonic.ValueTimeMark,
+            val mark: ComparableTimeMark,
             val kind: TimelineEntry.Kind,
             val text: String,
             val event: RtcEvent? = null,
@@ -36,7 +38,7 @@ internal class ScenarioObserver(
         class Begin(val invariant: TestStep.Invariant) : Input()
     }
 
-    private class Entry(val mark: TimeSource.Monotonic.ValueTimeMark, val kind: TimelineEntry.Kind, val text: String)
+    private class Entry(val mark: ComparableTimeMark, val kind: TimelineEntry.Kind, val text: String)
 
     private val inputs = Channel<Input>(Channel.UNLIMITED)
     private val entries = CopyOnWriteArrayList<Entry>()
@@ -44,7 +46,7 @@ internal class ScenarioObserver(
     private val count = MutableStateFlow(0L)
 
     /** When the scenario started (the coordinator's start); set once it has. */
-    @Volatile var origin: TimeSource.Monotonic.ValueTimeMark? = null
+    @Volatile var origin: ComparableTimeMark? = null
 
     /** How many entries have been handled: changes with each. */
     val changes: StateFlow<Long> = count.asStateFlow()
@@ -76,7 +78,7 @@ internal class ScenarioObserver(
         event: RtcEvent? = null,
         mode: Pair<String, String?>? = null,
     ) {
-        inputs.trySend(Input.Happened(TimeSource.Monotonic.markNow(), kind, text, event, mode))
+        inputs.trySend(Input.Happened(clock.markNow(), kind, text, event, mode))
     }
 
     /** Handles what comes, in order, until [close] and what came before it is handled. */
@@ -129,7 +131,7 @@ internal class ScenarioObserver(
                     e
                 }
             val time =
-                (cause?.mark ?: TimeSource.Monotonic.markNow()).let { mark ->
+                (cause?.mark ?: clock.markNow()).let { mark ->
                     origin?.let { TimelineEntry.seconds(mark - it) }
                 }
             val whenBroken =

@@ -1,12 +1,10 @@
 package org.rtcoord.sim.test
 
+import kotlin.time.ComparableTimeMark
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
-import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.first
-import kotlinx.coroutines.withTimeoutOrNull
 import org.rtcoord.dsl.Coordinator
 import org.rtcoord.dsl.HandlerFailure
 import org.rtcoord.sim.SimulatedSystem
@@ -23,7 +21,8 @@ internal class ScenarioPlayer(
     private val reads: SystemReads,
     private val observer: ScenarioObserver,
     private val source: TestSource,
-    private val origin: TimeSource.Monotonic.ValueTimeMark,
+    private val origin: ComparableTimeMark,
+    private val clock: ScenarioClock,
 ) {
     /** Plays [steps]; the failure of the first that fails, or null. */
     suspend fun play(steps: List<TestStep>): TestFailure? {
@@ -66,7 +65,7 @@ internal class ScenarioPlayer(
     }
 
     private suspend fun at(step: TestStep.At): TestFailure? {
-        delay(step.time - origin.elapsedNow())
+        clock.delay(step.time - origin.elapsedNow())
         return try {
             step.faults(SimFaults(system, observer::fault))
             null
@@ -141,13 +140,13 @@ internal class ScenarioPlayer(
      * every [POLL]), and once more at the deadline.
      */
     private suspend fun holdsWithin(within: Duration, check: suspend () -> Boolean): Boolean {
-        val deadline = TimeSource.Monotonic.markNow() + within
+        val deadline = clock.markNow() + within
         while (true) {
             val seen = observer.changes.value
             if (check()) return true
             val left = -deadline.elapsedNow()
             if (!left.isPositive()) return false
-            withTimeoutOrNull(minOf(left, POLL)) { observer.changes.first { it != seen } }
+            clock.withTimeoutOrNull(minOf(left, POLL)) { observer.changes.first { it != seen } }
         }
     }
 

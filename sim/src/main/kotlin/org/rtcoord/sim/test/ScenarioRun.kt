@@ -3,6 +3,7 @@ package org.rtcoord.sim.test
 import java.net.InetSocketAddress
 import java.time.Instant
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.ComparableTimeMark
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
@@ -14,7 +15,6 @@ import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
 import kotlinx.coroutines.async
 import kotlinx.coroutines.coroutineScope
-import kotlinx.coroutines.delay
 import kotlinx.coroutines.flow.first
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.selects.select
@@ -67,6 +67,8 @@ internal class ScenarioRun(
     private val schedule: List<Injection> = emptyList(),
     /** How long a handler may run before the coordinator is said to have stopped reacting. */
     private val stuckAfter: Duration = STUCK,
+    /** How many times as fast as the robot's clock the scenario runs ([TreeConfig.speed]). */
+    private val speed: Double = 1.0,
 ) {
     private val test = plan.test
     private val log = CopyOnWriteArrayList<String>()
@@ -105,7 +107,7 @@ internal class ScenarioRun(
     private suspend fun simulate(): List<TestFailure> {
         val system =
             try {
-                SimulatedSystem.start(test.profile, idlDirectories = test.idlDirectories)
+                SimulatedSystem.start(test.profile, idlDirectories = test.idlDirectories, speed = speed)
             } catch (e: IllegalArgumentException) {
                 return listOf(TestFailure(test.systemAt, "cannot simulate ${test.systemShown}: ${e.message}"))
             }
@@ -114,7 +116,9 @@ internal class ScenarioRun(
             system.close()
             return system.warnings.map { TestFailure(test.systemAt, "${test.systemShown}: $it") }
         }
-        return system.use { RtcTree(TreeConfig(listOf(system.address))).use { tree -> coordinate(system, tree) } }
+        return system.use {
+            RtcTree(TreeConfig(listOf(system.address), speed = speed)).use { tree -> coordinate(system, tree) }
+        }
     }
 
     private suspend fun coordinate(system: SimulatedSystem, tree: RtcTree): List<TestFailure> = coroutineScope {
@@ -126,8 +130,9 @@ internal class ScenarioRun(
             } catch (e: ScriptFailure) {
                 return@coroutineScope e.problems.map(TestFailure::of)
             }
+        val clock = ScenarioClock(tree)
         val observer =
-            ScenarioObserver(SystemModel(LiveReads(system, tree, null, log)), test.source, ::broke).also {
+            ScenarioObserver(SystemModel(LiveReads(system, tree, null, log)), test.source, ::broke, clock).also {
                 observer = it
             }
         val observing = launch { observer.run() }
@@ -137,7 +142,7 @@ internal class ScenarioRun(
                     log += line
                     observer.log(line)
                 }
-                .use { coordinator -> play(system, tree, coordination, coordinator, observer, observing) }
+                .use { coordinator -> play(system, tree, coordination, coordinator, observer, observing, clock) }
         } finally {
             subscriptions.forEach(Subscription::cancel)
             observer.close()
@@ -152,11 +157,12 @@ internal class ScenarioRun(
         coordinator: Coordinator,
         observer: ScenarioObserver,
         observing: Job,
+        clock: ScenarioClock,
     ): List<TestFailure> {
         start(system, tree, coordination, coordinator)?.let {
             return it
         }
-        val origin = TimeSource.Monotonic.markNow()
+        val origin = clock.markNow()
         observer.origin = origin
         val watching = launch { watch(tree, coordination, coordinator, observer) }
         val player =
@@ -167,8 +173,11 @@ internal class ScenarioRun(
                 observer,
                 test.source,
                 origin,
+                clock,
             )
-        val injecting = launch { inject(system, observer, origin, (plan.injections + schedule).sortedBy { it.time }) }
+        val injecting = launch {
+            inject(system, observer, clock, origin, (plan.injections + schedule).sortedBy { it.time })
+        }
         val playing = async { player.play(plan.steps) }
         // The scenario lasts until its steps are done and its last fault applied, or its first failure.
         val first =
@@ -182,8 +191,8 @@ internal class ScenarioRun(
                 }
         playing.cancel()
         injecting.cancel()
-        if (first == null) settle(observer)
-        val stuck = if (first == null) stuck(coordinator) else null
+        if (first == null) settle(observer, clock)
+        val stuck = if (first == null) stuck(coordinator, clock) else null
         watching.cancel()
         val end = if (first == null) player.endChecks(plan.steps) else emptyList()
         // What was observed up to now is checked before the verdict: an invariant may break on the last events.
@@ -204,11 +213,12 @@ internal class ScenarioRun(
     private suspend fun inject(
         system: SimulatedSystem,
         observer: ScenarioObserver,
-        origin: TimeSource.Monotonic.ValueTimeMark,
+        clock: ScenarioClock,
+        origin: ComparableTimeMark,
         injections: List<Injection>,
     ) {
         for (injection in injections) {
-            delay(injection.time - origin.elapsedNow())
+            clock.delay(injection.time - origin.elapsedNow())
             try {
                 injection.faults(SimFaults(system, observer::fault))
             } catch (e: CancellationException) {
@@ -228,18 +238,18 @@ internal class ScenarioRun(
         }
         // What the last fault sets going takes a moment to show (a state change polled, a handler run): it is watched
         // for first.
-        if (injections.isNotEmpty()) delay(AFTERMATH)
+        if (injections.isNotEmpty()) clock.delay(AFTERMATH)
     }
 
     /**
      * Lets what the last steps set going finish: waits until nothing has happened for [QUIET] (at most [SETTLE]), so
      * that a handler that fails just after the last expectation held still fails the scenario.
      */
-    private suspend fun settle(observer: ScenarioObserver) {
-        withTimeoutOrNull(SETTLE) {
+    private suspend fun settle(observer: ScenarioObserver, clock: ScenarioClock) {
+        clock.withTimeoutOrNull(SETTLE) {
             while (!broken.isCompleted) {
                 val seen = observer.changes.value
-                withTimeoutOrNull(QUIET) { observer.changes.first { it != seen } } ?: break
+                clock.withTimeoutOrNull(QUIET) { observer.changes.first { it != seen } } ?: break
             }
         }
     }
@@ -248,12 +258,15 @@ internal class ScenarioRun(
      * Whether the coordinator stopped reacting: a rule's handler that has not returned [stuckAfter] after it fired,
      * which holds back the rule's later events. Waits for the handlers running now to return, each at most until then.
      */
-    private suspend fun stuck(coordinator: Coordinator): TestFailure? {
+    private suspend fun stuck(coordinator: Coordinator, clock: ScenarioClock): TestFailure? {
         for (rule in coordinator.rules) {
             val status = rule.status.value
             val since = status.lastFired?.takeIf { status.running > 0 } ?: continue
-            val left = stuckAfter - java.time.Duration.between(since, Instant.now()).toKotlinDuration()
-            if (left.isPositive() && withTimeoutOrNull(left) { rule.status.first { it.running == 0 } } != null) continue
+            // When it fired is the host's wall clock.
+            val running = clock.robotTime(java.time.Duration.between(since, Instant.now()).toKotlinDuration())
+            val left = stuckAfter - running
+            if (left.isPositive() && clock.withTimeoutOrNull(left) { rule.status.first { it.running == 0 } } != null)
+                continue
             return TestFailure(
                 test.coordinatorShown.toString(),
                 "the coordinator stopped reacting: the handler of rule '${rule.description}' had not returned $stuckAfter after it fired on ${status.lastEvent}",

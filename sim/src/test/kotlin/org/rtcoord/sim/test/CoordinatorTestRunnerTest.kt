@@ -2,6 +2,7 @@ package org.rtcoord.sim.test
 
 import java.nio.file.Files
 import java.nio.file.Path
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -45,6 +46,39 @@ class CoordinatorTestRunnerTest {
         assertTrue(xml.contains("tests=\"2\" failures=\"0\""), xml)
         assertTrue(xml.contains("<testcase classname=\"two\" name=\"the laser breaks\""), xml)
         assertTrue(xml.contains("<testcase classname=\"two\" name=\"nothing happens\""), xml)
+    }
+
+    @Test
+    fun `a scenario at ten times the robot's clock holds as on it, its timeline in the robot's time`(
+        @TempDir directory: Path
+    ) {
+        val folder = TestFolder(directory)
+        val test =
+            folder.test(
+                "fast.test.kts",
+                "${folder.examples}/localisation.coord.kts",
+                """
+            always { component("odometry0").state() == ACTIVE && component("gyro0").state() == ACTIVE }
+            scenario("the laser breaks for good") {
+                at(6.seconds) { breakDown("laser0") }
+                expect(within = 5.seconds) { component("odo_localise0").state() == ACTIVE }
+                expectLog("laser0 could not be reset")
+            }
+            """,
+            )
+        val result = runBlocking {
+            CoordinatorTestRunner(1, speed = 10.0).let { it.runAll(it.files(listOf(test))) }.single()
+        }
+
+        assertTrue(result.passed, (TestReport.failures(result) + TestReport.timeline(result)).joinToString("\n"))
+        // Six seconds of the robot's time before the fault alone: on the host's clock, at ten times, well under them.
+        assertTrue(result.duration < 4.seconds, "took ${result.duration}")
+        val timeline = result.timeline.joinToString("\n")
+        val fault = result.timeline.firstOrNull { it.kind == TimelineEntry.Kind.FAULT }
+        assertTrue(fault != null && fault.at >= 6.seconds && fault.at < 6.5.seconds, timeline)
+        // The laser's ERROR, seen on the tree's clock as the robot would see it: just after the fault.
+        val error = result.timeline.firstOrNull { it.text == "laser0.rtc ACTIVE -> ERROR" }
+        assertTrue(error != null && error.at >= fault!!.at && error.at < fault.at + 1.seconds, timeline)
     }
 
     @Test
