@@ -88,10 +88,23 @@ public sealed class Port(
         refreshAfter(calls.disconnect(connectorId))
     }
 
-    /** Removes every connection of this port, then reads each component involved once. */
+    /**
+     * Removes every connection of this port, then reads each component involved once. A connection that went meanwhile
+     * (its peer or the component dropped it since the port was read: OpenRTM-aist answers `BAD_PARAMETER` for an id it
+     * no longer has) is passed over: it is gone, as this asks.
+     */
     @JvmSynthetic
     public suspend fun disconnectAll() {
-        refreshAfter(snapshot().connectors.flatMap { calls.disconnect(it.id) })
+        refreshAfter(
+            snapshot().connectors.flatMap { connector ->
+                try {
+                    calls.disconnect(connector.id)
+                } catch (e: BadParameterException) {
+                    if (connector.id in calls.connectorIds()) throw e
+                    emptyList()
+                }
+            }
+        )
     }
 
     /** This port's connections, each with its ports resolved to tree paths where the tree knows them. */

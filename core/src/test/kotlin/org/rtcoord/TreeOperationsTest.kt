@@ -106,6 +106,19 @@ class TreeOperationsTest {
     }
 
     @Test
+    fun `disconnectAll passes over a connection that went since the port was read`(): Unit = runBlocking {
+        val laser = tree.port(path("laser_localise0.rtc:laser"))
+        assertEquals(1, laser.snapshot().connectors.size)
+        // Another client removes it: the tree's read still lists it.
+        witness.port(path("laser_localise0.rtc:laser")).disconnectAll()
+        assertEquals(1, laser.snapshot().connectors.size)
+
+        laser.disconnectAll()
+        assertTrue(seen("laser_localise0.rtc").port("laser")!!.connectors.isEmpty())
+        assertTrue(seen("laser0.rtc").port("laser")!!.connectors.isEmpty())
+    }
+
+    @Test
     fun `incompatible ports are refused before anything changes`(): Unit = runBlocking {
         val refused =
             assertThrows(BadParameterException::class.java) {

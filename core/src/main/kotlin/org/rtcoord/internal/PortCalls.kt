@@ -91,6 +91,15 @@ internal class PortCalls(
         return Connection.End(profile.name, path)
     }
 
+    /** The ids of the port's connections, read now. */
+    suspend fun connectorIds(): Set<String> {
+        val port = reference()
+        return core.remote
+            .call(subject, "get_connector_profiles") { port.get_connector_profiles() }
+            .map { it.connector_id }
+            .toSet()
+    }
+
     /** Removes connection [connectorId]; returns the components at its other ends (those that answer). */
     suspend fun disconnect(connectorId: String): List<ComponentObject> {
         val port = reference()
