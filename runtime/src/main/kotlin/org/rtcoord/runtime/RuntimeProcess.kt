@@ -10,6 +10,7 @@ import java.util.concurrent.ScheduledExecutorService
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CoroutineName
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Dispatchers
@@ -66,7 +67,7 @@ private constructor(
 
     /**
      * Creates and starts an instance of [type] named [instanceName] (by default the type name plus the lowest free
-     * index, as OpenRTM names them), and binds it in the naming service when [bind] is set.
+     * index, as OpenRTM names them), and binds it in the naming service when [bind] is set (see [register]).
      */
     public fun create(
         type: ComponentType,
@@ -78,8 +79,29 @@ private constructor(
         val component = RuntimeComponent(type, instanceName, this, contexts)
         component.start()
         hosted += component
-        if (bind) bind("$instanceName.rtc", component.ref, contexts)
+        if (bind) register(component)
         return component
+    }
+
+    /**
+     * Binds [component]'s name. A name server that does not answer fails neither the creation nor the manager that
+     * asked for it: OpenRTM-aist's naming manager catches what binding throws, and its naming update (every
+     * `naming.update.interval`) binds the name once the server answers again.
+     */
+    private fun register(component: RuntimeComponent) {
+        val name = "${component.instanceName}.rtc"
+        try {
+            bind(name, component.ref, component.contexts)
+        } catch (e: org.omg.CORBA.SystemException) {
+            log.warn("{}: the name server does not answer ({}): bound at the next naming update", name, e.toString())
+            scope.launch {
+                while (component in hosted) {
+                    delay(onHost(NAMING_UPDATE))
+                    if (component in hosted && runCatching { bind(name, component.ref, component.contexts) }.isSuccess)
+                        break
+                }
+            }
+        }
     }
 
     /** The hosted component named [instanceName]. */
@@ -213,6 +235,9 @@ private constructor(
 
     public companion object {
         private val threads = AtomicInteger()
+
+        /** OpenRTM-aist's default `naming.update.interval`. */
+        private val NAMING_UPDATE = 10.seconds
         private val runtimes = CopyOnWriteArrayList<RuntimeProcess>()
 
         /** The context OpenRTM binds components in by default: `<hostname>.host_cxt`. */
