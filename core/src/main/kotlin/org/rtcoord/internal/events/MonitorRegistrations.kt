@@ -39,7 +39,9 @@ internal class MonitorRegistrations : Iterable<MonitorRegistration> {
      * is the observer's.
      */
     fun needs(): WatchNeeds {
-        val now = all.toList()
+        // A copy of the array as it is: Kotlin's toList reads a one-element list's element after its size, and a
+        // registration removed in between made it fail.
+        val now = ArrayList(all)
         val traffic =
             now.filter { it.traffic && it.options.mode != WatchMode.POLL }.minOfOrNull { it.options.trafficInterval }
         return WatchNeeds(

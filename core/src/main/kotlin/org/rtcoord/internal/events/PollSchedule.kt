@@ -74,7 +74,8 @@ internal class PollSchedule(
             val origin = time.markNow()
             var due = Duration.ZERO
             while (isActive) {
-                val members = slots.toList()
+                // A copy of the array as it is (toList reads a one-element list's element after its size).
+                val members = ArrayList(slots)
                 if (members.isEmpty()) {
                     joined.receive()
                     due = origin.elapsedNow()
