@@ -32,9 +32,9 @@ class SimAndTestCommandTest {
         val result = runRtcoord("test", "--junit", junit.toString(), tests.toString())
         assertEquals(0, result.statusCode, result.stdout + result.stderr)
         val scenarios = result.stdout.lines().filter { it.startsWith("PASS ") }
-        assertEquals(4, scenarios.size, result.stdout)
+        assertEquals(6, scenarios.size, result.stdout)
         assertTrue(scenarios.any { it.startsWith("PASS ${tests.resolve("modes.test.kts")} › ") }, result.stdout)
-        val summary = Regex("""4 scenarios in 2 files, 4 passed, 0 failed \(wall time \d+\.\d s\)""")
+        val summary = Regex("""6 scenarios in 2 files, 6 passed, 0 failed \(wall time \d+\.\d s\)""")
         assertTrue(summary.matches(result.stdout.trimEnd().lines().last()), result.stdout)
         for (name in listOf("frozen-laser", "modes")) assertTrue(
             Files.readString(junit.resolve("TEST-$name.xml")).contains("failures=\"0\""),
