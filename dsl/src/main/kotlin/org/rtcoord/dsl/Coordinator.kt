@@ -273,6 +273,12 @@ public class Coordinator(
                 machine.networkWatch.watching(grouped)
             } catch (e: NotFoundException) {
                 // Not there yet: watched once a network that makes it is done.
+            } catch (e: RtcException) {
+                // Its name server restarting, say: the machine goes on, and says what it does not watch.
+                log(
+                    "machine ${machine.machine.name}: cannot watch ${grouped.first().target.key} (${e.message}): " +
+                        "tried again when a network is done"
+                )
             }
         }
     }
