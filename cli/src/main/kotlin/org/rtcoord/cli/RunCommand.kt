@@ -141,7 +141,7 @@ class RunCommand : TreeCommand("run") {
             }
 
             val signal = coroutineScope {
-                if (session.verbose) launch { coordinator.failureCounts.collect { printFramesFrom(coordinator) } }
+                if (session.verbose) launch { coordinator.failureCounts.collect { printFramesFrom(coordinator, it) } }
                 if (failOnHandlerError) {
                     launch {
                         coordinator.failureCounts.first { it > 0 }
@@ -178,11 +178,14 @@ class RunCommand : TreeCommand("run") {
 
     private var framesShown = 0
 
-    /** With -v: the script's frames of each handler failure not shown yet, under its log line. */
-    private fun printFramesFrom(coordinator: Coordinator) {
-        val failures = coordinator.handlerFailures
+    /**
+     * With -v: the script's frames of each of the first [logged] handler failures not shown yet, under its log line.
+     * The count goes up once a failure's line is logged; the list has the failure a moment before.
+     */
+    private fun printFramesFrom(coordinator: Coordinator, logged: Int) {
+        val failures = coordinator.handlerFailures.take(logged)
         failures.drop(framesShown).forEach { failure -> failure.scriptFrames.forEach { echo("    at $it") } }
-        framesShown = failures.size
+        framesShown = maxOf(framesShown, failures.size)
     }
 
     private fun count(n: Int, what: String): String =
