@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit
 import java.util.concurrent.TimeoutException
 import kotlin.concurrent.thread
 import kotlin.time.Duration.Companion.milliseconds
+import kotlin.time.Duration.Companion.seconds
 import org.omg.CORBA.portable.InputStream
 import org.omg.CORBA.portable.OutputStream
 import org.omg.CORBA.portable.ResponseHandler
@@ -352,7 +353,7 @@ internal class RuntimeExecutionContext(
     }
 
     private fun schedule() {
-        val period = (1_000_000_000 / (rate * runtime.speed)).toLong().coerceAtLeast(1)
+        val period = runtime.onHost((1 / rate).seconds).inWholeNanoseconds.coerceAtLeast(1)
         ticker = runtime.scheduler.scheduleAtFixedRate(::tick, period, period, TimeUnit.NANOSECONDS)
     }
 

@@ -95,11 +95,9 @@ private constructor(
         } catch (e: org.omg.CORBA.SystemException) {
             log.warn("{}: the name server does not answer ({}): bound at the next naming update", name, e.toString())
             scope.launch {
-                while (component in hosted) {
-                    delay(onHost(NAMING_UPDATE))
-                    if (component in hosted && runCatching { bind(name, component.ref, component.contexts) }.isSuccess)
-                        break
-                }
+                do delay(onHost(NAMING_UPDATE)) while (
+                    component in hosted && runCatching { bind(name, component.ref, component.contexts) }.isFailure
+                )
             }
         }
     }
