@@ -29,7 +29,8 @@ class SimAndTestCommandTest {
                 "localisation.xml",
             )) Files.copy(examples.resolve(name), tests.resolve(name))
         val junit = directory.resolve("junit")
-        val result = runRtcoord("test", "--junit", junit.toString(), tests.toString())
+        // At ten times the robot's clock: ExampleTestFilesTest runs them on it.
+        val result = runRtcoord("test", "--speed", "10", "--junit", junit.toString(), tests.toString())
         assertEquals(0, result.statusCode, result.stdout + result.stderr)
         val scenarios = result.stdout.lines().filter { it.startsWith("PASS ") }
         assertEquals(6, scenarios.size, result.stdout)
