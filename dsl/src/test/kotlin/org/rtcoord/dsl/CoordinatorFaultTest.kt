@@ -89,6 +89,39 @@ class CoordinatorFaultTest {
         }
 
     @Test
+    fun `a component created under the name of one that exited is the one the new reference reaches`(): Unit =
+        runBlocking {
+            rtSystem(naming.corbaloc) {
+                    manager(RuntimeModule("relays.so", listOf(Scenarios.relay)))
+                    component(Scenarios.relay, "source0")
+                }
+                .closedAfter()
+            val tree = RtcTree(TreeConfig(listOf(naming.address))).closedAfter()
+            val coordinator =
+                coordinator(tree) {
+                    after(0.seconds) {
+                        val first = manager().create("relay", "relay9")
+                        connect("source0.rtc:out", first.port("in"))
+                        first.exit()
+                        // The manager gives the name again once the first is cleaned up; its peer must be the new one.
+                        val second = manager().create("relay", "relay9")
+                        connect("source0.rtc:out", second.port("in"))
+                        log("connected again")
+                    }
+                }
+            coordinator.start()
+
+            await("the second relay9 to be connected, or the handler to fail") {
+                log.contains("connected again") || coordinator.failures > 0
+            }
+            assertEquals(0, coordinator.failures, log.toString())
+            RtcTree(TreeConfig(listOf(naming.address))).use { witness ->
+                val port = witness.port("${witness.componentNamed("relay9.rtc").path}:in")
+                assertEquals(listOf("source0.out"), port.connections().map { it.ports.first().fullName })
+            }
+        }
+
+    @Test
     fun `a manager killed while creating fails the creation clearly, and a later one goes through the restarted manager`():
         Unit = runBlocking {
         val trigger =

@@ -193,7 +193,8 @@ internal class Engine(
                 }
             }
         log("created ${created.path}")
-        val reference = reference(created)
+        identities.adopt(created)
+        val reference = ComponentRef(created.path.toString())
         currentCoroutineContext()[ActionJournal]?.record("$line: ${created.path}") { reference.exit() }
         return reference
     }

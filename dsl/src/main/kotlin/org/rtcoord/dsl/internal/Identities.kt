@@ -78,6 +78,15 @@ internal class Identities(
         names.computeIfAbsent(node.path.toString()) { FollowedComponent(it, node, this) }
     }
 
+    /**
+     * Remembers [node], created just now, as what its path names: a component that held the path before (it exited, and
+     * the name was given again) is replaced by it, for every name that resolved to that one.
+     */
+    suspend fun adopt(node: ComponentNode) {
+        val previous = names[node.path.toString()]?.node
+        if (previous == null || previous.isSameComponent(node)) remember(node) else follow(previous, node)
+    }
+
     /** Every name that resolved to [old], a component since re-created as [new], names [new] from now on. */
     suspend fun follow(old: ComponentNode, new: ComponentNode) {
         for (name in names.values) if (name.node.isSameComponent(old)) name.moveTo(new)
