@@ -2,6 +2,7 @@ package org.rtcoord.dsl
 
 import RTC.LifeCycleState
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.TimeSource
 import kotlinx.coroutines.runBlocking
@@ -205,6 +206,37 @@ class ModesTest : CoordinatedSystem() {
                 assertEquals(LifeCycleState.ERROR_STATE, system.component("gyro0").state)
             }
     }
+
+    @Test
+    fun `a component that exited is neither active nor connected while its name still reaches it`(): Unit =
+        runBlocking {
+            // OpenRTM-aist unbinds an exited component's name at its manager's next clean-up; until then the name
+            // reaches an object that no longer exists.
+            system.runtime.cleanupDelay = 1.hours
+            coordinator {
+                modes("m") {
+                    initial("idle")
+                    mode("idle") { on(component("gyro0")).state(ERROR) goTo "without" }
+                    mode("without") {
+                        network {
+                            inactive("laser_localise0")
+                            disconnected("laser0:laser", "laser_localise0:laser")
+                        }
+                        on(failed) goTo "failed"
+                    }
+                    mode("failed")
+                }
+            }
+                .use { coordinator ->
+                    val machine = coordinator.started("m", "m/idle")
+                    system.component("laser_localise0").exit()
+                    system.component("gyro0").fail()
+                    await("the network without laser_localise0 to be done or fail") {
+                        log.any { it.startsWith("mode m/without: network done") } || machine.mode.value == "m/failed"
+                    }
+                    assertEquals("m/without", machine.mode.value, log.joinToString("\n"))
+                }
+        }
 
     @Test
     fun `a step that misses its deadline fails the network`(): Unit = runBlocking {

@@ -9,6 +9,7 @@ import kotlinx.coroutines.TimeoutCancellationException
 import kotlinx.coroutines.async
 import kotlinx.coroutines.withTimeout
 import org.rtcoord.NotFoundException
+import org.rtcoord.UnreachableException
 import org.rtcoord.dsl.Link
 import org.rtcoord.dsl.Network
 import org.rtcoord.dsl.portRef
@@ -102,13 +103,16 @@ internal class Configurator(private val engine: Engine, private val scope: Corou
 
     /**
      * [read], or null when what it reads does not exist and that is [allowed]: a missing component is neither active
-     * nor connected.
+     * nor connected. One that exited is missing too, while its name still reaches it (`OBJECT_NOT_EXIST`): its manager
+     * unbinds the name only at its next clean-up.
      */
     private suspend fun <T> unlessAbsent(allowed: Boolean, read: suspend () -> T): T? =
         try {
             read()
         } catch (e: NotFoundException) {
             if (allowed) null else throw e
+        } catch (e: UnreachableException) {
+            if (allowed && e.cause is org.omg.CORBA.OBJECT_NOT_EXIST) null else throw e
         }
 
     /**
