@@ -3,7 +3,15 @@ package org.rtcoord.sim.test
 import java.nio.file.Path
 import java.nio.file.Paths
 import java.util.stream.Stream
+import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.Dispatchers
+import kotlinx.coroutines.SupervisorJob
+import kotlinx.coroutines.async
+import kotlinx.coroutines.cancel
 import kotlinx.coroutines.runBlocking
+import kotlinx.coroutines.sync.Semaphore
+import kotlinx.coroutines.sync.withPermit
 import org.junit.jupiter.api.DynamicContainer
 import org.junit.jupiter.api.DynamicNode
 import org.junit.jupiter.api.DynamicTest
@@ -29,6 +37,51 @@ public object CoordinatorTests {
                 Stream.of(file).flatMap { scenarios(runner, it) },
             )
         }
+    }
+
+    /**
+     * As [of], with [parallelism] scenarios running at a time: every file is loaded and its scenarios started at once,
+     * and each test waits for its own. A scenario mostly waits on the robot's clock, so several at a time take a
+     * fraction of the time one after another does, at a little more CPU. Closing the stream (JUnit does, once it ran
+     * them) stops what still runs.
+     */
+    @JvmStatic
+    public fun of(parallelism: Int, vararg paths: String): Stream<DynamicNode> {
+        require(parallelism >= 1) { "parallelism must be at least 1, was $parallelism" }
+        val runner = CoordinatorTestRunner(parallelism = parallelism)
+        val scope = CoroutineScope(SupervisorJob() + Dispatchers.IO)
+        val permits = Semaphore(parallelism)
+        val files =
+            runner.files(paths.map { Paths.get(it) }).map { file ->
+                file to scope.async { permits.withPermit { runner.load(file) } }
+            }
+        val started = files.map { (file, loading) ->
+            file to
+                scope.async {
+                    when (val loaded = loading.await()) {
+                        is CoordinatorTestRunner.Loaded.Failed ->
+                            listOf(file.name to CompletableDeferred(loaded.result))
+                        is CoordinatorTestRunner.Loaded.Runnable ->
+                            loaded.test.scenarios.map { scenario ->
+                                scenario.name to scope.async { permits.withPermit { runner.run(scenario) } }
+                            }
+                    }
+                }
+        }
+        return started
+            .stream()
+            .map<DynamicNode> { (file, scenarios) ->
+                DynamicContainer.dynamicContainer(
+                    file.name,
+                    file.path.toUri(),
+                    Stream.of(file).flatMap {
+                        runBlocking { scenarios.await() }
+                            .stream()
+                            .map { (name, result) -> test(name, file) { runBlocking { result.await() } } }
+                    },
+                )
+            }
+            .onClose { scope.cancel() }
     }
 
     private fun scenarios(runner: CoordinatorTestRunner, file: TestFile): Stream<DynamicNode> =

@@ -35,6 +35,8 @@ internal class LiveReads(
         }
     }
 
+    override suspend fun names(): Set<String> = system.components.mapTo(HashSet()) { it.instanceName }
+
     override suspend fun snapshot(component: String): ComponentSnapshot = node(component).snapshot()
 
     override suspend fun node(component: String): ComponentNode = node(system, tree, component)

@@ -19,6 +19,13 @@ public interface Observation {
     public fun component(name: String): ObservedComponent
 
     /**
+     * The components of the simulated system whose instance names match the glob [pattern] (`*` any run of characters,
+     * `?` one), in name order: `components("odo_localise*").any { it.state() == ACTIVE }` holds whichever instance a
+     * manager created (OpenRTM-aist names one created while an exited one still holds `odo_localise0` `odo_localise1`).
+     */
+    public suspend fun components(pattern: String): List<ObservedComponent>
+
+    /**
      * The active mode of the coordinator's mode machine [machine] (`localisation/degraded/odometry`), or null before it
      * has one.
      */

@@ -24,6 +24,14 @@ internal class RecordedObservation(private val reads: SystemReads) : Observation
 
     override fun component(name: String): ObservedComponent = Component(name.removeSuffix(".rtc"))
 
+    override suspend fun components(pattern: String): List<ObservedComponent> {
+        val glob = glob(pattern.removeSuffix(".rtc"))
+        return record("components(\"$pattern\")", { names -> names.joinToString(prefix = "[", postfix = "]") }) {
+                reads.names().filter(glob::matches).sorted()
+            }
+            .map(::Component)
+    }
+
     override fun modeOf(machine: String): String? =
         record("modeOf(\"$machine\")", { it ?: "null (no mode yet)" }) { reads.modeOf(machine) }
 
@@ -86,7 +94,14 @@ internal interface SystemReads {
 
     suspend fun node(component: String): ComponentNode
 
+    /** The instance names of the system's components. */
+    suspend fun names(): Set<String>
+
     fun modeOf(machine: String): String?
 
     val log: List<String>
 }
+
+/** The glob [pattern] (`*` any run of characters, `?` one) as a regular expression. */
+private fun glob(pattern: String): Regex =
+    Regex(pattern.split('*').joinToString(".*") { part -> part.split('?').joinToString(".") { Regex.escape(it) } })

@@ -83,6 +83,8 @@ internal class SystemModel(private val live: SystemReads) : SystemReads {
     override suspend fun exists(component: String): Boolean =
         component in nodes || (component !in gone && live.exists(component))
 
+    override suspend fun names(): Set<String> = nodes.keys + (live.names() - gone)
+
     override suspend fun snapshot(component: String): ComponentSnapshot {
         val node = node(component)
         return node.snapshots.value ?: node.snapshot()

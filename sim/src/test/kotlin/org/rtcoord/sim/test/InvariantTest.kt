@@ -46,4 +46,27 @@ class InvariantTest {
         assertEquals(listOf("component(\"laser_localise0\").state() was INACTIVE"), failure.details)
         assertTrue(held.passed, TestReport.failures(held).joinToString("\n"))
     }
+
+    @Test
+    fun `a condition reads the components a glob matches, live and as each event left them`(@TempDir directory: Path) {
+        val folder = TestFolder(directory)
+        val test =
+            folder.test(
+                "globs.test.kts",
+                "${folder.examples}/localisation.coord.kts",
+                """
+            scenario("one localiser at a time, whichever it is") {
+                never { components("*_localise?").count { it.state() == ACTIVE } > 1 }
+                at(1.seconds) { breakDown("laser0") }
+                expect(within = 5.seconds) { components("odo_localise*").any { it.state() == ACTIVE } }
+            }
+            scenario("none yet") {
+                expect(within = 1.seconds) { components("odo_localise*").isNotEmpty() }
+            }
+            """,
+            )
+        val (held, broken) = runBlocking { CoordinatorTestRunner().let { it.runAll(it.files(listOf(test))) } }
+        assertTrue(held.passed, TestReport.failures(held).joinToString("\n"))
+        assertEquals(listOf("components(\"odo_localise*\") was []"), broken.failures.single().details)
+    }
 }
