@@ -4,16 +4,18 @@ system("localisation.xml")
 coordinator("frozen-laser.coord.kts")
 
 // What `rtcoord test --explore` searches: the last scenario, with faults on the laser's data (freeze,
-// repair, lost connectors, a hung execution), on the two localisers, the master manager (which creates
-// the odometry localiser) and the name server, in its first 6 s. Out of scope: a laser that leaves
+// repair, lost connectors, a hung execution), on the two localisers and the name server, in its first
+// 6 s. Out of scope: a laser that leaves
 // ACTIVE (the invariant's promise is that the coordinator never moves it: fail, breakDown and exit
 // would break it by themselves), odometry and the gyro, and the slave manager, whose process hosts
 // every component.
+// The master manager's death is out of scope too: without it the switch cannot create the odometry
+// localiser, so it fails, says so and leaves the laser localiser running, which the kept test
+// frozen-laser.found-51-66.test.kts checks.
 explore {
     scenarios("whatever the laser's data does, a localiser runs in the end")
     components("laser0", "laser_localise0", "odo_localise0")
-    managers("manager")
-    exclude { fail("laser0"); breakDown("laser0"); exit("laser0") }
+    exclude { fail("laser0"); breakDown("laser0"); exit("laser0"); killManager() }
     window(0.seconds, 6.seconds)
 }
 
@@ -37,5 +39,5 @@ scenario("the gyro fails but the laser publishes: no switch") {
 
 scenario("whatever the laser's data does, a localiser runs in the end") {
     at(8.seconds) { }
-    expect(within = 5.seconds) { component("laser_localise0").state() == ACTIVE || component("odo_localise0").state() == ACTIVE }
+    expect(within = 5.seconds) { components("*_localise?").any { it.state() == ACTIVE } }
 }

@@ -4,14 +4,16 @@ system("localisation.xml")
 coordinator("laser-timeouts.coord.kts")
 
 // What `rtcoord test --explore` searches: the last scenario (three timeouts logged, so the switch
-// happens), with faults on the two localisers, the master manager (which creates the odometry
-// localiser) and the name server, in its first 6 s. Out of scope: the laser, which the invariant says
-// the coordinator never touches, odometry and the gyro, and the slave manager, whose process hosts
-// every component.
+// happens), with faults on the two localisers and the name server, in its first 6 s. Out of scope: the
+// laser, which the invariant says the coordinator never touches, odometry and the gyro, and the slave
+// manager, whose process hosts every component.
+// The master manager's death is out of scope too: without it the switch cannot create the odometry
+// localiser, so it fails, says so and leaves the laser localiser running, which the kept test
+// laser-timeouts.found-51-20.test.kts checks.
 explore {
     scenarios("three timeouts, whatever happens meanwhile: a localiser runs in the end")
     components("laser_localise0", "odo_localise0")
-    managers("manager")
+    exclude { killManager() }
     window(0.seconds, 6.seconds)
 }
 
@@ -42,5 +44,5 @@ scenario("three timeouts, whatever happens meanwhile: a localiser runs in the en
     at(2.seconds) { log("laser0", WARN, "scan timeout") }
     at(3.seconds) { log("laser0", ERROR, "scan timeout, retrying") }
     at(8.seconds) { }
-    expect(within = 5.seconds) { component("laser_localise0").state() == ACTIVE || component("odo_localise0").state() == ACTIVE }
+    expect(within = 5.seconds) { components("*_localise?").any { it.state() == ACTIVE } }
 }

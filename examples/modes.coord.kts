@@ -2,8 +2,9 @@
 // on the laser and odometry. When the laser fails, "degraded/odometry" tries to reset it (a laser that
 // stays broken cannot be reset, and the mode goes on without it), creates the localiser that uses
 // odometry and the gyro (once), and declares the network it needs; the coordinator brings the system
-// there and reports done or failed. If that fails or takes over 10 s, "degraded/safe" stops every
-// localiser. Whenever the laser is active again, back to "laser".
+// there and reports done or failed. A laser localiser that fails or exits by itself goes there too. If
+// that fails or takes over 10 s, "degraded/safe" stops every localiser. Whenever the laser is active
+// again, back to "laser".
 modes("localisation") {
     initial("laser")
 
@@ -17,6 +18,9 @@ modes("localisation") {
             disconnected("gyro0.rtc:gyro", "odo_localise0.rtc:gyro")
         }
         on(component("laser0.rtc")).state(ERROR) goTo "odometry"
+        // Exploring found the laser localiser failing or exiting by itself, which left nothing localising.
+        on(component("laser_localise0.rtc")).state(ERROR) goTo "odometry"
+        on(component("laser_localise0.rtc")).finalized() goTo "odometry"
     }
 
     mode("degraded") {

@@ -4,13 +4,15 @@ system("localisation.xml")
 coordinator("modes.coord.kts")
 
 // What `rtcoord test --explore` searches: the last scenario, with faults on the laser, the two
-// localisers, the master manager (which creates the odometry localiser) and the name server, in its
-// first 6 s. Out of scope: odometry and the gyro, which both modes need, and the slave manager, whose
-// process hosts every component.
+// localisers and the name server, in its first 6 s. Out of scope: odometry and the gyro, which both
+// modes need, and the slave manager, whose process hosts every component. The master manager's death
+// is out of scope too: without it the odometry mode cannot create its localiser, so its entry fails,
+// says so, and the machine goes to degraded/safe, which the kept test modes.found-51-185.test.kts
+// checks.
 explore {
     scenarios("whatever happens to the laser and the localisers, one localiser runs in the end")
     components("laser0", "laser_localise0", "odo_localise0")
-    managers("manager")
+    exclude { killManager() }
     window(0.seconds, 6.seconds)
 }
 
@@ -34,5 +36,5 @@ scenario("a laser fault a reset cures: degraded, the laser reset on entry") {
 
 scenario("whatever happens to the laser and the localisers, one localiser runs in the end") {
     at(8.seconds) { }
-    expect(within = 10.seconds) { component("laser_localise0").state() == ACTIVE || component("odo_localise0").state() == ACTIVE }
+    expect(within = 10.seconds) { components("*_localise?").any { it.state() == ACTIVE } }
 }

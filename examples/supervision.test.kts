@@ -5,14 +5,15 @@
 system("localisation.xml")
 coordinator("supervision.coord.kts")
 
-// What `rtcoord test --explore` searches: the last scenario, with faults on the laser and the two
-// localisers, the master manager (which creates the odometry localiser on escalation) and the name
-// server, in its first 6 s. Out of scope: odometry, which the invariant says the supervisor never
-// stops, the gyro, and the slave manager, whose process hosts every component.
+// What `rtcoord test --explore` searches: the last scenario, with faults on the laser, the two
+// localisers and the name server, in its first 6 s. Out of scope: odometry, which the invariant says
+// the supervisor never stops, the gyro, and the slave manager, whose process hosts every component.
+// The master manager's death is out of scope too: without it the escalation cannot create the odometry
+// localiser, so it fails and says so, which the kept test supervision.found-51-302.test.kts checks.
 explore {
     scenarios("whatever happens to the laser and its localiser, a localiser runs in the end")
     components("laser0", "laser_localise0", "odo_localise0")
-    managers("manager")
+    exclude { killManager() }
     window(0.seconds, 6.seconds)
 }
 
@@ -37,5 +38,5 @@ scenario("a laser that stays broken ends in the escalation: odometry takes over"
 
 scenario("whatever happens to the laser and its localiser, a localiser runs in the end") {
     at(8.seconds) { }
-    expect(within = 25.seconds) { component("laser_localise0").state() == ACTIVE || component("odo_localise0").state() == ACTIVE }
+    expect(within = 25.seconds) { components("*_localise?").any { it.state() == ACTIVE } }
 }

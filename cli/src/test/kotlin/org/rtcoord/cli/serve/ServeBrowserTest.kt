@@ -108,8 +108,8 @@ class ServeBrowserTest {
                     ".some(li => li.dataset.source === ${js(laser)} && li.textContent.includes('-> ERROR'))",
         )
 
-        // The coordinator's rule fired, the page says so; its reaction reshapes the graph.
-        val rule = coordinator.rules.single().description
+        // The coordinator's rule on the laser fired, the page says so; its reaction reshapes the graph.
+        val rule = coordinator.rules.single { it.description.startsWith("laser0.rtc") }.description
         browser.await(
             "the rule's firing shown",
             expression = "document.querySelector('.rule[data-firings=\"1\"]') !== null",
