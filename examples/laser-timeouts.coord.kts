@@ -55,7 +55,8 @@ suspend fun Reaction.localiseFromOdometry() = switching.withLock {
         connect("odometry0.rtc:odo", localiser.port("odo"))
         connect("gyro0.rtc:gyro", localiser.port("gyro"))
     }
-    localiser.activate()
+    // One that fails as it starts is reset and started again, once; one broken for good hands back.
+    if (!attempt { localiser.activate() } && !attempt { localiser.run { reset(); activate() } }) localiseFromLaser()
 }
 
 /** Back to the laser localiser, connected again, when the odometry one is broken for good and the laser runs. */
@@ -79,7 +80,7 @@ on(component("laser0.rtc")).logged(WARN, matching = Regex("timeout"), atLeast = 
 }
 
 // A localiser that fails or exits by itself: the odometry one replaces the laser one, and itself.
-on(component("*_localise*")).state(ERROR) { failure ->
+on(component("*_localise*")).state(ERROR, includeCurrent = true) { failure ->
     log("${failure.path.name} failed: localising from odometry")
     localiseFromOdometry()
 }
