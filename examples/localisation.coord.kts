@@ -1,9 +1,9 @@
 // The paper's coordinator: when the laser fails, replace the laser-based localiser by one that uses
 // odometry and the gyro, created through the manager, connected and activated. The laser is reset if it
-// can be; a laser that stays broken cannot, and the switch goes on without it. A switch that fails half
-// way (the manager refuses to create the new localiser) is taken back: the laser localiser runs again,
-// connected as before, so some localiser always runs. A laser already in ERROR when the coordinator
-// starts (it was restarted after the fault) is handled the same way: includeCurrent.
+// can be; a laser that stays broken cannot, and the switch goes on without it. A switch that fails (the
+// manager refuses to create the new localiser, or the switch fails half way) leaves or brings back the
+// laser localiser, connected as before, so some localiser runs. A laser already in ERROR when the
+// coordinator starts (it was restarted after the fault) is handled the same way: includeCurrent.
 //
 // Exploring the paper's story (`rtcoord test --explore localisation.test.kts`) found what it leaves out,
 // and the rules below the first handle it: a localiser that fails or exits by itself is replaced too,
