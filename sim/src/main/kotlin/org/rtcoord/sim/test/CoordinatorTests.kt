@@ -51,23 +51,20 @@ public object CoordinatorTests {
         val runner = CoordinatorTestRunner(parallelism = parallelism)
         val scope = CoroutineScope(SupervisorJob() + Dispatchers.IO)
         val permits = Semaphore(parallelism)
-        val files =
+        val started =
             runner.files(paths.map { Paths.get(it) }).map { file ->
-                file to scope.async { permits.withPermit { runner.load(file) } }
-            }
-        val started = files.map { (file, loading) ->
-            file to
-                scope.async {
-                    when (val loaded = loading.await()) {
-                        is CoordinatorTestRunner.Loaded.Failed ->
-                            listOf(file.name to CompletableDeferred(loaded.result))
-                        is CoordinatorTestRunner.Loaded.Runnable ->
-                            loaded.test.scenarios.map { scenario ->
-                                scenario.name to scope.async { permits.withPermit { runner.run(scenario) } }
-                            }
+                file to
+                    scope.async {
+                        when (val loaded = permits.withPermit { runner.load(file) }) {
+                            is CoordinatorTestRunner.Loaded.Failed ->
+                                listOf(file.name to CompletableDeferred(loaded.result))
+                            is CoordinatorTestRunner.Loaded.Runnable ->
+                                loaded.test.scenarios.map { scenario ->
+                                    scenario.name to scope.async { permits.withPermit { runner.run(scenario) } }
+                                }
+                        }
                     }
-                }
-        }
+            }
         return started
             .stream()
             .map<DynamicNode> { (file, scenarios) ->
