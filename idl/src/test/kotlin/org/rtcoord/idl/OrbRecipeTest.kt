@@ -1,5 +1,7 @@
 package org.rtcoord.idl
 
+import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.omg.CORBA.ORB
@@ -23,5 +25,19 @@ class OrbRecipeTest {
             staying.shutdown(true)
             staying.destroy()
         }
+    }
+
+    @Test
+    fun `an ORB keeps as many request threads idle as it is told, and starts more up to the same limit`() {
+        val few = OrbRecipe.properties("127.0.0.1", 0, 1_000, 8)
+        val all = OrbRecipe.properties("127.0.0.1", 0, 1_000)
+        assertEquals("8", few.getProperty("jacorb.poa.thread_pool_min"))
+        assertEquals(all.getProperty("jacorb.poa.thread_pool_max"), few.getProperty("jacorb.poa.thread_pool_max"))
+        assertEquals(all.getProperty("jacorb.poa.thread_pool_max"), all.getProperty("jacorb.poa.thread_pool_min"))
+        val refused =
+            assertThrows(IllegalArgumentException::class.java) {
+                OrbRecipe.properties("127.0.0.1", 0, 1_000, OrbRecipe.REQUEST_THREADS + 1)
+            }
+        assertEquals("idleRequestThreads must be 1 to 64, was 65", refused.message)
     }
 }

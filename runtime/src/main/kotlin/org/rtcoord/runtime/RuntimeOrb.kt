@@ -68,10 +68,18 @@ private constructor(
     }
 
     public companion object {
-        /** Starts an ORB on [host]:[port]; port 0 lets the system choose a free one. */
-        public fun start(port: Int = 0, host: String = "127.0.0.1", callTimeout: Duration = 2.seconds): RuntimeOrb {
+        /**
+         * Starts an ORB on [host]:[port]; port 0 lets the system choose a free one. It keeps [idleRequestThreads] of
+         * its request threads when idle ([OrbRecipe.properties]).
+         */
+        public fun start(
+            port: Int = 0,
+            host: String = "127.0.0.1",
+            callTimeout: Duration = 2.seconds,
+            idleRequestThreads: Int = OrbRecipe.REQUEST_THREADS,
+        ): RuntimeOrb {
             // The tree's own recipe: what the benchmarks measure on the runtime is what the tree runs with.
-            val properties = OrbRecipe.properties(host, port, callTimeout.inWholeMilliseconds)
+            val properties = OrbRecipe.properties(host, port, callTimeout.inWholeMilliseconds, idleRequestThreads)
             properties.setProperty("jacorb.net.server_socket_factory", ServerConnections::class.java.name)
             val orb = ORB.init(emptyArray(), properties)
             val poa = POAHelper.narrow(orb.resolve_initial_references("RootPOA"))

@@ -22,6 +22,7 @@ import org.omg.CosNaming.NamingContextExt
 import org.omg.CosNaming.NamingContextExtHelper
 import org.omg.CosNaming.NamingContextPackage.AlreadyBound
 import org.omg.CosNaming.NamingContextPackage.NotFound
+import org.rtcoord.idl.OrbRecipe
 import org.slf4j.LoggerFactory
 
 /**
@@ -245,7 +246,8 @@ private constructor(
         /**
          * Starts a runtime whose ORB listens on [host]:[port] (0: any free port) and registers its components with the
          * naming service at [naming] (a `corbaloc:` address; null: none); its components' profiles name [managerName]
-         * as their manager's when it is set. It runs [speed] times as fast as the robot's clock.
+         * as their manager's when it is set. It runs [speed] times as fast as the robot's clock. Its ORB keeps
+         * [idleRequestThreads] request threads when idle ([RuntimeOrb.start]).
          */
         public fun start(
             naming: String?,
@@ -254,9 +256,11 @@ private constructor(
             host: String = "127.0.0.1",
             managerName: String? = null,
             speed: Double = 1.0,
+            idleRequestThreads: Int = OrbRecipe.REQUEST_THREADS,
         ): RuntimeProcess {
             require(speed > 0 && speed.isFinite()) { "speed must be positive, was $speed" }
-            return RuntimeProcess(RuntimeOrb.start(port, host), naming, contexts, managerName, speed).also {
+            val orb = RuntimeOrb.start(port, host, idleRequestThreads = idleRequestThreads)
+            return RuntimeProcess(orb, naming, contexts, managerName, speed).also {
                 runtimes += it
             }
         }

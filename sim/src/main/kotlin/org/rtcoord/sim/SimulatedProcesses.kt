@@ -14,10 +14,7 @@ import org.rtcoord.runtime.RuntimeProcess
  */
 internal class SimulatedProcesses
 private constructor(
-    private val naming: String,
-    private val host: String,
-    /** How many times as fast as the robot's clock the processes run ([RuntimeProcess.speed]). */
-    private val speed: Double,
+    private val recipe: ProcessRecipe,
     val master: SimulatedManager?,
     slaves: List<SimulatedManager>,
     /** The process of the components no manager hosts; null when there are none. */
@@ -38,10 +35,6 @@ private constructor(
         (listOfNotNull(master) + slaveList).firstOrNull { instanceName in it.hosts }?.process
             ?: checkNotNull(loose) { "no process hosts $instanceName" }
 
-    /**
-     * Makes the master start a slave when none of its slaves can create a type, as OpenRTM-aist's runs its
-     * `manager_cmd`: a new process whose slave can load every one of [types].
-     */
     /** Where every process sends its components' log records, those of slaves started later too; null: nowhere. */
     @Volatile private var logs: InetSocketAddress? = null
 
@@ -53,13 +46,16 @@ private constructor(
         loose?.sendLogsTo(address, LOOSE_MANAGER)
     }
 
+    /**
+     * Makes the master start a slave when none of its slaves can create a type, as OpenRTM-aist's runs its
+     * `manager_cmd`: a new process whose slave can load every one of [types].
+     */
     fun startSlavesOnDemand(types: Collection<ComponentType>) {
         val master = checkNotNull(master) { "no master to start slaves" }
         master.manager.managerCommand = { requested ->
             // `%p` is the new process's pid: here the JVM's, followed by a count.
             val name = requested.replace("%p", "${ProcessHandle.current().pid()}${slaveList.size + 1}")
-            val slave =
-                SimulatedManager.start(naming, host, speed, name, types, loaded = emptySet(), hosts = emptyList())
+            val slave = SimulatedManager.start(recipe, name, types, loaded = emptySet(), hosts = emptyList())
             logs?.let(slave::sendLogsTo)
             slaveList += slave
             master.manager.adopt(slave.manager)
@@ -75,14 +71,11 @@ private constructor(
         const val LOOSE_MANAGER = "manager"
 
         /**
-         * Starts the processes of [topology] on the naming service at [naming], their ORBs on [host]: each slave can
-         * create the types it lists (looked up in [types]), those of the components it hosts ([instances] says which)
-         * loaded from the start, each at [speed] ([RuntimeProcess.speed]).
+         * Starts the processes of [topology] as [recipe] says: each slave can create the types it lists (looked up in
+         * [types]), those of the components it hosts ([instances] says which) loaded from the start.
          */
         fun start(
-            naming: String,
-            host: String,
-            speed: Double,
+            recipe: ProcessRecipe,
             topology: ManagerTopology,
             types: Map<String, ComponentType>,
             instances: Map<String, ComponentType>,
@@ -91,9 +84,7 @@ private constructor(
             try {
                 val master =
                     topology.masterPath?.let { path ->
-                        val process =
-                            RuntimeProcess.start(naming, path.dropLast(1), host = host, speed = speed)
-                                .also(started::add)
+                        val process = recipe.start(path.dropLast(1)).also(started::add)
                         SimulatedManager(
                             RuntimeManager(process, isMaster = true, name = topology.masterName!!),
                             process,
@@ -104,15 +95,13 @@ private constructor(
                     topology.slaves.map { slave ->
                         val loaded = (slave.types + slave.components.mapNotNull { instances[it]?.typeName }).toSet()
                         val known = (loaded + slave.loadable).mapNotNull(types::get)
-                        SimulatedManager.start(naming, host, speed, slave.name, known, loaded, slave.components).also {
+                        SimulatedManager.start(recipe, slave.name, known, loaded, slave.components).also {
                             started += it.process
                         }
                     }
                 slaves.forEach { master?.manager?.adopt(it.manager) }
-                val loose =
-                    if (topology.unhosted.isEmpty() && master != null) null
-                    else RuntimeProcess.start(naming, host = host, speed = speed)
-                return SimulatedProcesses(naming, host, speed, master, slaves, loose)
+                val loose = if (topology.unhosted.isEmpty() && master != null) null else recipe.start()
+                return SimulatedProcesses(recipe, master, slaves, loose)
             } catch (e: Exception) {
                 started.forEach(RuntimeProcess::close)
                 throw e
@@ -132,12 +121,10 @@ internal class SimulatedManager(val manager: RuntimeManager, val process: Runtim
     companion object {
         /**
          * Starts a slave [name] in a process of its own, hosting [hosts], with a module `<type>.so` for each of
-         * [types], of which those [loaded] names are loaded, at [speed].
+         * [types], of which those [loaded] names are loaded, started as [recipe] says.
          */
         fun start(
-            naming: String,
-            host: String,
-            speed: Double,
+            recipe: ProcessRecipe,
             name: String,
             types: Collection<ComponentType>,
             loaded: Set<String>,
@@ -145,7 +132,7 @@ internal class SimulatedManager(val manager: RuntimeManager, val process: Runtim
         ): SimulatedManager {
             val modules = types.map { RuntimeModule("${it.typeName}.so", listOf(it)) }
             val preloaded = modules.filter { it.types.single().typeName in loaded }.map { it.fileName }
-            val process = RuntimeProcess.start(naming, host = host, speed = speed)
+            val process = recipe.start()
             return try {
                 SimulatedManager(
                     RuntimeManager(process, isMaster = false, name = name, modules = modules, preloaded = preloaded),

@@ -3,6 +3,7 @@ package org.rtcoord.sim
 import java.net.InetSocketAddress
 import java.nio.file.Path
 import org.rtcoord.datatypes.IdlFiles
+import org.rtcoord.idl.OrbRecipe
 import org.rtcoord.profile.ProfileFormatException
 import org.rtcoord.profile.RtsProfile
 import org.rtcoord.profile.RtsProfiles
@@ -26,6 +27,8 @@ import org.rtcoord.runtime.naming.NamingService
 public class SimulatedSystem
 private constructor(
     private val host: String,
+    /** How many request threads each of its ORBs keeps when idle. */
+    private val idleRequestThreads: Int,
     @Volatile private var naming: NamingService,
     private val processes: SimulatedProcesses,
     /** What the profile says that could not be simulated, one line each: the element, then why. */
@@ -137,7 +140,7 @@ private constructor(
         val bindings = naming.snapshot()
         val port = naming.port
         naming.close()
-        naming = NamingService.start(port, bindings, host)
+        naming = NamingService.start(port, bindings, host, idleRequestThreads)
     }
 
     /** Stops the components, the managers and the naming service. */
@@ -176,21 +179,35 @@ private constructor(
             port: Int = 0,
             idlDirectories: List<Path> = emptyList(),
             speed: Double = 1.0,
+        ): SimulatedSystem = start(profile, host, port, idlDirectories, speed, OrbRecipe.REQUEST_THREADS)
+
+        /**
+         * As the public [start], each of its ORBs keeping [idleRequestThreads] request threads when idle
+         * ([OrbRecipe.properties]): fewer for a system made and closed for each run of a scenario.
+         */
+        internal fun start(
+            profile: RtsProfile,
+            host: String,
+            port: Int,
+            idlDirectories: List<Path>,
+            speed: Double,
+            idleRequestThreads: Int,
         ): SimulatedSystem {
             val types =
                 SimulatedTypes(profile, idlDirectories.takeIf { it.isNotEmpty() }?.let(IdlFiles::readDirectories))
             val simulated = profile.components.map { it.instanceName }.filter { it in types.byInstance }
             val topology = ManagerTopology.of(profile, simulated, types.creatable.keys.toList())
             val warnings = (types.warnings + topology.warnings).toMutableList()
-            val naming = NamingService.start(port, host = host)
+            val naming = NamingService.start(port, host = host, idleRequestThreads = idleRequestThreads)
             val processes =
                 try {
-                    SimulatedProcesses.start(naming.corbaloc, host, speed, topology, types.creatable, types.byInstance)
+                    val recipe = ProcessRecipe(naming.corbaloc, host, speed, idleRequestThreads)
+                    SimulatedProcesses.start(recipe, topology, types.creatable, types.byInstance)
                 } catch (e: Exception) {
                     naming.close()
                     throw e
                 }
-            val system = SimulatedSystem(host, naming, processes, warnings, types.notes.toList())
+            val system = SimulatedSystem(host, idleRequestThreads, naming, processes, warnings, types.notes.toList())
             try {
                 if (!profile.ext.properties[ProfileKeys.MANAGER_COMMAND].isNullOrBlank() && processes.master != null) {
                     processes.startSlavesOnDemand(types.creatable.values)

@@ -1,6 +1,7 @@
 package org.rtcoord.runtime.naming
 
 import java.util.concurrent.atomic.AtomicBoolean
+import org.rtcoord.idl.OrbRecipe
 import org.rtcoord.runtime.RuntimeOrb
 import org.slf4j.LoggerFactory
 
@@ -49,10 +50,16 @@ private constructor(
 
         /**
          * Starts a naming service on [host]:[port] (port 0: one the system chooses), empty or with the contexts and
-         * bindings of [restore].
+         * bindings of [restore]. Its ORB keeps [idleRequestThreads] request threads when idle ([RuntimeOrb.start]).
          */
-        public fun start(port: Int = 0, restore: NamingSnapshot? = null, host: String = "127.0.0.1"): NamingService {
-            val orb = RuntimeOrb.start(port, host)
+        @JvmOverloads
+        public fun start(
+            port: Int = 0,
+            restore: NamingSnapshot? = null,
+            host: String = "127.0.0.1",
+            idleRequestThreads: Int = OrbRecipe.REQUEST_THREADS,
+        ): NamingService {
+            val orb = RuntimeOrb.start(port, host, idleRequestThreads = idleRequestThreads)
             try {
                 val registry = ContextRegistry(orb)
                 restore?.let(registry::restore)
