@@ -1,5 +1,6 @@
 package org.rtcoord.bench
 
+import java.lang.management.ManagementFactory
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.sim.explore.ExploreOptions
 import org.rtcoord.sim.explore.FaultExplorer
@@ -29,7 +30,8 @@ internal class ExploreBench(
         // up.
         FaultExplorer(scripts)
             .explore(test, ExploreOptions(seed = options.seed, runs = 1, shrinkRuns = 0, writeTests = false))
-        for (parallelism in listOf(1, processors).distinct()) {
+        for (parallelism in listOf(1, processors, ExploreOptions.RUNS_PER_PROCESSOR * processors).distinct()) {
+            val cpuBefore = os.processCpuTime
             val explored =
                 FaultExplorer(scripts)
                     .explore(
@@ -42,6 +44,7 @@ internal class ExploreBench(
                             writeTests = false,
                         ),
                     )
+            val cores = (os.processCpuTime - cpuBefore) / 1e6 / explored.elapsed.inWholeMilliseconds
             val minutes = explored.elapsed.inWholeMilliseconds / 60_000.0
             report.value(
                 "$ROW, $parallelism at a time",
@@ -50,10 +53,12 @@ internal class ExploreBench(
                 "${explored.runs} runs, ${explored.failed} failed, ${explored.skipped} skipped; " +
                     "${figure(explored.robotTime.inWholeMilliseconds / 1000.0 / explored.runs)} s of the robot's time a run; " +
                     "${figure(explored.robotTime.inWholeMilliseconds.toDouble() / explored.elapsed.inWholeMilliseconds)}x the robot's clock " +
-                    "(each run at ${ExploreOptions.shown(ExploreOptions.DEFAULT_SPEED)}x)",
+                    "(each run at ${ExploreOptions.shown(ExploreOptions.DEFAULT_SPEED)}x); ${figure(cores * 100)} % of a core",
             )
         }
     }
+
+    private val os = ManagementFactory.getOperatingSystemMXBean() as com.sun.management.OperatingSystemMXBean
 
     private companion object {
         const val ROW = "schedules explored per minute"

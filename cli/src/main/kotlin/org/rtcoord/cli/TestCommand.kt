@@ -68,7 +68,9 @@ class TestCommand : CliktCommand("test") {
         option(
                 "--parallel",
                 metavar = "N",
-                help = "How many scenarios (with --explore: runs) go at once; default: one per processor.",
+                help =
+                    "How many scenarios (with --explore: runs) go at once; default: one per processor, and " +
+                        "${ExploreOptions.RUNS_PER_PROCESSOR} per processor when exploring (not replaying).",
             )
             .int()
 
@@ -183,9 +185,9 @@ class TestCommand : CliktCommand("test") {
                 }
             else null
         val exploration = TestExploration(::echo, status)
-        val parallelism = parallel ?: Runtime.getRuntime().availableProcessors()
+        val processors = Runtime.getRuntime().availableProcessors()
         val failed =
-            replay?.let { exploration.replay(file, it, maxFaults, reruns, parallelism, exploringSpeed) }
+            replay?.let { exploration.replay(file, it, maxFaults, reruns, parallel ?: processors, exploringSpeed) }
                 ?: try {
                     exploration.explore(
                         file,
@@ -194,7 +196,7 @@ class TestCommand : CliktCommand("test") {
                             runs,
                             during,
                             maxFaults,
-                            parallelism,
+                            parallel ?: (ExploreOptions.RUNS_PER_PROCESSOR * processors),
                             writeTests = !noWrite,
                             speed = exploringSpeed,
                         ),

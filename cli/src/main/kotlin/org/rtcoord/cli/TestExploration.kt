@@ -74,7 +74,7 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
         status?.clear()
         echo("run ${run.key} ${run.verdict.substringBefore('\n')} › ${run.scenario}: ${run.schedule}")
         status?.show(
-            "${run.runs} runs, ${run.failed} failed (${run.distinct} distinct), ${run.skipped} skipped, ${perMinute(run.perMinute)} schedules/min"
+            "${run.runs} runs, ${run.failed} failed (${run.distinct} distinct), ${run.skipped} skipped, ${oneDecimal(run.perMinute)} schedules/min"
         )
     }
 
@@ -101,10 +101,13 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
             }
         }
         val skips = report.skipReasons.entries.joinToString("; ") { (why, count) -> "$count: $why" }
-        val rate = if (report.elapsed.isPositive()) report.runs * 60_000.0 / report.elapsed.inWholeMilliseconds else 0.0
+        val wall = report.elapsed.inWholeMilliseconds.coerceAtLeast(1).toDouble()
+        // The robot's time the runs stood for, over the wall time: how much faster than the robot this explored.
+        val speedUp = report.robotTime.inWholeMilliseconds / wall
         echo(
             "${report.runs} runs in ${seconds(report.elapsed)}: ${report.failed} failed (${report.failures.size} distinct), " +
-                "${report.skipped} skipped${if (skips.isEmpty()) "" else " ($skips)"}; ${perMinute(rate)} schedules/min"
+                "${report.skipped} skipped${if (skips.isEmpty()) "" else " ($skips)"}; " +
+                "${oneDecimal(report.runs * 60_000.0 / wall)} schedules/min, ${oneDecimal(speedUp)}x the robot's clock"
         )
     }
 
@@ -126,7 +129,7 @@ internal class TestExploration(private val echo: (String) -> Unit, private val s
             return seed to index
         }
 
-        private fun perMinute(rate: Double): String = String.format(Locale.ROOT, "%.1f", rate)
+        private fun oneDecimal(value: Double): String = String.format(Locale.ROOT, "%.1f", value)
 
         private fun seconds(duration: Duration): String =
             String.format(Locale.ROOT, "%.1f s", duration.inWholeMilliseconds / 1000.0)

@@ -73,7 +73,9 @@ class TestExploreCommandTest {
         assertEquals(1, out.lines().count { it.startsWith("FAIL ") }, out)
         assertTrue(out.contains("  replay: rtcoord test --explore --replay 3:0 --max-faults 1 $test"), out)
         assertTrue(
-            Regex("""2 runs in \d+\.\d s: 2 failed \(1 distinct\), 0 skipped; \d+\.\d schedules/min""")
+            Regex(
+                    """2 runs in \d+\.\d s: 2 failed \(1 distinct\), 0 skipped; \d+\.\d schedules/min, \d+\.\dx the robot's clock"""
+                )
                 .containsMatchIn(out),
             out,
         )

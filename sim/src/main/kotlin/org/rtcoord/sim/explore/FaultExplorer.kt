@@ -8,12 +8,8 @@ import kotlin.time.TimeSource
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.Dispatchers
-import kotlinx.coroutines.async
-import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
-import kotlinx.coroutines.sync.Semaphore
-import kotlinx.coroutines.sync.withPermit
 import kotlinx.coroutines.withContext
 import org.rtcoord.dsl.script.ScriptHost
 import org.rtcoord.sim.test.Injection
@@ -63,22 +59,14 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         val space = space(test, options.maxFaults)
         baseline(space.scenarios, options.parallelism, options.speed)
         val found = Findings()
-        val next = AtomicLong()
         val deadline = options.duration?.let { began + it }
-        val workers =
-            launch(Dispatchers.IO) {
-                repeat(options.parallelism) {
-                    launch {
-                        while (deadline?.hasPassedNow() != true) {
-                            val index = next.getAndIncrement()
-                            if (index >= options.runLimit) break
-                            val schedule = space.draw(options.seed, index)
-                            val result = run(schedule, options.speed)
-                            synchronized(found) { progress(found.add(schedule, result, began.elapsedNow())) }
-                        }
-                    }
-                }
+        val workers = launch {
+            staggeredRuns(options.parallelism, options.runLimit, { deadline?.hasPassedNow() != true }) { index ->
+                val schedule = space.draw(options.seed, index)
+                val result = run(schedule, options.speed)
+                synchronized(found) { progress(found.add(schedule, result, began.elapsedNow())) }
             }
+        }
         val interrupting = launch {
             stopping.await()
             workers.cancel()
@@ -135,18 +123,14 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         val began = TimeSource.Monotonic.markNow()
         val test = load(path)
         val schedule = space(test, maxFaults).draw(seed, index)
-        val permits = Semaphore(parallelism)
         val done = AtomicLong()
-        val results =
-            (1..reruns)
-                .map {
-                    async(Dispatchers.IO) {
-                        permits
-                            .withPermit { run(schedule, speed) }
-                            .also { progress(done.incrementAndGet().toInt(), Verdict.of(it).toString()) }
-                    }
-                }
-                .awaitAll()
+        val rerun = arrayOfNulls<TestResult>(reruns)
+        staggeredRuns(parallelism, reruns.toLong()) { rerunIndex ->
+            val result = run(schedule, speed)
+            rerun[rerunIndex.toInt()] = result
+            progress(done.incrementAndGet().toInt(), Verdict.of(result).toString())
+        }
+        val results = rerun.map { checkNotNull(it) }
         val verdicts = results.map(Verdict::of)
         val common = verdicts.maxBy { v -> verdicts.count { it.agrees(v) } }
         val firstFailed = results.firstOrNull { !it.passed }
@@ -197,13 +181,12 @@ public class FaultExplorer @JvmOverloads constructor(private val scripts: Script
         }
 
     /** Runs each of [scenarios] once without faults: one that fails so is refused, as every schedule would fail it. */
-    private suspend fun baseline(scenarios: List<ScenarioPlan>, parallelism: Int, speed: Double) = coroutineScope {
-        val permits = Semaphore(parallelism)
-        val failed =
-            scenarios
-                .map { scenario -> async(Dispatchers.IO) { permits.withPermit { runPlain(scenario, speed) } } }
-                .awaitAll()
-                .filterNot { it.passed }
+    private suspend fun baseline(scenarios: List<ScenarioPlan>, parallelism: Int, speed: Double) {
+        val results = arrayOfNulls<TestResult>(scenarios.size)
+        staggeredRuns(parallelism, scenarios.size.toLong()) { index ->
+            results[index.toInt()] = runPlain(scenarios[index.toInt()], speed)
+        }
+        val failed = results.map { checkNotNull(it) }.filterNot { it.passed }
         if (failed.isNotEmpty()) {
             throw ExploreRefused(
                 failed.flatMap { result ->
