@@ -13,16 +13,7 @@ internal class ProcessRecipe(
     val speed: Double,
     val idleRequestThreads: Int,
 ) {
-    /** Starts a process whose components bind their names in [contexts] (OpenRTM-aist's default when null). */
-    fun start(contexts: List<String>? = null): RuntimeProcess =
-        if (contexts == null)
-            RuntimeProcess.start(naming, host = host, speed = speed, idleRequestThreads = idleRequestThreads)
-        else
-            RuntimeProcess.start(
-                naming,
-                contexts,
-                host = host,
-                speed = speed,
-                idleRequestThreads = idleRequestThreads,
-            )
+    /** Starts a process whose components bind their names in [contexts]: by default where OpenRTM-aist's do. */
+    fun start(contexts: List<String> = listOf(RuntimeProcess.hostContext)): RuntimeProcess =
+        RuntimeProcess.start(naming, contexts, host = host, speed = speed, idleRequestThreads = idleRequestThreads)
 }
