@@ -7,12 +7,13 @@ public object NodeFilters {
 
     /** Nodes whose name matches the glob [pattern] (`*` any run of characters, `?` one character). */
     public fun name(pattern: String): suspend (Node) -> Boolean {
-        val regex =
-            Regex(
-                pattern.split('*').joinToString(".*") { part -> part.split('?').joinToString(".") { Regex.escape(it) } }
-            )
+        val regex = glob(pattern)
         return { regex.matches(it.name) }
     }
+
+    /** The glob [pattern] (`*` any run of characters, `?` one character) as a regular expression of whole names. */
+    public fun glob(pattern: String): Regex =
+        Regex(pattern.split('*').joinToString(".*") { part -> part.split('?').joinToString(".") { Regex.escape(it) } })
 
     /** Components in [state] in their default context. */
     public fun state(state: LifeCycle): suspend (Node) -> Boolean = {

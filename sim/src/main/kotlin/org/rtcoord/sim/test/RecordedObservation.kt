@@ -4,6 +4,7 @@ import kotlinx.coroutines.CancellationException
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.LifeCycle
+import org.rtcoord.NodeFilters
 
 /** One read a condition made: the expression it wrote, and what that returned. */
 internal class Reading(val expression: String, val value: String) {
@@ -25,7 +26,7 @@ internal class RecordedObservation(private val reads: SystemReads) : Observation
     override fun component(name: String): ObservedComponent = Component(name.removeSuffix(".rtc"))
 
     override suspend fun components(pattern: String): List<ObservedComponent> {
-        val glob = glob(pattern.removeSuffix(".rtc"))
+        val glob = NodeFilters.glob(pattern.removeSuffix(".rtc"))
         return record("components(\"$pattern\")", { names -> names.joinToString(prefix = "[", postfix = "]") }) {
                 reads.names().filter(glob::matches).sorted()
             }
@@ -101,7 +102,3 @@ internal interface SystemReads {
 
     val log: List<String>
 }
-
-/** The glob [pattern] (`*` any run of characters, `?` one) as a regular expression. */
-private fun glob(pattern: String): Regex =
-    Regex(pattern.split('*').joinToString(".*") { part -> part.split('?').joinToString(".") { Regex.escape(it) } })
