@@ -2,6 +2,9 @@ package org.rtcoord.dsl
 
 import java.nio.file.Files
 import java.nio.file.Path
+import java.util.jar.Attributes
+import java.util.jar.JarOutputStream
+import java.util.jar.Manifest
 import kotlinx.coroutines.runBlocking
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertThrows
@@ -241,6 +244,38 @@ class ScriptHostTest {
         val rewritten = Files.getLastModifiedTime(cached)
         ScriptHost(directory.resolve("cache")).load(file)
         assertEquals(rewritten, Files.getLastModifiedTime(cached), "the jar compiled again is whole: taken as it is")
+    }
+
+    @Test
+    fun `a cached jar that holds no coordinator script is compiled again`(): Unit = runBlocking {
+        val file =
+            script(
+                "foreign.coord.kts",
+                "val target = args.firstOrNull() ?: \"gyro0.rtc\"\non(component(target)).state(ERROR) { reset() }",
+            )
+        host.load(file)
+        val cached = Files.list(directory.resolve("cache")).use { it.toList() }.single()
+        // Whole, but not a script: its Main-Class is not there.
+        JarOutputStream(
+                Files.newOutputStream(cached),
+                Manifest().apply {
+                    mainAttributes[Attributes.Name.MANIFEST_VERSION] = "1.0"
+                    mainAttributes[Attributes.Name.MAIN_CLASS] = "Absent_coord"
+                },
+            )
+            .close()
+        assertTrue(ScriptHost(directory.resolve("cache")).isCached(file), "a whole jar is taken to be kept")
+
+        val again = ScriptHost(directory.resolve("cache")).load(file, listOf("laser0.rtc"))
+        assertEquals(listOf("on laser0.rtc enters ERROR"), again.description)
+        val compiledAt = Files.getLastModifiedTime(cached)
+
+        // From the cache, as the scripting host would have made it: arguments, name and directory alike.
+        val kept = ScriptHost(directory.resolve("cache")).load(file, listOf("odometry0.rtc"))
+        assertEquals(listOf("on odometry0.rtc enters ERROR"), kept.description)
+        assertEquals(file.fileName.toString(), kept.name)
+        assertEquals(directory.toAbsolutePath(), kept.directory)
+        assertEquals(compiledAt, Files.getLastModifiedTime(cached), "the jar compiled again is kept and taken")
     }
 
     @Test

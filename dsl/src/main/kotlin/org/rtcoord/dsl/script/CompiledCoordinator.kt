@@ -3,10 +3,12 @@
 package org.rtcoord.dsl.script
 
 import java.io.IOException
+import java.lang.reflect.Constructor
 import java.lang.reflect.InvocationTargetException
 import java.nio.file.Files
 import java.nio.file.Path
 import java.util.Properties
+import java.util.jar.Attributes
 import java.util.jar.JarInputStream
 import java.util.jar.Manifest
 import java.util.zip.ZipException
@@ -71,6 +73,44 @@ public object CompiledCoordinator {
         if (compiledBy != version)
             refuse(jar, "compiled by rtcoord $compiledBy, and this is rtcoord $version: compile it again with this one")
         val name = manifest.getValue(SCRIPT_NAME) ?: jar.fileName.toString()
+        val constructor = scriptConstructor(contents, className) { refuse(jar, it) }
+        return instantiate(constructor, args, host, jar.toAbsolutePath().parent, name, name)
+    }
+
+    /**
+     * Evaluates [script] from [kept], the jar its scripting host kept it in once compiled (the script class named by
+     * the jar's `Main-Class`), as [load] evaluates a compiled coordinator. Neither the scripting host nor Kotlin's full
+     * reflection is started: the host reads a template's annotations with it, about 800 classes and a tenth of a
+     * coordinator's memory for as long as it runs. Returns null when [kept] does not hold a coordinator script that
+     * links against this rtcoord: it is compiled again.
+     *
+     * @throws ScriptFailure when the script's body throws (naming its line).
+     */
+    internal fun loadKept(kept: Path, script: Path, args: List<String>, host: TreeConfig): Coordination? {
+        val contents =
+            try {
+                read(kept)
+            } catch (e: ScriptFailure) {
+                return null
+            }
+        val className = contents.manifest?.mainAttributes?.getValue(Attributes.Name.MAIN_CLASS) ?: return null
+        val constructor =
+            scriptConstructor(contents, className) {
+                return null
+            }
+        val directory = script.toAbsolutePath().parent
+        return instantiate(constructor, args, host, directory, script.fileName.toString(), script.toString())
+    }
+
+    /**
+     * The constructor of the coordinator script class [className] of [contents], which a coordinator script is made
+     * with; [refuse] says why there is none.
+     */
+    private inline fun scriptConstructor(
+        contents: Contents,
+        className: String,
+        refuse: (String) -> Nothing,
+    ): Constructor<*> {
         val type =
             try {
                 Class.forName(
@@ -79,29 +119,36 @@ public object CompiledCoordinator {
                     ScriptClasses(contents.entries, CoordinatorScript::class.java.classLoader),
                 )
             } catch (e: ClassNotFoundException) {
-                refuse(jar, "not a compiled coordinator: it has no class $className, which its manifest names")
+                refuse("not a compiled coordinator: it has no class $className, which its manifest names")
             } catch (e: LinkageError) {
-                refuse(jar, "its classes do not link against this rtcoord: ${e.message}")
+                refuse("its classes do not link against this rtcoord: ${e.message}")
             }
         if (!CoordinatorScript::class.java.isAssignableFrom(type))
-            refuse(jar, "not a compiled coordinator: $className is not a coordinator script")
-        val constructor =
-            try {
-                type.getConstructor(
-                    Array<String>::class.java,
-                    TreeConfig::class.java,
-                    Path::class.java,
-                    String::class.java,
-                )
-            } catch (e: NoSuchMethodException) {
-                refuse(jar, "not a compiled coordinator: $className has no coordinator script's constructor")
-            }
+            refuse("not a compiled coordinator: $className is not a coordinator script")
         return try {
-            constructor.newInstance(args.toTypedArray(), host, jar.toAbsolutePath().parent, name) as Coordination
-        } catch (e: InvocationTargetException) {
-            throw ScriptFailure(listOf(ScriptProblems.thrown(name, e.cause ?: e)))
+            type.getConstructor(Array<String>::class.java, TreeConfig::class.java, Path::class.java, String::class.java)
+        } catch (e: NoSuchMethodException) {
+            refuse("not a compiled coordinator: $className has no coordinator script's constructor")
         }
     }
+
+    /**
+     * Makes the script with [constructor]: its body runs. A body that throws is a [ScriptFailure] naming [location] and
+     * the line.
+     */
+    private fun instantiate(
+        constructor: Constructor<*>,
+        args: List<String>,
+        host: TreeConfig,
+        directory: Path,
+        name: String,
+        location: String,
+    ): Coordination =
+        try {
+            constructor.newInstance(args.toTypedArray(), host, directory, name) as Coordination
+        } catch (e: InvocationTargetException) {
+            throw ScriptFailure(listOf(ScriptProblems.thrown(location, e.cause ?: e)))
+        }
 
     /** The text of the script compiled into [jar]. @throws ScriptFailure when it cannot be read or holds none. */
     @JvmStatic

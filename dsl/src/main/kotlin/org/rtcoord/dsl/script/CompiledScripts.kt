@@ -38,15 +38,28 @@ public object CompiledScripts {
         }
 
     /**
-     * [source] as [directory] keeps it, compiled against [templates] with [configuration]; null when it is not kept.
-     * Reads the jar without the compiler: a script compiled before starts with the scripting runtime alone.
+     * The jar [directory] keeps [source] in, compiled against [templates]; null when it keeps none. A jar cut short (by
+     * a process killed while writing it) is deleted, to be compiled again. Loading it needs neither the compiler nor
+     * the scripting host ([CompiledCoordinator.loadKept]).
      */
-    internal fun cached(
-        directory: Path,
-        source: SourceCode,
-        configuration: ScriptCompilationConfiguration,
-        vararg templates: Class<*>,
-    ): CompiledScript? = WholeJars { jarOf(directory, it, templates) }.get(source, configuration)
+    internal fun kept(directory: Path, source: SourceCode, vararg templates: Class<*>): Path? =
+        keptJar(jarOf(directory, source, templates))?.toPath()
+
+    /** [jar] if it is there and whole; a jar cut short is deleted. */
+    private fun keptJar(jar: File): File? {
+        if (!jar.isFile) return null
+        // Read lazily, a jar cut short would fail only once the script runs: its central directory, at its end, tells
+        // it now.
+        val whole =
+            try {
+                ZipFile(jar).close()
+                true
+            } catch (e: IOException) {
+                false
+            }
+        if (!whole) jar.delete()
+        return jar.takeIf { whole }
+    }
 
     private fun jarOf(directory: Path, source: SourceCode, templates: Array<out Class<*>>): File {
         val digest = MessageDigest.getInstance("SHA-256")
@@ -70,24 +83,9 @@ public object CompiledScripts {
             script: SourceCode,
             scriptCompilationConfiguration: ScriptCompilationConfiguration,
         ): CompiledScript? {
-            val jar = jarOf(script)
-            if (!jar.isFile) return null
-            // Read lazily, a jar cut short would fail only once the script runs: its central directory, at its end,
-            // tells it now.
-            if (!whole(jar)) {
-                jar.delete()
-                return null
-            }
+            val jar = keptJar(jarOf(script)) ?: return null
             return CompiledScriptJarsCache { _, _ -> jar }.get(script, scriptCompilationConfiguration)
         }
-
-        private fun whole(jar: File) =
-            try {
-                ZipFile(jar).close()
-                true
-            } catch (e: IOException) {
-                false
-            }
 
         override fun store(
             compiledScript: CompiledScript,

@@ -28,7 +28,11 @@ import org.rtcoord.dsl.Coordination
  * starts without compiling. Problems come back as `file:line:col: message` lines.
  */
 public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirectory()) {
-    private val compilation = createJvmCompilationConfigurationFromTemplate<CoordinatorScript>()
+    /**
+     * Made when a script is first compiled: it reads the template's annotations with Kotlin's full reflection, which a
+     * cached script never starts.
+     */
+    private val compilation by lazy { createJvmCompilationConfigurationFromTemplate<CoordinatorScript>() }
     /**
      * Made when a script is first compiled: a cached script loads without the compiler's classes, so `rtcoord run` has
      * no compiler on its class path (the launcher's, bin/rtcoord).
@@ -36,18 +40,18 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
     private val compiler by lazy {
         JvmScriptCompiler(CompiledScripts.host(cacheDirectory, CoordinatorScript::class.java))
     }
-    private val evaluator = BasicJvmScriptEvaluator()
+    private val evaluator by lazy { BasicJvmScriptEvaluator() }
     /** Without the cache: a script taken from it is only a jar of classes, without the compiler's output to write. */
     private val fresh by lazy { JvmScriptCompiler(CompiledScripts.host(null, CoordinatorScript::class.java)) }
 
     /**
      * Whether [script], as its file is now, was compiled before and is kept in the cache: [load] starts it without the
-     * Kotlin compiler. False without a cache, for a file that cannot be read, and for a kept jar that no longer loads
-     * (the jars it was compiled against have moved, as an upgrade moves them).
+     * Kotlin compiler. False without a cache, for a file that cannot be read, and for a kept jar cut short. A rebuilt
+     * DSL keeps its scripts apart ([CompiledScripts.host]).
      */
     public fun isCached(script: Path): Boolean =
         try {
-            cached(script) != null
+            kept(script) != null
         } catch (e: IOException) {
             false
         }
@@ -71,12 +75,18 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
         host: TreeConfig = TreeConfig(),
     ): Coordination {
         if (CompiledCoordinator.isCompiled(script)) return CompiledCoordinator.load(script, args, host)
+        kept(script)?.let { jar ->
+            CompiledCoordinator.loadKept(jar, script, args, host)?.let {
+                return it
+            }
+            // Not a script this rtcoord can run: the compiler would take it from the cache as it is.
+            Files.deleteIfExists(jar)
+        }
         val compiled =
-            cached(script)
-                ?: when (val result = compile(script)) {
-                    is ResultWithDiagnostics.Success -> result.value
-                    is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
-                }
+            when (val result = compile(script)) {
+                is ResultWithDiagnostics.Success -> result.value
+                is ResultWithDiagnostics.Failure -> throw ScriptFailure(ScriptProblems.of(script, result.reports))
+            }
         val evaluation = ScriptEvaluationConfiguration {
             constructorArgs(args.toTypedArray(), host, script.toAbsolutePath().parent, script.fileName.toString())
             jvm { baseClassLoader(ScriptHost::class.java.classLoader) }
@@ -110,16 +120,10 @@ public class ScriptHost(private val cacheDirectory: Path? = defaultCacheDirector
         CompiledCoordinatorJar.write(compiled, Files.readString(script), script.fileName.toString(), jar)
     }
 
-    /** [script] as the cache holds it, compiled from its text as it is now; null when it is not there. */
-    private fun cached(script: Path): CompiledScript? =
+    /** The jar the cache keeps [script] in, compiled from its text as it is now; null when it keeps none. */
+    private fun kept(script: Path): Path? =
         if (cacheDirectory == null || !Files.isRegularFile(script)) null
-        else
-            CompiledScripts.cached(
-                cacheDirectory,
-                script.toFile().toScriptSource(),
-                compilation,
-                CoordinatorScript::class.java,
-            )
+        else CompiledScripts.kept(cacheDirectory, script.toFile().toScriptSource(), CoordinatorScript::class.java)
 
     private suspend fun compile(script: Path, by: JvmScriptCompiler = compiler): ResultWithDiagnostics<CompiledScript> {
         if (!Files.isRegularFile(script))
