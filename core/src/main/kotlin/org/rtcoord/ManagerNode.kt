@@ -5,6 +5,7 @@ import kotlin.time.Duration.Companion.milliseconds
 import kotlinx.coroutines.async
 import kotlinx.coroutines.awaitAll
 import kotlinx.coroutines.coroutineScope
+import org.rtcoord.idl.ObjectIdentity
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.ManagerCalls
 import org.rtcoord.internal.ManagerCalls.Companion.reachable
@@ -51,7 +52,7 @@ public sealed class ManagerNode(
                         val name = slaveName.await() ?: return@async null
                         val node =
                             previous.filterIsInstance<ManagerNode>().firstOrNull {
-                                it.name == name && it.ref._is_equivalent(slave)
+                                it.name == name && ObjectIdentity.same(it.ref, slave)
                             } ?: ManagerNodeImpl(path.child(name), core, slave, null, this@ManagerNode)
                         // The master's listing says where they run: known before the slave's own listing is read.
                         node to

@@ -9,6 +9,7 @@ import org.omg.CosNaming.Binding
 import org.omg.CosNaming.BindingType
 import org.omg.CosNaming.NameComponent
 import org.omg.CosNaming.NamingContext
+import org.rtcoord.idl.ObjectIdentity
 import org.rtcoord.internal.ComponentObject
 import org.rtcoord.internal.NamingCalls
 import org.rtcoord.internal.TreeCore
@@ -37,7 +38,7 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
     /** Whether [name] (`id.kind`) is bound in this context to [component], alive or not. */
     @JvmSynthetic
     internal suspend fun binds(name: String, component: ComponentObject): Boolean =
-        calls().resolve(name)?._is_equivalent(component.ref) ?: false
+        calls().resolve(name)?.let { ObjectIdentity.same(it, component.ref) } ?: false
 
     @JvmSynthetic
     override suspend fun readChildren(previous: List<Node>): List<Node> {
@@ -63,7 +64,7 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
                     ?: ComponentNodeImpl(childPath, core, component, this)
             }
             "mgr" ->
-                (old as? ManagerNode)?.takeIf { it.ref._is_equivalent(target) }
+                (old as? ManagerNode)?.takeIf { ObjectIdentity.same(it.ref, target) }
                     ?: ManagerNodeImpl(childPath, core, ManagerHelper.unchecked_narrow(target), this)
             else -> UnknownNodeImpl(childPath, core, target)
         }

@@ -1,18 +1,18 @@
 package org.rtcoord.internal
 
 import RTC.RTObject
+import org.rtcoord.idl.ObjectIdentity
 
 /**
  * One [ComponentObject] per component, however many paths reach it (its naming context, its manager, a second name
- * server): references are matched by the ORB's notion of equivalence, with a local hash to keep lookups cheap in large
- * systems.
+ * server): references are matched by the object they name ([ObjectIdentity], the ORB's notion of equivalence), read at
+ * every listing.
  */
 internal class ComponentRegistry(private val core: TreeCore) {
-    private val buckets = HashMap<Int, MutableList<ComponentObject>>()
+    private val byIdentity = HashMap<String, ComponentObject>()
 
-    fun objectFor(ref: RTObject): ComponentObject =
-        synchronized(buckets) {
-            val bucket = buckets.getOrPut(ref._hash(Int.MAX_VALUE)) { mutableListOf() }
-            bucket.firstOrNull { it.ref._is_equivalent(ref) } ?: ComponentObject(core, ref).also { bucket += it }
-        }
+    fun objectFor(ref: RTObject): ComponentObject {
+        val identity = ObjectIdentity.of(ref)
+        return synchronized(byIdentity) { byIdentity.getOrPut(identity) { ComponentObject(core, ref) } }
+    }
 }

@@ -26,6 +26,7 @@ import kotlinx.coroutines.CoroutineScope
 import org.omg.CORBA.portable.InputStream
 import org.omg.CORBA.portable.OutputStream
 import org.omg.CORBA.portable.ResponseHandler
+import org.rtcoord.idl.ObjectIdentity
 import org.slf4j.LoggerFactory
 
 /**
@@ -90,7 +91,7 @@ internal constructor(
         private set
 
     /** The reference's [identity], to compare references callers pass in cheaply. */
-    internal val identity: String by lazy { ref.identity() }
+    internal val identity: String by lazy { ObjectIdentity.of(ref) }
 
     private lateinit var configurationRef: Configuration
 

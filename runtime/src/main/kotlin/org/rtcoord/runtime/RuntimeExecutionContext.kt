@@ -19,6 +19,7 @@ import kotlin.time.Duration.Companion.seconds
 import org.omg.CORBA.portable.InputStream
 import org.omg.CORBA.portable.OutputStream
 import org.omg.CORBA.portable.ResponseHandler
+import org.rtcoord.idl.ObjectIdentity
 
 /**
  * An execution context of the kind [spec] says (reported by `get_kind` and its profile), periodic whatever its kind: it
@@ -129,7 +130,8 @@ internal class RuntimeExecutionContext(
      * The participant [comp] refers to. Only this context's participants are looked at, as OpenRTM's contexts do: a
      * search through every component of the process made listing a 1000-component system quadratic in the runtime.
      */
-    private fun participantOf(comp: LightweightRTObject?): Participant? = comp?.identity()?.let(byIdentity::get)
+    private fun participantOf(comp: LightweightRTObject?): Participant? =
+        comp?.let(ObjectIdentity::of)?.let(byIdentity::get)
 
     override fun _invoke(method: String, input: InputStream, handler: ResponseHandler): OutputStream {
         owner.gate.pass()

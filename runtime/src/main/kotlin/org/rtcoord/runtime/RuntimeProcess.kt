@@ -22,6 +22,7 @@ import org.omg.CosNaming.NamingContextExt
 import org.omg.CosNaming.NamingContextExtHelper
 import org.omg.CosNaming.NamingContextPackage.AlreadyBound
 import org.omg.CosNaming.NamingContextPackage.NotFound
+import org.rtcoord.idl.ObjectIdentity
 import org.rtcoord.idl.OrbRecipe
 import org.slf4j.LoggerFactory
 
@@ -178,7 +179,9 @@ private constructor(
     }
 
     internal fun componentOf(ref: LightweightRTObject?): RuntimeComponent? =
-        ref?.identity()?.let { target -> everywhere().flatMap { it.hosted }.firstOrNull { it.identity == target } }
+        ref?.let(ObjectIdentity::of)?.let { target ->
+            everywhere().flatMap { it.hosted }.firstOrNull { it.identity == target }
+        }
 
     internal fun executionContextOf(ref: ExecutionContext?): RuntimeExecutionContext? = ref?.let { target ->
         everywhere().flatMap { it.hosted }.firstNotNullOfOrNull { it.ownedContextIf(target) }
