@@ -2,7 +2,6 @@ package org.rtcoord.bench
 
 import java.nio.file.Files
 import java.nio.file.Path
-import java.time.Duration as JavaDuration
 import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicLong
@@ -11,6 +10,9 @@ import kotlin.time.DurationUnit
 import kotlinx.coroutines.delay
 import org.rtcoord.RtcTree
 import org.rtcoord.TreeConfig
+import org.rtcoord.datatypes.DataCodec
+import org.rtcoord.datatypes.MadeUpValues
+import org.rtcoord.datatypes.StandardDataTypes
 import org.rtcoord.profile.ProfileFormat
 import org.rtcoord.profile.RtsProfiles
 import org.rtcoord.profile.SystemProfiles
@@ -28,7 +30,9 @@ import org.rtcoord.runtime.rtSystem
  * writes, less the same process with the component inactive (its execution context still ticking), once the JIT has
  * compiled the write path: its compiler threads are what a JVM spends warming up, not what the port costs as it runs.
  * Writing and inactive windows alternate, and each pair gives one cost: the machine moves a window's CPU by a quarter
- * of what is measured, so one pair says little.
+ * of what is measured, so one pair says little. After each pair, the [LoopbackFloor]'s: what the same bytes cost with
+ * no CORBA and nothing made up, so that the row says how far over this machine's floor the port is at that moment (the
+ * machine has moved both by half between runs an hour apart).
  */
 internal class SimulatedPortBench(
     private val options: BenchOptions,
@@ -66,32 +70,61 @@ internal class SimulatedPortBench(
                 val writing = mutableListOf<Double>()
                 val inactive = mutableListOf<Double>()
                 val rates = mutableListOf<Double>()
-                repeat(options.portRounds) { round ->
-                    if (round > 0) {
-                        ranger.activate()
+                val floor = mutableListOf<Double>()
+                LoopbackFloor(sampleBytes(), PERIOD_MILLIS).use { loopback ->
+                    repeat(options.portRounds) { round ->
+                        if (round > 0) {
+                            ranger.activate()
+                            delay(options.dataWindow / 2)
+                        }
+                        val samplesBefore = received.get()
+                        writing += simulation.cpuPerSecond(options.dataWindow) * 100
+                        rates += (received.get() - samplesBefore) / options.dataWindow.toDouble(DurationUnit.SECONDS)
+                        ranger.deactivate()
                         delay(options.dataWindow / 2)
+                        inactive += simulation.cpuPerSecond(options.dataWindow) * 100
+                        // The floor's pair right after the port's, the machine as it was for the port.
+                        loopback.writing(true)
+                        delay(options.dataWindow / 2)
+                        val floorWriting = loopback.cpuPerSecond(options.dataWindow) * 100
+                        loopback.writing(false)
+                        delay(options.dataWindow / 2)
+                        floor += floorWriting - loopback.cpuPerSecond(options.dataWindow) * 100
                     }
-                    val samplesBefore = received.get()
-                    writing += simulation.cpuPerSecond(options.dataWindow) * 100
-                    rates += (received.get() - samplesBefore) / options.dataWindow.toDouble(DurationUnit.SECONDS)
-                    ranger.deactivate()
-                    delay(options.dataWindow / 2)
-                    inactive += simulation.cpuPerSecond(options.dataWindow) * 100
                 }
                 if (rates.any { it == 0.0 }) return report.skipped(LABEL, "no sample reached the tap")
+                val cost = Samples(writing.zip(inactive) { w, i -> w - i }, "% of a core")
+                val floorCost = Samples(floor, "% of a core")
+                val overFloor =
+                    if (floorCost.median > 0) "${figure(cost.median / floorCost.median)}x the loopback floor below"
+                    else "the loopback floor below too small to compare with"
                 report.row(
                     LABEL,
-                    Samples(writing.zip(inactive) { w, i -> w - i }, "% of a core"),
+                    cost,
                     "made up and encoded in `rtcoord sim`, pushed to a tap in another process " +
                         "(${figure(Samples(rates, "/s").median)} samples/s reached it); " +
                         "${options.portRounds} pairs of ${options.dataWindow} windows, the process writing then inactive " +
                         "(medians ${figure(Samples(writing, "%").median)} and ${figure(Samples(inactive, "%").median)} %), " +
-                        "after $warmUp; target under 1 %",
+                        "after $warmUp; $overFloor; " +
+                        "target under 1 %",
+                )
+                report.row(
+                    FLOOR_LABEL,
+                    floorCost,
+                    "a JVM of its own (${LoopbackFloor.JVM_OPTIONS.joinToString(" ")}) writing ${sampleBytes()} bytes " +
+                        "every $PERIOD_MILLIS ms, answered with ${LoopbackFloor.REPLY_BYTES} bytes from another " +
+                        "process; writing less idle, each pair right after one of the port's",
                 )
             } finally {
                 tap.cancel()
             }
         }
+    }
+
+    /** The bytes of one made-up RangeData sample as its port sends them. */
+    private fun sampleBytes(): Int {
+        val type = checkNotNull(StandardDataTypes.named("RangeData"))
+        return DataCodec(type).encode(MadeUpValues(type, 0).at(0), littleEndian = true).size
     }
 
     /** `./rtcoord sim FILE` with its console open (an empty stdin would end it), until closed. */
@@ -179,20 +212,7 @@ internal class SimulatedPortBench(
             .getOrDefault(0L)
 
         /** The process's CPU time per second of wall time over [window]. */
-        suspend fun cpuPerSecond(window: Duration): Double {
-            val before = cpu()
-            val start = System.nanoTime()
-            delay(window)
-            return (cpu() - before).toDouble() / (System.nanoTime() - start)
-        }
-
-        /** The CPU time of the launcher and the JVM it starts. */
-        private fun cpu(): Long =
-            processes().sumOf { handle ->
-                handle.info().totalCpuDuration().map(JavaDuration::toNanos).orElseThrow {
-                    IllegalStateException("the CPU time of rtcoord sim (pid ${handle.pid()}) cannot be read")
-                }
-            }
+        suspend fun cpuPerSecond(window: Duration): Double = cpuPerSecond(window, ::processes)
 
         /** The launcher and the JVM it starts (as a child when it makes its class archive). */
         private fun processes(): Sequence<ProcessHandle> =
@@ -206,6 +226,8 @@ internal class SimulatedPortBench(
 
     private companion object {
         const val LABEL = "simulated RangeData(1081) out-port at 100 Hz, rtcoord sim"
+        const val FLOOR_LABEL = "loopback floor: a sample's bytes at 100 Hz, no CORBA"
+        const val PERIOD_MILLIS = 10L
         const val QUIET_WINDOWS = 3
 
         /** Linux counts a thread's CPU in `/proc` in ticks of USER_HZ, 100 a second. */

@@ -17,6 +17,7 @@ class LibraryBenchSmokeTest {
                 listOf(
                     Regex("""silence noticed after 100 ms\s+1\s"""),
                     Regex("""push, 20 components: live heap per component\s+1\s"""),
+                    Regex("""loopback floor: a sample's bytes at 100 Hz, no CORBA\s+2\s"""),
                 ),
         )
     }
