@@ -5,8 +5,8 @@ import org.rtcoord.idl.ObjectIdentity
 
 /**
  * One [ComponentObject] per component, however many paths reach it (its naming context, its manager, a second name
- * server): references are matched by the object they name ([ObjectIdentity], the ORB's notion of equivalence), read at
- * every listing.
+ * server): references are matched by the object they name ([ObjectIdentity], the ORB's notion of equivalence). Every
+ * listing looks up each component it finds, so a lookup must cost little next to the call that found it.
  */
 internal class ComponentRegistry(private val core: TreeCore) {
     private val byIdentity = HashMap<String, ComponentObject>()
