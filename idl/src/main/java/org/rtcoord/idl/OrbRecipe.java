@@ -66,6 +66,12 @@ public final class OrbRecipe {
     // otherwise be lost (a oneway sender never sees the TRANSIENT).
     properties.setProperty("jacorb.poa.queue_wait", "on");
     properties.setProperty("jacorb.poa.queue_max", "1000");
+    // A connection's reader thread goes back to a pool when the connection closes, and JacORB keeps five
+    // of them idle on each side for as long as the ORB runs: a coordinator that other trees once probed
+    // (they ask whether its observers on a shared component still answer) kept them for months. One is
+    // kept; a new connection starts its reader again.
+    properties.setProperty("jacorb.connection.server.max_idle_receptor_threads", "1");
+    properties.setProperty("jacorb.connection.client.max_idle_receptor_threads", "1");
     // Buffer pools of the ORB's own: another ORB's destroy empties JacORB's shared ones under this one.
     properties.setProperty("jacorb.buffermanager.factory", OrbBufferPools.class.getName());
     return properties;

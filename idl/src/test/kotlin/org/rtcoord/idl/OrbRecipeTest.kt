@@ -1,10 +1,13 @@
 package org.rtcoord.idl
 
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.TimeUnit
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertThrows
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.omg.CORBA.ORB
+import org.omg.PortableServer.POAHelper
 
 /** What [OrbRecipe] configures, checked on the ORBs it makes. */
 class OrbRecipeTest {
@@ -40,4 +43,40 @@ class OrbRecipeTest {
             }
         assertEquals("idleRequestThreads must be 1 to 64, was 65", refused.message)
     }
+
+    @Test
+    fun `the reader threads of closed connections end, but one`() {
+        val server = orb()
+        val clients = List(4) { orb() }
+        try {
+            val poa = POAHelper.narrow(server.resolve_initial_references("RootPOA"))
+            poa.the_POAManager().activate()
+            val received = CountDownLatch(clients.size)
+            val observer =
+                object : OpenRTM.ComponentObserverPOA() {
+                    override fun update_status(kind: OpenRTM.StatusKind, hint: String?) = received.countDown()
+                }
+            val ior = server.object_to_string(poa.servant_to_reference(observer))
+            // A oneway call from each client: its connection stays open, and the server has a reader for it.
+            for (client in clients) OpenRTM.ComponentObserverHelper.unchecked_narrow(client.string_to_object(ior))
+                .update_status(OpenRTM.StatusKind.HEARTBEAT, "")
+            assertTrue(received.await(10, TimeUnit.SECONDS), "the observer heard ${clients.size - received.count}")
+            assertTrue(serverReaders() >= clients.size, "${serverReaders()} readers for ${clients.size} connections")
+
+            clients.forEach {
+                it.shutdown(true)
+                it.destroy()
+            }
+            val deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10)
+            while (serverReaders() > 1 && System.nanoTime() < deadline) Thread.onSpinWait()
+            assertEquals(1, serverReaders(), "readers left once every connection closed")
+        } finally {
+            server.shutdown(true)
+            server.destroy()
+        }
+    }
+
+    /** The live threads that read a server connection, busy or idle in JacORB's pool. */
+    private fun serverReaders() =
+        Thread.getAllStackTraces().keys.count { it.isAlive && it.name.startsWith("ServerMessageReceptor") }
 }
