@@ -189,16 +189,9 @@ internal class LogsBench(private val options: BenchOptions, private val report: 
 
     /** A [LogSenderMain] process, its output read line by line. */
     private class SenderProcess(private val process: Process) : AutoCloseable {
-        private val lines = java.util.concurrent.LinkedBlockingQueue<String>()
+        private val lines = linesOf(process, "log-senders-output")
         var failed = 0L
             private set
-
-        init {
-            Thread({ process.inputStream.bufferedReader().forEachLine { lines += it } }, "log-senders-output").apply {
-                isDaemon = true
-                start()
-            }
-        }
 
         fun awaitLine(prefix: String, timeout: Duration): String {
             val deadline = System.nanoTime() + timeout.inWholeNanoseconds

@@ -5,7 +5,6 @@ import java.net.InetAddress
 import java.net.ServerSocket
 import java.net.Socket
 import java.nio.file.Paths
-import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
 import kotlin.time.Duration
 
@@ -33,14 +32,10 @@ internal class LoopbackFloor(sampleBytes: Int, periodMillis: Long) : AutoCloseab
             )
             .redirectError(ProcessBuilder.Redirect.INHERIT)
             .start()
-    private val lines = LinkedBlockingQueue<String>()
+    private val lines = linesOf(process, "loopback-writer-output")
     private val peer: Socket
 
     init {
-        Thread({ process.inputStream.bufferedReader().forEachLine { lines += it } }, "loopback-writer-output").apply {
-            isDaemon = true
-            start()
-        }
         peer =
             try {
                 server.accept().apply { tcpNoDelay = true }

@@ -2,7 +2,6 @@ package org.rtcoord.bench
 
 import java.nio.file.Files
 import java.nio.file.Path
-import java.util.concurrent.LinkedBlockingQueue
 import java.util.concurrent.TimeUnit
 import java.util.concurrent.atomic.AtomicLong
 import kotlin.time.Duration
@@ -135,16 +134,12 @@ internal class SimulatedPortBench(
                 .redirectErrorStream(true)
                 .apply { environment().keys.removeAll(TimedCommand.IGNORED_VARIABLES) }
                 .start()
-        private val lines = LinkedBlockingQueue<String>()
+        private val lines = linesOf(process, "bench-sim-output")
 
         /** The `host:port` of the simulation's naming service. */
         val naming: String
 
         init {
-            Thread({ process.inputStream.bufferedReader().forEachLine { lines += it } }, "bench-sim-output").apply {
-                isDaemon = true
-                start()
-            }
             naming =
                 try {
                     awaitReady()
