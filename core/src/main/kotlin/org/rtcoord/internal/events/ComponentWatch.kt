@@ -145,7 +145,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                         states.flushed()
                         settle = settle || states.held.any { now - it.since >= timing.settleMillis }
                     }
-                is WatchInput.Overdue -> readAll = overdue(input, now, events) || readAll
+                is WatchInput.Overdue -> if (overdue(input, now, events)) tick()
                 WatchInput.Reconfigured -> reconfigure = true
             }
         }
@@ -266,9 +266,10 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     }
 
     /**
-     * The watchdog's check: a read probes a component whose beat is overdue, and one silent past the limit is lost. One
-     * that does not answer is probed at its heartbeat by the poll its [arrangement] keeps for it, not at every check
-     * (ten a beat).
+     * The watchdog's check: a read probes a component whose beat is overdue, and one silent past the limit is lost. The
+     * read is a poll tick's, its states alone when that is all the registrations want: heartbeats late under load (ten
+     * thousand components on one connection) made whole reads, whose load made more heartbeats late. One that does not
+     * answer is probed at its heartbeat by the poll its [arrangement] keeps for it, not at every check (ten a beat).
      */
     private fun overdue(input: WatchInput.Overdue, now: Long, events: MutableList<RtcEvent>): Boolean {
         liveness.hinted(input.heardAt)

@@ -31,7 +31,7 @@ internal class MonitorTimers(
     /** The period it is polled at, or null. */
     private var pollPeriod: Duration? = null
 
-    private var watchdog: Pair<Duration, () -> Unit>? = null
+    private var watchdog: Pair<Duration, (Long) -> Unit>? = null
 
     /** When the last sign of life came, in the [clock]'s milliseconds. */
     @Volatile private var heardAt: Long = clock.now()
@@ -57,7 +57,7 @@ internal class MonitorTimers(
         watchdog?.let { (period, overdue) -> core.watcher.watchdogs.remove(period, overdue) }
         watchdog = heartbeat?.let {
             val beat = it.inWholeMilliseconds
-            val overdue = { if (clock.now() - heardAt >= beat) check(heardAt) }
+            val overdue = { now: Long -> if (now - heardAt >= beat) check(heardAt) }
             core.watcher.watchdogs.add(it / CHECKS_PER_BEAT, overdue)
             it / CHECKS_PER_BEAT to overdue
         }

@@ -49,7 +49,7 @@ internal class Watcher(private val core: TreeCore) {
     val polls = PollSchedules(core)
 
     /** The heartbeat watchdogs of every component watched by push. */
-    val watchdogs = Watchdogs(core.scope, core.time)
+    val watchdogs = Watchdogs(core.scope, core.time, core.clock)
 
     /** Those who want reports of the watching itself. */
     val reports = WatchReports(core)

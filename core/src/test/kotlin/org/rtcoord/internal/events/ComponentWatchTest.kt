@@ -377,9 +377,13 @@ class ComponentWatchTest {
         val watch = watching(ACTIVE)
         fun overdue(now: Long) = watch.decide(listOf(WatchInput.Overdue(heardAt = 0)), now)
         assertEquals(WatchStep.Idle, overdue(1099).step, "a heartbeat a little late is no news")
-        assertEquals(WatchStep.ReadAll, overdue(1100).step)
+        assertEquals(
+            setOf(0),
+            (overdue(1100).step as WatchStep.ReadStates).handles,
+            "registrations that want states alone: its states are read, as a poll's tick reads them",
+        )
         // It answers: the observer alone is quiet. Reads are no heartbeats.
-        watch.read(found(ACTIVE), 1101, emptyList())
+        watch.statesRead(mapOf(0 to ACTIVE), 1101, emptyList())
         val lost = overdue(3200)
         assertEquals(listOf(HeartbeatLost(node, 3200)), lost.events)
         assertEquals(WatchStep.ReadAll, lost.step)
@@ -388,6 +392,13 @@ class ComponentWatchTest {
             watch.read(found(ACTIVE), 3201, emptyList()).changes,
             "answering again: its observer is attached anew",
         )
+    }
+
+    @Test
+    fun `a beat overdue is probed by a whole read when a registration wants more than states`() {
+        val watch = watching(ACTIVE)
+        watch.needs = asking(pushed, statesOnly = false)
+        assertEquals(WatchStep.ReadAll, watch.decide(listOf(WatchInput.Overdue(heardAt = 0)), 1100).step)
     }
 
     @Test
