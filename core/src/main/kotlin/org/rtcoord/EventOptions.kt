@@ -35,7 +35,9 @@ public enum class Overlap {
  * @property pollPeriod how often polled components are re-read; a component watched at several periods is read at the
  *   shortest, once per tick however many registrations share it.
  * @property overlap the callback's policy for events arriving while it runs.
- * @property heartbeat the ComponentObserver heartbeat interval asked for.
+ * @property heartbeat the ComponentObserver heartbeat interval asked for. A tree watching more than 2500 components
+ *   asks no observer to beat more often than the power of two seconds that keeps their heartbeats under 2500 a second
+ *   (4 s at 10,000): each is a call its ORB takes. [WatchMethod.Pushed.heartbeat] says which interval a component got.
  * @property missedBeats how many heartbeats may be missed before the component is presumed dead.
  * @property trafficInterval the least time between two [PortTraffic] events of one port, as the observer asks the
  *   component (`port_profile.send_event.min_interval`, `receive_event.min_interval`).

@@ -10,8 +10,9 @@ import org.rtcoord.internal.ValueFields
  */
 public sealed class WatchMethod : ValueObject() {
     /**
-     * The component's observer of [flavour] pushes its changes, with a heartbeat every [heartbeat]; [pollPeriod] is set
-     * when a registration asked for polling too.
+     * The component's observer of [flavour] pushes its changes, with a heartbeat every [heartbeat] (the shortest its
+     * registrations asked for, or longer in a tree watching thousands of components: see [EventOptions.heartbeat]);
+     * [pollPeriod] is set when a registration asked for polling too.
      */
     public class Pushed(
         public val flavour: ObserverFlavour,

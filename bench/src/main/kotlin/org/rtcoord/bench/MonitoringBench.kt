@@ -132,6 +132,8 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
                 before = now
             }
             val missed = tree.missedPollTicks - missedBefore
+            val heartbeats =
+                tree.snapshot().components.mapNotNull { (it.watchMethod as? WatchMethod.Pushed)?.heartbeat }
             val liveBytes = Heap.live()
             val live = liveBytes / Heap.MB
             subscriptions.forEach { it.cancel() }
@@ -154,6 +156,15 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
                 "mean ${figure(fixturesCpu.average())}% of one core: the ${nodes.size} components answering, in their own JVM",
             )
             report.row("$label: heap used", Samples(heap, "MB"), "live after GC ${figure(live)} MB")
+            if (heapBefore != null && heartbeats.isNotEmpty()) {
+                val counts = heartbeats.groupingBy { it }.eachCount().entries.sortedBy { it.key }
+                report.value(
+                    "$label: observers' heartbeat",
+                    heartbeats.sorted()[heartbeats.size / 2].inWholeMilliseconds / 1000.0,
+                    "s",
+                    "median; ${counts.joinToString { "${it.value} at ${it.key}" }}, ${watching?.heartbeat} asked (the tree's floor past 2500 components)",
+                )
+            }
             if (heapBefore != null) {
                 report.value(
                     "$label: live heap per component",

@@ -105,6 +105,11 @@ internal class ComponentMonitor(
         return registrations.isEmpty()
     }
 
+    /** The tree's heartbeat floor changed: the watching is arranged anew, its observer attached at the new floor. */
+    fun rearrange() {
+        work.trySend(Work(WatchInput.Reconfigured))
+    }
+
     /** Something this component depends on failed (its manager): a read tells at once whether it answers. */
     fun suspect() {
         work.trySend(Work(WatchInput.ReadWanted))
@@ -149,7 +154,7 @@ internal class ComponentMonitor(
     }
 
     private suspend fun handle(batch: List<Work>) {
-        watch.needs = registrations.needs()
+        watch.needs = registrations.needs(core.watcher.heartbeats.floor)
         val disagreed = !watch.agreed
         val decision = watch.decide(batch.map { it.input }, now())
         publish(decision.events)

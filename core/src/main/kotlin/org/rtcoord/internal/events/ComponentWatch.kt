@@ -274,12 +274,11 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     private fun overdue(input: WatchInput.Overdue, now: Long, events: MutableList<RtcEvent>): Boolean {
         liveness.hinted(input.heardAt)
         if (liveness.state != ComponentLiveness.State.ANSWERING) return false
-        val beating = arrangement.beating
-        liveness.checked(now, beating?.let { (it.heartbeat * it.missedBeats).inWholeMilliseconds })?.let {
+        liveness.checked(now, arrangement.silenceLimit?.inWholeMilliseconds)?.let {
             events += HeartbeatLost(node, it.silentMillis)
         }
         // A process that died refuses the read at once: that is known a beat after its last, not at the limit.
-        val beat = beating?.heartbeat?.inWholeMilliseconds ?: return false
+        val beat = arrangement.heartbeat?.inWholeMilliseconds ?: return false
         return now - liveness.lastHeard >= beat + beat / OVERDUE_FRACTION
     }
 

@@ -1,6 +1,7 @@
 package org.rtcoord.internal.events
 
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration
 import org.rtcoord.RtcEvent
 import org.rtcoord.WatchMode
 
@@ -36,9 +37,9 @@ internal class MonitorRegistrations : Iterable<MonitorRegistration> {
 
     /**
      * What they ask of the watching now; the shortest traffic interval a push registration that wants traffic asks for
-     * is the observer's.
+     * is the observer's, and its heartbeat no shorter than [heartbeatFloor].
      */
-    fun needs(): WatchNeeds {
+    fun needs(heartbeatFloor: Duration = Duration.ZERO): WatchNeeds {
         // A copy of the array as it is: Kotlin's toList reads a one-element list's element after its size, and a
         // registration removed in between made it fail.
         val now = ArrayList(all)
@@ -48,6 +49,7 @@ internal class MonitorRegistrations : Iterable<MonitorRegistration> {
             now.map { it.options },
             statesOnly = now.isNotEmpty() && now.all { it.statesOnly },
             traffic = traffic ?: WatchNeeds.NO_TRAFFIC,
+            heartbeatFloor,
         )
     }
 }

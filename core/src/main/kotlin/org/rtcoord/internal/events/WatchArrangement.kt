@@ -2,7 +2,6 @@ package org.rtcoord.internal.events
 
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
-import org.rtcoord.EventOptions
 
 /**
  * How one component is watched: the part of its [ComponentWatch] that decides whether an observer is attached, detached
@@ -36,8 +35,8 @@ internal class WatchArrangement {
     private var stage: Stage? = null
     private var attachment: Attachment = Attachment.NotTried
 
-    /** The traffic interval the attached observer was asked for; null when none is attached. */
-    private var observer: Duration? = null
+    /** What the attached observer was asked for; null when none is attached. */
+    private var observer: Observer? = null
 
     /** The component came back since its observer was attached: it may have dropped it. */
     private var stale = false
@@ -53,13 +52,17 @@ internal class WatchArrangement {
     val observed: Boolean
         get() = observer != null && !stale
 
-    /** The options whose heartbeats the attached observer sends; null when none is attached or none pushes. */
-    val beating: EventOptions?
-        get() = needs.push?.takeIf { observer != null }
+    /** The heartbeat the attached observer was asked for; null when none is attached or none pushes. */
+    val heartbeat: Duration?
+        get() = observer?.heartbeat?.takeIf { needs.push != null }
+
+    /** How long the attached observer may be silent before the component is lost; null when [heartbeat] is. */
+    val silenceLimit: Duration?
+        get() = heartbeat?.let { beat -> needs.push?.let { beat * it.missedBeats } }
 
     /** How often the component should give a sign of life: its heartbeat when observed, else its poll period. */
     val expectedInterval: Duration?
-        get() = beating?.heartbeat ?: schedule.pollPeriod
+        get() = heartbeat ?: schedule.pollPeriod
 
     /** The registrations changed: the step that starts arranging anew. */
     fun reconfigured(): WatchStep {
@@ -94,7 +97,7 @@ internal class WatchArrangement {
         }
         if (ComponentLiveness.Change.Unreachable !in changes) return proceed(answers, null)
         // Probed until it answers again, even when only the observer watched it; its manager may have died with it.
-        schedule = WatchSchedule(schedule.pollPeriod ?: needs.push?.heartbeat, schedule.heartbeat)
+        schedule = WatchSchedule(schedule.pollPeriod ?: needs.heartbeat, schedule.heartbeat)
         val askManagersEvery = schedule.pollPeriod ?: 1.seconds
         return proceed(answers, null).copy(schedule = schedule, askManagersEvery = askManagersEvery)
     }
@@ -114,7 +117,7 @@ internal class WatchArrangement {
     fun attached(result: Attachment, answers: ComponentLiveness.State): Arranged {
         attachment = result
         if (result !is Attachment.Attached) return settle(answers)
-        observer = needs.traffic
+        observer = needs.heartbeat?.let { Observer(needs.traffic, it) }
         stage = Stage.REREAD
         return Arranged(WatchStep.ReadAll)
     }
@@ -125,22 +128,29 @@ internal class WatchArrangement {
             stage == null -> Arranged.NOTHING
             answers == ComponentLiveness.State.FINALIZED -> Arranged.NOTHING.also { stage = null }
             stage == Stage.REREAD -> settle(answers)
-            observer.let { it != null && (stale || it != needs.traffic) } -> Arranged(WatchStep.Detach)
+            observer.let { it != null && (stale || it.differs(needs)) } -> Arranged(WatchStep.Detach)
             push == null || observer != null -> settle(answers)
             answers == ComponentLiveness.State.UNREACHABLE -> {
                 attachment = Attachment.Failed("it does not answer")
                 settle(answers)
             }
-            else -> Arranged(WatchStep.Attach(advertised, push.heartbeat, needs.traffic))
+            else -> Arranged(WatchStep.Attach(advertised, needs.heartbeat!!, needs.traffic))
         }
     }
 
     private fun settle(answers: ComponentLiveness.State): Arranged {
         stage = null
-        val method = decideWatchMethod(needs.options, attachment)
+        val method = decideWatchMethod(needs.options, attachment, heartbeat)
         // An unreachable component stays probed, whatever else watches it.
-        val probe = needs.push?.heartbeat?.takeIf { answers == ComponentLiveness.State.UNREACHABLE }
-        schedule = WatchSchedule(method?.pollPeriod ?: probe, needs.push?.heartbeat)
+        val probe = needs.heartbeat?.takeIf { answers == ComponentLiveness.State.UNREACHABLE }
+        schedule = WatchSchedule(method?.pollPeriod ?: probe, heartbeat ?: needs.heartbeat)
         return Arranged(schedule = schedule, method = method)
+    }
+
+    /** The traffic interval and heartbeat an attached observer was asked for. */
+    private class Observer(val traffic: Duration, val heartbeat: Duration) {
+        /** Whether [needs] ask for another: the observer is attached anew. */
+        fun differs(needs: WatchNeeds): Boolean =
+            traffic != needs.traffic || (needs.heartbeat != null && heartbeat != needs.heartbeat)
     }
 }

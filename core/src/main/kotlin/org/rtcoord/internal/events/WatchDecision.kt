@@ -1,5 +1,6 @@
 package org.rtcoord.internal.events
 
+import kotlin.time.Duration
 import org.rtcoord.EventOptions
 import org.rtcoord.ObserverFlavour
 import org.rtcoord.WatchMethod
@@ -38,16 +39,20 @@ internal val Attachment.whyNotPushed: String?
 /**
  * How a component watched by registrations with [options] is watched, after [attachment]; null when nothing asks for
  * it. Registrations in [WatchMode.POLL] are polled, those in [WatchMode.AUTO] polled unless an observer was attached,
- * at the shortest period asked for.
+ * at the shortest period asked for. An attached observer beats at [heartbeat], the shortest asked for when null.
  */
-internal fun decideWatchMethod(options: List<EventOptions>, attachment: Attachment): WatchMethod? {
+internal fun decideWatchMethod(
+    options: List<EventOptions>,
+    attachment: Attachment,
+    heartbeat: Duration? = null,
+): WatchMethod? {
     if (options.isEmpty()) return null
     val push = options.filter { it.mode != WatchMode.POLL }
     val attached = (attachment as? Attachment.Attached)?.takeIf { push.isNotEmpty() }
     val polled = options.filter { it.mode == WatchMode.POLL || (it.mode == WatchMode.AUTO && attached == null) }
     val period = polled.minOfOrNull { it.pollPeriod }
     return when {
-        attached != null -> WatchMethod.Pushed(attached.flavour, push.minOf { it.heartbeat }, period)
+        attached != null -> WatchMethod.Pushed(attached.flavour, heartbeat ?: push.minOf { it.heartbeat }, period)
         push.isEmpty() -> WatchMethod.Polled(period!!, ASKED)
         period != null -> WatchMethod.Polled(period, attachment.whyNotPushed!!)
         else -> WatchMethod.Unwatched(attachment.whyNotPushed!!)

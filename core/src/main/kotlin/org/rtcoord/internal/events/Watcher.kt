@@ -48,6 +48,9 @@ internal class Watcher(private val core: TreeCore) {
     /** The poll schedules of every component watched by polling. */
     val polls = PollSchedules(core)
 
+    /** How often observers may beat, for the number of components watched. */
+    val heartbeats = HeartbeatBudget { ArrayList(live).forEach(ComponentMonitor::rearrange) }
+
     /** The heartbeat watchdogs of every component watched by push. */
     val watchdogs = Watchdogs(core.scope, core.time, core.clock)
 
@@ -122,6 +125,7 @@ internal class Watcher(private val core: TreeCore) {
                                     ComponentMonitor(core, host, node.canonical, ::ended).also { live += it }
                                 }
                             }
+                        heartbeats.watching(live.size)
                         monitor.add(registration)
                         synchronized(releases) { releases += { release(node.component, monitor, registration) } }
                     } finally {
@@ -188,6 +192,7 @@ internal class Watcher(private val core: TreeCore) {
 
     private fun ended(monitor: ComponentMonitor) {
         live.remove(monitor)
+        heartbeats.watching(live.size)
         core.model.unwatched(monitor.node.component)
     }
 

@@ -103,6 +103,41 @@ class WatchArrangementTest {
     }
 
     @Test
+    fun `a shorter heartbeat asked for attaches the observer anew, the watchdog expecting the attached one's until then`() {
+        val arrangement = observing(push)
+        arrangement.needs = asking(push, EventOptions(WatchMode.PUSH, heartbeat = 100.milliseconds))
+        assertEquals(WatchStep.ReadAll, arrangement.reconfigured())
+        assertEquals(WatchStep.Detach, arrangement.answered(recovered = false, ANSWERING, services).next)
+        assertEquals(200.milliseconds, arrangement.heartbeat, "the observer still beats as it was asked to")
+        assertEquals(100.milliseconds, (arrangement.detached(ANSWERING, services).next as WatchStep.Attach).heartbeat)
+        arrangement.attached(attached, ANSWERING)
+        assertEquals(
+            WatchSchedule(null, 100.milliseconds),
+            arrangement.answered(recovered = false, ANSWERING, services).schedule,
+        )
+        assertEquals(100.milliseconds, arrangement.heartbeat)
+        assertEquals(300.milliseconds, arrangement.silenceLimit, "three beats missed")
+    }
+
+    @Test
+    fun `an observer is asked for the tree's heartbeat floor when it is longer, and the method says so`() {
+        val arrangement = WatchArrangement()
+        arrangement.needs = WatchNeeds(listOf(push), statesOnly = true, traffic = 1.hours, heartbeatFloor = 4.seconds)
+        arrangement.reconfigured()
+        val attach = arrangement.answered(recovered = false, ANSWERING, services).next as WatchStep.Attach
+        assertEquals(4.seconds, attach.heartbeat)
+        arrangement.attached(attached, ANSWERING)
+        val settled = arrangement.answered(recovered = false, ANSWERING, services)
+        assertEquals(WatchMethod.Pushed(ObserverFlavour.OPENRTM, 4.seconds, null), settled.method)
+        assertEquals(WatchSchedule(null, 4.seconds), settled.schedule)
+        // The floor gone (fewer components watched): attached anew at the heartbeat asked for.
+        arrangement.needs = asking(push)
+        arrangement.reconfigured()
+        assertEquals(WatchStep.Detach, arrangement.answered(recovered = false, ANSWERING, services).next)
+        assertEquals(200.milliseconds, (arrangement.detached(ANSWERING, services).next as WatchStep.Attach).heartbeat)
+    }
+
+    @Test
     fun `an unreachable component is probed at its heartbeat and what it stands behind suspected, and stays probed`() {
         val arrangement = observing(push)
         assertEquals(200.milliseconds, arrangement.expectedInterval)
