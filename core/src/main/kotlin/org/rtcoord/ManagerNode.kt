@@ -62,6 +62,7 @@ public sealed class ManagerNode(
                 .awaitAll()
                 .filterNotNull()
         val ofSlaves = slaveListings.flatMap { it.second }.toSet()
+        val before = previous.filterIsInstance<ComponentNode>().associateBy { it.component }
         val componentNodes =
             hosted
                 .await()
@@ -72,9 +73,8 @@ public sealed class ManagerNode(
                         component.hostedBy(this@ManagerNode)
                         // Listed but gone: it exited and its manager has not cleaned it up yet.
                         val name = "${reachable { component.instanceName(subject) } ?: return@async null}.rtc"
-                        previous.filterIsInstance<ComponentNode>().firstOrNull {
-                            it.component === component && it.name == name
-                        } ?: ComponentNodeImpl(path.child(name), core, component)
+                        before[component]?.takeIf { it.name == name }
+                            ?: ComponentNodeImpl(path.child(name), core, component)
                     }
                 }
         slaveListings.map { it.first } + componentNodes.awaitAll().filterNotNull()

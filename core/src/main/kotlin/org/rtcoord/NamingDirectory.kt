@@ -44,15 +44,16 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
     override suspend fun readChildren(previous: List<Node>): List<Node> {
         val calls = calls()
         val bindings = calls.bindings()
-        return coroutineScope { bindings.map { binding -> async { childFor(calls, binding, previous) } }.awaitAll() }
+        val before = previous.associateBy { it.name }
+        return coroutineScope { bindings.map { binding -> async { childFor(calls, binding, before) } }.awaitAll() }
             .filterNotNull()
     }
 
-    /** The node for [binding], or null if it was unbound since the listing. */
-    private suspend fun childFor(calls: NamingCalls, binding: Binding, previous: List<Node>): Node? {
+    /** The node for [binding], or null if it was unbound since the listing; [before] are the nodes listed last. */
+    private suspend fun childFor(calls: NamingCalls, binding: Binding, before: Map<String, Node>): Node? {
         val name = NamingCalls.nameOf(binding.binding_name)
         val childPath = path.child(name)
-        val old = previous.firstOrNull { it.name == name }
+        val old = before[name]
         if (binding.binding_type == BindingType.ncontext) {
             return old as? ContextNode ?: ContextNodeImpl(childPath, core, this, binding.binding_name)
         }

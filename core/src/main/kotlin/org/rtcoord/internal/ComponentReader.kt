@@ -212,10 +212,18 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
     }
 }
 
-/** A name-value list as strings; values that are not strings are shown as CORBA prints them. */
+/**
+ * A name-value list as strings; values that are not strings are shown as CORBA prints them. Names and short values are
+ * interned: every component and port repeats them (`dataport.data_type`, `IDL:RTC/TimedLong:1.0`), and each read
+ * unmarshals new copies, which the tree kept for as long as it watched the component.
+ */
 internal fun Array<NameValue>.toMap(): Map<String, String> = associate { entry ->
-    entry.name to (runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString())
+    val value = runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString()
+    entry.name.intern() to if (value.length <= SHARED_LENGTH) value.intern() else value
 }
+
+/** The longest value [toMap] interns: longer ones are references and addresses, each its own. */
+private const val SHARED_LENGTH = 64
 
 private const val PARTICIPATING_BASE = 1000
 
