@@ -1,6 +1,7 @@
 package org.rtcoord
 
 import java.util.concurrent.CopyOnWriteArrayList
+import kotlin.time.Duration.Companion.hours
 import kotlin.time.Duration.Companion.milliseconds
 import kotlin.time.Duration.Companion.seconds
 import kotlin.time.TimeSource
@@ -171,6 +172,14 @@ class CallbackContractTest {
         master.delete("odo_localise0")
         assertEquals(path("odo_localise0.rtc"), naming.next<NodeVanished>().child.toString())
         assertEquals(false, managed.next<ManagerComponentChanged>().created)
+    }
+
+    @Test
+    fun `a component the tree creates is reported at once, not at the listing's next period`(): Unit = runBlocking {
+        val naming = EventRecorder()
+        tree.on(localisation.host, NodeAppeared::class.java, EventOptions(pollPeriod = 1.hours), naming.handler)
+        tree.manager(path("manager.mgr")).create("odo_localise")
+        assertEquals("odo_localise0.rtc", naming.next<NodeAppeared>().child.name)
     }
 
     @Test

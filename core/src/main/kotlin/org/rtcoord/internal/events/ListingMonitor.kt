@@ -22,7 +22,10 @@ import org.slf4j.LoggerFactory
 /**
  * Watches a directory's children by listing them again at the shortest period its registrations ask for (naming
  * services and managers push nothing): a naming context reports nodes appearing and vanishing, a manager reports
- * components it created and deleted.
+ * components it created and deleted. What is reported is every change of the directory's listing, whoever listed it: a
+ * component the tree created itself (`ManagerNode.create` lists its naming context) is reported, and watched by the
+ * registrations that include what appears, at once rather than at the next period, which a component that exits soon
+ * after would not outlive.
  */
 internal class ListingMonitor(private val core: TreeCore, private val directory: DirectoryNode) {
     /** [appeared] starts watching a new child; its events are offered once it returns. */
@@ -31,11 +34,13 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
     private val log = LoggerFactory.getLogger(ListingMonitor::class.java)
     private val registrations = CopyOnWriteArrayList<Registration>()
     private var poller: Job? = null
+    private var announcer: Job? = null
     private var period: Duration? = null
 
     @Synchronized
     fun add(registration: Registration) {
         registrations += registration
+        if (announcer == null) announcer = announceChanges()
         reschedule()
     }
 
@@ -55,26 +60,35 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
         poller = shortest?.let { every ->
             // On the listings' few threads (TreeCore.background); what the listing finds is read at full concurrency.
             core.scope.launch(core.background.dispatcher) {
-                var before = directory.listed.value
                 var failing = false
                 while (isActive) {
                     delay(every)
-                    val after =
-                        try {
-                            withContext(core.background) { directory.relist() }
-                        } catch (e: RtcException) {
-                            if (!failing) log.info("{}; listing it again every {}", e.message, every)
-                            // Every time: a server shutting down first answers wrongly, and only then not at all.
-                            core.watcher.outages.listingFailed(directory, e, every)
-                            failing = true
-                            continue
-                        }
+                    try {
+                        withContext(core.background) { directory.relist() }
+                    } catch (e: RtcException) {
+                        if (!failing) log.info("{}; listing it again every {}", e.message, every)
+                        // Every time: a server shutting down first answers wrongly, and only then not at all.
+                        core.watcher.outages.listingFailed(directory, e, every)
+                        failing = true
+                        continue
+                    }
                     if (failing) log.info("{}: listed again", directory.path)
                     failing = false
-                    // Never listed before: the first listing failed, and all it finds now is news.
-                    announce(before.orEmpty(), after)
-                    before = after
                 }
+            }
+        }
+    }
+
+    /** Announces each change of the directory's listing, one after another, from the listing it has now. */
+    private fun announceChanges(): Job {
+        // Taken now, not once the coroutine runs: a listing made meanwhile is a change to announce.
+        var before = directory.listed.value
+        return core.scope.launch(core.background.dispatcher) {
+            directory.listed.collect { after ->
+                // Never listed before: the first listing failed, and all it finds now is news.
+                if (after == null || after == before) return@collect
+                announce(before.orEmpty(), after)
+                before = after
             }
         }
     }
@@ -107,5 +121,6 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
 
     fun stop() {
         poller?.cancel()
+        announcer?.cancel()
     }
 }
