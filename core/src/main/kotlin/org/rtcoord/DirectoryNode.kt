@@ -63,8 +63,11 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
             }
         }
 
-    /** Lists the children from the live system, reusing [previous] nodes that still stand. */
-    @JvmSynthetic internal abstract suspend fun readChildren(previous: List<Node>): List<Node>
+    /**
+     * Lists the children from the live system, reusing [previous] nodes that still stand; a previous node that [kept]
+     * accepts is reused as it is while its binding stands, without resolving the binding again.
+     */
+    @JvmSynthetic internal abstract suspend fun readChildren(previous: List<Node>, kept: (Node) -> Boolean): List<Node>
 
     /**
      * What to show of [listed], children just listed or shown as they are: the children themselves, unless the
@@ -86,9 +89,10 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
 
     // Every write of the listing is an update that starts again if another write came first, so that a
     // child shown meanwhile (a name server added during a refresh) is never written over.
+    /** Lists the children again; those [kept] accepts are not read again while their bindings stand. */
     @JvmSynthetic
-    internal suspend fun relist(): List<Node> = listingLock.withLock {
-        val listed = withContext(core.remote.callDispatcher()) { readChildren(listing.value.orEmpty()) }
+    internal suspend fun relist(kept: (Node) -> Boolean = { false }): List<Node> = listingLock.withLock {
+        val listed = withContext(core.remote.callDispatcher()) { readChildren(listing.value.orEmpty(), kept) }
         listing.updateAndGet { settled(listed) }!!
     }
 

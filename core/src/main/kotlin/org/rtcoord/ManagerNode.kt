@@ -37,7 +37,7 @@ public sealed class ManagerNode(
         get() = NodeKind.MANAGER
 
     @JvmSynthetic
-    override suspend fun readChildren(previous: List<Node>): List<Node> = coroutineScope {
+    override suspend fun readChildren(previous: List<Node>, kept: (Node) -> Boolean): List<Node> = coroutineScope {
         val calls = calls
         val slaves = async { calls.slaves() }
         val hosted = async { calls.components() }

@@ -31,9 +31,9 @@ public sealed class NameServerNode(path: RtcPath, core: TreeCore) : NamingDirect
 
     /** A listing that fails because something other than a name server answers says what answers. */
     @JvmSynthetic
-    override suspend fun readChildren(previous: List<Node>): List<Node> =
+    override suspend fun readChildren(previous: List<Node>, kept: (Node) -> Boolean): List<Node> =
         try {
-            super.readChildren(previous)
+            super.readChildren(previous, kept)
         } catch (e: RtcException) {
             throw NameServerProbe(core, path, address).explain(e)
         }

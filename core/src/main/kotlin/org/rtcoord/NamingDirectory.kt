@@ -41,22 +41,33 @@ public sealed class NamingDirectory(path: RtcPath, core: TreeCore) : DirectoryNo
         calls().resolve(name)?.let { ObjectIdentity.same(it, component.ref) } ?: false
 
     @JvmSynthetic
-    override suspend fun readChildren(previous: List<Node>): List<Node> {
+    override suspend fun readChildren(previous: List<Node>, kept: (Node) -> Boolean): List<Node> {
         val calls = calls()
         val bindings = calls.bindings()
         val before = previous.associateBy { it.name }
-        return coroutineScope { bindings.map { binding -> async { childFor(calls, binding, before) } }.awaitAll() }
+        return coroutineScope {
+            bindings.map { binding -> async { childFor(calls, binding, before, kept) } }.awaitAll()
+        }
             .filterNotNull()
     }
 
-    /** The node for [binding], or null if it was unbound since the listing; [before] are the nodes listed last. */
-    private suspend fun childFor(calls: NamingCalls, binding: Binding, before: Map<String, Node>): Node? {
+    /**
+     * The node for [binding], or null if it was unbound since the listing; [before] are the nodes listed last, and
+     * those [kept] accepts stand for their bindings unresolved.
+     */
+    private suspend fun childFor(
+        calls: NamingCalls,
+        binding: Binding,
+        before: Map<String, Node>,
+        kept: (Node) -> Boolean,
+    ): Node? {
         val name = NamingCalls.nameOf(binding.binding_name)
         val childPath = path.child(name)
         val old = before[name]
         if (binding.binding_type == BindingType.ncontext) {
             return old as? ContextNode ?: ContextNodeImpl(childPath, core, this, binding.binding_name)
         }
+        if (old != null && kept(old)) return old
         val target = calls.resolve(binding.binding_name) ?: return null
         return when (childPath.kind) {
             "rtc" -> {

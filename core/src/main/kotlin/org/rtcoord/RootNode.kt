@@ -12,7 +12,8 @@ public sealed class RootNode(core: TreeCore, private val servers: () -> List<Nam
     override val kind: NodeKind
         get() = NodeKind.ROOT
 
-    @JvmSynthetic override suspend fun readChildren(previous: List<Node>): List<Node> = servers()
+    @JvmSynthetic
+    override suspend fun readChildren(previous: List<Node>, kept: (Node) -> Boolean): List<Node> = servers()
 
     /** The name servers as they are now, each as last shown (a server found dead stays a zombie until read again). */
     @JvmSynthetic

@@ -11,8 +11,10 @@ import org.junit.jupiter.api.AfterEach
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
+import org.omg.CosNaming.NamingContextExtHelper
 import org.rtcoord.fixtures.FixtureProcess
 import org.rtcoord.fixtures.await
+import org.rtcoord.runtime.RuntimeProcess
 import org.rtcoord.runtime.Scenarios
 
 /** What a handler may rely on: re-entrancy, isolation, overlap policies, order, liveness. */
@@ -180,6 +182,19 @@ class CallbackContractTest {
         tree.on(localisation.host, NodeAppeared::class.java, EventOptions(pollPeriod = 1.hours), naming.handler)
         tree.manager(path("manager.mgr")).create("odo_localise")
         assertEquals("odo_localise0.rtc", naming.next<NodeAppeared>().child.name)
+    }
+
+    @Test
+    fun `a name bound again to another component that answers is noticed, though watched names are resolved less`():
+        Unit = runBlocking {
+        tree.on(localisation.host, NodeAppeared::class.java, EventOptions(pollPeriod = 50.milliseconds)) {}
+        val context = tree.node(localisation.host) as ContextNode
+        fun bound(name: String) = (context.listed.value?.firstOrNull { it.name == name } as? ComponentNode)?.component
+        val odometry = bound("odometry0.rtc")!!
+        val orb = localisation.system.runtime.orb.orb
+        val naming = NamingContextExtHelper.narrow(orb.string_to_object(localisation.naming.corbaloc))
+        naming.rebind(naming.to_name("${RuntimeProcess.hostContext}/gyro0.rtc"), odometry.ref)
+        await("gyro0.rtc listed as the component bound to it now") { bound("gyro0.rtc") === odometry }
     }
 
     @Test

@@ -61,10 +61,12 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
             // On the listings' few threads (TreeCore.background); what the listing finds is read at full concurrency.
             core.scope.launch(core.background.dispatcher) {
                 var failing = false
+                var listings = 0L
                 while (isActive) {
                     delay(every)
+                    val kept = if (listings++ % RESOLVED_EVERY == 0L) NONE else ::watchedAndAnswering
                     try {
-                        withContext(core.background) { directory.relist() }
+                        withContext(core.background) { directory.relist(kept) }
                     } catch (e: RtcException) {
                         if (!failing) log.info("{}; listing it again every {}", e.message, every)
                         // Every time: a server shutting down first answers wrongly, and only then not at all.
@@ -116,11 +118,26 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
         core.model.publish(events) { event -> registrations.forEach { it.sink.offer(event) } }
     }
 
+    /** Whether [node] is a component whose monitor would notice it stop answering: its binding needs no resolving. */
+    private fun watchedAndAnswering(node: Node): Boolean = node is ComponentNode && core.model.answers(node.component)
+
     /** Where the registrations' events go. */
     fun sinks(): List<EventSink> = registrations.map { it.sink }
 
     fun stop() {
         poller?.cancel()
         announcer?.cancel()
+    }
+
+    private companion object {
+        /**
+         * Every how many listings the bindings of watched components that answer are resolved again: the others are
+         * resolved at each. A thousand components bound in one context cost a thousand `resolve` calls a listing, while
+         * a watched component's monitor notices it stop answering, and its name is resolved then. A name bound again to
+         * another component while the first still answers is noticed within this many periods.
+         */
+        const val RESOLVED_EVERY = 10L
+
+        val NONE: (Node) -> Boolean = { false }
     }
 }

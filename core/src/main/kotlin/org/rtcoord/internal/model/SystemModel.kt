@@ -81,6 +81,12 @@ internal class SystemModel(private val nameServers: () -> List<NameServerNode>) 
         }
     }
 
+    /** Whether [component] is watched, by push or by polling, and answers: its monitor would notice it stop. */
+    fun answers(component: ComponentObject): Boolean =
+        synchronized(this) {
+            methods[component].let { it is WatchMethod.Pushed || it is WatchMethod.Polled } && component !in dead
+        }
+
     /** When [server] was lost and why; null while it answers. */
     fun outageOf(server: NameServerNode): Pair<Long, RtcException>? =
         synchronized(this) { outages[server.path]?.let { it.since to it.cause } }
