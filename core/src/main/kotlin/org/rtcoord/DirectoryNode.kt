@@ -87,12 +87,12 @@ public sealed class DirectoryNode(path: RtcPath, core: TreeCore) : Node(path, co
         listing.update { settled(it.orEmpty()) }
     }
 
-    // Every write of the listing is an update that starts again if another write came first, so that a
-    // child shown meanwhile (a name server added during a refresh) is never written over.
     /** Lists the children again; those [kept] accepts are not read again while their bindings stand. */
     @JvmSynthetic
     internal suspend fun relist(kept: (Node) -> Boolean = { false }): List<Node> = listingLock.withLock {
         val listed = withContext(core.remote.callDispatcher()) { readChildren(listing.value.orEmpty(), kept) }
+        // Every write of the listing is an update that starts again if another write came first, so that a
+        // child shown meanwhile (a name server added during a refresh) is never written over.
         listing.updateAndGet { settled(listed) }!!
     }
 

@@ -10,7 +10,7 @@ import kotlinx.coroutines.Job
  * The tree's heartbeat watchdogs: one timer per period runs every check of that period in turn, rather than a timer per
  * watched component (a thousand components watched by push made two thousand timer wake-ups a second). A check only
  * compares the [clock]'s time, read once per tick and handed to every check (10,000 components read it 100,000 times a
- * second otherwise, a third of the tree's CPU), and rarely posts work to its monitor.
+ * second otherwise: a third of the tree's samples in a profile), and rarely posts work to its monitor.
  */
 internal class Watchdogs(
     private val scope: CoroutineScope,
