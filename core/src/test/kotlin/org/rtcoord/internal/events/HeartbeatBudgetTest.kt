@@ -3,6 +3,7 @@ package org.rtcoord.internal.events
 import kotlin.time.Duration
 import kotlin.time.Duration.Companion.seconds
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 
 class HeartbeatBudgetTest {
@@ -17,13 +18,8 @@ class HeartbeatBudgetTest {
         for (count in listOf(2501, 4000, 7777, 10_000, 50_000, 1_000_000)) {
             val floor = HeartbeatBudget.floorFor(count)
             val beats = count / floor.inWholeMilliseconds.toDouble() * 1000
-            assertEquals(
-                true,
-                beats <= HeartbeatBudget.BEATS_PER_SECOND,
-                "$count components at $floor: $beats a second",
-            )
-            assertEquals(
-                true,
+            assertTrue(beats <= HeartbeatBudget.BEATS_PER_SECOND, "$count components at $floor: $beats a second")
+            assertTrue(
                 beats > HeartbeatBudget.BEATS_PER_SECOND / 2,
                 "$count components at $floor: no longer than needed",
             )
