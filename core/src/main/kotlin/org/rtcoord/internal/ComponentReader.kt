@@ -213,13 +213,29 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
 }
 
 /**
- * A name-value list as strings; values that are not strings are shown as CORBA prints them. Names and short values are
- * interned: every component and port repeats them (`dataport.data_type`, `IDL:RTC/TimedLong:1.0`), and each read
- * unmarshals new copies, which the tree kept for as long as it watched the component.
+ * A name-value list as strings, in its order ([NameValueMap]); values that are not strings are shown as CORBA prints
+ * them. Names and short values are interned: every component and port repeats them (`dataport.data_type`,
+ * `IDL:RTC/TimedLong:1.0`), and each read unmarshals new copies, which the tree kept for as long as it watched the
+ * component.
  */
-internal fun Array<NameValue>.toMap(): Map<String, String> = associate { entry ->
-    val value = runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString()
-    entry.name.intern() to if (value.length <= SHARED_LENGTH) value.intern() else value
+internal fun Array<NameValue>.toMap(): Map<String, String> {
+    val names = ArrayList<String>(size)
+    val values = ArrayList<String>(size)
+    for (entry in this) {
+        val value =
+            (runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString()).let {
+                if (it.length <= SHARED_LENGTH) it.intern() else it
+            }
+        // A name given twice keeps its first place and its last value, as a map filled in the list's order does.
+        when (val at = names.indexOf(entry.name)) {
+            -1 -> {
+                names += entry.name.intern()
+                values += value
+            }
+            else -> values[at] = value
+        }
+    }
+    return NameValueMap(names.toTypedArray(), values.toTypedArray())
 }
 
 /** The longest value [toMap] interns: longer ones are references and addresses, each its own. */
