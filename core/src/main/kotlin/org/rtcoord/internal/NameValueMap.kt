@@ -3,9 +3,10 @@ package org.rtcoord.internal
 import java.util.AbstractMap.SimpleImmutableEntry
 
 /**
- * A name-value list read into a map, in the order the list gave it: two arrays, searched in turn. Profiles carry a few
- * to a few dozen properties, and a tree keeps those of every component, port, connector and context it read: ten
- * thousand components kept nine `LinkedHashMap`s each, 3.7 KB of entries, tables and views (bench/README.md).
+ * A name-value list read into a map, in the order the list gave it: two arrays, searched in turn. A component's, a
+ * port's or a connector's profile carries a few to a few dozen properties (a manager's, its whole configuration, read
+ * rarely), and a tree keeps those of every component, port, connector and context it read: ten thousand components kept
+ * nine `LinkedHashMap`s each, 3.7 KB of entries, tables and views (bench/README.md).
  */
 internal class NameValueMap(private val names: Array<String>, private val valuesInOrder: Array<String>) :
     AbstractMap<String, String>() {
