@@ -70,7 +70,7 @@ internal class SimulatedPortBench(
                 val inactive = mutableListOf<Double>()
                 val rates = mutableListOf<Double>()
                 val floor = mutableListOf<Double>()
-                LoopbackFloor(sampleBytes(), PERIOD_MILLIS).use { loopback ->
+                LoopbackFloor(sampleBytes, PERIOD_MILLIS).use { loopback ->
                     repeat(options.portRounds) { round ->
                         if (round > 0) {
                             ranger.activate()
@@ -110,7 +110,7 @@ internal class SimulatedPortBench(
                 report.row(
                     FLOOR_LABEL,
                     floorCost,
-                    "a JVM of its own (${LoopbackFloor.JVM_OPTIONS.joinToString(" ")}) writing ${sampleBytes()} bytes " +
+                    "a JVM of its own (${LoopbackFloor.JVM_OPTIONS.joinToString(" ")}) writing $sampleBytes bytes " +
                         "every $PERIOD_MILLIS ms, answered with ${LoopbackFloor.REPLY_BYTES} bytes from another " +
                         "process; writing less idle, each pair right after one of the port's",
                 )
@@ -121,9 +121,9 @@ internal class SimulatedPortBench(
     }
 
     /** The bytes of one made-up RangeData sample as its port sends them. */
-    private fun sampleBytes(): Int {
+    private val sampleBytes: Int by lazy {
         val type = checkNotNull(StandardDataTypes.named("RangeData"))
-        return DataCodec(type).encode(MadeUpValues(type, 0).at(0), littleEndian = true).size
+        DataCodec(type).encode(MadeUpValues(type, 0).at(0), littleEndian = true).size
     }
 
     /** `./rtcoord sim FILE` with its console open (an empty stdin would end it), until closed. */

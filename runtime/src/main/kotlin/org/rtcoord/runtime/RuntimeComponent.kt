@@ -90,7 +90,7 @@ internal constructor(
     public lateinit var ref: OpenRTM.DataFlowComponent
         private set
 
-    /** The reference's [identity], to compare references callers pass in cheaply. */
+    /** The reference's [ObjectIdentity], to compare references callers pass in cheaply. */
     internal val identity: String by lazy { ObjectIdentity.of(ref) }
 
     private lateinit var configurationRef: Configuration

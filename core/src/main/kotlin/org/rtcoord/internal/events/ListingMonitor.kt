@@ -64,9 +64,11 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
                 var listings = 0L
                 while (isActive) {
                     delay(every)
-                    val kept = if (listings++ % RESOLVED_EVERY == 0L) NONE else ::watchedAndAnswering
+                    val resolveAll = listings++ % RESOLVED_EVERY == 0L
                     try {
-                        withContext(core.background) { directory.relist(kept) }
+                        withContext(core.background) {
+                            if (resolveAll) directory.relist() else directory.relist(::watchedAndAnswering)
+                        }
                     } catch (e: RtcException) {
                         if (!failing) log.info("{}; listing it again every {}", e.message, every)
                         // Every time: a server shutting down first answers wrongly, and only then not at all.
@@ -137,7 +139,5 @@ internal class ListingMonitor(private val core: TreeCore, private val directory:
          * another component while the first still answers is noticed within this many periods.
          */
         const val RESOLVED_EVERY = 10L
-
-        val NONE: (Node) -> Boolean = { false }
     }
 }
