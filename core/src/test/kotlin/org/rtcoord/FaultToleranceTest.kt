@@ -116,7 +116,9 @@ class FaultToleranceTest {
                         }
                         system.runtime.create(Scenarios.relay, "late0")
                         recorder.next<NodeAppeared>(timeout = 10.seconds) { it.child.name == "late0.rtc" }
-                        assertTrue("$host: listed again" in logs.lines, "the recovery is reported")
+                        // Logged by the listing loop once its listing returns, while the listing's changes are
+                        // announced by another coroutine: the line may follow the event.
+                        await("the recovery to be reported") { "$host: listed again" in logs.lines }
                         system.component("late0").activate()
                         assertEquals(
                             LifeCycle.ACTIVE,
