@@ -2,49 +2,81 @@ package org.rtcoord.internal.events
 
 import kotlinx.coroutines.CancellationException
 import kotlinx.coroutines.CoroutineScope
-import kotlinx.coroutines.channels.BufferOverflow
-import kotlinx.coroutines.channels.Channel
+import kotlinx.coroutines.CoroutineStart
+import kotlinx.coroutines.Job
 import kotlinx.coroutines.launch
 import org.rtcoord.Overlap
 import org.rtcoord.RtcEvent
 
 /**
- * One registration's delivery: events wait in a channel shaped by its [Overlap] policy and its handler runs in a
+ * One registration's delivery: events wait in a queue shaped by its [Overlap] policy and its handler runs in a
  * coroutine of its own, never on the monitor that produced the event, so a handler may call back into the source node,
  * and a slow or failing handler delays nobody else. What a handler throws goes to the tree's [ListenerFailures], found
  * in [scope]'s context.
+ *
+ * The coroutine lives only while there are events to hand over: an event offered to an idle sink starts one, which ends
+ * once the queue is empty. A tree watching ten thousand components holds as many sinks, nearly all idle, and a
+ * coroutine suspended on a channel for each would weigh more than the rest of the sink.
  */
 internal class EventSink(
-    scope: CoroutineScope,
+    private val scope: CoroutineScope,
     private val accepts: (RtcEvent) -> Boolean,
-    overlap: Overlap,
+    private val overlap: Overlap,
     private val handler: suspend (RtcEvent) -> Unit,
     /**
      * With [Overlap.QUEUE], the most events that wait for the handler, the oldest dropped and told to [dropped] when
      * more come: for streams the handler need not see whole (log records), so that a slow handler costs no more memory.
      */
-    bound: Int? = null,
+    private val bound: Int? = null,
     private val dropped: () -> Unit = {},
 ) {
-    @Volatile private var closed = false
-
     private val failures =
         checkNotNull(scope.coroutineContext[ListenerFailures]) { "event sinks deliver in a tree's scope" }
     private val listener: Any = (handler as? StandIn)?.listener ?: handler
-    private val pending =
-        if (overlap == Overlap.QUEUE && bound != null)
-            Channel<RtcEvent>(bound, BufferOverflow.DROP_OLDEST) { if (!closed) dropped() }
-        else
-            Channel(
+
+    // Guarded by itself.
+    private val waiting = ArrayDeque<RtcEvent>()
+    /** The coroutine handing events over, null while the sink is idle. */
+    private var delivery: Job? = null
+    private var closed = false
+
+    fun offer(event: RtcEvent) {
+        if (!accepts(event)) return
+        var overflowed = false
+        var started: Job? = null
+        synchronized(waiting) {
+            if (closed) return
+            if (delivery == null) {
+                waiting.addLast(event)
+                // Started once it is known as the delivery: it clears that when it finds nothing more.
+                started = scope.launch(start = CoroutineStart.LAZY) { deliver() }
+                delivery = started
+            } else {
                 when (overlap) {
-                    Overlap.QUEUE -> Channel.UNLIMITED
-                    Overlap.LATEST -> Channel.CONFLATED
-                    // Only a handler waiting for its next event takes one; while it runs, offers fail.
-                    Overlap.SKIP -> Channel.RENDEZVOUS
+                    Overlap.QUEUE -> {
+                        if (bound != null && waiting.size >= bound) {
+                            waiting.removeFirst()
+                            overflowed = true
+                        }
+                        waiting.addLast(event)
+                    }
+                    Overlap.LATEST -> {
+                        waiting.clear()
+                        waiting.addLast(event)
+                    }
+                    // Only an idle handler takes an event; while it runs, offers are dropped.
+                    Overlap.SKIP -> Unit
                 }
-            )
-    private val delivery = scope.launch {
-        for (event in pending) {
+            }
+        }
+        started?.start()
+        if (overflowed) dropped()
+    }
+
+    private suspend fun deliver() {
+        while (true) {
+            val event =
+                synchronized(waiting) { waiting.removeFirstOrNull().also { if (it == null) delivery = null } } ?: return
             try {
                 handler(event)
             } catch (e: CancellationException) {
@@ -55,13 +87,13 @@ internal class EventSink(
         }
     }
 
-    fun offer(event: RtcEvent) {
-        if (accepts(event)) pending.trySend(event)
-    }
-
     fun close() {
-        closed = true
-        pending.close()
-        delivery.cancel()
+        val running =
+            synchronized(waiting) {
+                closed = true
+                waiting.clear()
+                delivery
+            }
+        running?.cancel()
     }
 }
