@@ -9,7 +9,6 @@ import kotlin.time.Duration
 import kotlinx.coroutines.CompletableDeferred
 import kotlinx.coroutines.NonCancellable
 import kotlinx.coroutines.async
-import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.coroutineScope
 import kotlinx.coroutines.launch
 import kotlinx.coroutines.withContext
@@ -48,7 +47,12 @@ internal class ComponentMonitor(
     private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
     private val subject = node.path.toString()
     private val registrations = MonitorRegistrations()
-    private val work = Channel<Work>(Channel.UNLIMITED)
+    /** Work not yet taken, guarded by itself. */
+    private val inbox = ArrayDeque<Work>()
+    /** Whether a coroutine takes the [inbox]'s work; guarded by the inbox. */
+    private var working = false
+    /** Whether the monitor was stopped: it takes no more work, and its coroutine ends once the inbox is empty. */
+    private var stopping = false
 
     /**
      * How the component is watched, as its machine last decided and the reports were told; set through
@@ -73,7 +77,7 @@ internal class ComponentMonitor(
                         if (outcome is StateProbe.Outcome.Changed)
                             WatchInput.Probed(outcome.states, outcome.epoch, outcome.stamp)
                         else WatchInput.Unsettled
-                    if (!work.trySend(Work(input, outcome.done)).isSuccess) outcome.done()
+                    if (!send(Work(input, outcome.done))) outcome.done()
                 }
             }
     private val timers =
@@ -81,43 +85,64 @@ internal class ComponentMonitor(
             core,
             probe,
             core.clock,
-            { done -> if (!work.trySend(Work(WatchInput.Ticked, done)).isSuccess) done() },
+            { done -> if (!send(Work(WatchInput.Ticked, done))) done() },
         ) { heardAt ->
-            work.trySend(Work(WatchInput.Overdue(heardAt)))
+            send(Work(WatchInput.Overdue(heardAt)))
         }
-
-    init {
-        // On the dispatcher of remote calls, which its reads then make without changing threads.
-        core.scope.launch(core.remote.dispatcher) { run() }
-    }
 
     /** Adds [registration] and returns once the component was read and, if asked for, observed. */
     suspend fun add(registration: MonitorRegistration) {
         registrations += registration
         val ready = CompletableDeferred<Unit>()
-        if (work.trySend(Work(WatchInput.Reconfigured, ready = ready)).isSuccess) ready.await()
+        if (send(Work(WatchInput.Reconfigured, ready = ready))) ready.await()
     }
 
     /** Removes [registration]; returns whether none is left (the caller then [stop]s the monitor). */
     fun remove(registration: MonitorRegistration): Boolean {
         registrations -= registration
-        work.trySend(Work(WatchInput.Reconfigured))
+        send(Work(WatchInput.Reconfigured))
         return registrations.isEmpty()
     }
 
     /** The tree's heartbeat floor changed: the watching is arranged anew, its observer attached at the new floor. */
     fun rearrange() {
-        work.trySend(Work(WatchInput.Reconfigured))
+        send(Work(WatchInput.Reconfigured))
     }
 
     /** Something this component depends on failed (its manager): a read tells at once whether it answers. */
     fun suspect() {
-        work.trySend(Work(WatchInput.ReadWanted))
+        send(Work(WatchInput.ReadWanted))
     }
 
     /** Stops watching: polling ends and the observer is detached, soon, by the monitor's coroutine. */
     fun stop() {
-        work.close()
+        val start =
+            synchronized(inbox) {
+                stopping = true
+                !working.also { working = true }
+            }
+        if (start) startWorking()
+    }
+
+    /** Hands [work] to the monitor's coroutine, starting one if none runs; false once the monitor was stopped. */
+    private fun send(work: Work): Boolean {
+        val start =
+            synchronized(inbox) {
+                if (stopping) return false
+                inbox.addLast(work)
+                !working.also { working = true }
+            }
+        if (start) startWorking()
+        return true
+    }
+
+    /**
+     * Starts the coroutine that takes the monitor's work, which ends when none is left: a tree watching ten thousand
+     * components would otherwise hold as many coroutines waiting, which weigh more than the rest of a monitor.
+     */
+    private fun startWorking() {
+        // On the dispatcher of remote calls, which its reads then make without changing threads.
+        core.scope.launch(core.remote.dispatcher) { run() }
     }
 
     /**
@@ -134,22 +159,48 @@ internal class ComponentMonitor(
     fun sinks(): List<EventSink> = registrations.map { it.sink }
 
     private suspend fun run() {
+        var idle = false
         try {
             while (true) {
-                val batch = ArrayList(carried).also { carried.clear() }
-                if (batch.isEmpty()) batch += work.receiveCatching().getOrNull() ?: break
-                while (true) batch += work.tryReceive().getOrNull() ?: break
+                val batch = nextBatch()
+                if (batch == null) {
+                    idle = true
+                    return
+                }
+                if (batch.isEmpty()) return
                 handle(batch)
             }
         } finally {
-            withContext(NonCancellable) {
-                armed.values.forEach { it.cancel(false) }
-                timers.stop()
-                probe?.close()
-                link.detach()
-                ended(this@ComponentMonitor)
-                stopped.complete(Unit)
+            if (!idle) end()
+        }
+    }
+
+    /**
+     * The work to take next: null when there is none and the monitor runs on (its coroutine then ends), empty once
+     * stopped.
+     */
+    private fun nextBatch(): List<Work>? {
+        val batch = ArrayList(carried).also { carried.clear() }
+        synchronized(inbox) {
+            batch += inbox
+            inbox.clear()
+            if (batch.isEmpty() && !stopping) {
+                working = false
+                return null
             }
+        }
+        return batch
+    }
+
+    /** Ends the monitor, stopped or failed: its timers and observer go. */
+    private suspend fun end() {
+        withContext(NonCancellable) {
+            armed.values.forEach { it.cancel(false) }
+            timers.stop()
+            probe?.close()
+            link.detach()
+            ended(this@ComponentMonitor)
+            stopped.complete(Unit)
         }
     }
 
@@ -252,7 +303,7 @@ internal class ComponentMonitor(
     private fun lateHints(): List<WatchInput.Hinted> {
         val hints = ArrayList<WatchInput.Hinted>()
         while (true) {
-            val item = work.tryReceive().getOrNull() ?: return hints
+            val item = synchronized(inbox) { inbox.removeFirstOrNull() } ?: return hints
             val hinted = item.input as? WatchInput.Hinted
             if (hinted != null && hinted.hint.kind == HintKind.RTC_STATUS) hints += hinted else carried += item
         }
@@ -265,7 +316,7 @@ internal class ComponentMonitor(
         // Each fires when the clock reads its time, not a millisecond later as a delay may; one armed anew replaces its
         // kind's.
         for ((timer, at) in outcome.timers) {
-            core.at(at) { work.trySend(Work(WatchInput.Fired(timer, at))) }?.let { armed.put(timer, it)?.cancel(false) }
+            core.at(at) { send(Work(WatchInput.Fired(timer, at))) }?.let { armed.put(timer, it)?.cancel(false) }
         }
         for (change in outcome.changes) {
             when (change) {
@@ -303,7 +354,7 @@ internal class ComponentMonitor(
         val traffic = hint.traffic()
         when {
             hint.kind == HintKind.OTHER && hint.text.startsWith(ComponentWatch.MARKER_PREFIX) ->
-                work.trySend(Work(WatchInput.MarkerBack(hint.text)))
+                send(Work(WatchInput.MarkerBack(hint.text)))
             hint.isHeartbeat -> timers.heard()
             traffic != null ->
                 timers.heard().also {
@@ -316,7 +367,7 @@ internal class ComponentMonitor(
                 timers.heard().also {
                     fsm.changedBy(hint)?.let { core.model.publish(listOf(it), deliver = registrations::offer) }
                 }
-            else -> work.trySend(Work(WatchInput.Hinted(hint, now())))
+            else -> send(Work(WatchInput.Hinted(hint, now())))
         }
     }
 
