@@ -4,6 +4,7 @@ import RTC.ExecutionContext
 import RTC.PortService
 import RTC.RTObject
 import _SDOPackage.Configuration
+import java.lang.ref.WeakReference
 import java.util.concurrent.atomic.AtomicLong
 import kotlinx.coroutines.async
 import kotlinx.coroutines.flow.MutableStateFlow
@@ -35,10 +36,18 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     var contexts: Map<Int, ExecutionContext> = emptyMap()
         private set
 
-    /** Port references by short port name, as of the last refresh. */
-    @Volatile
-    var ports: Map<String, PortService> = emptyMap()
-        private set
+    /**
+     * Port references by short port name, as the last read found them, held weakly: a burst of port operations after a
+     * read takes them from here, while an idle tree keeps none (each reference costs JacORB about a kilobyte, several
+     * times what the rest of a port's snapshot does).
+     */
+    @Volatile private var ports = WeakReference<Map<String, PortService>>(null)
+
+    /** The reference of the port named [name] (without the instance prefix), null if the component has none such. */
+    suspend fun port(subject: String, name: String): PortService? =
+        ports.get()?.get(name)
+            ?: withContext(core.remote.callDispatcher()) { ComponentReader(core.remote, subject, ref).readPorts() }
+                .also { ports = WeakReference(it) }[name]
 
     private val hosts = java.util.concurrent.ConcurrentHashMap<RtcPath, ManagerNode>()
 
@@ -138,7 +147,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
                     val settings = async { if (withConfiguration) readConfiguration(reader) else null }
                     val reading = reader.read()
                     contexts = reading.contexts
-                    ports = reading.ports
+                    ports = WeakReference(reading.ports)
                     publishRead(reading.snapshot.copy(configuration = settings.await()), stamp).also {
                         lastRead = stamp
                     }

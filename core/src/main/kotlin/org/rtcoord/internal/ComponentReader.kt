@@ -72,9 +72,15 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
         Reading(
             snapshot,
             read.associate { it.first.handle to it.second },
-            p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref },
+            portReferences(p),
         )
     }
+
+    /** The component's port references by short port name, read now. */
+    suspend fun readPorts(): Map<String, PortService> = portReferences(readProfile())
+
+    private fun portReferences(p: ComponentProfile): Map<String, PortService> =
+        p.port_profiles.associate { it.name.removePrefix("${p.instance_name}.") to it.port_ref }
 
     /** What a listing shows: the profile's ports and the state in each context, without the contexts' own details. */
     suspend fun readSummary(): SummaryReading = coroutineScope {

@@ -13,7 +13,7 @@ import org.rtcoord.NotFoundException
 
 /**
  * The remote calls a [org.rtcoord.Port] makes: connecting, reading its connections and disconnecting. [owner] is its
- * component, read again (as [ownerSubject]) when the port's reference is not known yet.
+ * component, whose profile is read again (as [ownerSubject]) when the port's reference is not at hand.
  */
 internal class PortCalls(
     private val core: TreeCore,
@@ -22,14 +22,9 @@ internal class PortCalls(
     private val ownerSubject: String,
     private val name: String,
 ) {
-    /** The port's object reference, as its component's last read found it. */
-    suspend fun reference(): PortService {
-        owner.ports[name]?.let {
-            return it
-        }
-        owner.refresh(ownerSubject)
-        return owner.ports[name] ?: throw NotFoundException(subject, "no such port")
-    }
+    /** The port's object reference. */
+    suspend fun reference(): PortService =
+        owner.port(ownerSubject, name) ?: throw NotFoundException(subject, "no such port")
 
     /**
      * Connects this port to [others] with [properties] under [connectorName] and [id] (empty: the component chooses);
