@@ -31,11 +31,16 @@ internal class RandomIdPoa(private val orb: ORB, private val name: String, priva
 
     /** One served object, until [close]. */
     inner class Served internal constructor(servant: Servant) {
-        private val objectId = ByteArray(16).also(random::nextBytes)
-        val reference: org.omg.CORBA.Object = poa.run {
-            activate_object_with_id(objectId, servant)
-            id_to_reference(objectId)
-        }
+        private val objectId = ByteArray(16).also(random::nextBytes).also { poa.activate_object_with_id(it, servant) }
+        private val type = servant._all_interfaces(poa, objectId).first()
+
+        /**
+         * A reference to the object, made anew at each call and kept by nobody else: JacORB's reference weighs about a
+         * kilobyte, `id_to_reference` keeps the one it makes for as long as the POA lives, and a tree serving an
+         * observer for each of ten thousand components needs one only to register it and to send a marker.
+         */
+        val reference: org.omg.CORBA.Object
+            get() = poa.create_reference_with_id(objectId, type)
 
         fun close() {
             runCatching { poa.deactivate_object(objectId) }
