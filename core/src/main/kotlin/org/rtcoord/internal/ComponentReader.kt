@@ -58,11 +58,11 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
         val snapshot =
             ComponentSnapshot(
                 instanceName = p.instance_name,
-                typeName = p.type_name,
-                description = p.description,
-                version = p.version,
-                vendor = p.vendor,
-                category = p.category,
+                typeName = p.type_name.shared(),
+                description = p.description.shared(),
+                version = p.version.shared(),
+                vendor = p.vendor.shared(),
+                category = p.category.shared(),
                 parent = parent,
                 properties = p.properties.toMap(),
                 ports = portsOf(p),
@@ -116,7 +116,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
         p.port_profiles.map { port ->
             val properties = port.properties.toMap()
             PortSnapshot(
-                name = port.name.removePrefix("${p.instance_name}."),
+                name = port.name.removePrefix("${p.instance_name}.").shared(),
                 fullName = port.name,
                 kind =
                     when (properties["port.port_type"]) {
@@ -131,7 +131,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
                         val polarity =
                             if (profile.polarity == RTC.PortInterfacePolarity.PROVIDED) PortInterface.Polarity.PROVIDED
                             else PortInterface.Polarity.REQUIRED
-                        PortInterface(profile.instance_name, profile.type_name, polarity)
+                        PortInterface(profile.instance_name.shared(), profile.type_name.shared(), polarity)
                     },
                 properties = properties,
                 connectors =
@@ -228,10 +228,7 @@ internal fun Array<NameValue>.toMap(): Map<String, String> {
     val names = ArrayList<String>(size)
     val values = ArrayList<String>(size)
     for (entry in this) {
-        val value =
-            (runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString()).let {
-                if (it.length <= SHARED_LENGTH) it.intern() else it
-            }
+        val value = (runCatching { entry.value.extract_string() }.getOrNull() ?: entry.value.toString()).shared()
         // A name given twice keeps its first place and its last value, as a map filled in the list's order does.
         when (val at = names.indexOf(entry.name)) {
             -1 -> {
@@ -244,7 +241,13 @@ internal fun Array<NameValue>.toMap(): Map<String, String> {
     return NameValueMap(names.toTypedArray(), values.toTypedArray())
 }
 
-/** The longest value [toMap] interns: longer ones are references and addresses, each its own. */
+/**
+ * This string, interned when it is short: names, types and descriptions that every component of a kind repeats, which
+ * each read unmarshals anew. Longer ones are references and addresses, each its own.
+ */
+private fun String.shared(): String = if (length <= SHARED_LENGTH) intern() else this
+
+/** The longest string [shared] interns. */
 private const val SHARED_LENGTH = 64
 
 private const val PARTICIPATING_BASE = 1000
