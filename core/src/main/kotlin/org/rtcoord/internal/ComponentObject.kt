@@ -49,7 +49,8 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
             ?: withContext(core.remote.callDispatcher()) { ComponentReader(core.remote, subject, ref).readPorts() }
                 .also { ports = WeakReference(it) }[name]
 
-    private val hosts = java.util.concurrent.ConcurrentHashMap<RtcPath, ManagerNode>()
+    /** Replaced whole, under a lock, when a listing finds a new node: a component has one host or none, found again. */
+    @Volatile private var hosts: Map<RtcPath, ManagerNode> = emptyMap()
 
     /** The managers whose listings showed this component, the latest node of each. */
     val hostingManagers: Collection<ManagerNode>
@@ -57,7 +58,8 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
 
     /** Records that [manager]'s listing shows this component. */
     fun hostedBy(manager: ManagerNode) {
-        hosts[manager.path] = manager
+        if (hosts[manager.path] === manager) return
+        synchronized(this) { hosts = hosts + (manager.path to manager) }
     }
 
     /** The nodes at which the tree shows this component, by path, in the order they were found. */

@@ -71,7 +71,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
             )
         Reading(
             snapshot,
-            read.associate { it.first.handle to it.second },
+            read.map { it.first.handle to it.second }.toMap(),
             portReferences(p),
         )
     }

@@ -18,7 +18,7 @@ internal class ContextStates(
 
     /** The state in each context as the published events tell it, by handle. */
     val published: Map<Int, LifeCycle>
-        get() = trackers.mapValues { it.value.confirmed }
+        get() = trackers.map { (handle, tracker) -> handle to tracker.confirmed }.toMap()
 
     /** When the oldest disagreement between hints and reads began; null when they agree in every context. */
     val disagreedSince: Long?
