@@ -2,21 +2,34 @@ package org.rtcoord.dsl.internal
 
 /**
  * Whether a port's data went silent or slow, from the times samples arrived and checks of the component's state (times
- * in milliseconds, from any monotonic clock). Only time while the component is ACTIVE counts: a component not ACTIVE is
- * expected to send nothing, and its silence starts when it is seen ACTIVE again. Each silence or drop is reported once;
- * a sample (or a rate back at its floor) ends it.
+ * in milliseconds, from any monotonic clock). Only time while the port is tapped and its component ACTIVE counts:
+ * before the tap is connected nothing can arrive (connecting it can take longer than a silence limit on a loaded
+ * machine), and a component not ACTIVE is expected to send nothing; silence starts when the port is tapped, tapped
+ * again (its component re-created) or seen ACTIVE again. Each silence or drop is reported once; a sample (or a rate
+ * back at its floor) ends it.
  */
 internal class DataLiveness(
-    start: Long,
+    /** When the port was tapped; null until it is ([tapped]). */
+    tappedAt: Long?,
     private val silenceMillis: Long?,
     private val minRate: Double?,
     private val windowMillis: Long = 1000,
 ) {
-    private var lastSample = start
-    private var countingSince = start
+    private var tapped = tappedAt != null
+    private var lastSample = tappedAt ?: 0
+    private var countingSince = tappedAt ?: 0
     private val arrivals = ArrayDeque<Long>()
     private var silentReported = false
     private var slowReported = false
+
+    /** The port was tapped, or tapped again, at [now]: what the silence and the rate count starts then. */
+    fun tapped(now: Long) {
+        tapped = true
+        countingSince = now
+        silentReported = false
+        slowReported = false
+        arrivals.clear()
+    }
 
     fun sample(now: Long) {
         lastSample = now
@@ -30,6 +43,7 @@ internal class DataLiveness(
     /** What a check at [now] finds, the component [active] or not. */
     fun check(now: Long, active: Boolean): Finding {
         while (arrivals.isNotEmpty() && arrivals.first() <= now - windowMillis) arrivals.removeFirst()
+        if (!tapped) return Finding.NOTHING
         if (!active) {
             countingSince = now
             silentReported = false

@@ -34,6 +34,8 @@ internal class DataRuleRun(
     private val began = engine.tree.treeTime().markNow()
     private var following: Subscription? = null
     @Volatile private var tapped: Subscription? = null
+    /** The silence and rate of a [DataRule.Silence] or [DataRule.RateBelow], counted from each tap. */
+    private var liveness: DataLiveness? = null
 
     /** Taps the port; fails as the tap does (no such port, not an out-port). */
     suspend fun start() {
@@ -62,7 +64,9 @@ internal class DataRuleRun(
         tapped?.cancel()
         tapped =
             try {
-                node.port(rule.port.name).tap(listener)
+                node.port(rule.port.name).tap(listener).also {
+                    liveness?.let { watched -> synchronized(watched) { watched.tapped(now()) } }
+                }
             } catch (e: RtcException) {
                 if (first) throw e
                 engine.log("warning: ${rule.description}: could not tap the re-created component: ${e.message}")
@@ -80,7 +84,7 @@ internal class DataRuleRun(
     private fun watchLiveness(): DataListener {
         val silence = (rule as? DataRule.Silence)?.limit
         val rate = (rule as? DataRule.RateBelow)?.rate
-        val liveness = DataLiveness(now(), silence?.inWholeMilliseconds, rate)
+        val liveness = DataLiveness(null, silence?.inWholeMilliseconds, rate).also { liveness = it }
         val period = ((silence ?: 1000.milliseconds) / 5).coerceIn(10.milliseconds, 200.milliseconds)
         scope.launch {
             while (isActive) {
