@@ -30,8 +30,8 @@ class EventSinkTest {
     private fun RtcTree.coroutines(): Int = core.scope.coroutineContext[Job]!!.children.count()
 
     /**
-     * A sink of [overlap] whose handler blocks on its first event until [release] completes; offers 1..5 meanwhile and
-     * returns the events handled.
+     * The events a sink of [overlap] hands over when 1..5 are offered while its handler is still busy with event 0, in
+     * the order it handled them.
      */
     private fun handledWhileBusy(overlap: Overlap, bound: Int? = null, dropped: () -> Unit = {}): List<Int> =
         RtcTree(TreeConfig()).use { tree ->
