@@ -8,6 +8,7 @@ import kotlinx.coroutines.Job
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import org.junit.jupiter.api.Assertions.assertEquals
+import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.rtcoord.NodeVanished
 import org.rtcoord.Overlap
@@ -88,10 +89,10 @@ class EventSinkTest {
             await("every event accepted to be handled") { handled.size == 11 }
             assertEquals(listOf(0, 1, 2, 4, 5, 10, 11, 12, 13, 14, 15), handled.toList(), "in order, 3 not accepted")
             assertEquals(1, failed.get(), "a failing handler is called again for the next event")
-            await("the sink's coroutine to end once idle") { tree.coroutines() == before }
+            await("the sink's coroutine to end once idle") { tree.coroutines() <= before }
             sink.close()
             sink.offer(tree.event(6))
-            assertEquals(before, tree.coroutines(), "a closed sink starts nothing")
+            assertTrue(tree.coroutines() <= before, "a closed sink starts nothing")
         }
 
     @Test
