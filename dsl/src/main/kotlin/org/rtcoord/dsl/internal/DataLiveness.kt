@@ -15,16 +15,15 @@ internal class DataLiveness(
     private val minRate: Double?,
     private val windowMillis: Long = 1000,
 ) {
-    private var tapped = tappedAt != null
     private var lastSample = tappedAt ?: 0
-    private var countingSince = tappedAt ?: 0
+    /** Since when silence and rate count; null until the port is tapped. */
+    private var countingSince: Long? = tappedAt
     private val arrivals = ArrayDeque<Long>()
     private var silentReported = false
     private var slowReported = false
 
     /** The port was tapped, or tapped again, at [now]: what the silence and the rate count starts then. */
     fun tapped(now: Long) {
-        tapped = true
         countingSince = now
         silentReported = false
         slowReported = false
@@ -43,19 +42,19 @@ internal class DataLiveness(
     /** What a check at [now] finds, the component [active] or not. */
     fun check(now: Long, active: Boolean): Finding {
         while (arrivals.isNotEmpty() && arrivals.first() <= now - windowMillis) arrivals.removeFirst()
-        if (!tapped) return Finding.NOTHING
+        val since = countingSince ?: return Finding.NOTHING
         if (!active) {
             countingSince = now
             silentReported = false
             slowReported = false
             return Finding.NOTHING
         }
-        val silentFor = now - maxOf(lastSample, countingSince)
+        val silentFor = now - maxOf(lastSample, since)
         if (silenceMillis != null && silentFor >= silenceMillis && !silentReported) {
             silentReported = true
             return Finding.Silent(silentFor)
         }
-        if (minRate != null && now - countingSince >= windowMillis) {
+        if (minRate != null && now - since >= windowMillis) {
             val rate = arrivals.size * 1000.0 / windowMillis
             if (rate < minRate && !slowReported) {
                 slowReported = true
