@@ -47,9 +47,10 @@ internal class EventSink(
         synchronized(waiting) {
             if (closed) return
             if (delivery == null) {
-                waiting.addLast(event)
-                // Started once it is known as the delivery: it clears that when it finds nothing more.
-                started = scope.launch(start = CoroutineStart.LAZY) { deliver() }
+                // The event is the handler's from now, though its coroutine has yet to run: what comes before it does
+                // waits behind it, as it would behind a handler already running. Started once it is known as the
+                // delivery, which it clears when it finds nothing more.
+                started = scope.launch(start = CoroutineStart.LAZY) { deliver(event) }
                 delivery = started
             } else {
                 when (overlap) {
@@ -73,10 +74,9 @@ internal class EventSink(
         if (overflowed) dropped()
     }
 
-    private suspend fun deliver() {
-        while (true) {
-            val event =
-                synchronized(waiting) { waiting.removeFirstOrNull().also { if (it == null) delivery = null } } ?: return
+    private suspend fun deliver(first: RtcEvent) {
+        var event: RtcEvent? = first
+        while (event != null) {
             try {
                 handler(event)
             } catch (e: CancellationException) {
@@ -84,6 +84,7 @@ internal class EventSink(
             } catch (e: Throwable) {
                 failures.report(listener, event, e)
             }
+            event = synchronized(waiting) { waiting.removeFirstOrNull().also { if (it == null) delivery = null } }
         }
     }
 

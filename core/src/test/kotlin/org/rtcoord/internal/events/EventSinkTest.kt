@@ -1,10 +1,14 @@
 package org.rtcoord.internal.events
 
 import java.util.concurrent.CopyOnWriteArrayList
+import java.util.concurrent.CountDownLatch
+import java.util.concurrent.Executors
 import java.util.concurrent.atomic.AtomicInteger
 import kotlin.time.Duration.Companion.seconds
 import kotlinx.coroutines.CompletableDeferred
+import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.Job
+import kotlinx.coroutines.asCoroutineDispatcher
 import kotlinx.coroutines.runBlocking
 import kotlinx.coroutines.withTimeout
 import org.junit.jupiter.api.Assertions.assertEquals
@@ -94,6 +98,37 @@ class EventSinkTest {
             sink.offer(tree.event(6))
             assertTrue(tree.coroutines() <= before, "a closed sink starts nothing")
         }
+
+    /**
+     * The events a sink of [overlap] hands over when 0..5 are offered at once, before its coroutine gets a thread: the
+     * one thread of its dispatcher is held until all six are in.
+     */
+    private fun handledFromIdle(overlap: Overlap): List<Int> =
+        RtcTree(TreeConfig()).use { tree ->
+            val thread = Executors.newSingleThreadExecutor()
+            try {
+                val held = CountDownLatch(1)
+                thread.execute { held.await() }
+                val handled = CopyOnWriteArrayList<Int>()
+                val scope = CoroutineScope(tree.core.scope.coroutineContext + thread.asCoroutineDispatcher())
+                val sink = EventSink(scope, { true }, overlap, { handled += it.index })
+                (0..5).forEach { sink.offer(tree.event(it)) }
+                held.countDown()
+                val last = if (overlap == Overlap.SKIP) 0 else 5
+                await("the sink to hand over its last event") { last in handled }
+                sink.close()
+                handled.toList()
+            } finally {
+                thread.shutdownNow()
+            }
+        }
+
+    @Test
+    fun `the event that finds a sink idle is handled, whatever comes before its coroutine runs`() {
+        assertEquals(listOf(0, 1, 2, 3, 4, 5), handledFromIdle(Overlap.QUEUE))
+        assertEquals(listOf(0, 5), handledFromIdle(Overlap.LATEST))
+        assertEquals(listOf(0), handledFromIdle(Overlap.SKIP))
+    }
 
     @Test
     fun `QUEUE keeps every event offered while the handler runs`() {
