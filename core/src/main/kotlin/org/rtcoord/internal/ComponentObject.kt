@@ -9,8 +9,6 @@ import java.util.concurrent.atomic.AtomicLong
 import kotlinx.coroutines.async
 import kotlinx.coroutines.flow.MutableStateFlow
 import kotlinx.coroutines.flow.StateFlow
-import kotlinx.coroutines.sync.Mutex
-import kotlinx.coroutines.sync.withLock
 import kotlinx.coroutines.withContext
 import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
@@ -27,7 +25,8 @@ import org.rtcoord.summary
  * it wrote); different components refresh in parallel; readers take [snapshot]'s value without waiting.
  */
 internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
-    private val refreshing = Mutex()
+    /** One read at a time, in the order they were asked for. */
+    private val reads = TurnLock()
     private val current = MutableStateFlow<ComponentSnapshot?>(null)
     private val currentSummary = MutableStateFlow<ComponentSummary?>(null)
 
@@ -62,12 +61,15 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
         synchronized(this) { hosts = hosts + (manager.path to manager) }
     }
 
-    /** The nodes at which the tree shows this component, by path, in the order they were found. */
-    private val nodes = LinkedHashMap<RtcPath, ComponentNode>()
+    /**
+     * The nodes at which the tree shows this component, one per path, in the order they were found: replaced whole
+     * under the lock, as nearly every component is shown at one path.
+     */
+    @Volatile private var nodes: List<ComponentNode> = emptyList()
 
     /** The paths at which the tree shows this component, in the order they were found. */
     val knownPaths: List<RtcPath>
-        get() = synchronized(nodes) { nodes.keys.toList() }
+        get() = nodes.map { it.path }
 
     /**
      * The one node that stands for the component in every event, log line and result: the first found in a naming
@@ -75,7 +77,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
      * The latest node at that path, since a listing may make it anew.
      */
     val canonical: ComponentNode?
-        get() = synchronized(nodes) { preferred(nodes.values) }
+        get() = preferred(nodes)
 
     /**
      * The node of [found] (some of this component's nodes, as one walk found them) that stands for it: the [canonical]
@@ -83,7 +85,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
      */
     fun canonicalAmong(found: Collection<ComponentNode>): ComponentNode {
         val paths = found.mapTo(HashSet()) { it.path }
-        return synchronized(nodes) { preferred(nodes.values.filter { it.path in paths }) } ?: found.first()
+        return preferred(nodes.filter { it.path in paths }) ?: found.first()
     }
 
     private fun preferred(nodes: Collection<ComponentNode>): ComponentNode? =
@@ -91,7 +93,15 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
 
     /** Records that the tree shows this component at [node]'s path. */
     fun knownAs(node: ComponentNode) {
-        synchronized(nodes) { nodes[node.path] = node }
+        synchronized(this) {
+            val index = nodes.indexOfFirst { it.path == node.path }
+            nodes =
+                when {
+                    nodes.isEmpty() -> listOf(node)
+                    index < 0 -> nodes + node
+                    else -> nodes.toMutableList().also { it[index] = node }
+                }
+        }
     }
 
     val snapshot: StateFlow<ComponentSnapshot?>
@@ -129,7 +139,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
      * By context handle, the stamp of the read behind the state published: a state read that started earlier never
      * replaces it. Guarded by [publishing], which makes each publication one step.
      */
-    private val stateStamps = HashMap<Int, Long>()
+    private val stateStamps = HandleMap<Long>()
     private val publishing = Any()
 
     /** The stamp of a read of states starting now; pass it to [publishStates] with what it found. */
@@ -138,7 +148,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     /** Reads the component again (its configuration too, once that was read) and publishes the result. */
     suspend fun refresh(subject: String): ComponentSnapshot {
         val arrived = stamps.get()
-        return refreshing.withLock {
+        return reads.withTurn {
             // Only a read that started after this caller arrived is as fresh as its own would be: one that
             // started before may have missed what the caller just wrote.
             current.value.takeIf { lastRead > arrived }
@@ -204,7 +214,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
         return survey.summary(this) { readSummary(subject) }.summary
     }
 
-    private suspend fun readSummary(subject: String): ComponentReader.SummaryReading = refreshing.withLock {
+    private suspend fun readSummary(subject: String): ComponentReader.SummaryReading = reads.withTurn {
         withContext(core.remote.callDispatcher()) { ComponentReader(core.remote, subject, ref).readSummary() }
             .also { currentSummary.value = it.summary }
     }
@@ -215,7 +225,7 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
      */
     suspend fun loadConfiguration(subject: String): ConfigurationSnapshot {
         loaded(subject)
-        return refreshing.withLock {
+        return reads.withTurn {
             readConfiguration(ComponentReader(core.remote, subject, ref)).also { settings ->
                 synchronized(publishing) { current.value = current.value!!.copy(configuration = settings) }
             }

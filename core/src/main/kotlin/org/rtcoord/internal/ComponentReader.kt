@@ -114,7 +114,7 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
 
     private fun portsOf(p: ComponentProfile): List<PortSnapshot> =
         p.port_profiles.map { port ->
-            val properties = port.properties.toMap()
+            val properties = port.properties.toMap(valuesRepeat = true)
             PortSnapshot(
                 name = port.name.removePrefix("${p.instance_name}.").shared(),
                 fullName = port.name,
@@ -222,9 +222,9 @@ internal class ComponentReader(private val remote: Remote, private val subject: 
  * A name-value list as strings, in its order ([NameValueMap]); values that are not strings are shown as CORBA prints
  * them. Names and short values are interned: every component and port repeats them (`dataport.data_type`,
  * `IDL:RTC/TimedLong:1.0`), and each read unmarshals new copies, which the tree kept for as long as it watched the
- * component.
+ * component. [valuesRepeat] says the whole list of values repeats too, as a port's does ([NameValueMap.of]).
  */
-internal fun Array<NameValue>.toMap(): Map<String, String> {
+internal fun Array<NameValue>.toMap(valuesRepeat: Boolean = false): Map<String, String> {
     val names = ArrayList<String>(size)
     val values = ArrayList<String>(size)
     for (entry in this) {
@@ -238,7 +238,7 @@ internal fun Array<NameValue>.toMap(): Map<String, String> {
             else -> values[at] = value
         }
     }
-    return NameValueMap(names.toTypedArray(), values.toTypedArray())
+    return NameValueMap.of(names, values, valuesRepeat)
 }
 
 /**

@@ -47,9 +47,9 @@ internal class ComponentMonitor(
     private val log = LoggerFactory.getLogger(ComponentMonitor::class.java)
     private val subject = node.path.toString()
     private val registrations = MonitorRegistrations()
-    /** Work not yet taken, guarded by itself. */
-    private val inbox = ArrayDeque<Work>()
-    /** Whether a coroutine takes the [inbox]'s work; guarded by the inbox. */
+    /** Work not yet taken; guarded by the monitor, and made anew at each batch taken, so an idle one holds no array. */
+    private var inbox = ArrayDeque<Work>()
+    /** Whether a coroutine takes the [inbox]'s work; guarded by the monitor. */
     private var working = false
     /** Whether the monitor was stopped: it takes no more work, and its coroutine ends once the inbox is empty. */
     private var stopping = false
@@ -66,7 +66,7 @@ internal class ComponentMonitor(
     private val link = ObserverLink(core, host, subject, node.component)
     private val stopped = CompletableFuture<Unit>()
     /** Work that arrived during a read and was not taken with it: the next batch's. */
-    private val carried = ArrayList<Work>()
+    private var carried = ArrayList<Work>(0)
     private val fsm = ObservedFsmState(node)
     private val probe: StateProbe? =
         core.requests
@@ -117,7 +117,7 @@ internal class ComponentMonitor(
     /** Stops watching: polling ends and the observer is detached, soon, by the monitor's coroutine. */
     fun stop() {
         val start =
-            synchronized(inbox) {
+            synchronized(this) {
                 stopping = true
                 !working.also { working = true }
             }
@@ -127,7 +127,7 @@ internal class ComponentMonitor(
     /** Hands [work] to the monitor's coroutine, starting one if none runs; false once the monitor was stopped. */
     private fun send(work: Work): Boolean {
         val start =
-            synchronized(inbox) {
+            synchronized(this) {
                 if (stopping) return false
                 inbox.addLast(work)
                 !working.also { working = true }
@@ -180,10 +180,10 @@ internal class ComponentMonitor(
      * stopped.
      */
     private fun nextBatch(): List<Work>? {
-        val batch = ArrayList(carried).also { carried.clear() }
-        synchronized(inbox) {
+        val batch = carried.also { carried = ArrayList(0) }
+        synchronized(this) {
             batch += inbox
-            inbox.clear()
+            inbox = ArrayDeque()
             if (batch.isEmpty() && !stopping) {
                 working = false
                 return null
@@ -205,6 +205,11 @@ internal class ComponentMonitor(
     }
 
     private suspend fun handle(batch: List<Work>) {
+        // A timer that fired is done with: its future, and the work it holds, need not wait for the next one.
+        for (work in batch) {
+            val fired = work.input as? WatchInput.Fired ?: continue
+            if (armed[fired.timer]?.isDone == true) armed.remove(fired.timer)
+        }
         watch.needs = registrations.needs(core.watcher.heartbeats.floor)
         val disagreed = !watch.agreed
         val decision = watch.decide(batch.map { it.input }, now())
@@ -303,7 +308,7 @@ internal class ComponentMonitor(
     private fun lateHints(): List<WatchInput.Hinted> {
         val hints = ArrayList<WatchInput.Hinted>()
         while (true) {
-            val item = synchronized(inbox) { inbox.removeFirstOrNull() } ?: return hints
+            val item = synchronized(this) { inbox.removeFirstOrNull() } ?: return hints
             val hinted = item.input as? WatchInput.Hinted
             if (hinted != null && hinted.hint.kind == HintKind.RTC_STATUS) hints += hinted else carried += item
         }

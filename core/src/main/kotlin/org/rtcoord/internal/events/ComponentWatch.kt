@@ -45,7 +45,7 @@ import org.rtcoord.UnreachableException
  * was armed for. A hold's timers are forgotten when the hold ends: one of them firing later is ignored, and the next
  * hold arms its own, so an earlier hold's limit never cuts a later hold short.
  */
-internal class ComponentWatch(private val node: ComponentNode, now: Long, private val timing: Timing = Timing()) {
+internal class ComponentWatch(private val node: ComponentNode, now: Long, private val timing: Timing = DEFAULT_TIMING) {
     /** The machine's durations, in milliseconds. */
     class Timing(
         /** How long hints and reads may disagree before a read decides: hints late under load still count. */
@@ -327,7 +327,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         if (held.isEmpty()) {
             // A marker sent for a hold that is over is no longer awaited, and the hold's timers end with it.
             marker = null
-            deadlines.keys -= HOLD_TIMERS
+            HOLD_TIMERS.forEach(deadlines::remove)
         } else {
             val since = held.minOf { it.since }
             arm(Timer.HOLD_LIMIT, since + timing.holdLimitMillis - now)
@@ -378,3 +378,6 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         private val HOLD_TIMERS = setOf(Timer.SETTLED, Timer.HOLD_LIMIT)
     }
 }
+
+/** The timing of every watch but tests': one for all, as ten thousand watches would each keep a copy. */
+private val DEFAULT_TIMING = ComponentWatch.Timing()

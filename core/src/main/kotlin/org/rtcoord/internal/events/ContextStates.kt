@@ -4,6 +4,7 @@ import org.rtcoord.ComponentNode
 import org.rtcoord.ComponentSnapshot
 import org.rtcoord.LifeCycle
 import org.rtcoord.StateChanged
+import org.rtcoord.internal.HandleMap
 
 /**
  * One watched component's lifecycle in each of its execution contexts: a [StateTracker] per context handle, fed the
@@ -14,31 +15,35 @@ internal class ContextStates(
     private val holdLimitMillis: Long,
     private val settleMillis: Long,
 ) {
-    private val trackers = HashMap<Int, StateTracker>()
+    private val trackers = HandleMap<StateTracker>()
 
     /** The state in each context as the published events tell it, by handle. */
     val published: Map<Int, LifeCycle>
-        get() = trackers.map { (handle, tracker) -> handle to tracker.confirmed }.toMap()
+        // A list's toMap() makes a map of one entry for the common component of one context: the model keeps it.
+        get() =
+            ArrayList<Pair<Int, LifeCycle>>(trackers.size)
+                .apply { trackers.forEach { handle, tracker -> add(handle to tracker.confirmed) } }
+                .toMap()
 
     /** When the oldest disagreement between hints and reads began; null when they agree in every context. */
     val disagreedSince: Long?
-        get() = trackers.values.mapNotNull { (it.phase as? ContextPhase.Unconfirmed)?.since }.minOrNull()
+        get() = trackers.values().mapNotNull { (it.phase as? ContextPhase.Unconfirmed)?.since }.minOrNull()
 
     /** Whether, somewhere, hints lead to a state the reads have not found yet. */
     val hintsLead: Boolean
-        get() = trackers.values.any { it.phase is ContextPhase.Leading }
+        get() = trackers.values().any { it.phase is ContextPhase.Leading }
 
     /** The deactivations held, one per context that holds one. */
     val held: List<ContextPhase.Held>
-        get() = trackers.values.mapNotNull { it.phase as? ContextPhase.Held }
+        get() = trackers.values().mapNotNull { it.phase as? ContextPhase.Held }
 
     /** Whether hints and reads agree in every context, and nothing is held. */
     val agreed: Boolean
-        get() = trackers.values.all { it.phase == ContextPhase.Agreed }
+        get() = trackers.values().all { it.phase == ContextPhase.Agreed }
 
     /** The hints sent before the latest marker have all been taken: held deactivations end once settled. */
     fun flushed() {
-        trackers.values.forEach(StateTracker::flushed)
+        trackers.values().forEach(StateTracker::flushed)
     }
 
     /**
@@ -77,7 +82,7 @@ internal class ContextStates(
                 events += StateChanged(node, context.handle, from, to)
             }
         }
-        trackers.keys.retainAll(snapshot.contexts.map { it.handle }.toSet())
+        trackers.retain { handle -> snapshot.contexts.any { it.handle == handle } }
         return events
     }
 }

@@ -94,7 +94,8 @@ internal class Watcher(private val core: TreeCore) {
         val configuration = types == null || types.any { it in CONFIGURATION_EVENTS }
         val statesOnly = types != null && types.all { it in STATE_EVENTS }
         val traffic = types != null && PortTraffic::class.java in types
-        val releases = mutableListOf<() -> Unit>()
+        // One for a component; a directory's grows as its listings find components.
+        val releases = ArrayList<() -> Unit>(1)
         if (types == null || types.any { it.isAssignableFrom(LogRecord::class.java) }) {
             releases += core.logs.add(sink, target)
             // Records come from the log inputs, not from the components: hearing them alone watches nothing.
