@@ -1,6 +1,7 @@
 package org.rtcoord.dsl.internal
 
 import kotlinx.coroutines.CoroutineScope
+import kotlinx.coroutines.CoroutineStart
 import kotlinx.coroutines.channels.Channel
 import kotlinx.coroutines.launch
 import org.rtcoord.EventOptions
@@ -23,7 +24,9 @@ internal class HandlerQueue<E>(scope: CoroutineScope, overlap: Overlap, private 
         )
 
     init {
-        scope.launch {
+        // Undispatched, so it waits in its first receive before this returns: an event offered to the idle handler is
+        // its own then, and a burst that comes before the coroutine gets a thread neither conflates nor skips it.
+        scope.launch(start = CoroutineStart.UNDISPATCHED) {
             for (event in pending) {
                 catchFailure({ handler(event) }) { e ->
                     logger.warn("handler failed on {}: {}", event, e.toString(), e)
