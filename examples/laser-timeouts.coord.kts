@@ -52,8 +52,15 @@ suspend fun Reaction.localiseFromOdometry() = switching.withLock {
     if (stateOf(laserLocaliser) == ACTIVE && !attempt { laserLocaliser.run { disconnectAll(); deactivate() } })
         log("laser_localise0 could not be stopped: the switch goes on without it")
     if (state == null) {
-        connect("odometry0.rtc:odo", localiser.port("odo"))
-        connect("gyro0.rtc:gyro", localiser.port("gyro"))
+        try {
+            connect("odometry0.rtc:odo", localiser.port("odo"))
+            connect("gyro0.rtc:gyro", localiser.port("gyro"))
+        } catch (failure: RtcException) {
+            // One that exited as it was being connected is replaced by the rule for exits, once this switch is over.
+            if (stateOf(localiser) != null) throw failure
+            log("$localiser exited as it was being connected: it is replaced")
+            return@withLock
+        }
     }
     // One that fails as it starts is reset and started again, once; one broken for good hands back.
     if (!attempt { localiser.activate() } && !attempt { localiser.run { reset(); activate() } }) localiseFromLaser()
