@@ -9,7 +9,7 @@ import org.rtcoord.dsl.internal.DataLiveness.Finding
 class DataLivenessTest {
     @Test
     fun `silence is reported once per silence, only after the limit, and a sample re-arms it`() {
-        val liveness = DataLiveness(tappedAt = 0, silenceMillis = 500, minRate = null)
+        val liveness = DataLiveness(silenceMillis = 500, minRate = null).apply { tapped(0) }
         liveness.sample(100)
         assertEquals(Finding.NOTHING, liveness.check(599, active = true))
         assertEquals(Finding.Silent(500), liveness.check(600, active = true))
@@ -21,7 +21,7 @@ class DataLivenessTest {
 
     @Test
     fun `time while the component is not ACTIVE does not count`() {
-        val liveness = DataLiveness(tappedAt = 0, silenceMillis = 500, minRate = null)
+        val liveness = DataLiveness(silenceMillis = 500, minRate = null).apply { tapped(0) }
         assertEquals(Finding.NOTHING, liveness.check(2000, active = false))
         assertEquals(
             Finding.NOTHING,
@@ -33,7 +33,7 @@ class DataLivenessTest {
 
     @Test
     fun `a rate below the floor over the last second is reported once, after a full window, and re-armed when it recovers`() {
-        val liveness = DataLiveness(tappedAt = 0, silenceMillis = null, minRate = 5.0)
+        val liveness = DataLiveness(silenceMillis = null, minRate = 5.0).apply { tapped(0) }
         for (t in 0L until 1000L step 100) liveness.sample(t)
         assertEquals(Finding.NOTHING, liveness.check(999, active = true), "ten a second")
         for (t in 1000L until 2000L step 500) liveness.sample(t)
@@ -46,7 +46,7 @@ class DataLivenessTest {
 
     @Test
     fun `nothing counts before the port is tapped, and silence counts from each tap`() {
-        val liveness = DataLiveness(tappedAt = null, silenceMillis = 500, minRate = 5.0)
+        val liveness = DataLiveness(silenceMillis = 500, minRate = 5.0)
         assertEquals(Finding.NOTHING, liveness.check(3000, active = true), "not tapped yet: nothing can arrive")
         liveness.tapped(3000)
         assertEquals(Finding.NOTHING, liveness.check(3499, active = true))

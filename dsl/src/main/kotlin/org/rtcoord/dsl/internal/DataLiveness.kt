@@ -9,15 +9,13 @@ package org.rtcoord.dsl.internal
  * back at its floor) ends it.
  */
 internal class DataLiveness(
-    /** When the port was tapped; null until it is ([tapped]). */
-    tappedAt: Long?,
     private val silenceMillis: Long?,
     private val minRate: Double?,
     private val windowMillis: Long = 1000,
 ) {
-    private var lastSample = tappedAt ?: 0
-    /** Since when silence and rate count; null until the port is tapped. */
-    private var countingSince: Long? = tappedAt
+    private var lastSample = 0L
+    /** Since when silence and rate count; null until the port is [tapped]. */
+    private var countingSince: Long? = null
     private val arrivals = ArrayDeque<Long>()
     private var silentReported = false
     private var slowReported = false

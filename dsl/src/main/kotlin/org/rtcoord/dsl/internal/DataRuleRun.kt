@@ -84,7 +84,7 @@ internal class DataRuleRun(
     private fun watchLiveness(): DataListener {
         val silence = (rule as? DataRule.Silence)?.limit
         val rate = (rule as? DataRule.RateBelow)?.rate
-        val liveness = DataLiveness(null, silence?.inWholeMilliseconds, rate).also { this.liveness = it }
+        val liveness = DataLiveness(silence?.inWholeMilliseconds, rate).also { this.liveness = it }
         val period = ((silence ?: 1000.milliseconds) / 5).coerceIn(10.milliseconds, 200.milliseconds)
         scope.launch {
             while (isActive) {
