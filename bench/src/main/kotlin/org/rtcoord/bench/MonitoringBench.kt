@@ -134,7 +134,7 @@ internal class MonitoringBench(private val options: BenchOptions, private val re
             val missed = tree.missedPollTicks - missedBefore
             val heartbeats =
                 tree.snapshot().components.mapNotNull { (it.watchMethod as? WatchMethod.Pushed)?.heartbeat }
-            val liveBytes = Heap.live()
+            val liveBytes = if (heapBefore != null) Heap.kept() else Heap.live()
             val live = liveBytes / Heap.MB
             subscriptions.forEach { it.cancel() }
             val cpuSamples = Samples(cpu, "% core")

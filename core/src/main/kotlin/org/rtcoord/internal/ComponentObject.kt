@@ -193,9 +193,10 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
                         states[context.handle]?.takeIf { stamp > (stateStamps[context.handle] ?: 0) }
                             ?: return@map context
                     stateStamps[context.handle] = stamp
-                    context.copy(state = state)
+                    if (state == context.state) context else context.copy(state = state)
                 }
-            show(latest.copy(contexts = contexts))
+            // A read that found every state as shown, as nearly every read does, changes nothing to show.
+            if (contexts.indices.any { contexts[it] !== latest.contexts[it] }) show(latest.copy(contexts = contexts))
         }
     }
 

@@ -1,6 +1,5 @@
 package org.rtcoord.internal.events
 
-import java.util.EnumMap
 import java.util.concurrent.CompletableFuture
 import java.util.concurrent.Future
 import java.util.concurrent.TimeUnit
@@ -62,7 +61,8 @@ internal class ComponentMonitor(
 
     // Owned by the worker coroutine.
     private val watch = ComponentWatch(node, now())
-    private val armed = EnumMap<ComponentWatch.Timer, Future<*>>(ComponentWatch.Timer::class.java)
+    /** The timer of each kind on its way, by the kind's ordinal: an array weighs half an empty map. */
+    private val armed = arrayOfNulls<Future<*>>(ComponentWatch.Timer.entries.size)
     private val link = ObserverLink(core, host, subject, node.component)
     private val stopped = CompletableFuture<Unit>()
     /** Work that arrived during a read and was not taken with it: the next batch's. */
@@ -195,7 +195,7 @@ internal class ComponentMonitor(
     /** Ends the monitor, stopped or failed: its timers and observer go. */
     private suspend fun end() {
         withContext(NonCancellable) {
-            armed.values.forEach { it.cancel(false) }
+            armed.forEach { it?.cancel(false) }
             timers.stop()
             probe?.close()
             link.detach()
@@ -208,7 +208,7 @@ internal class ComponentMonitor(
         // A timer that fired is done with: its future, and the work it holds, need not wait for the next one.
         for (work in batch) {
             val fired = work.input as? WatchInput.Fired ?: continue
-            if (armed[fired.timer]?.isDone == true) armed.remove(fired.timer)
+            if (armed[fired.timer.ordinal]?.isDone == true) armed[fired.timer.ordinal] = null
         }
         watch.needs = registrations.needs(core.watcher.heartbeats.floor)
         val disagreed = !watch.agreed
@@ -284,7 +284,7 @@ internal class ComponentMonitor(
      */
     private suspend fun takeStates(states: Map<Int, LifeCycle>, stamp: Long) {
         node.component.publishStates(states, stamp)
-        carryOut(watch.statesRead(states, now(), lateHints()))
+        carryOut(watch.statesRead(states, now(), lateHints(), node.component.snapshot.value))
     }
 
     private suspend fun readAndPublish() {
@@ -321,7 +321,9 @@ internal class ComponentMonitor(
         // Each fires when the clock reads its time, not a millisecond later as a delay may; one armed anew replaces its
         // kind's.
         for ((timer, at) in outcome.timers) {
-            core.at(at) { send(Work(WatchInput.Fired(timer, at))) }?.let { armed.put(timer, it)?.cancel(false) }
+            val future = core.at(at) { send(Work(WatchInput.Fired(timer, at))) } ?: continue
+            armed[timer.ordinal]?.cancel(false)
+            armed[timer.ordinal] = future
         }
         for (change in outcome.changes) {
             when (change) {

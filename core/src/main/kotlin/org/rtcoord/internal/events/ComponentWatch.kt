@@ -1,6 +1,5 @@
 package org.rtcoord.internal.events
 
-import java.util.EnumMap
 import org.rtcoord.BecameZombie
 import org.rtcoord.ComponentFinalized
 import org.rtcoord.ComponentNode
@@ -75,8 +74,11 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
     private val states = ContextStates(node, timing.holdLimitMillis, timing.settleMillis)
     private val liveness = ComponentLiveness(now)
     private val arrangement = WatchArrangement()
-    /** The time each pending timer was armed for. */
-    private val deadlines = EnumMap<Timer, Long>(Timer::class.java)
+    /**
+     * The time each pending timer was armed for, by the timer's ordinal; [UNSET] when it is not. An array: a map of
+     * timers weighed 24 bytes more in each watched component with no timer pending, and a boxed number per timer set.
+     */
+    private val deadlines = LongArray(Timer.entries.size) { UNSET }
     private var markers = 0L
     /** The wait of the latest [Timer.RECHECK] while hints lead the reads; 0 once they no longer do. */
     private var recheckDelay = 0L
@@ -130,7 +132,8 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
                 is WatchInput.Probed -> if (input.epoch == epoch) probed = input else tick()
                 // A timer no longer waited for (an ended hold's) tells nothing.
                 is WatchInput.Fired ->
-                    if (deadlines.remove(input.timer, input.at)) {
+                    if (deadlines[input.timer.ordinal] == input.at) {
+                        deadlines[input.timer.ordinal] = UNSET
                         when (input.timer) {
                             Timer.RECHECK -> handles += every
                             Timer.GRACE -> if (states.disagreedSince != null) readAll = true
@@ -199,17 +202,31 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         )
     }
 
-    /** A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile. */
-    fun statesRead(found: Map<Int, LifeCycle>, now: Long, late: List<WatchInput.Hinted>): WatchOutcome {
+    /**
+     * A read of the states alone found [found] (by handle) at [now]; [late] are the hints that came meanwhile.
+     * [published] is what the tree shows of the component since: kept instead of an equal copy, as the last read is
+     * kept as long as the watch lives, beside the tree's own.
+     */
+    fun statesRead(
+        found: Map<Int, LifeCycle>,
+        now: Long,
+        late: List<WatchInput.Hinted>,
+        published: ComponentSnapshot? = null,
+    ): WatchOutcome {
         val previous = last ?: return WatchOutcome(untaken = late)
         liveness.answered(now)
         val snapshot =
-            previous.copy(
-                contexts =
-                    previous.contexts.map { context ->
-                        found[context.handle]?.let { context.copy(state = it) } ?: context
-                    }
-            )
+            if (previous.contexts.none { context -> found[context.handle].let { it != null && it != context.state } })
+                previous
+            else
+                previous
+                    .copy(
+                        contexts =
+                            previous.contexts.map { context ->
+                                found[context.handle]?.let { context.copy(state = it) } ?: context
+                            }
+                    )
+                    .let { read -> published?.takeIf { it == read } ?: read }
         last = snapshot
         epoch++
         return reconcile(snapshot, snapshot, now, late)
@@ -307,9 +324,9 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val events = states.read(previous, snapshot, now, timing.graceMillis, hintsExpected = arrangement.observed)
         val timers = ArrayList<Pair<Timer, Long>>()
         fun arm(timer: Timer, after: Long) {
-            if (timer in deadlines) return
+            if (deadlines[timer.ordinal] != UNSET) return
             val at = now + after.coerceAtLeast(0)
-            deadlines[timer] = at
+            deadlines[timer.ordinal] = at
             timers += timer to at
         }
         // A late hint may lead past what the read found: read again now rather than after the grace period.
@@ -320,14 +337,14 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         recheckIfHintsLead(::arm)
         if (confirm) {
             // The latest attachment's confirmation replaces an earlier one's, due before it.
-            deadlines -= Timer.CONFIRM
+            deadlines[Timer.CONFIRM.ordinal] = UNSET
             arm(Timer.CONFIRM, timing.graceMillis)
         }
         val held = states.held
         if (held.isEmpty()) {
             // A marker sent for a hold that is over is no longer awaited, and the hold's timers end with it.
             marker = null
-            HOLD_TIMERS.forEach(deadlines::remove)
+            HOLD_TIMERS.forEach { deadlines[it.ordinal] = UNSET }
         } else {
             val since = held.minOf { it.since }
             arm(Timer.HOLD_LIMIT, since + timing.holdLimitMillis - now)
@@ -354,7 +371,7 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
             recheckDelay = 0
             return
         }
-        if (Timer.RECHECK in deadlines) return
+        if (deadlines[Timer.RECHECK.ordinal] != UNSET) return
         recheckDelay =
             if (recheckDelay == 0L) timing.firstRecheckMillis else minOf(recheckDelay * 2, timing.graceMillis)
         arm(Timer.RECHECK, recheckDelay)
@@ -373,6 +390,9 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
 
         /** A beat is overdue a tenth of it late: heartbeats come on time to within a few milliseconds. */
         private const val OVERDUE_FRACTION = 10
+
+        /** A timer's deadline while it is not set. */
+        private const val UNSET = Long.MIN_VALUE
 
         /** The timers of a hold, which end with it. */
         private val HOLD_TIMERS = setOf(Timer.SETTLED, Timer.HOLD_LIMIT)

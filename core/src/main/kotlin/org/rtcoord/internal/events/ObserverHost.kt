@@ -22,8 +22,15 @@ internal class ObserverHost(orb: ORB, private val inbound: InboundConnections?, 
 
     /** An observer attached (or about to be) to one component. */
     inner class Observer internal constructor(val flavour: ObserverFlavour, servant: Servant) {
-        /** The service profile id; the prefix marks observers this library registered. */
-        val profileId: String = PROFILE_PREFIX + UUID.randomUUID()
+        private val profileUuid = UUID.randomUUID()
+
+        /**
+         * The service profile id; the prefix marks observers this library registered. Made when asked for, to attach or
+         * detach: kept as text, it weighed 64 bytes more for as long as the component is watched.
+         */
+        val profileId: String
+            get() = PROFILE_PREFIX + profileUuid
+
         private val served = poa.serve(servant)
         val reference: org.omg.CORBA.Object
             get() = served.reference

@@ -7,6 +7,7 @@ import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertInstanceOf
 import org.junit.jupiter.api.Assertions.assertNotNull
 import org.junit.jupiter.api.Assertions.assertNull
+import org.junit.jupiter.api.Assertions.assertSame
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
 import org.junit.jupiter.api.TestInstance
@@ -85,6 +86,23 @@ class ComponentWatchTest {
             changed(INACTIVE to ACTIVE),
             stateEvents(watch.statesRead(mapOf(0 to ACTIVE), 11, emptyList()).events),
         )
+    }
+
+    @Test
+    fun `a read of states keeps one snapshot per component, its last when nothing changed, else the tree's`() {
+        val watch = watching(INACTIVE)
+        val last = watch.last
+        watch.statesRead(mapOf(0 to INACTIVE), 10, emptyList(), published = found(INACTIVE))
+        assertSame(last, watch.last, "nothing changed: no copy")
+
+        watch.decide(listOf(lifecycle("ACTIVE:0", 20)), 20)
+        val published = found(ACTIVE)
+        watch.statesRead(mapOf(0 to ACTIVE), 21, emptyList(), published)
+        assertSame(published, watch.last, "the tree shows the same: its snapshot, not a copy")
+
+        val elsewhere = found(ERROR)
+        watch.statesRead(mapOf(0 to INACTIVE), 30, emptyList(), elsewhere)
+        assertEquals(INACTIVE, watch.last!!.contexts.single().state, "the read, not what the tree shows")
     }
 
     @Test
