@@ -68,6 +68,21 @@ public class ComponentSnapshot(
             configuration,
         )
 
+    /**
+     * This snapshot with each context in the state [stateOf] gives it (null: as it is), asked once per context; this
+     * very snapshot when no state changes, as nearly every read of the states finds.
+     */
+    @JvmSynthetic
+    internal fun withStates(stateOf: (ContextSnapshot) -> LifeCycle?): ComponentSnapshot {
+        var changed = false
+        val updated = contexts.map { context ->
+            val state = stateOf(context)
+            if (state == null || state == context.state) context
+            else context.copy(state = state).also { changed = true }
+        }
+        return if (changed) copy(contexts = updated) else this
+    }
+
     override fun fields(): ValueFields =
         ValueFields(
             "instanceName" to instanceName,

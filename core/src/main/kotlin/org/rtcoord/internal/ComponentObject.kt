@@ -187,16 +187,13 @@ internal class ComponentObject(private val core: TreeCore, val ref: RTObject) {
     fun publishStates(states: Map<Int, LifeCycle>, stamp: Long) {
         synchronized(publishing) {
             val latest = current.value ?: return
-            val contexts =
-                latest.contexts.map { context ->
-                    val state =
-                        states[context.handle]?.takeIf { stamp > (stateStamps[context.handle] ?: 0) }
-                            ?: return@map context
-                    stateStamps[context.handle] = stamp
-                    if (state == context.state) context else context.copy(state = state)
-                }
+            val updated = latest.withStates { context ->
+                states[context.handle]
+                    ?.takeIf { stamp > (stateStamps[context.handle] ?: 0) }
+                    ?.also { stateStamps[context.handle] = stamp }
+            }
             // A read that found every state as shown, as nearly every read does, changes nothing to show.
-            if (contexts.indices.any { contexts[it] !== latest.contexts[it] }) show(latest.copy(contexts = contexts))
+            if (updated !== latest) show(updated)
         }
     }
 

@@ -216,17 +216,9 @@ internal class ComponentWatch(private val node: ComponentNode, now: Long, privat
         val previous = last ?: return WatchOutcome(untaken = late)
         liveness.answered(now)
         val snapshot =
-            if (previous.contexts.none { context -> found[context.handle].let { it != null && it != context.state } })
-                previous
-            else
-                previous
-                    .copy(
-                        contexts =
-                            previous.contexts.map { context ->
-                                found[context.handle]?.let { context.copy(state = it) } ?: context
-                            }
-                    )
-                    .let { read -> published?.takeIf { it == read } ?: read }
+            previous
+                .withStates { found[it.handle] }
+                .let { read -> if (read !== previous && published == read) published else read }
         last = snapshot
         epoch++
         return reconcile(snapshot, snapshot, now, late)
