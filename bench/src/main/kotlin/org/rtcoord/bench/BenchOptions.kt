@@ -34,6 +34,12 @@ internal data class BenchOptions(
     val processWarmups: Int,
     /** Timed runs of each command at size N. */
     val processRepetitions: (Int) -> Int,
+    /**
+     * Most components read by untimed library discoveries before the timed ones, if the JIT is not quiet sooner: a JVM
+     * that still compiles the discovery path is not the warm one the row is about.
+     */
+    val libraryWarmUpLimit: Int,
+    /** Untimed runs before the timed ones of what rtctree, the simulation and the test runner time. */
     val libraryWarmups: Int,
     val libraryRepetitions: Int,
     val reactionChanges: Int,
@@ -114,6 +120,7 @@ in the same run). Results are printed, never stored.
                 discoverySizes = listOf(10, 100, 1000),
                 processWarmups = 1,
                 processRepetitions = { n -> if (n >= 1000) 5 else 10 },
+                libraryWarmUpLimit = 5000,
                 libraryWarmups = 3,
                 libraryRepetitions = 10,
                 reactionChanges = 1000,
@@ -140,6 +147,7 @@ in the same run). Results are printed, never stored.
                     profile = "quick",
                     discoverySizes = listOf(10, 100),
                     processRepetitions = { 3 },
+                    libraryWarmUpLimit = 2000,
                     libraryWarmups = 2,
                     libraryRepetitions = 5,
                     reactionChanges = 200,
@@ -171,6 +179,7 @@ in the same run). Results are printed, never stored.
                     discoverySizes = listOf(10),
                     processWarmups = 0,
                     processRepetitions = { 1 },
+                    libraryWarmUpLimit = 20,
                     libraryWarmups = 1,
                     libraryRepetitions = 2,
                     reactionChanges = 20,

@@ -90,8 +90,15 @@ internal class DiscoveryBench(
         }
 
     private suspend fun library(n: Int, address: String) {
-        repeat(options.libraryWarmups) { discover(n, address) }
-        val runs = List(options.libraryRepetitions) { discover(n, address) }
+        val limit = options.libraryWarmUpLimit / n
+        val warmed =
+            JitWarmUp(round = (WARM_UP_ROUND / n).coerceIn(1, limit.coerceAtLeast(1)), limit).make {
+                discover(n, address)
+            }
+        val timed = JitCompilation.during { List(options.libraryRepetitions) { discover(n, address) } }
+        val runs = timed.value
+        val jit =
+            "warm-up $warmed discoveries; then the JIT compiled for ${timed.compiledMillis ?: "?"} ms of the ${figure(timed.millis / 1000.0)} s timed"
         val ours = Samples.seconds(runs.map { it.total })
         val refreshOnly = Samples.seconds(runs.map { it.refresh })
         library[n] = ours
@@ -101,7 +108,7 @@ internal class DiscoveryBench(
             else "; read only ${incomplete.joinToString()} of $n components completely in ${incomplete.size} runs"
         val python = installation.peer("python")
         if (python == null) {
-            report.row(TREE_REFRESH, ours, missing.removePrefix("; "))
+            report.row(TREE_REFRESH, ours, "$jit$missing")
             report.row(REFRESH_ONLY, refreshOnly)
             report.skipped("rtctree", installation.peerMissing("python"))
             return
@@ -111,7 +118,7 @@ internal class DiscoveryBench(
         report.row(
             TREE_REFRESH,
             ours,
-            "${speedup(ours, full, "rtctree reading the same")}; ${speedup(ours, constructed, "RTCTree() alone")}$target$missing",
+            "${speedup(ours, full, "rtctree reading the same")}; ${speedup(ours, constructed, "RTCTree() alone")}$target; $jit$missing",
         )
         report.row(
             REFRESH_ONLY,
@@ -212,5 +219,8 @@ internal class DiscoveryBench(
         const val RTLS = "rtls -l -R"
         const val TREE_REFRESH = "rtcoord RtcTree.create + refresh"
         const val REFRESH_ONLY = "rtcoord refresh alone"
+
+        /** Components read by a round of the library's warm-up: about a second of discoveries. */
+        const val WARM_UP_ROUND = 500
     }
 }

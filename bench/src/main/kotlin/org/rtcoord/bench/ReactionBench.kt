@@ -47,11 +47,9 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
                         report.section(
                             "reaction: state change to callback start, $pushChanges changes by push, ${options.reactionChanges} by poll (fixtures in the bench JVM)"
                         )
-                        // Warmed up first, as every timed quantity here, and until the JIT is quiet: C2 still compiles
-                        // the
-                        // path after thousands of changes, and a change timed while it does waits for a core.
+                        // Warmed up first, as every timed quantity here, and until the JIT is quiet (JitWarmUp).
                         val warmUp =
-                            WarmUp(round = (pushChanges / 8).coerceAtLeast(1), limit = options.reactionWarmUpLimit)
+                            JitWarmUp(round = (pushChanges / 8).coerceAtLeast(1), limit = options.reactionWarmUpLimit)
                         val timed =
                             changes(
                                 tree,
@@ -127,7 +125,7 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
         maxPause: Duration,
         random: Random,
         aborts: Boolean = false,
-        warmUp: WarmUp? = null,
+        warmUp: JitWarmUp? = null,
     ): Changes {
         val arrivals = Channel<Pair<StateChanged, Long>>(Channel.UNLIMITED)
         val subscription =
@@ -170,26 +168,6 @@ internal class ReactionBench(private val options: BenchOptions, private val repo
             return Changes(timed.value, jit)
         } finally {
             subscription.cancel()
-        }
-    }
-
-    /**
-     * Untimed changes in rounds of [round], until two rounds in a row kept the JIT compiling for under 1% of their
-     * time, or [limit] changes were made.
-     */
-    private class WarmUp(val round: Int, val limit: Int) {
-        /** Makes changes with [change] until the JIT is quiet; returns how many it made. */
-        suspend fun make(change: suspend () -> Reaction): Int {
-            var made = 0
-            var quietRounds = 0
-            while (made < limit && quietRounds < 2) {
-                val changes = minOf(round, limit - made)
-                val stretch = JitCompilation.during { repeat(changes) { change() } }
-                made += changes
-                val quiet = stretch.compiledMillis?.let { it * 100 < stretch.millis } ?: false
-                quietRounds = if (quiet) quietRounds + 1 else 0
-            }
-            return made
         }
     }
 
