@@ -151,6 +151,40 @@ class LauncherIT {
         }
     }
 
+    @Test
+    fun `a lasting command asks a JVM new enough to give freed native memory back, and an older one nothing`(
+        @TempDir directory: Path
+    ) {
+        val launcher = launcherTree(directory).resolve("cli/src/dist/bin/rtcoord").toString()
+        // The JVM on the PATH is a link, as /usr/bin/java is, to a JDK's bin/java, whose release file says its version.
+        val jdk = Files.createDirectories(directory.resolve("jdk/bin")).parent
+        val java = jdk.resolve("bin/java")
+        val arguments = directory.resolve("java-called")
+        Files.writeString(java, "#!/bin/sh\nprintf '%s\\n' \"$@\" > '$arguments'\n")
+        Files.setPosixFilePermissions(java, PosixFilePermissions.fromString("rwxr-xr-x"))
+        val path = Files.createDirectories(directory.resolve("path"))
+        Files.createSymbolicLink(path.resolve("java"), java)
+        fun trims(javaVersion: String, vararg command: String): Boolean {
+            Files.writeString(jdk.resolve("release"), "IMPLEMENTOR=\"Test\"\nJAVA_VERSION=\"$javaVersion\"\n")
+            val run =
+                runProcess(
+                    listOf(launcher, *command),
+                    "$path:${System.getenv("PATH")}",
+                    mapOf("RTCOORD_CACHE" to directory.resolve("cache").toString()),
+                )
+            assertEquals(0, run.status, run.stderr)
+            return "-XX:TrimNativeHeapInterval=10000" in Files.readAllLines(arguments)
+        }
+
+        assertTrue(trims("17.0.9", "run", "supervisor.coord.kts"), "17.0.9 has the option")
+        assertTrue(trims("21.0.1", "watch", "/localhost"), "21.0.1 has it")
+        assertTrue(trims("25", "run", "supervisor.coord.kts"), "every JVM from 22 on has it")
+        assertTrue(!trims("17.0.8", "run", "supervisor.coord.kts"), "17.0.8 would refuse to start with it")
+        assertTrue(!trims("21", "watch", "/localhost"), "21 would refuse to start with it")
+        assertTrue(!trims("11.0.25", "run", "supervisor.coord.kts"), "11 would refuse to start with it")
+        assertTrue(!trims("17.0.15", "ls", "/localhost"), "a command over in a moment has nothing to give back")
+    }
+
     private fun version() = jar.fileName.toString().removePrefix("rtcoord-cli-").removeSuffix(".jar")
 
     /** [launcherTree] with its sources and jar made a while ago, so that an archive made now is newer than all. */
