@@ -90,9 +90,8 @@ internal class DiscoveryBench(
         }
 
     private suspend fun library(n: Int, address: String) {
-        val limit = options.libraryWarmUpLimit / n
         val warmed =
-            JitWarmUp(round = (WARM_UP_ROUND / n).coerceIn(1, limit.coerceAtLeast(1)), limit).make {
+            JitWarmUp(round = (WARM_UP_ROUND / n).coerceAtLeast(1), limit = options.libraryWarmUpLimit / n).make {
                 discover(n, address)
             }
         val timed = JitCompilation.during { List(options.libraryRepetitions) { discover(n, address) } }
