@@ -37,13 +37,7 @@ internal object CompilerProcess {
         // long as the coordinator runs (two of them in every `run` that had compiled its script).
         runInterruptible {
             val java = Path.of(System.getProperty("java.home"), "bin", "java").toString()
-            // The launcher's class archive flags name this JVM's archive, which the other must neither write nor map.
-            val options =
-                ManagementFactory.getRuntimeMXBean().inputArguments.filterNot {
-                    it.startsWith("-XX:ArchiveClassesAtExit") ||
-                        it.startsWith("-XX:SharedArchiveFile") ||
-                        it.startsWith("-D$PROPERTY=")
-                }
+            val options = compilerOptions(ManagementFactory.getRuntimeMXBean().inputArguments)
             val classPath =
                 listOf(System.getProperty("java.class.path"), if (CompilerJars.present) "" else CompilerJars.classPath)
                     .filter { it.isNotEmpty() }
@@ -80,6 +74,18 @@ internal object CompilerProcess {
                 Files.deleteIfExists(errors)
             }
         }
+
+    /**
+     * The compiler's JVM options, from this JVM's [options]: all but the launcher's class archive flags, which name
+     * this JVM's archive or the list of classes it is made from, for the other to neither write nor map, and the
+     * property that would make it compile apart in turn.
+     */
+    fun compilerOptions(options: List<String>): List<String> = options.filterNot {
+        it.startsWith("-XX:ArchiveClassesAtExit") ||
+            it.startsWith("-XX:DumpLoadedClassList") ||
+            it.startsWith("-XX:SharedArchiveFile") ||
+            it.startsWith("-D$PROPERTY=")
+    }
 
     /** The class the launcher runs. */
     private const val MAIN = "org.rtcoord.cli.MainKt"

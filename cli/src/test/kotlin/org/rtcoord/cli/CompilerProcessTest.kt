@@ -3,6 +3,7 @@ package org.rtcoord.cli
 import java.nio.file.Files
 import java.nio.file.Path
 import kotlinx.coroutines.runBlocking
+import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertNotNull
 import org.junit.jupiter.api.Assertions.assertNull
@@ -37,5 +38,19 @@ class CompilerProcessTest {
         assertNotNull(problems)
         assertTrue(problems!!.any { it.startsWith("$script:1:") && "nothing" in it }, "$problems")
         assertFalse(ScriptHost().isCached(script))
+    }
+
+    @Test
+    fun `the compiler's JVM gets this one's options but neither its class archive nor its list of classes`() {
+        val launcher =
+            listOf(
+                "-XX:TieredStopAtLevel=1",
+                "-XX:DumpLoadedClassList=/cache/cds/run.jsa.42.classes",
+                "-XX:SharedArchiveFile=/cache/cds/browse.jsa",
+                "-XX:ArchiveClassesAtExit=/cache/cds/browse.jsa.42",
+                "-Drtcoord.compile=apart",
+                "-XX:+UseSerialGC",
+            )
+        assertEquals(listOf("-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC"), CompilerProcess.compilerOptions(launcher))
     }
 }

@@ -16,8 +16,8 @@ import org.junit.jupiter.api.io.TempDir
 
 /**
  * The `./rtcoord` launcher of a checkout: it runs the built jar as it is, builds it first when a source is newer or it
- * is missing, and keeps a class archive for browsing commands. A class apart from [CliJarIT], so that the build's two
- * test JVMs run them side by side.
+ * is missing, and keeps class archives: one for browsing commands, one for each lasting command. A class apart from
+ * [CliJarIT], so that the build's two test JVMs run them side by side.
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class LauncherIT {
@@ -114,6 +114,42 @@ class LauncherIT {
         Files.delete(archive)
         Files.writeString(archive, "not an archive")
         assertEquals(ProcessRun(0, expected, ""), listing())
+        assertTrue(Files.notExists(directory.resolve("maven-called")))
+    }
+
+    @Test
+    fun `a lasting command archives the classes of its first run once it ends well, and maps only that archive after`(
+        @TempDir directory: Path
+    ) {
+        val tree = agedLauncherTree(directory)
+        val cache = directory.resolve("cache")
+        val loaded = directory.resolve("loaded.txt")
+        fun watch(vararg options: String, logged: Boolean = false) =
+            runProcess(
+                listOf(tree.resolve("rtcoord").toString(), "watch", *options, localisation.host),
+                fakeMaven(directory),
+                mapOf("RTCOORD_CACHE" to cache.toString()) +
+                    if (logged) mapOf("RTCOORD_JAVA_OPTIONS" to "-Xlog:class+load:file=$loaded") else emptyMap(),
+            )
+        fun archives() =
+            if (Files.notExists(cache.resolve("cds"))) emptyList()
+            else Files.list(cache.resolve("cds")).use { files -> files.map { it.fileName.toString() }.toList() }
+
+        assertEquals(2, watch("--for", "soon").status)
+        assertEquals(emptyList<String>(), archives(), "a command that failed makes no archive")
+        assertEquals(0, watch("--for", "1s").status)
+        val archive = archives().single()
+        assertTrue(archive.startsWith("watch") && archive.endsWith(".jsa"), "its own archive, whole: $archive")
+        val made = Files.getLastModifiedTime(cache.resolve("cds").resolve(archive))
+
+        assertEquals(0, watch("--for", "1s", logged = true).status)
+        assertEquals(listOf(archive), archives())
+        assertEquals(made, Files.getLastModifiedTime(cache.resolve("cds").resolve(archive)), "mapped, not made again")
+        // The command's classes and the JDK's come from that archive alone: no JDK archive is mapped beneath it.
+        val sources =
+            Files.readAllLines(loaded).associate { it.substringAfter("] ").substringBefore(" source: ") to it }
+        assertTrue("source: shared objects file" in sources.getValue("org.rtcoord.cli.WatchCommand"), "archived")
+        assertTrue(sources.values.none { "shared objects file (top)" in it }, "one archive, not two layers")
         assertTrue(Files.notExists(directory.resolve("maven-called")))
     }
 
