@@ -131,9 +131,7 @@ class LauncherIT {
                 mapOf("RTCOORD_CACHE" to cache.toString()) +
                     if (logged) mapOf("RTCOORD_JAVA_OPTIONS" to "-Xlog:class+load:file=$loaded") else emptyMap(),
             )
-        fun archives() =
-            if (Files.notExists(cache.resolve("cds"))) emptyList()
-            else Files.list(cache.resolve("cds")).use { files -> files.map { it.fileName.toString() }.toList() }
+        fun archives() = if (Files.notExists(cache.resolve("cds"))) emptyList() else archivesIn(cache)
 
         assertEquals(2, watch("--for", "soon").status)
         assertEquals(emptyList<String>(), archives(), "a command that failed makes no archive")
@@ -177,8 +175,7 @@ class LauncherIT {
             assertTrue(watch.waitFor(30, TimeUnit.SECONDS), "the launcher ended")
             assertTrue(!jvm.onExit().get(30, TimeUnit.SECONDS).isAlive, "the JVM ended with it")
             assertEquals(0, watch.exitValue(), "watch stops as on Ctrl-C")
-            val archives =
-                Files.list(cache.resolve("cds")).use { files -> files.map { it.fileName.toString() }.toList() }
+            val archives = archivesIn(cache)
             assertTrue(archives.none { it.contains(".jsa.") }, "no partial archive left: $archives")
         } finally {
             // An orphaned JVM is no longer the launcher's descendant.
@@ -220,6 +217,10 @@ class LauncherIT {
         assertTrue(!trims("11.0.25", "run", "supervisor.coord.kts"), "11 would refuse to start with it")
         assertTrue(!trims("17.0.15", "ls", "/localhost"), "a command over in a moment has nothing to give back")
     }
+
+    /** The names of the files in [cache]'s archive folder. */
+    private fun archivesIn(cache: Path): List<String> =
+        Files.list(cache.resolve("cds")).use { files -> files.map { it.fileName.toString() }.toList() }
 
     private fun version() = jar.fileName.toString().removePrefix("rtcoord-cli-").removeSuffix(".jar")
 
