@@ -49,6 +49,22 @@ class ListenAddressTest {
     }
 
     @Test
+    fun `a tree that only reads the system never listens, and closes`() {
+        LocalisationSystem().use { localisation ->
+            val tree = RtcTree(TreeConfig(listOf(localisation.naming.address), listenAddress = READER_ADDRESS))
+            fun listening() = listeningSockets().filter { it.address.hostAddress == READER_ADDRESS }
+            runBlocking {
+                val laser = tree.component(localisation.path("laser0.rtc"))
+                assertEquals(LifeCycle.ACTIVE, laser.state())
+                assertEquals(listOf("laser"), laser.snapshot().ports.map { it.name })
+            }
+            assertEquals(emptyList<Any>(), listening(), "no object served, so no root POA and no listening socket")
+            tree.close()
+            assertEquals(emptyList<Any>(), listening(), "closing made none either")
+        }
+    }
+
+    @Test
     fun `an address that is not this host's is refused when the tree is configured`() {
         val foreign = assertThrows(IllegalArgumentException::class.java) { TreeConfig(listenAddress = "203.0.113.7") }
         assertEquals("listen address: 203.0.113.7 is not an address of this host", foreign.message)
@@ -76,5 +92,10 @@ class ListenAddressTest {
                 .firstOrNull { it is Inet4Address }
         assumeTrue(own != null, "this host has no IPv4 address but loopback")
         assertEquals(own!!.hostAddress, ListenAddress.toward(own.hostAddress))
+    }
+
+    private companion object {
+        /** An address of this host that no other test listens on. */
+        const val READER_ADDRESS = "127.0.0.3"
     }
 }

@@ -3,7 +3,6 @@ package org.rtcoord.internal
 import java.util.concurrent.atomic.AtomicInteger
 import kotlinx.coroutines.CoroutineScope
 import kotlinx.coroutines.launch
-import org.omg.CORBA.ORB
 import org.omg.CORBA.portable.InputStream
 import org.omg.CORBA.portable.InvokeHandler
 import org.omg.CORBA.portable.ObjectImpl
@@ -22,8 +21,8 @@ import org.omg.PortableServer.Servant
  *
  * Only a JacORB ORB offers it: [supports] says whether a reference can be reached this way.
  */
-internal class AsyncRequests(orb: ORB, private val scope: CoroutineScope) {
-    private val poa = RandomIdPoa(orb, "rtcoord-replies", singleThread = false)
+internal class AsyncRequests(rootPoa: () -> POA, private val scope: CoroutineScope) {
+    private val poa = RandomIdPoa(rootPoa, "rtcoord-replies", singleThread = false)
 
     /** Whether requests to [target] can be sent through here: it is a JacORB reference. */
     fun supports(target: org.omg.CORBA.Object): Boolean =

@@ -6,7 +6,6 @@ import java.util.UUID
 import java.util.concurrent.ConcurrentHashMap
 import org.omg.CORBA.LocalObject
 import org.omg.CORBA.OBJECT_NOT_EXIST
-import org.omg.CORBA.ORB
 import org.omg.CORBA.Policy
 import org.omg.CORBA.portable.InputStream
 import org.omg.CORBA.portable.InvokeHandler
@@ -14,7 +13,6 @@ import org.omg.CORBA.portable.OutputStream
 import org.omg.CORBA.portable.ResponseHandler
 import org.omg.PortableServer.IdAssignmentPolicyValue
 import org.omg.PortableServer.POA
-import org.omg.PortableServer.POAHelper
 import org.omg.PortableServer.RequestProcessingPolicyValue
 import org.omg.PortableServer.Servant
 import org.omg.PortableServer.ServantLocator
@@ -23,20 +21,24 @@ import org.omg.PortableServer.ServantRetentionPolicyValue
 import org.omg.PortableServer.ThreadPolicyValue
 
 /**
- * A POA of the tree's ORB, created on first use, whose objects get random ids (16 bytes from a secure generator), so
- * only whoever was handed a reference can reach its object. [singleThread] makes one thread deliver every call, in the
- * order they came (a multi-threaded POA reorders oneway calls).
+ * A POA under the tree's ORB's [rootPoa], created on first use, whose objects get random ids (16 bytes from a secure
+ * generator), so only whoever was handed a reference can reach its object. [singleThread] makes one thread deliver
+ * every call, in the order they came (a multi-threaded POA reorders oneway calls).
  *
  * The POA keeps no map of its own (`NON_RETAIN`): each call finds its servant in [servants]. A retaining JacORB POA
  * runs a thread of its own for the life of the ORB to take deactivated objects out of its map, and its entries weigh
  * more than one small key per object; a coordinator serves an observer for each component it watches.
  */
-internal class RandomIdPoa(private val orb: ORB, private val name: String, private val singleThread: Boolean) {
+internal class RandomIdPoa(
+    private val rootPoa: () -> POA,
+    private val name: String,
+    private val singleThread: Boolean,
+) {
     private val random = SecureRandom()
     private val servants = ConcurrentHashMap<ObjectKey, Servant>()
 
     private val poa: POA by lazy {
-        val root = POAHelper.narrow(orb.resolve_initial_references("RootPOA"))
+        val root = rootPoa()
         root.the_POAManager().activate()
         val policies =
             listOfNotNull(

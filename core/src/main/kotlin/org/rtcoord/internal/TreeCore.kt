@@ -74,7 +74,7 @@ internal class TreeCore(val config: TreeConfig, val nameServers: () -> List<Name
     val logs = LogRecords(this)
 
     /** Requests whose replies no thread waits for; made on first use, when the ORB has started. */
-    val requests by lazy { AsyncRequests(orb.orb, scope) }
+    val requests by lazy { AsyncRequests(orb::rootPoa, scope) }
 
     /** Poll ticks that found the previous one still waiting and were folded into it (see [RtcTree.missedPollTicks]). */
     val missedPollTicks = AtomicLong()

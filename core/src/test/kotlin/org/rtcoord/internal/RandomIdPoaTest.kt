@@ -26,13 +26,15 @@ class RandomIdPoaTest {
         }
     }
 
+    private fun rootPoa(orb: ORB) = POAHelper.narrow(orb.resolve_initial_references("RootPOA"))
+
     private fun remote(reference: org.omg.CORBA.Object): OpenRTM.ComponentObserver =
         OpenRTM.ComponentObserverHelper.narrow(client.string_to_object(server.object_to_string(reference)))
 
     @Test
     fun `a served object answers over IIOP until it is closed, then it does not exist, and its ORB still shuts down`() {
         val own = ORB.init(emptyArray(), OrbRecipe.properties("127.0.0.1", 0, 5_000))
-        val served = RandomIdPoa(own, "answers", singleThread = true).serve(Recorder(1))
+        val served = RandomIdPoa({ rootPoa(own) }, "answers", singleThread = true).serve(Recorder(1))
         val observer =
             OpenRTM.ComponentObserverHelper.narrow(client.string_to_object(own.object_to_string(served.reference)))
         assertFalse(observer._non_existent(), "served")
@@ -49,7 +51,8 @@ class RandomIdPoaTest {
     @Test
     fun `one thread takes a single-threaded POA's calls in the order they were sent`() {
         val recorder = Recorder(HINTS)
-        val observer = remote(RandomIdPoa(server, "ordered", singleThread = true).serve(recorder).reference)
+        val observer =
+            remote(RandomIdPoa({ rootPoa(server) }, "ordered", singleThread = true).serve(recorder).reference)
 
         repeat(HINTS) { observer.update_status(OpenRTM.StatusKind.COMPONENT_PROFILE, "$it") }
 
@@ -60,9 +63,9 @@ class RandomIdPoaTest {
 
     @Test
     fun `objects get ids of their own, and the POA starts no thread to forget them`() {
-        POAHelper.narrow(server.resolve_initial_references("RootPOA"))
+        rootPoa(server)
         val before = removalThreads()
-        val poa = RandomIdPoa(server, "ids", singleThread = true)
+        val poa = RandomIdPoa({ rootPoa(server) }, "ids", singleThread = true)
         val served = List(3) { poa.serve(Recorder(0)) }
         served.forEach { assertFalse(remote(it.reference)._non_existent()) }
         served.forEach { it.close() }

@@ -18,7 +18,7 @@ import org.slf4j.LoggerFactory
  */
 internal class DataTaps(private val core: TreeCore) {
     private val log = LoggerFactory.getLogger(DataTaps::class.java)
-    private val host by lazy { TapHost(core.orb.orb) }
+    private val host by lazy { TapHost(core.orb.orb, core.orb::rootPoa) }
     private val changes = Mutex()
     private val taps = HashMap<Pair<ComponentObject, String>, DataTap>()
     private val closed = AtomicBoolean()

@@ -1,6 +1,7 @@
 package org.rtcoord.internal.data
 
 import org.omg.CORBA.ORB
+import org.omg.PortableServer.POA
 import org.omg.PortableServer.Servant
 import org.rtcoord.internal.RandomIdPoa
 
@@ -8,8 +9,8 @@ import org.rtcoord.internal.RandomIdPoa
  * Serves the tree's tap objects (`OpenRTM::InPortCdr` endpoints and their [TapPort]s) on the tree's ORB, in a POA of
  * their own with random object ids, so only the out-port a tap was connected to can reach it.
  */
-internal class TapHost(private val orb: ORB) {
-    private val poa = RandomIdPoa(orb, "rtcoord-taps", singleThread = false)
+internal class TapHost(private val orb: ORB, rootPoa: () -> POA) {
+    private val poa = RandomIdPoa(rootPoa, "rtcoord-taps", singleThread = false)
 
     /** One served object; [ior] is what a connector's `dataport.corba_cdr.inport_ior` carries. */
     inner class Endpoint internal constructor(servant: Servant) {

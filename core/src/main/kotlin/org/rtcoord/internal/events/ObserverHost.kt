@@ -2,7 +2,7 @@ package org.rtcoord.internal.events
 
 import java.util.UUID
 import java.util.concurrent.Executor
-import org.omg.CORBA.ORB
+import org.omg.PortableServer.POA
 import org.omg.PortableServer.Servant
 import org.rtcoord.ObserverFlavour
 import org.rtcoord.internal.InboundConnections
@@ -16,9 +16,13 @@ import org.slf4j.LoggerFactory
  * Markers wait for what reached the ORB before them ([inbound]; null when the ORB is not the tree's own, and then they
  * wait for nothing) and are sent by [dispatch] when they could not be sent at once.
  */
-internal class ObserverHost(orb: ORB, private val inbound: InboundConnections?, private val dispatch: Executor) {
+internal class ObserverHost(
+    rootPoa: () -> POA,
+    private val inbound: InboundConnections?,
+    private val dispatch: Executor,
+) {
     private val log = LoggerFactory.getLogger(ObserverHost::class.java)
-    private val poa = RandomIdPoa(orb, "rtcoord-observers", singleThread = true)
+    private val poa = RandomIdPoa(rootPoa, "rtcoord-observers", singleThread = true)
 
     /** An observer attached (or about to be) to one component. */
     inner class Observer internal constructor(val flavour: ObserverFlavour, servant: Servant) {

@@ -39,7 +39,7 @@ import org.rtcoord.label
  * the [watchdogs], the [reports] and the [outages].
  */
 internal class Watcher(private val core: TreeCore) {
-    private val host by lazy { ObserverHost(core.orb.orb, core.orb.inbound, core::execute) }
+    private val host by lazy { ObserverHost(core.orb::rootPoa, core.orb.inbound, core::execute) }
     private val components = HashMap<ComponentObject, ComponentMonitor>()
     private val live = java.util.concurrent.ConcurrentHashMap.newKeySet<ComponentMonitor>()
     /** By path: a directory listed anew (its name server restarted) is the same directory, listed once. */
