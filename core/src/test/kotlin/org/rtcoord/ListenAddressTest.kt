@@ -51,15 +51,15 @@ class ListenAddressTest {
     @Test
     fun `a tree that only reads the system never listens, and closes`() {
         LocalisationSystem().use { localisation ->
-            val tree = RtcTree(TreeConfig(listOf(localisation.naming.address), listenAddress = READER_ADDRESS))
             fun listening() = listeningSockets().filter { it.address.hostAddress == READER_ADDRESS }
-            runBlocking {
-                val laser = tree.component(localisation.path("laser0.rtc"))
-                assertEquals(LifeCycle.ACTIVE, laser.state())
-                assertEquals(listOf("laser"), laser.snapshot().ports.map { it.name })
+            RtcTree(TreeConfig(listOf(localisation.naming.address), listenAddress = READER_ADDRESS)).use { tree ->
+                runBlocking {
+                    val laser = tree.component(localisation.path("laser0.rtc"))
+                    assertEquals(LifeCycle.ACTIVE, laser.state())
+                    assertEquals(listOf("laser"), laser.snapshot().ports.map { it.name })
+                }
+                assertEquals(emptyList<Any>(), listening(), "no object served, so no root POA and no listening socket")
             }
-            assertEquals(emptyList<Any>(), listening(), "no object served, so no root POA and no listening socket")
-            tree.close()
             assertEquals(emptyList<Any>(), listening(), "closing made none either")
         }
     }

@@ -25,8 +25,8 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
 
     /**
      * The ORB's root POA, resolved on first use, when the tree first serves an object (an observer, a tap, a reply
-     * handler). JacORB makes it, its object adapter and its listening socket then: a command that only reads the
-     * system, `ls`, never does, and shut down 12 ms sooner for it.
+     * handler). JacORB makes it, its object adapter and its listening socket then: a tree that only reads the system
+     * (`ls`) never listens, and its [close] does not make them only to shut them down.
      */
     val rootPoa: POA by root
 
