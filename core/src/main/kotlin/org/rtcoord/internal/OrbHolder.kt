@@ -48,9 +48,10 @@ internal class OrbHolder(supplied: ORB?, listenAddress: () -> String, callTimeou
      */
     override fun close() {
         if (!owned || !started.isInitialized()) return
-        if (root.isInitialized()) runCatching { rootPoa.the_POAManager().discard_requests(false) }
+        val served = root.isInitialized()
+        if (served) runCatching { rootPoa.the_POAManager().discard_requests(false) }
         inbound?.closeAll(READERS_GONE)
-        orb.shutdown(!(root.isInitialized() && inOwnRequest()))
+        orb.shutdown(!(served && inOwnRequest()))
         orb.destroy()
     }
 

@@ -15,7 +15,6 @@ import org.junit.jupiter.api.Assertions.assertFalse
 import org.junit.jupiter.api.Assertions.assertInstanceOf
 import org.junit.jupiter.api.Assertions.assertTrue
 import org.junit.jupiter.api.Test
-import org.omg.PortableServer.POAHelper
 import org.rtcoord.LifeCycle
 import org.rtcoord.fixtures.await
 import org.rtcoord.internal.AsyncRequests
@@ -31,7 +30,7 @@ class StateProbeTest {
     private val runtime = RuntimeProcess.start(naming.corbaloc)
     private val client = RuntimeOrb.start()
     private val scope = CoroutineScope(SupervisorJob())
-    private val requests = AsyncRequests({ POAHelper.narrow(client.orb.resolve_initial_references("RootPOA")) }, scope)
+    private val requests = AsyncRequests(client::poa, scope)
 
     private val fixture: RuntimeComponent = runtime.create(Scenarios.relay, "subject0").also { it.activate() }
     private val component: RTObject =
