@@ -61,7 +61,7 @@ class CoordinatorTestRunnerTest {
             always { component("odometry0").state() == ACTIVE && component("gyro0").state() == ACTIVE }
             scenario("the laser breaks for good") {
                 at(6.seconds) { breakDown("laser0") }
-                expect(within = 5.seconds) { component("odo_localise0").state() == ACTIVE }
+                expect(within = 10.seconds) { component("odo_localise0").state() == ACTIVE }
                 expectLog("laser0 could not be reset")
             }
             """,
@@ -71,8 +71,9 @@ class CoordinatorTestRunnerTest {
         }
 
         assertTrue(result.passed, (TestReport.failures(result) + TestReport.timeline(result)).joinToString("\n"))
-        // Six seconds of the robot's time before the fault alone: on the host's clock, at ten times, well under them.
-        assertTrue(result.duration < 4.seconds, "took ${result.duration}")
+        // Six seconds of the robot's time before the fault alone, so at its clock the run takes longer than that. The
+        // recovery's CORBA calls take host time whatever the speed: its deadline allows for a busy machine.
+        assertTrue(result.duration < 6.seconds, "took ${result.duration}")
         val timeline = result.timeline.joinToString("\n")
         val fault = result.timeline.firstOrNull { it.kind == TimelineEntry.Kind.FAULT }
         assertTrue(fault != null && fault.at >= 6.seconds && fault.at < 6.5.seconds, timeline)
