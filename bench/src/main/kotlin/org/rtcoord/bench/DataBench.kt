@@ -53,7 +53,7 @@ internal class DataBench(private val options: BenchOptions, private val report: 
 
     suspend fun run() {
         report.section(
-            "data: tap of a TimedDoubleSeq($SCAN) out-port, fixture in the bench JVM; ${options.dataWindow.inWholeSeconds} s windows"
+            "data: tap of a TimedDoubleSeq($SCAN) out-port, fixture in the bench JVM; ${options.dataWindow} windows"
         )
         for (rate in listOf(100.0, 1000.0)) rate(rate)
         silence()
