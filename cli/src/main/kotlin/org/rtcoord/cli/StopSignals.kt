@@ -3,7 +3,10 @@ package org.rtcoord.cli
 import java.util.concurrent.CopyOnWriteArraySet
 import kotlin.time.Duration
 import kotlinx.coroutines.CompletableDeferred
-import kotlinx.coroutines.withTimeoutOrNull
+import kotlinx.coroutines.coroutineScope
+import kotlinx.coroutines.delay
+import kotlinx.coroutines.launch
+import kotlinx.coroutines.selects.select
 import sun.misc.Signal
 import sun.misc.SignalHandler
 
@@ -41,8 +44,22 @@ internal class StopSignals : AutoCloseable {
     /**
      * Waits for a signal or [stop], at most [limit] (forever when null); returns the signal's name or the reason, or
      * null when the time was up.
+     *
+     * The limit is a `delay` raced against the request, not `withTimeoutOrNull`: under `runBlocking` a delay is kept by
+     * the command's own event loop, while a timeout starts kotlinx's shared timer thread, which then lives as long as
+     * the command (one thread more in every `watch --for` and `run --for`).
      */
-    suspend fun await(limit: Duration?): String? = withTimeoutOrNull(limit ?: Duration.INFINITE) { requested.await() }
+    suspend fun await(limit: Duration?): String? =
+        if (limit == null) requested.await()
+        else
+            coroutineScope {
+                val time = launch { delay(limit) }
+                select {
+                    requested.onAwait { it }
+                    time.onJoin { null }
+                }
+                    .also { time.cancel() }
+            }
 
     /** Gives the signals back to the JVM. */
     @Synchronized

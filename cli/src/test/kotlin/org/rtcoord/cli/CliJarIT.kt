@@ -1,8 +1,10 @@
 package org.rtcoord.cli
 
+import java.io.IOException
 import java.nio.file.Files
 import java.nio.file.Path
 import java.nio.file.Paths
+import java.util.concurrent.TimeUnit
 import org.junit.jupiter.api.AfterAll
 import org.junit.jupiter.api.Assertions.assertEquals
 import org.junit.jupiter.api.Assertions.assertTrue
@@ -115,4 +117,38 @@ class CliJarIT {
         assertEquals(0, watched.status, watched.stderr)
         assertEquals(emptySet<String>(), localisation.system.component("gyro0").observerIds)
     }
+
+    /**
+     * `--for` is kept by the command's own event loop: a `withTimeout` there started kotlinx's shared timer thread,
+     * which lived as long as the command. The process's threads are read from Linux's /proc while it watches.
+     */
+    @Test
+    fun `watch --for starts no thread to keep its time`() {
+        val process =
+            ProcessBuilder("java", "-jar", jar.toString(), "watch", localisation.path("gyro0.rtc"), "--for", "2s")
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                .redirectError(ProcessBuilder.Redirect.DISCARD)
+                .start()
+        val seen = mutableSetOf<String>()
+        while (!process.waitFor(20, TimeUnit.MILLISECONDS)) seen += threadNames(process.pid())
+        assertEquals(0, process.exitValue())
+        // Seen while the tree was up, that is while the command waited for its time.
+        assertTrue(seen.any { it.startsWith("rtcoord-tree") }, "threads seen: $seen")
+        // Linux keeps 15 characters of a thread's name: kotlinx.coroutines.DefaultExecutor is "kotlinx.corouti".
+        assertEquals(emptyList<String>(), seen.filter { it.startsWith("kotlinx.corouti") }, "threads seen: $seen")
+    }
+
+    /** The names of [pid]'s threads now; none once it has ended. */
+    private fun threadNames(pid: Long): Set<String> =
+        try {
+            Files.list(Paths.get("/proc", "$pid", "task")).use { tasks ->
+                tasks
+                    .map { task -> runCatching { Files.readString(task.resolve("comm")).trim() }.getOrNull() }
+                    .toList()
+                    .filterNotNull()
+                    .toSet()
+            }
+        } catch (e: IOException) {
+            emptySet()
+        }
 }
