@@ -9,7 +9,9 @@ import com.github.ajalt.mordant.terminal.TerminalInterface
 /**
  * The terminal Clikt prints through, without Mordant's detection, which costs about 70 ms on every start (native calls
  * through JNA, a child process, JMX): plain text, interactive when the JVM has a console, as wide as COLUMNS says.
- * Every print is flushed, so `watch` reaches a pipe line by line.
+ * Every print is flushed, so `watch` reaches a pipe line by line. A standard output with no reader any more (`rtcoord
+ * print PORT | head`) stops the command that runs until stopped ([StopSignals.outputClosed]): the JVM ignores SIGPIPE
+ * and [java.io.PrintStream] keeps the broken pipe to itself, so the command went on printing to nobody for good.
  */
 internal object PlainTerminal : TerminalInterface {
     private val console = System.console() != null
@@ -32,6 +34,7 @@ internal object PlainTerminal : TerminalInterface {
         val stream = if (request.stderr) System.err else System.out
         if (request.trailingLinebreak) stream.println(request.text) else stream.print(request.text)
         stream.flush()
+        if (!request.stderr && stream.checkError()) StopSignals.outputClosed()
     }
 
     override fun readLineOrNull(hideInput: Boolean): String? = readlnOrNull()

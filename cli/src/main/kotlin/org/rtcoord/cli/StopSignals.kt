@@ -78,5 +78,16 @@ internal class StopSignals : AutoCloseable {
          * caller too.
          */
         fun interrupt(): Boolean = waiting.onEach { it.stop("SIGINT") }.isNotEmpty()
+
+        /**
+         * Stops every command of this JVM that is running until stopped, its standard output having no reader any more:
+         * it ends as after SIGTERM, with status 0.
+         */
+        fun outputClosed() {
+            waiting.forEach { it.stop(OUTPUT_CLOSED) }
+        }
+
+        /** What a command stopped by [outputClosed] was stopped by. */
+        const val OUTPUT_CLOSED = "its output's reader leaving"
     }
 }

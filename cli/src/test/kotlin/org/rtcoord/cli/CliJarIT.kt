@@ -138,6 +138,27 @@ class CliJarIT {
         assertEquals(emptyList<String>(), seen.filter { it.startsWith("kotlinx.corouti") }, "threads seen: $seen")
     }
 
+    /**
+     * `rtcoord print PORT | head -3`: once the reader has its lines and leaves, the command ends. The JVM ignores
+     * SIGPIPE, and before, `print` went on writing to the closed pipe until killed.
+     */
+    @Test
+    fun `print ends with status 0 once its output has no reader`() {
+        val process =
+            ProcessBuilder("java", "-jar", jar.toString(), "print", localisation.path("laser0.rtc:laser"))
+                .redirectError(ProcessBuilder.Redirect.DISCARD)
+                .start()
+        try {
+            val output = process.inputStream.bufferedReader()
+            repeat(3) { assertTrue(output.readLine()?.contains("TimedDoubleSeq") == true, "a sample line") }
+            output.close()
+            assertTrue(process.waitFor(30, TimeUnit.SECONDS), "print still running after its reader left")
+            assertEquals(0, process.exitValue())
+        } finally {
+            process.destroyForcibly()
+        }
+    }
+
     /** The names of [pid]'s threads now; none once it has ended. */
     private fun threadNames(pid: Long): Set<String> =
         try {
