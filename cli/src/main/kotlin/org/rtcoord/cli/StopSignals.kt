@@ -88,6 +88,6 @@ internal class StopSignals : AutoCloseable {
         }
 
         /** What a command stopped by [outputClosed] was stopped by. */
-        const val OUTPUT_CLOSED = "its output's reader leaving"
+        private const val OUTPUT_CLOSED = "its output's reader leaving"
     }
 }
