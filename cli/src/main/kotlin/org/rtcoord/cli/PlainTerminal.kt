@@ -33,8 +33,8 @@ internal object PlainTerminal : TerminalInterface {
     override fun completePrintRequest(request: PrintRequest) {
         val stream = if (request.stderr) System.err else System.out
         if (request.trailingLinebreak) stream.println(request.text) else stream.print(request.text)
-        stream.flush()
-        if (!request.stderr && stream.checkError()) StopSignals.outputClosed()
+        // checkError flushes standard output before it answers: one flush a line, as for standard error.
+        if (request.stderr) stream.flush() else if (stream.checkError()) StopSignals.outputClosed()
     }
 
     override fun readLineOrNull(hideInput: Boolean): String? = readlnOrNull()

@@ -164,9 +164,8 @@ class CliJarIT {
         try {
             Files.list(Paths.get("/proc", "$pid", "task")).use { tasks ->
                 tasks
-                    .map { task -> runCatching { Files.readString(task.resolve("comm")).trim() }.getOrNull() }
                     .toList()
-                    .filterNotNull()
+                    .mapNotNull { runCatching { Files.readString(it.resolve("comm")).trim() }.getOrNull() }
                     .toSet()
             }
         } catch (e: IOException) {
